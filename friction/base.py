@@ -1,0 +1,300 @@
+"""The contract every friction law fulfils (the ``PartialFriction`` of frictionlab).
+
+A law is two things:
+
+* a frozen parameter dataclass (subclass of :class:`FrictionParams`) whose fields carry
+  ``unit``, ``description``, admissible bounds and a default search range in their metadata;
+* a model class (subclass of :class:`FrictionModel`) that fills in
+
+  - ``theta_layout``: names of the packed float vector the numba kernels consume,
+  - ``_pack(params)``: parameters -> that vector,
+  - ``_kernel(t, v, a, load, x, theta, method, state0)`` -> ``(F, states)``: a numba-compiled
+    prescribed-motion simulation (one parameter set),
+  - ``_population_kernel(t, v, a, load, x, Theta, method)`` -> ``F[npop, N]``,
+  - ``steady_state(v, **inputs)``,
+  - continuous-time ``derivatives(state, v, **inputs)`` and ``force(state, v, **inputs)``
+    used by the reference integrator and by the plant library.
+
+Everything else (input validation, direction-dependent twins, building a population of
+parameter vectors for identification) is written once here.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field, fields
+from typing import Any, ClassVar
+
+import numpy as np
+
+from ._validation import ParameterError, check_signals
+
+__all__ = ["param", "ParamInfo", "FrictionParams", "FrictionModel", "METHODS"]
+
+#: Bristle-update schemes. ``exact``: exponential update over each step (stable at any step
+#: and stiffness). ``euler``: explicit Euler as the papers implement it (unstable when
+#: h*sigma0*|v|/g(v) > 2; kept to reproduce their instability).
+METHODS = {"exact": 0, "euler": 1}
+
+
+def param(default, unit: str, description: str, *, lower: float = -math.inf,
+          upper: float = math.inf, lower_open: bool = False, upper_open: bool = False,
+          search: tuple[float, float] | None = None, log: bool = False):
+    """Declare a parameter field with unit, description and admissible bounds.
+
+    Parameters
+    ----------
+    default : float or None
+        Default value (``None`` for an optional direction-dependent twin: "same as +").
+    unit : str
+        SI unit string, e.g. ``"N/m"``.
+    description : str
+        One-line description.
+    lower, upper : float
+        Admissible bounds; violating them raises :class:`ParameterError`.
+    lower_open, upper_open : bool
+        Whether the bound itself is excluded (``sigma0 > 0`` is ``lower=0, lower_open=True``).
+    search : (float, float), optional
+        Default search range for identification.
+    log : bool
+        Whether identification should search this parameter on a log scale.
+    """
+    return field(default=default, metadata=dict(
+        unit=unit, description=description, lower=lower, upper=upper,
+        lower_open=lower_open, upper_open=upper_open, search=search, log=log))
+
+
+@dataclass(frozen=True)
+class ParamInfo:
+    """Metadata of one parameter (what a model description or a GUI shows)."""
+    name: str
+    default: Any
+    unit: str
+    description: str
+    lower: float
+    upper: float
+    lower_open: bool
+    upper_open: bool
+    search: tuple[float, float] | None
+    log: bool
+
+    def bound_text(self) -> str:
+        parts = []
+        if self.lower > -math.inf:
+            parts.append(f"{self.name} {'>' if self.lower_open else '>='} {self.lower:g}")
+        if self.upper < math.inf:
+            parts.append(f"{self.name} {'<' if self.upper_open else '<='} {self.upper:g}")
+        return " and ".join(parts) or "finite"
+
+    def admissible(self, value: float) -> bool:
+        if not math.isfinite(value):
+            return False
+        if value < self.lower or (self.lower_open and value == self.lower):
+            return False
+        if value > self.upper or (self.upper_open and value == self.upper):
+            return False
+        return True
+
+
+@dataclass(frozen=True)
+class FrictionParams:
+    """Base of all parameter dataclasses: validates every numeric field on creation."""
+
+    def __post_init__(self):
+        for info in self.info():
+            value = getattr(self, info.name)
+            if value is None or isinstance(value, (str, bool)):
+                continue
+            try:
+                value = float(value)
+            except (TypeError, ValueError):
+                raise ParameterError(f"{info.name} = {value!r} is not a number") from None
+            if not info.admissible(value):
+                raise ParameterError(
+                    f"{info.name} = {value!r} is out of bounds: must be {info.bound_text()} "
+                    f"[{info.unit}] ({info.description})")
+            object.__setattr__(self, info.name, value)
+        self._check_relations()
+
+    def _check_relations(self) -> None:
+        """Cross-parameter constraints; subclasses override."""
+
+    @classmethod
+    def info(cls) -> list[ParamInfo]:
+        out = []
+        for f in fields(cls):
+            md = f.metadata
+            if "unit" not in md:
+                continue
+            out.append(ParamInfo(f.name, f.default, md["unit"], md["description"], md["lower"],
+                                 md["upper"], md["lower_open"], md["upper_open"], md["search"],
+                                 md["log"]))
+        return out
+
+    @classmethod
+    def numeric_names(cls) -> list[str]:
+        return [i.name for i in cls.info()
+                if not isinstance(i.default, (str, bool))]
+
+    def as_dict(self) -> dict[str, Any]:
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+    def replace(self, **changes) -> "FrictionParams":
+        return dataclasses.replace(self, **changes)
+
+
+class FrictionModel:
+    """Base class of friction laws. See the module docstring for what subclasses fill in."""
+
+    name: ClassVar[str] = ""
+    Params: ClassVar[type[FrictionParams]] = FrictionParams
+    #: names of the continuous states (bristle deflection z first)
+    state_names: ClassVar[tuple[str, ...]] = ("z",)
+    #: extra inputs the law needs besides velocity, among ("a", "load", "x")
+    extra_inputs: ClassVar[tuple[str, ...]] = ()
+    #: packed float-vector layout consumed by the numba kernels
+    theta_layout: ClassVar[tuple[str, ...]] = ()
+    #: direction-dependent twins: name -> name of the "-" value in theta_layout
+    twins: ClassVar[dict[str, str]] = {}
+
+    def __init__(self, params: FrictionParams | None = None, **kwargs):
+        if params is None:
+            params = self.Params(**kwargs)
+        elif kwargs:
+            params = params.replace(**kwargs)
+        if not isinstance(params, self.Params):
+            raise TypeError(f"{self.name}: params must be {self.Params.__name__}, "
+                            f"got {type(params).__name__}")
+        self.params = params
+        self.theta = self._pack(params)
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.params!r})"
+
+    # -- to be filled in by each law ------------------------------------------------------
+    def _pack(self, params) -> np.ndarray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    @staticmethod
+    def _kernel(t, v, a, load, x, theta, method, state0):  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    @staticmethod
+    def _population_kernel(t, v, a, load, x, Theta, method):  # pragma: no cover
+        raise NotImplementedError
+
+    def steady_state(self, v, **inputs) -> np.ndarray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def derivatives(self, state, v, **inputs) -> np.ndarray:  # pragma: no cover
+        """Continuous-time state derivative d(state)/dt at velocity ``v`` [m/s]."""
+        raise NotImplementedError
+
+    def force(self, state, v, **inputs) -> float:  # pragma: no cover
+        """Friction force [N] for a continuous state and velocity ``v`` [m/s]."""
+        raise NotImplementedError
+
+    # -- written once -------------------------------------------------------------------
+    def initial_state(self) -> np.ndarray:
+        return np.zeros(len(self.state_names))
+
+    def _inputs(self, t, v, a=None, load=None, x=None):
+        t, v, extra = check_signals(t, v, a=a, load=load, x=x)
+        a, load, x = extra["a"], extra["load"], extra["x"]
+        if "a" in self.extra_inputs and a is None:
+            a = np.gradient(v, t)  # derived acceleration, as the CSV contract allows
+        if "x" in self.extra_inputs and x is None:
+            # integrate v (trapezoid) from 0 when no displacement is given
+            x = np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))))
+        if "load" in self.extra_inputs and load is None:
+            raise ValueError(f"{self.name} needs the load= array (normal/deformation load [N])")
+        empty = np.zeros(0)
+        return (t, v, a if a is not None else empty, load if load is not None else empty,
+                x if x is not None else empty)
+
+    def simulate(self, t, v, *, a=None, load=None, x=None, method: str = "exact",
+                 state0=None, return_state: bool = False):
+        """Friction force along a prescribed motion.
+
+        Parameters
+        ----------
+        t : array_like, shape (N,)
+            Time [s], strictly increasing (need not be uniform).
+        v : array_like, shape (N,)
+            Sliding velocity [m/s].
+        a, load, x : array_like, shape (N,), optional
+            Acceleration [m/s^2], normal/deformation load [N], displacement [m], for laws
+            that need them (``extra_inputs``).
+        method : {"exact", "euler"}
+            Bristle update. ``exact`` is stable at any step size.
+        state0 : array_like, optional
+            Initial state (default zeros).
+        return_state : bool
+            Also return the state trajectory, shape (N, n_states).
+
+        Returns
+        -------
+        F : ndarray, shape (N,)
+            Friction force [N] at each sample.
+        """
+        if method not in METHODS:
+            raise ValueError(f"method must be one of {sorted(METHODS)}, got {method!r}")
+        t, v, a, load, x = self._inputs(t, v, a, load, x)
+        s0 = self.initial_state() if state0 is None else np.asarray(state0, float).ravel()
+        if s0.size != len(self.state_names):
+            raise ValueError(f"state0 must have {len(self.state_names)} entries "
+                             f"{self.state_names}, got {s0.size}")
+        F, S = self._kernel(t, v, a, load, x, self.theta, METHODS[method], s0)
+        return (F, S) if return_state else F
+
+    # -- populations (identification fast path) -----------------------------------------
+    def free_names(self) -> list[str]:
+        """Numeric parameters that identification may vary (twins that are None excluded)."""
+        return [n for n in self.Params.numeric_names() if getattr(self.params, n) is not None]
+
+    def population_theta(self, names, X) -> np.ndarray:
+        """Packed theta rows for a population of parameter vectors.
+
+        Parameters
+        ----------
+        names : sequence of str
+            Parameter names, one per column of ``X``.
+        X : array_like, shape (npop, len(names))
+            Parameter values.
+
+        A symmetric law's parameter (its ``_neg`` twin left None) also sets the twin.
+        """
+        X = np.atleast_2d(np.asarray(X, dtype=np.float64))
+        names = list(names)
+        if X.shape[1] != len(names):
+            raise ValueError(f"X has {X.shape[1]} columns for {len(names)} names")
+        Theta = np.repeat(self.theta[None, :], X.shape[0], axis=0)
+        layout = {n: i for i, n in enumerate(self.theta_layout)}
+        for j, n in enumerate(names):
+            if n not in layout:
+                raise KeyError(f"{self.name} has no packed parameter {n!r}; "
+                               f"choose from {list(self.theta_layout)}")
+            Theta[:, layout[n]] = X[:, j]
+            twin = self.twins.get(n)
+            if twin is not None and getattr(self.params, twin, None) is None \
+                    and twin not in names:
+                Theta[:, layout[twin]] = X[:, j]
+        return Theta
+
+    def simulate_population(self, t, v, names, X, *, a=None, load=None, x=None,
+                            method: str = "exact") -> np.ndarray:
+        """Simulate many parameter sets at once: returns ``F[npop, N]`` [N].
+
+        The kernel runs the population in parallel (numba ``prange``). Parameter vectors
+        are not bound-checked here (the optimiser keeps them inside its box); rows whose
+        values are inadmissible may give NaN, which objectives treat as +inf cost.
+        """
+        if method not in METHODS:
+            raise ValueError(f"method must be one of {sorted(METHODS)}, got {method!r}")
+        t, v, a, load, x = self._inputs(t, v, a, load, x)
+        Theta = self.population_theta(names, X)
+        return self._population_kernel(t, v, a, load, x, Theta, METHODS[method])
+
+    def with_values(self, **values) -> "FrictionModel":
+        """A copy of this model with some parameters changed (validated)."""
+        return type(self)(self.params.replace(**values))

@@ -1,0 +1,96 @@
+"""``frictionlab`` command: parsing and dispatch only (fmpy ``command_line.py`` style).
+
+Every subcommand prints ``--help``; bad input exits non-zero with a one-line message and no
+traceback (set ``FRICTIONLAB_DEBUG=1`` to see the traceback).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+__all__ = ["main", "build_parser"]
+
+
+def _add_data_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("data", nargs="+", help="measurement file(s): CSV (t,x,v,a,F[,load]) or .mat; "
+                   "the first is fitted, the others held out")
+    p.add_argument("--model", required=True, help="friction law (registry name, e.g. lugre)")
+    p.add_argument("--map", dest="mapping", default=None,
+                   help="column mapping NAME=COLUMN,... e.g. t=time,x=qm,F=force")
+    p.add_argument("--scale", default=None,
+                   help="unit factors NAME=FACTOR,... e.g. x=1e-3 for a position in mm")
+    p.add_argument("--json", dest="json_out", default=None, help="write the result as JSON here")
+    p.add_argument("--quiet", action="store_true", help="no progress output")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(prog="frictionlab", description="Friction modelling, "
+                                 "co-simulation, identification and sim-to-real diagnosis.")
+    sub = ap.add_subparsers(dest="command", metavar="COMMAND")
+    sub.required = True
+
+    d = sub.add_parser("demo", help="the main job end to end on built-in data")
+    d.add_argument("--out", default="frictionlab-demo", help="output folder (default ./frictionlab-demo)")
+    d.add_argument("--quick", action="store_true", help="smaller problems (for smoke tests)")
+    d.add_argument("--only", default=None, help="comma-separated stages to run "
+                   "(friction,plants,fmus,identification,diagnosis)")
+
+    b = sub.add_parser("build-fmus", help="build every FMU into a folder")
+    b.add_argument("--out", required=True, help="output folder")
+    b.add_argument("--only", default=None, help="comma-separated FMU names to build")
+
+    i = sub.add_parser("identify", help="identify a friction law's parameters from data")
+    _add_data_options(i)
+    i.add_argument("--algorithm", default=None, help="identification algorithm (default: the "
+                   "fast robust one; see identification.ALGORITHMS)")
+    i.add_argument("--seed", type=int, default=0, help="random seed (reproducible runs)")
+    i.add_argument("--checkpoint", default=None, help="checkpoint file: resume from it if it exists")
+    i.add_argument("--max-evals", type=int, default=None, help="evaluation budget")
+
+    g = sub.add_parser("diagnose", help="locate and name the sim-to-real gap of a model")
+    _add_data_options(g)
+    g.add_argument("--html", dest="html_out", default=None, help="write an HTML report here")
+    g.add_argument("--load-column", default=None, help="column to use as load (e.g. pressure)")
+    g.add_argument("--benchmark", action="store_true", help="run the built-in attribution benchmark")
+    g.add_argument("--seed", type=int, default=0)
+    return ap
+
+
+def _dispatch(args) -> int:
+    if args.command == "demo":
+        from .demo import run_demo
+        run_demo(args.out, quick=args.quick,
+                 only=args.only.split(",") if args.only else None)
+        return 0
+    if args.command == "build-fmus":
+        from fmus.build import build_all
+        build_all(args.out, only=args.only.split(",") if args.only else None)
+        return 0
+    if args.command == "identify":
+        from identification.cli import run_identify_cli
+        return run_identify_cli(args) or 0
+    if args.command == "diagnose":
+        from diagnosis.cli import run_diagnose_cli
+        return run_diagnose_cli(args) or 0
+    raise ValueError(f"unknown command {args.command!r}")
+
+
+def main(argv=None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        return _dispatch(args)
+    except KeyboardInterrupt:
+        print("frictionlab: interrupted (checkpoints, if any, were kept)", file=sys.stderr)
+        return 130
+    except (ValueError, FileNotFoundError, KeyError, NotImplementedError, RuntimeError,
+            OSError, ImportError) as exc:
+        if os.environ.get("FRICTIONLAB_DEBUG"):
+            raise
+        msg = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+        print(f"frictionlab {args.command}: error: {msg}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

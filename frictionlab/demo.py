@@ -1,0 +1,62 @@
+"""``frictionlab demo``: every stage of the project end to end, into one folder.
+
+Each package contributes a stage ``<package>.demo.run_stage(out_dir, summary, quick)`` that
+writes its PNG/JSON files into ``out_dir`` and its figures into the shared ``summary`` dict.
+Stages not yet available are listed under ``summary["stages_missing"]``.
+"""
+from __future__ import annotations
+
+import importlib
+import json
+import os
+import time
+
+from .progress import report
+
+__all__ = ["run_demo", "STAGES"]
+
+STAGES = ("friction", "plants", "fmus", "identification", "diagnosis")
+
+
+def run_demo(out: str = "frictionlab-demo", *, quick: bool = False, only=None) -> dict:
+    """Run the demo stages and write ``<out>/summary.json``.
+
+    Parameters
+    ----------
+    out : str
+        Output folder (created).
+    quick : bool
+        Smaller problems, for smoke tests.
+    only : list of str, optional
+        Run only these stages.
+    """
+    os.makedirs(out, exist_ok=True)
+    path = os.path.join(out, "summary.json")
+    summary: dict = {}
+    if os.path.exists(path) and only:
+        with open(path) as fh:  # keep other stages' results when re-running one stage
+            summary = json.load(fh)
+    summary["stages_missing"] = []
+    stages = [s for s in STAGES if not only or s in only]
+    unknown = set(only or ()) - set(STAGES)
+    if unknown:
+        raise ValueError(f"unknown demo stage(s) {sorted(unknown)}; choose from {STAGES}")
+    for k, name in enumerate(stages, 1):
+        try:
+            mod = importlib.import_module(f"{name}.demo")
+        except ModuleNotFoundError as exc:
+            if exc.name not in (f"{name}.demo", name):
+                raise
+            summary["stages_missing"].append(name)
+            report(f"[demo {k}/{len(stages)}] {name}: not available yet, skipped")
+            continue
+        t0 = time.monotonic()
+        report(f"[demo {k}/{len(stages)}] {name} ...")
+        mod.run_stage(out, summary, quick=quick)
+        report(f"[demo {k}/{len(stages)}] {name} done in {time.monotonic() - t0:.1f} s")
+        with open(path, "w") as fh:  # written after every stage: an interrupted demo keeps its results
+            json.dump(summary, fh, indent=2, default=float)
+    with open(path, "w") as fh:
+        json.dump(summary, fh, indent=2, default=float)
+    report(f"demo results in {os.path.abspath(out)} (summary.json)")
+    return summary

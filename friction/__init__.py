@@ -31,6 +31,10 @@ def _register_optional():
             if exc.name != f"{__name__}.{mod}":
                 raise
             continue
+        except Exception as exc:  # a broken law must not take the others down; tests catch it
+            import warnings
+            warnings.warn(f"friction law module {mod!r} failed to import: {exc!r}")
+            continue
         MODELS[name] = getattr(m, cls)
         globals()[cls] = MODELS[name]
         __all__.append(cls)

@@ -1,0 +1,47 @@
+"""The ``frictionlab`` command: help for every subcommand, one-line errors, the demo."""
+import json
+import subprocess
+import sys
+
+import pytest
+
+from frictionlab.cli import main
+
+SUBCOMMANDS = ["demo", "build-fmus", "identify", "diagnose"]
+
+
+def _run(*args):
+    return subprocess.run([sys.executable, "-m", "frictionlab.cli", *args], capture_output=True,
+                          text=True, timeout=600)
+
+
+@pytest.mark.parametrize("cmd", SUBCOMMANDS)
+def test_help(cmd, capsys):
+    with pytest.raises(SystemExit) as e:
+        main([cmd, "--help"])
+    assert e.value.code == 0
+    assert "usage: frictionlab" in capsys.readouterr().out
+
+
+def test_bad_input_is_one_line_without_traceback(tmp_path):
+    r = _run("identify", str(tmp_path / "missing.csv"), "--model", "lugre")
+    assert r.returncode != 0
+    assert "Traceback" not in r.stderr
+    lines = [ln for ln in r.stderr.strip().splitlines() if ln.strip()]
+    assert len(lines) == 1 and "error" in lines[0]
+    bad = tmp_path / "bad.csv"
+    bad.write_text("t,x,F\n0,0,0\n0.001,nan,1\n0.002,0,1\n")
+    r = _run("diagnose", str(bad), "--model", "lugre")
+    assert r.returncode != 0 and "Traceback" not in r.stderr
+
+
+def test_unknown_demo_stage_fails_cleanly(tmp_path):
+    assert main(["demo", "--out", str(tmp_path), "--only", "nonsense"]) == 2
+
+
+def test_demo_friction_stage_writes_plots_and_summary(tmp_path):
+    assert main(["demo", "--out", str(tmp_path), "--only", "friction", "--quick"]) == 0
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert "lugre" in summary["friction_laws"]["models"]
+    for png in summary["friction_laws"]["figures"]:
+        assert (tmp_path / png).stat().st_size > 10_000

@@ -89,7 +89,8 @@ def _state_scale(model: FrictionModel) -> np.ndarray:
     zmax = getattr(model, "z_max", None)
     z = zmax() if callable(zmax) else 1e-5
     sc = np.full(len(model.state_names), 1.0)
-    sc[0] = z
+    if sc.size:  # stateless laws (static Stribeck map) have nothing to scale
+        sc[0] = z
     return sc
 
 

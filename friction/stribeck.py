@@ -1,0 +1,154 @@
+"""Static Stribeck map: Coulomb + Stribeck + viscous friction, the baseline without state.
+
+    F(v) = g(v) sgn(v) + sigma2 v + b                                    (seed 000 Eq. 5)
+    g(v) = Fc + (Fs - Fc) exp(-|v/vs|^alpha)     (gaussian, seed 000 Eq. 4)
+         = Fc + (Fs - Fc) / (1 + (v/vs)^2)       (lorentzian, seed 003 Eq. 3)
+    sgn(0) = 0                                                           (seed 000 Eq. 6)
+
+It is the steady-state curve of every LuGre-family law, used as a memory-free baseline
+(identification of the static parameter group, diagnosis of "is the dynamics worth it").
+Direction-dependent values (seeds 000 and 003): ``Fc_neg, Fs_neg, vs_neg, sigma2_neg`` are
+used when v < 0; left ``None`` they equal the "+" values.
+
+The law has no state (``state_names = ()``): ``simulate`` evaluates the map sample by
+sample, so it is exact at any step size.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit, prange
+
+from ._validation import ParameterError
+from .base import FrictionModel, FrictionParams, param
+from .shapes import SHAPES, stribeck_g, stribeck_g_np
+
+__all__ = ["StribeckParams", "StaticStribeck", "stribeck_force"]
+
+
+@dataclass(frozen=True)
+class StribeckParams(FrictionParams):
+    """Parameters of the static Stribeck map (defaults: those of the classic LuGre)."""
+    sigma2: float = param(0.4, "N.s/m", "viscous coefficient (v >= 0)", lower=0,
+                          search=(0.0, 50.0))
+    Fc: float = param(1.0, "N", "Coulomb friction level (v >= 0)", lower=0, lower_open=True,
+                      search=(1e-2, 50.0))
+    Fs: float = param(1.5, "N", "static (break-away) friction level (v >= 0)", lower=0,
+                      lower_open=True, search=(1e-2, 60.0))
+    vs: float = param(1e-3, "m/s", "Stribeck velocity (v >= 0)", lower=0, lower_open=True,
+                      search=(1e-5, 0.1), log=True)
+    alpha: float = param(2.0, "1", "Stribeck shape exponent (gaussian shape)", lower=0,
+                         lower_open=True, upper=10, search=(0.3, 4.0))
+    b: float = param(0.0, "N", "constant force offset (seed 003 Eq. 4)", search=(-5.0, 5.0))
+    Fc_neg: float | None = param(None, "N", "Coulomb level for v < 0 (None: same as Fc)",
+                                 lower=0, lower_open=True, search=(1e-2, 50.0))
+    Fs_neg: float | None = param(None, "N", "static level for v < 0 (None: same as Fs)",
+                                 lower=0, lower_open=True, search=(1e-2, 60.0))
+    vs_neg: float | None = param(None, "m/s", "Stribeck velocity for v < 0 (None: same as vs)",
+                                 lower=0, lower_open=True, search=(1e-5, 0.1), log=True)
+    sigma2_neg: float | None = param(None, "N.s/m", "viscous coefficient for v < 0 "
+                                     "(None: same as sigma2)", lower=0, search=(0.0, 50.0))
+    shape: str = "gaussian"
+
+    def _check_relations(self):
+        if self.shape not in SHAPES:
+            raise ParameterError(f"shape = {self.shape!r}: must be one of {sorted(SHAPES)}")
+
+    def resolved(self, name: str, direction: int) -> float:
+        """Value of ``name`` for direction +1 / -1 (twins default to the + value)."""
+        if direction < 0:
+            neg = getattr(self, name + "_neg", None)
+            if neg is not None:
+                return neg
+        return getattr(self, name)
+
+
+_LAYOUT = ("sigma2", "sigma2_neg", "Fc", "Fc_neg", "Fs", "Fs_neg", "vs", "vs_neg", "alpha",
+           "b", "shape")
+S2P, S2N, FCP, FCN, FSP, FSN, VSP, VSN, ALPHA, B, SHAPE = range(len(_LAYOUT))
+
+
+@njit(cache=True, inline="always")
+def stribeck_force(v, th):
+    """F(v) = g(v) sgn(v) + sigma2 v + b [N] for one sample, from a packed theta."""
+    if v > 0.0:
+        return stribeck_g(v, th[FCP], th[FSP], th[VSP], th[ALPHA], th[SHAPE]) \
+            + th[S2P] * v + th[B]
+    if v < 0.0:
+        return -stribeck_g(v, th[FCN], th[FSN], th[VSN], th[ALPHA], th[SHAPE]) \
+            + th[S2N] * v + th[B]
+    return th[B]  # sgn(0) = 0 (seed 000 Eq. 6)
+
+
+@njit(cache=True)
+def _kernel(t, v, a, load, x, th, method, state0):
+    n = t.size
+    F = np.empty(n)
+    for k in range(n):
+        F[k] = stribeck_force(v[k], th)
+    return F, np.empty((n, 0))
+
+
+@njit(cache=True, parallel=True)
+def _population_kernel(t, v, a, load, x, Theta, method):
+    npop = Theta.shape[0]
+    n = t.size
+    F = np.empty((npop, n))
+    for i in prange(npop):
+        th = Theta[i]
+        for k in range(n):
+            F[i, k] = stribeck_force(v[k], th)
+    return F
+
+
+class StaticStribeck(FrictionModel):
+    """Static Stribeck map (no state); see the module docstring for the equations.
+
+    Examples
+    --------
+    >>> from friction import make_model
+    >>> m = make_model("stribeck", Fc=1.0, Fs=1.5, vs=1e-3, sigma2=0.4)
+    >>> float(m.steady_state([1e-2])[0])   # doctest: +ELLIPSIS
+    1.004...
+    """
+    name = "stribeck"
+    Params = StribeckParams
+    state_names = ()
+    theta_layout = _LAYOUT
+    twins = {"Fc": "Fc_neg", "Fs": "Fs_neg", "vs": "vs_neg", "sigma2": "sigma2_neg"}
+
+    _kernel = staticmethod(_kernel)
+    _population_kernel = staticmethod(_population_kernel)
+
+    def _pack(self, p: StribeckParams) -> np.ndarray:
+        return np.array([p.sigma2, p.resolved("sigma2", -1), p.Fc, p.resolved("Fc", -1),
+                         p.Fs, p.resolved("Fs", -1), p.vs, p.resolved("vs", -1), p.alpha,
+                         p.b, SHAPES[p.shape]], dtype=np.float64)
+
+    def g(self, v) -> np.ndarray:
+        """Stribeck curve g(v) [N] (direction-dependent values applied)."""
+        v = np.asarray(v, dtype=float)
+        p = self.params
+        gp = stribeck_g_np(v, p.Fc, p.Fs, p.vs, p.alpha, p.shape)
+        gn = stribeck_g_np(v, p.resolved("Fc", -1), p.resolved("Fs", -1),
+                           p.resolved("vs", -1), p.alpha, p.shape)
+        return np.where(v >= 0, gp, gn)
+
+    def sigma2_of(self, v) -> np.ndarray:
+        """Viscous coefficient [N.s/m] of the direction of ``v``."""
+        p = self.params
+        return np.where(np.asarray(v) >= 0, p.sigma2, p.resolved("sigma2", -1))
+
+    def steady_state(self, v, **inputs) -> np.ndarray:
+        """F(v) = g(v) sgn(v) + sigma2 v + b [N] (the map itself)."""
+        v = np.asarray(v, dtype=float)
+        return self.g(v) * np.sign(v) + self.sigma2_of(v) * v + self.params.b
+
+    def derivatives(self, state, v, **inputs) -> np.ndarray:
+        """No state: an empty derivative vector."""
+        return np.zeros(0)
+
+    def force(self, state, v, **inputs) -> float:
+        """Friction force [N] at velocity ``v`` [m/s] (``state`` is empty)."""
+        return float(self.steady_state(float(v)))

@@ -1,0 +1,83 @@
+"""The contract every identification algorithm fulfils (scipy ``OdeSolver`` style).
+
+Two shapes, both minimising :class:`identification.problem.Problem` over the unit cube:
+
+* **step-wise** (metaheuristics, CMA-ES): ``start(problem, rng, u0) -> state`` then
+  ``step(problem, rng, state) -> state`` until ``finished(state)``. ``state`` is a dict of
+  numpy arrays and numbers (plus picklable objects), so the driver can checkpoint it every
+  few iterations and resume after an interrupt.
+* **one-shot** (wrapped scipy solvers): ``run(problem, rng, u0, progress) -> info dict``.
+
+The driver (:func:`identification.api.identify`) owns budget, progress, cost history and
+checkpoints; the problem owns the best point. ``info`` may carry ``jac`` (for confidence
+intervals) and ``message``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["Algorithm", "chaotic_sequence", "latin_hypercube"]
+
+
+class Algorithm:
+    """Base class. Subclasses set ``name``, ``defaults`` and implement one of the shapes."""
+    name: str = ""
+    #: "population" (needs only costs), "local" (least squares on residuals)
+    kind: str = "population"
+    steppable: bool = True
+    #: option name -> default; the constructor accepts exactly these
+    defaults: dict = {}
+    #: one-line source (paper / library)
+    source: str = ""
+
+    def __init__(self, **options):
+        unknown = set(options) - set(self.defaults)
+        if unknown:
+            raise TypeError(f"algorithm {self.name!r} has no option(s) {sorted(unknown)}; "
+                            f"options: {sorted(self.defaults)}")
+        self.options = {**self.defaults, **options}
+
+    def __getattr__(self, key):
+        opts = self.__dict__.get("options")
+        if opts is not None and key in opts:
+            return opts[key]
+        raise AttributeError(key)
+
+    # step-wise shape
+    def start(self, problem, rng, u0):  # pragma: no cover - interface
+        raise NotImplementedError
+
+    def step(self, problem, rng, state):  # pragma: no cover - interface
+        raise NotImplementedError
+
+    def finished(self, state) -> bool:
+        return state.get("iteration", 0) >= self.options.get("max_iter", np.inf)
+
+    # one-shot shape
+    def run(self, problem, rng, u0, progress=None) -> dict:  # pragma: no cover - interface
+        raise NotImplementedError
+
+
+def chaotic_sequence(z0, n: int, mu: float = 4.0) -> np.ndarray:
+    """Logistic map ``z_{k+1} = mu z_k (1 - z_k)`` (seed 001 Eqs. 11-12, EQUATIONS D.4).
+
+    ``z0`` may be a vector (one chaotic variable per dimension); returns ``n`` rows. Values
+    that land on the fixed points 0, 0.25, 0.5, 0.75, 1 are nudged so the orbit stays chaotic.
+    """
+    z = np.array(z0, float)
+    out = np.empty((n,) + z.shape)
+    for k in range(n):
+        z = mu * z * (1.0 - z)
+        stuck = (z < 1e-9) | (z > 1 - 1e-9) | np.isclose(z, 0.75) | np.isclose(z, 0.5) \
+            | np.isclose(z, 0.25)
+        z = np.where(stuck, z + 0.0137, z)
+        z = np.clip(z, 1e-6, 1 - 1e-6)
+        out[k] = z
+    return out
+
+
+def latin_hypercube(n: int, d: int, rng) -> np.ndarray:
+    """``n`` Latin-hypercube points in ``[0, 1]^d`` (scipy.stats.qmc, seeded from ``rng``)."""
+    from scipy.stats import qmc
+    seed = int(rng.integers(2**31 - 1))
+    return qmc.LatinHypercube(d=d, seed=seed).random(n)

@@ -1,0 +1,258 @@
+"""``identify(data, model, ...)``: one interface over every algorithm and objective."""
+from __future__ import annotations
+
+import hashlib
+import os
+import pickle
+import time
+
+import numpy as np
+
+from friction import make_model
+from friction.base import FrictionModel
+from friction.dataset import Dataset, load_dataset
+from friction.metrics import nrmse
+
+from .algorithms import DEFAULT_ALGORITHM, get_algorithm
+from .objectives import InProcessObjective, Objective, check_data
+from .executors import make_executor
+from .problem import BudgetExhausted, Problem
+from .result import IdentificationResult
+from .space import ParameterSpace
+
+__all__ = ["identify", "confidence_intervals", "CHECKPOINT_VERSION"]
+
+CHECKPOINT_VERSION = 1
+
+
+def _fingerprint(data: Dataset, names, algorithm: str, seed) -> str:
+    h = hashlib.sha1()
+    for arr in (data.t, data.v, data.F):
+        h.update(np.ascontiguousarray(arr).tobytes())
+    h.update(repr((list(names), algorithm, seed)).encode())
+    return h.hexdigest()
+
+
+def _save_checkpoint(path, payload) -> None:
+    tmp = f"{path}.tmp"
+    with open(tmp, "wb") as fh:
+        pickle.dump(payload, fh, protocol=pickle.HIGHEST_PROTOCOL)
+    os.replace(tmp, path)  # atomic: an interrupt never leaves a half-written checkpoint
+
+
+def _load_checkpoint(path, fingerprint):
+    with open(path, "rb") as fh:
+        try:
+            payload = pickle.load(fh)
+        except Exception as exc:
+            raise ValueError(f"checkpoint {path} is unreadable ({exc}); delete it to start "
+                             f"afresh") from None
+    if payload.get("version") != CHECKPOINT_VERSION:
+        raise ValueError(f"checkpoint {path} has version {payload.get('version')}, "
+                         f"expected {CHECKPOINT_VERSION}; delete it to start afresh")
+    if payload.get("fingerprint") != fingerprint:
+        raise ValueError(f"checkpoint {path} belongs to another run (different data, "
+                         f"parameters, algorithm or seed); delete it or choose another file")
+    return payload
+
+
+def confidence_intervals(space: ParameterSpace, u, jac, cost: float, n: int,
+                         level: float = 0.95) -> dict:
+    """Gauss-Newton confidence intervals from the residual Jacobian in cube coordinates.
+
+    ``cov_u = s^2 (J^T J)^-1`` with ``s^2 = sum(r^2) / (N - D)`` (residuals scaled by the same
+    factor as ``J``, so the scale cancels); the interval ``u +- z sqrt(cov_uu)`` is mapped to
+    physical values (asymmetric for log-scaled parameters). Assumes white residuals:
+    coloured noise makes the intervals optimistic.
+    """
+    from scipy.stats import norm
+    J = np.asarray(jac, float)
+    D = J.shape[1]
+    dof = max(n - D, 1)
+    s2 = cost ** 2 / dof  # cost**2 = sum r^2
+    cov = s2 * np.linalg.pinv(J.T @ J)
+    sd = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    z = float(norm.ppf(0.5 + level / 2))
+    lo = space.to_physical(u - z * sd)
+    hi = space.to_physical(u + z * sd)
+    return {n_: (float(min(a, b)), float(max(a, b))) for n_, a, b in zip(space.names, lo, hi)}
+
+
+def _as_progress(progress, label):
+    if progress is None or progress is False:
+        return None
+    if progress is True:
+        from frictionlab.progress import Progress
+        return Progress(label=label)
+    if callable(progress):
+        return progress
+    raise TypeError("progress must be None, True or a callable(n, info)")
+
+
+def _fitted_model(model: FrictionModel, params: dict) -> FrictionModel:
+    return model.with_values(**params)
+
+
+def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_evals=None,
+             validation=None, progress=None, checkpoint=None, *, objective=None,
+             executor=None, method: str = "exact", checkpoint_every: int = 5,
+             **options) -> IdentificationResult:
+    """Identify friction-law parameters from measured motion and friction force.
+
+    Parameters
+    ----------
+    data : Dataset or path
+        Measurement (``t, v, F`` and, as the law needs, ``a, load, x``); SI units.
+    model : str or FrictionModel
+        Registry name (defaults as initial values) or an instance whose current values are
+        the initial guess and the fixed values of parameters not in ``names``.
+    algorithm : str or Algorithm, optional
+        A name of :data:`identification.ALGORITHMS` (default :data:`DEFAULT_ALGORITHM`).
+    names : list of str, optional
+        Parameters to identify (default: every numeric parameter of the law that is set).
+    bounds : dict, optional
+        ``name -> (low, high)`` search box overriding :func:`default_bounds`.
+    seed : int
+        Random seed; the same seed gives the same result.
+    max_evals : int, optional
+        Budget of simulations (one per parameter set).
+    validation : Dataset or path, optional
+        Held-out data for ``validation_nrmse``.
+    progress : None, True or callable(n, info)
+        ``True`` prints progress lines on stderr.
+    checkpoint : path, optional
+        Step-wise algorithms save their state here every ``checkpoint_every`` iterations
+        (and on interrupt); an existing checkpoint of the same run is resumed.
+    objective : None, "cosim", Objective, or callable(model, data, names) -> Objective
+        Default: the in-process numba objective.
+    executor : None, "auto", "inline", "processes", dask Client, or object
+        Where population evaluations run (see :mod:`identification.executors`).
+    method : {"exact", "euler"}
+        Bristle update of the in-process objective.
+    **options
+        Algorithm options (e.g. ``pop_size``, ``max_iter``).
+
+    Returns
+    -------
+    IdentificationResult
+    """
+    t_start = time.perf_counter()
+    if isinstance(data, (str, os.PathLike)):
+        data = load_dataset(data)
+    if isinstance(validation, (str, os.PathLike)):
+        validation = load_dataset(validation)
+    check_data(data)
+    if validation is not None:
+        check_data(validation)
+    if isinstance(model, str):
+        model = make_model(model)
+    if not isinstance(model, FrictionModel):
+        raise TypeError(f"model must be a registry name or a FrictionModel, got "
+                        f"{type(model).__name__}")
+    alg = get_algorithm(algorithm if algorithm is not None else DEFAULT_ALGORITHM, **options)
+    space = ParameterSpace.build(model, names, bounds, data)
+
+    if objective is None:
+        obj = InProcessObjective(model, data, space.names, method=method)
+    elif objective == "cosim":
+        from .cosim import CoSimObjective
+        obj = CoSimObjective(model, data, space.names)
+    elif isinstance(objective, Objective):
+        obj = objective
+    elif callable(objective):
+        obj = objective(model, data, space.names)
+    else:
+        raise ValueError(f"objective = {objective!r}: use None, 'cosim', an Objective or a factory")
+    exe = make_executor(executor, obj)
+    problem = Problem(obj, space, exe, max_evals=max_evals)
+    rng = np.random.default_rng(seed)
+    x0 = np.array([getattr(model.params, n) for n in space.names], float)
+    u0 = np.clip(space.to_unit(x0), 0.0, 1.0)
+    prog = _as_progress(progress, f"identify {alg.name}")
+
+    history: list[float] = []
+    info: dict = {}
+    elapsed_before = 0.0
+    fingerprint = _fingerprint(data, space.names, alg.name, seed)
+    resumed = False
+    try:
+        if alg.steppable:
+            state = None
+            if checkpoint is not None and os.path.exists(checkpoint):
+                payload = _load_checkpoint(checkpoint, fingerprint)
+                state = payload["state"]
+                rng.bit_generator.state = payload["rng"]
+                problem.n_evals = payload["n_evals"]
+                problem.best_u, problem.best_cost = payload["best_u"], payload["best_cost"]
+                history = list(payload["history"])
+                elapsed_before = payload["elapsed"]
+                resumed = True
+
+            def save():
+                if checkpoint is not None and state is not None:
+                    _save_checkpoint(checkpoint, dict(
+                        version=CHECKPOINT_VERSION, fingerprint=fingerprint, state=state,
+                        rng=rng.bit_generator.state, n_evals=problem.n_evals,
+                        best_u=problem.best_u, best_cost=problem.best_cost, history=history,
+                        elapsed=elapsed_before + time.perf_counter() - t_start,
+                        algorithm=alg.name, names=space.names))
+
+            try:
+                if state is None:
+                    state = alg.start(problem, rng, u0)
+                    history.append(problem.best_cost)
+                while not alg.finished(state) and not problem.exhausted:
+                    state = alg.step(problem, rng, state)
+                    history.append(problem.best_cost)
+                    if prog is not None:
+                        prog(1, f"it {state.get('iteration')} evals {problem.n_evals} "
+                                f"cost={problem.best_cost:.4g}")
+                    if state.get("iteration", 0) % checkpoint_every == 0:
+                        save()
+            except BudgetExhausted:
+                pass
+            except KeyboardInterrupt:
+                save()
+                raise
+            save()
+            info = dict(state.get("info", {})) if state else {}
+        else:
+            info = alg.run(problem, rng, u0, progress=prog) or {}
+            history = list(info.pop("history", [problem.best_cost]))
+    finally:
+        if exe is not None and not (executor is not None and hasattr(executor, "costs")):
+            exe.close()
+
+    if problem.best_u is None:
+        raise RuntimeError(f"{alg.name}: no finite cost found (every simulated parameter set "
+                           f"failed); check the data and bounds")
+    u_best = problem.best_u
+    x_best = space.to_physical(u_best)
+    params = space.dict_of(x_best)
+    try:
+        fitted = _fitted_model(model, params)
+    except Exception as exc:  # an inadmissible box edge: report it clearly
+        raise ValueError(f"identified parameters are not admissible for {model.name}: {exc}") \
+            from None
+    F_fit = fitted.simulate(data.t, data.v, a=data.a, load=data.load, x=data.x, method=method) \
+        if objective is None else obj.predict(x_best[None, :])[0]
+    fit = nrmse(data.F, F_fit)
+    val = None
+    if validation is not None:
+        F_val = fitted.simulate(validation.t, validation.v, a=validation.a,
+                                load=validation.load, x=validation.x, method=method)
+        val = nrmse(validation.F, F_val)
+    ci = None
+    if info.get("jac") is not None and info.get("u") is not None:
+        u_ci = np.asarray(info["u"], float)
+        if np.allclose(u_ci, u_best):
+            ci = confidence_intervals(space, u_ci, info["jac"], problem.best_cost, len(data))
+    wall = elapsed_before + time.perf_counter() - t_start
+    return IdentificationResult(
+        params=params, model=fitted, fit_nrmse=float(fit),
+        validation_nrmse=None if val is None else float(val),
+        cost_history=[float(c) for c in history], n_evals=int(problem.n_evals),
+        wall_time=float(wall), ci=ci, algorithm=alg.name, seed=seed,
+        options=dict(alg.options), bounds=space.as_json(), resumed=resumed,
+        message=str(info.get("message", "")), data=data.name,
+        executor=getattr(exe, "name", type(exe).__name__))

@@ -1,0 +1,141 @@
+"""Where population evaluations run: in this process, in local worker processes, or on a
+``dask.distributed`` cluster.
+
+An executor has one method, ``costs(objective, X) -> cost[npop]``. The objective is shipped
+to the workers once (process initializer / ``client.scatter``), then only parameter rows
+travel. The numba in-process objective already runs its population on every core, so the
+automatic choice keeps it inline and sends slow single-threaded objectives (co-simulation)
+to a local process pool.
+"""
+from __future__ import annotations
+
+import os
+
+import numpy as np
+
+__all__ = ["InlineExecutor", "ProcessExecutor", "DaskExecutor", "make_executor"]
+
+_WORKER_OBJECTIVE = None
+
+
+def _init_worker(objective):
+    global _WORKER_OBJECTIVE
+    _WORKER_OBJECTIVE = objective
+
+
+def _worker_costs(X):
+    return _WORKER_OBJECTIVE.costs(X)
+
+
+def _dask_costs(objective, X):
+    return objective.costs(X)
+
+
+def _chunks(X, n):
+    n = max(1, min(n, len(X)))
+    return [c for c in np.array_split(X, n) if len(c)]
+
+
+class InlineExecutor:
+    """Evaluate in this process (the objective may itself be parallel)."""
+    name = "inline"
+
+    def costs(self, objective, X):
+        return objective.costs(X)
+
+    def close(self):
+        pass
+
+
+class ProcessExecutor:
+    """A pool of local worker processes; the population is split into one chunk per worker.
+
+    Parameters
+    ----------
+    workers : int, optional
+        Number of processes (default: CPU count).
+    """
+    name = "processes"
+
+    def __init__(self, workers: int | None = None):
+        self.workers = workers or os.cpu_count() or 1
+        self._pool = None
+        self._objective_id = None
+
+    def _pool_for(self, objective):
+        if self._pool is None or self._objective_id != id(objective):
+            self.close()
+            from concurrent.futures import ProcessPoolExecutor
+            import multiprocessing as mp
+            self._pool = ProcessPoolExecutor(self.workers, mp_context=mp.get_context("spawn"),
+                                             initializer=_init_worker, initargs=(objective,))
+            self._objective_id = id(objective)
+        return self._pool
+
+    def costs(self, objective, X):
+        pool = self._pool_for(objective)
+        parts = list(pool.map(_worker_costs, _chunks(np.asarray(X), self.workers)))
+        return np.concatenate(parts)
+
+    def close(self):
+        if self._pool is not None:
+            self._pool.shutdown(wait=True, cancel_futures=True)
+            self._pool = None
+
+    def __del__(self):  # pragma: no cover - best effort
+        try:
+            self.close()
+        except Exception:
+            pass
+
+
+class DaskExecutor:
+    """Evaluate on a ``dask.distributed`` cluster (for campaigns that outgrow one machine).
+
+    Parameters
+    ----------
+    client : dask.distributed.Client
+        A connected client; the objective is scattered (broadcast) once per objective.
+    chunks : int, optional
+        Pieces per population (default: number of worker threads).
+    """
+    name = "dask"
+
+    def __init__(self, client, chunks: int | None = None):
+        self.client = client
+        self.chunks = chunks
+        self._future = None
+        self._objective_id = None
+
+    def costs(self, objective, X):
+        if self._future is None or self._objective_id != id(objective):
+            self._future = self.client.scatter(objective, broadcast=True)
+            self._objective_id = id(objective)
+        n = self.chunks or max(1, sum(self.client.nthreads().values()))
+        futures = [self.client.submit(_dask_costs, self._future, c, pure=False)
+                   for c in _chunks(np.asarray(X), n)]
+        return np.concatenate(self.client.gather(futures))
+
+    def close(self):
+        self._future = None
+
+
+def make_executor(executor, objective):
+    """Resolve ``executor`` (None/"auto", "inline", "processes", a dask Client, or an object
+    with ``costs``) for ``objective``."""
+    if executor is None or executor == "auto":
+        return InlineExecutor() if objective.parallel_inside else ProcessExecutor()
+    if executor == "inline":
+        return InlineExecutor()
+    if executor == "processes":
+        return ProcessExecutor()
+    if hasattr(executor, "costs"):
+        return executor
+    try:
+        from dask.distributed import Client
+    except ImportError:  # pragma: no cover
+        Client = None
+    if Client is not None and isinstance(executor, Client):
+        return DaskExecutor(executor)
+    raise ValueError(f"executor = {executor!r}: use 'auto', 'inline', 'processes', a "
+                     f"dask.distributed.Client or an object with costs(objective, X)")

@@ -1,0 +1,104 @@
+"""Objectives: parameter vectors -> simulated friction -> cost against the measurement.
+
+The cost is the contract's NRMSE, ``RMS(F_model - F_measured) / std(F_measured)``, so every
+algorithm, every objective and the reported ``fit_nrmse`` speak the same number.
+
+* :class:`InProcessObjective` (fast path): one call of the law's numba population kernel
+  (``model.simulate_population``) simulates the whole population in parallel.
+* :class:`identification.cosim.CoSimObjective`: every evaluation runs FMUs through the
+  co-simulation master (what the product promises); same interface.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from friction.base import FrictionModel
+from friction.dataset import Dataset
+
+__all__ = ["Objective", "InProcessObjective", "check_data"]
+
+
+def check_data(data) -> Dataset:
+    """Validate an identification dataset; raise a clear error on bad data."""
+    if not isinstance(data, Dataset):
+        raise TypeError(f"data must be a friction.dataset.Dataset (load one with "
+                        f"friction.load_dataset), got {type(data).__name__}")
+    for key in ("t", "v", "F"):
+        arr = getattr(data, key)
+        bad = ~np.isfinite(arr)
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise ValueError(f"data.{key}[{i}] = {arr[i]!r} is not finite (first bad sample)")
+    if len(data) < 10:
+        raise ValueError(f"data has {len(data)} samples: too few to identify anything (need >= 10)")
+    if not np.std(data.F) > 0:
+        raise ValueError("data.F is constant: nothing to fit (the measured friction force "
+                         "has zero spread)")
+    if not np.any(data.v != 0):
+        raise ValueError("data.v is zero everywhere: the motion excites no friction")
+    return data
+
+
+class Objective:
+    """Interface: ``costs(X)`` for physical parameter rows ``X[npop, D]`` -> ``cost[npop]``,
+    ``predict(X)`` -> ``F[npop, N]``. ``parallel_inside`` says whether one call already uses
+    all cores (then an executor adds nothing)."""
+    parallel_inside = False
+    names: list
+    data: Dataset
+
+    def predict(self, X) -> np.ndarray:  # pragma: no cover - interface
+        raise NotImplementedError
+
+    def costs(self, X) -> np.ndarray:
+        F = self.predict(X)
+        return self.costs_from_forces(F)
+
+    def costs_from_forces(self, F) -> np.ndarray:
+        d = F - self.data.F[None, :]
+        c = np.sqrt(np.mean(d * d, axis=1)) / self._sd
+        return np.where(np.isfinite(c), c, np.inf)
+
+    def residuals(self, x) -> np.ndarray:
+        """Scaled residual vector of one parameter set: ``sum(r**2) = nrmse**2``."""
+        F = self.predict(np.atleast_2d(x))[0]
+        return (F - self.data.F) * self._rscale
+
+    @property
+    def _sd(self) -> float:
+        return float(np.std(self.data.F))
+
+    @property
+    def _rscale(self) -> float:
+        return 1.0 / (self._sd * np.sqrt(len(self.data)))
+
+
+class InProcessObjective(Objective):
+    """NRMSE of a friction law simulated along the measured motion (numba population kernel).
+
+    Parameters
+    ----------
+    model : FrictionModel
+        The law; its current values fix every parameter not in ``names``.
+    data : Dataset
+        Measured motion (t, v, and a/load/x if the law needs them) and friction force F.
+    names : list of str
+        Identified parameters, the columns of ``X``.
+    method : {"exact", "euler"}
+        Bristle update (``exact``: stable at any step).
+    """
+    parallel_inside = True
+
+    def __init__(self, model: FrictionModel, data: Dataset, names, method: str = "exact"):
+        self.model = model
+        self.data = check_data(data)
+        self.names = list(names)
+        self.method = method
+        self._inputs = dict(a=data.a, load=data.load, x=data.x)
+        if "load" in model.extra_inputs and data.load is None:
+            raise ValueError(f"model {model.name!r} needs a load column [N] in the data")
+
+    def predict(self, X) -> np.ndarray:
+        X = np.atleast_2d(np.asarray(X, float))
+        return self.model.simulate_population(self.data.t, self.data.v, self.names, X,
+                                              method=self.method, **self._inputs)

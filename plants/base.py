@@ -1,0 +1,604 @@
+"""The plant contract (``PartialPlant``): a hybrid system of continuous states, the friction
+law's own states and discrete controllers with zero-order hold.
+
+A machine subclasses :class:`Plant` and fills in
+
+=======================  ==================================================================
+class attribute          meaning
+=======================  ==================================================================
+``name``                 registry name ("valve", "damping_rig", "forging_press", "xml350", ...)
+``Params``               frozen parameter dataclass (``friction.base.param`` fields)
+``main_output``          output compared in proofs (e.g. ``"x"``)
+``data_rate``            output sample rate [Hz]
+``default_experiment``   :class:`Experiment` (start, stop, step = 1/data_rate)
+``state_names``          continuous plant states (without the friction law's states)
+``state_scale``          typical magnitude of each state (absolute tolerances)
+``output_names``         outputs; ``"F"`` (friction force [N]) is appended automatically
+                         when the law is internal
+``input_names``          external inputs besides ``F_friction`` (usually empty)
+``discrete_names``       values held by the discrete part between samples (ZOH)
+``control_rate``         sample rate of the discrete part [Hz] (``None``: none)
+``max_substep``          largest internal step of the fast integrator [s]
+``options``              plant-specific experiment options and their defaults
+``signals``              name -> (unit, description) of inputs/outputs (FMU metadata)
+=======================  ==================================================================
+
+and the methods (``s`` continuous states, ``d`` held discrete values, ``u`` dict of
+external inputs, ``F`` friction force [N] on the contact, opposing the sliding velocity):
+
+* ``initial_state() -> s0`` and ``initial_discrete() -> d0``;
+* ``derivatives(t, s, d, F, u) -> ds/dt``;
+* ``contact(t, s, d, u) -> (x, v, load)``: sliding displacement [m], velocity [m/s] and
+  normal load [N] (``load`` may be ``None``) seen by the friction law;
+* ``contact_acceleration(t, s, ds, d, u) -> a`` [m/s^2] (default: ``ds`` of state ``"v"``);
+* ``discrete_update(t, s, d, u) -> d_new`` at each sample instant ``start + k/control_rate``;
+* ``output(t, s, d, F, u) -> dict`` of the outputs.
+
+The base then provides :meth:`Plant.simulate` (``"fast"`` fixed-step, numpy/numba only;
+``"reference"``: the monolithic ODE with ``scipy.integrate.solve_ivp`` between sample
+instants) and :meth:`Plant.stepper` (the FMU-facing object, no scipy).
+
+Fast integrator
+---------------
+Heun's method (second order) on the plant states; the friction law's states advance with
+the law's own numba kernel (for LuGre the exact exponential bristle update, stable at any
+step and stiffness), called over the substep with the velocity at both ends. The friction
+force entering the derivatives is the kernel's output at the step ends, so the stiff
+bristle never sees an explicit update. Discrete updates run eagerly when time reaches a
+sample instant, so outputs at an instant show the controller output computed from it.
+"""
+from __future__ import annotations
+
+import copy
+import math
+from dataclasses import dataclass, fields
+from typing import Any, Callable, ClassVar
+
+import numpy as np
+
+from friction.base import FrictionModel, FrictionParams
+
+__all__ = ["Experiment", "Plant", "PlantStepper", "FrictionStep", "PlantParams",
+           "structured"]
+
+#: parameter dataclasses of plants use the same validated base as friction laws
+PlantParams = FrictionParams
+
+
+@dataclass(frozen=True)
+class Experiment:
+    """Default experiment of a plant (fmpy's ``DefaultExperiment``).
+
+    Attributes
+    ----------
+    start, stop : float
+        Start and stop time [s].
+    step : float
+        Output interval [s] (``1 / data_rate``).
+    """
+    start: float = 0.0
+    stop: float = 1.0
+    step: float = 1e-3
+
+    def __post_init__(self):
+        for name in ("start", "stop", "step"):
+            if not math.isfinite(getattr(self, name)):
+                raise ValueError(f"Experiment.{name} = {getattr(self, name)!r} is not finite")
+        if not self.step > 0:
+            raise ValueError(f"Experiment.step = {self.step!r} is out of bounds: must be > 0 [s]")
+        if not self.stop > self.start:
+            raise ValueError(f"Experiment.stop = {self.stop!r} must be > start = {self.start!r}")
+
+    def times(self) -> np.ndarray:
+        """Output instants start, start+step, ..., stop (stop included when on the grid)."""
+        n = int(math.floor((self.stop - self.start) / self.step + 1e-9))
+        return self.start + self.step * np.arange(n + 1)
+
+
+def structured(columns: dict[str, np.ndarray]) -> np.ndarray:
+    """Structured array (fmpy result layout) from ordered columns; ``time`` must come first."""
+    names = list(columns)
+    if names[0] != "time":
+        raise ValueError(f"first column must be 'time', got {names[0]!r}")
+    n = len(columns["time"])
+    out = np.empty(n, dtype=[(k, "f8") for k in names])
+    for k, col in columns.items():
+        out[k] = col
+    return out
+
+
+class FrictionStep:
+    """A friction law driven step by step through its numba kernel (no scipy).
+
+    Parameters
+    ----------
+    law : FrictionModel
+    method : {"exact", "euler"}
+        Bristle update of the law's kernel (``exact`` is stable at any step).
+
+    Notes
+    -----
+    The law's prescribed-motion kernel evaluated on a two-sample record ``[t, t+h]``
+    advances the state over the step (velocity at both ends) and returns the force at both
+    ends; a one-sample record gives the force at the current state.
+    """
+
+    def __init__(self, law: FrictionModel, method: str = "exact"):
+        from friction.base import METHODS
+        if method not in METHODS:
+            raise ValueError(f"method must be one of {sorted(METHODS)}, got {method!r}")
+        self.law = law
+        self.method = METHODS[method]
+        self.n_states = len(law.state_names)
+        self.needs = law.extra_inputs
+        self._t2 = np.zeros(2)
+        self._empty = np.zeros(0)
+
+    def _extra(self, key, values):
+        return np.array(values) if key in self.needs else self._empty
+
+    def force(self, state, x, v, a=0.0, load=None) -> float:
+        """Friction force [N] at the given state and kinematics."""
+        one = np.zeros(1)
+        F, _ = self.law._kernel(one, np.array([v]), self._extra("a", [a]),
+                                self._extra("load", [load if load is not None else 0.0]),
+                                self._extra("x", [x]), self.law.theta, self.method,
+                                np.asarray(state, dtype=np.float64))
+        return float(F[0])
+
+    def advance(self, state, h, k0, k1):
+        """Advance the state over a step of length ``h`` [s].
+
+        ``k0``, ``k1`` are ``(x, v, a, load)`` at the start and the end. Returns
+        ``(new_state, force_at_end)``.
+        """
+        t = self._t2
+        t[1] = h
+        F, S = self.law._kernel(
+            t, np.array([k0[1], k1[1]]), self._extra("a", [k0[2], k1[2]]),
+            self._extra("load", [k0[3] or 0.0, k1[3] or 0.0]), self._extra("x", [k0[0], k1[0]]),
+            self.law.theta, self.method, np.asarray(state, dtype=np.float64))
+        return S[1].copy(), float(F[1])
+
+
+class Plant:
+    """Abstract plant; see the module docstring for what a subclass fills in.
+
+    Parameters
+    ----------
+    friction : FrictionModel or str, optional
+        Friction law (instance, or registry name with default parameters). ``None``:
+        the plant's own seed law (:meth:`default_friction`).
+    external_friction : bool
+        The friction force is the input ``F_friction`` [N] (co-simulation with a separate
+        friction FMU); the plant then has no friction states and outputs the kinematics.
+    params : Params, optional
+        Plant parameters (defaults: the seed's numbers).
+    **param_overrides
+        Individual parameter values, validated against their bounds.
+    """
+
+    name: ClassVar[str] = ""
+    Params: ClassVar[type] = PlantParams
+    main_output: ClassVar[str] = "x"
+    data_rate: ClassVar[float] = 1000.0
+    default_experiment: ClassVar[Experiment] = Experiment()
+    state_names: ClassVar[tuple[str, ...]] = ()
+    state_scale: ClassVar[tuple[float, ...] | None] = None
+    output_names: ClassVar[tuple[str, ...]] = ()
+    input_names: ClassVar[tuple[str, ...]] = ()
+    discrete_names: ClassVar[tuple[str, ...]] = ()
+    control_rate: ClassVar[float | None] = None
+    max_substep: ClassVar[float] = 1e-4
+    options: ClassVar[dict[str, Any]] = {}
+    signals: ClassVar[dict[str, tuple[str, str]]] = {}
+
+    def __init__(self, friction: FrictionModel | str | None = None, *,
+                 external_friction: bool = False, params=None, **param_overrides):
+        if params is None:
+            params = self.Params(**param_overrides)
+        elif param_overrides:
+            params = params.replace(**param_overrides)
+        if not isinstance(params, self.Params):
+            raise TypeError(f"{self.name}: params must be {self.Params.__name__}, "
+                            f"got {type(params).__name__}")
+        self.params = params
+        self.external_friction = bool(external_friction)
+        if self.external_friction:
+            if friction is not None:
+                raise ValueError("external_friction=True takes the friction force as the input "
+                                 "F_friction: do not pass a friction law as well")
+            self.friction = None
+        elif friction is None:
+            self.friction = self.default_friction()
+        elif isinstance(friction, str):
+            from friction import make_model
+            self.friction = make_model(friction)
+        elif isinstance(friction, FrictionModel):
+            self.friction = friction
+        else:
+            raise TypeError(f"friction must be a FrictionModel, a registry name or None, "
+                            f"got {type(friction).__name__}")
+        self.opts = dict(self.options)
+
+    # -- to be filled in by each plant ------------------------------------------------------
+    @classmethod
+    def default_friction(cls) -> FrictionModel:  # pragma: no cover - abstract
+        """The plant's own seed law with seed-like parameters."""
+        raise NotImplementedError
+
+    def initial_state(self) -> np.ndarray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def initial_discrete(self) -> np.ndarray:
+        return np.zeros(len(self.discrete_names))
+
+    def derivatives(self, t, s, d, F, u) -> np.ndarray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def contact(self, t, s, d, u) -> tuple[float, float, float | None]:  # pragma: no cover
+        raise NotImplementedError
+
+    def contact_acceleration(self, t, s, ds, d, u) -> float:
+        return float(ds[self.state_names.index("v")])
+
+    def discrete_update(self, t, s, d, u) -> np.ndarray:
+        return d
+
+    def output(self, t, s, d, F, u) -> dict[str, float]:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    # -- written once -------------------------------------------------------------------------
+    def __repr__(self) -> str:
+        law = "external" if self.external_friction else type(self.friction).__name__
+        return f"{type(self).__name__}(friction={law}, params={self.params!r})"
+
+    @property
+    def all_input_names(self) -> tuple[str, ...]:
+        """External inputs, with ``F_friction`` [N] first in external-friction mode."""
+        return (("F_friction",) if self.external_friction else ()) + tuple(self.input_names)
+
+    @property
+    def all_output_names(self) -> tuple[str, ...]:
+        """Outputs, with the friction force ``F`` [N] last when the law is internal."""
+        return tuple(self.output_names) + (() if self.external_friction else ("F",))
+
+    @property
+    def parameter_names(self) -> tuple[str, ...]:
+        return tuple(self.Params.numeric_names())
+
+    def with_options(self, **options) -> "Plant":
+        """A copy of this plant with experiment options changed (unknown names: TypeError)."""
+        unknown = set(options) - set(self.options)
+        if unknown:
+            raise TypeError(f"{self.name}: unknown experiment option(s) {sorted(unknown)}; "
+                            f"choose from {sorted(self.options)}")
+        new = copy.copy(self)
+        new.opts = {**self.opts, **options}
+        return new
+
+    def with_params(self, **values) -> "Plant":
+        """A copy with some plant parameters changed (validated)."""
+        new = copy.copy(self)
+        new.params = self.params.replace(**values)
+        return new
+
+    def _experiment(self, stop_time, experiment_options) -> tuple[Experiment, dict]:
+        exp_fields = {f.name for f in fields(Experiment)}
+        exp_kw = {k: experiment_options.pop(k) for k in list(experiment_options)
+                  if k in exp_fields}
+        if stop_time is not None:
+            exp_kw["stop"] = stop_time
+        d = self.default_experiment
+        exp = Experiment(**{**{f.name: getattr(d, f.name) for f in fields(Experiment)},
+                            **exp_kw})
+        return exp, experiment_options
+
+    def stepper(self, *, substep: float | None = None, friction_method: str = "exact",
+                **options) -> "PlantStepper":
+        """The FMU-facing step-by-step object (numpy/numba only).
+
+        Parameters
+        ----------
+        substep : float, optional
+            Largest internal step [s] (default ``max_substep``).
+        friction_method : {"exact", "euler"}
+            Bristle update of the law.
+        **options
+            Experiment options (see ``options``).
+        """
+        plant = self.with_options(**options) if options else self
+        return PlantStepper(plant, substep=substep, friction_method=friction_method)
+
+    def simulate(self, stop_time: float | None = None, *, method: str = "fast",
+                 rtol: float = 1e-9, progress: Callable | None = None,
+                 inputs: Callable[[float], dict] | None = None, substep: float | None = None,
+                 **experiment_options) -> np.ndarray:
+        """Simulate the default experiment (or a changed one).
+
+        Parameters
+        ----------
+        stop_time : float, optional
+            Stop time [s] (default: ``default_experiment.stop``).
+        method : {"fast", "reference"}
+            ``fast``: fixed-step stepper (Heun + the law's stable update).
+            ``reference``: ``solve_ivp`` (Radau, tolerance ``rtol``) of plant + friction
+            states between sample instants, discrete values held.
+        rtol : float
+            Relative tolerance of the reference integrator.
+        progress : callable, optional
+            Called as ``progress(n, info)`` while output samples are produced.
+        inputs : callable, optional
+            ``inputs(t) -> dict`` of external input values (e.g. ``F_friction``), held over
+            each output interval.
+        substep : float, optional
+            Internal step of the fast method [s] (default ``max_substep``).
+        **experiment_options
+            ``start``/``step`` of :class:`Experiment`, and the plant's ``options``.
+
+        Returns
+        -------
+        ndarray
+            Structured array, ``time`` first, then ``all_output_names``.
+        """
+        exp, rest = self._experiment(stop_time, dict(experiment_options))
+        plant = self.with_options(**rest) if rest else self
+        if method == "fast":
+            return plant._simulate_fast(exp, progress, inputs, substep)
+        if method == "reference":
+            return plant._simulate_reference(exp, rtol, progress, inputs)
+        raise ValueError(f"method must be 'fast' or 'reference', got {method!r}")
+
+    # -- helpers shared by both integrators ------------------------------------------------------
+    def _u(self, u: dict | None) -> dict:
+        base = {n: 0.0 for n in self.all_input_names}
+        if u:
+            unknown = set(u) - set(base)
+            if unknown:
+                raise KeyError(f"{self.name}: unknown input(s) {sorted(unknown)}; inputs are "
+                               f"{list(base)}")
+            base.update({k: float(v) for k, v in u.items()})
+        return base
+
+    def _sample_period(self) -> float | None:
+        return None if not self.control_rate else 1.0 / self.control_rate
+
+    def _simulate_fast(self, exp: Experiment, progress, inputs, substep) -> np.ndarray:
+        st = PlantStepper(self, substep=substep, start=exp.start)
+        times = exp.times()
+        cols = {n: np.empty(times.size) for n in self.all_output_names}
+        for i, tk in enumerate(times):
+            if i > 0:
+                st.do_step(times[i - 1], tk - times[i - 1])
+            if inputs is not None:
+                st.set_inputs(inputs(tk))
+            out = st.outputs()
+            for n in cols:
+                cols[n][i] = out[n]
+            if progress is not None and i % 100 == 0:
+                progress(min(100, times.size - i), f"t={tk:.4g} s")
+        return structured({"time": times, **cols})
+
+    def _simulate_reference(self, exp: Experiment, rtol, progress, inputs) -> np.ndarray:
+        from scipy.integrate import solve_ivp  # reference only: FMUs must not need scipy
+
+        if self.external_friction:
+            raise ValueError("the reference integrator needs an internal friction law "
+                             "(external_friction=False)")
+        law = self.friction
+        ns = len(self.state_names)
+        nz = len(law.state_names)
+        times = exp.times()
+        Ts = self._sample_period()
+        # breakpoints: sample instants of the discrete part and the output instants
+        if Ts is not None:
+            nsamp = int(math.floor((exp.stop - exp.start) / Ts + 1e-9))
+            samples = exp.start + Ts * np.arange(nsamp + 1)
+        else:
+            samples = np.array([exp.start])
+        bps = np.union1d(samples, times)
+        bps = bps[np.concatenate(([True], np.diff(bps) > 1e-12 * max(1.0, abs(exp.stop))))]
+        is_sample = np.zeros(bps.size, bool)
+        is_sample[np.searchsorted(bps, samples - 1e-12 * max(1.0, abs(exp.stop)))] = True
+        scale = np.ones(ns) if self.state_scale is None else np.asarray(self.state_scale, float)
+        zscale = np.full(nz, getattr(law, "z_max", lambda: 1e-5)())
+        atol = rtol * np.concatenate((scale, zscale)) * 10.0
+
+        def friction_force(t, y, d, u, a_guess=0.0):
+            x, v, load = self.contact(t, y[:ns], d, u)
+            kw = {}
+            if "x" in law.extra_inputs:
+                kw["x"] = x
+            if "load" in law.extra_inputs:
+                kw["load"] = load
+            if "a" in law.extra_inputs:
+                kw["a"] = a_guess
+            return law.force(y[ns:], v, **kw), v, kw
+
+        def rhs_parts(t, y, d, u):
+            F, v, kw = friction_force(t, y, d, u)
+            ds = self.derivatives(t, y[:ns], d, F, u)
+            if "a" in law.extra_inputs:  # acceleration-dependent law: fixed point on a
+                for _ in range(4):
+                    a = self.contact_acceleration(t, y[:ns], ds, d, u)
+                    F, v, kw = friction_force(t, y, d, u, a)
+                    ds = self.derivatives(t, y[:ns], d, F, u)
+            dz = law.derivatives(y[ns:], v, **kw)
+            return F, ds, dz
+
+        def rhs(t, y, d, u):
+            _, ds, dz = rhs_parts(t, y, d, u)
+            return np.concatenate((ds, dz))
+
+        y = np.concatenate((np.asarray(self.initial_state(), float), law.initial_state()))
+        d = np.asarray(self.initial_discrete(), float)
+        u = self._u(inputs(exp.start) if inputs else None)
+        cols = {n: np.empty(times.size) for n in self.all_output_names}
+        out_idx = {float(tk): i for i, tk in enumerate(times)}
+        ti = 0
+
+        def record(t, y, d, u):
+            nonlocal ti
+            F, _, _ = rhs_parts(t, y, d, u)
+            out = self.output(t, y[:ns], d, F, u)
+            out["F"] = F
+            for n in cols:
+                cols[n][ti] = out[n]
+            ti += 1
+            if progress is not None and ti % 100 == 0:
+                progress(100, f"t={t:.4g} s")
+
+        for j, tb in enumerate(bps):
+            if j > 0:
+                ta = bps[j - 1]
+                sol = solve_ivp(rhs, (ta, tb), y, method="Radau", rtol=rtol, atol=atol,
+                                args=(d, u), first_step=min(tb - ta, 1e-7))
+                if not sol.success:
+                    raise RuntimeError(f"{self.name}: reference integrator failed at "
+                                       f"t={ta:.6g} s: {sol.message}")
+                y = sol.y[:, -1]
+            if is_sample[j]:
+                d = np.asarray(self.discrete_update(tb, y[:ns], d, u), float)
+            if ti < times.size and abs(tb - times[ti]) <= 1e-12 * max(1.0, abs(exp.stop)):
+                if inputs is not None:
+                    u = self._u(inputs(tb))
+                record(tb, y, d, u)
+        del out_idx
+        return structured({"time": times, **cols})
+
+
+class PlantStepper:
+    """Step-by-step simulation of a plant (what an FMU's ``doStep`` calls).
+
+    Attributes
+    ----------
+    input_names, output_names, parameter_names : tuple of str
+    time : float
+        Current time [s].
+
+    Notes
+    -----
+    ``do_step(t, h)`` integrates ``[t, t+h]`` with internal substeps no longer than
+    ``substep``; discrete updates run at every sample instant ``start + k / control_rate``
+    reached on the way (including ``t+h`` itself). External inputs are held over the step.
+    """
+
+    def __init__(self, plant: Plant, *, substep: float | None = None, start: float = 0.0,
+                 friction_method: str = "exact"):
+        self.plant = plant
+        self.input_names = plant.all_input_names
+        self.output_names = plant.all_output_names
+        self.parameter_names = plant.parameter_names
+        self.substep = float(substep or plant.max_substep)
+        if not self.substep > 0:
+            raise ValueError(f"substep = {substep!r} is out of bounds: must be > 0 [s]")
+        self.start = float(start)
+        self.fric = None if plant.external_friction else FrictionStep(plant.friction,
+                                                                      friction_method)
+        self.reset()
+
+    # -- public API -------------------------------------------------------------------------
+    def reset(self, start: float | None = None) -> None:
+        """Back to the initial state at time ``start`` (default: the stepper's start)."""
+        if start is not None:
+            self.start = float(start)
+        p = self.plant
+        self.time = self.start
+        self.s = np.asarray(p.initial_state(), dtype=float).copy()
+        self.d = np.asarray(p.initial_discrete(), dtype=float).copy()
+        self.u = p._u(None)
+        self.z = None if self.fric is None else p.friction.initial_state().astype(float)
+        self._a = 0.0
+        Ts = p._sample_period()
+        self._Ts = Ts
+        self._k = 0  # index of the next sample instant
+        self._F = self._friction_now()
+        self._sample_due(self.time)
+
+    def set_inputs(self, values: dict) -> None:
+        """Set external inputs (held until changed); unknown names raise ``KeyError``."""
+        for k, val in values.items():
+            if k not in self.u:
+                raise KeyError(f"{self.plant.name}: unknown input {k!r}; inputs are "
+                               f"{list(self.u)}")
+            self.u[k] = float(val)
+        if self.fric is None:
+            self._F = self.u["F_friction"]
+
+    def set_parameters(self, **values) -> None:
+        """Change plant parameters (validated); call before ``reset`` for initial values."""
+        self.plant = self.plant.with_params(**values)
+
+    def outputs(self) -> dict[str, float]:
+        """Current outputs (names ``output_names``)."""
+        p = self.plant
+        out = dict(p.output(self.time, self.s, self.d, self._F, self.u))
+        if self.fric is not None:
+            out["F"] = self._F
+        return out
+
+    def do_step(self, t: float, h: float) -> bool:
+        """Integrate from ``t`` to ``t + h`` [s]; returns True."""
+        if abs(t - self.time) > 1e-9 * max(1.0, abs(t)):
+            raise ValueError(f"do_step(t={t!r}) but the stepper is at time {self.time!r}")
+        if not h > 0:
+            raise ValueError(f"h = {h!r} is out of bounds: must be > 0 [s]")
+        t_end = t + h
+        tol = 1e-12 * max(1.0, abs(t_end))
+        tc = self.time
+        while tc < t_end - tol:
+            t_next = t_end
+            if self._Ts is not None:
+                ts = self.start + self._k * self._Ts
+                if ts < t_end - tol:
+                    t_next = ts
+            self._integrate(tc, t_next)
+            tc = t_next
+            self.time = tc
+            self._sample_due(tc)
+        self.time = t_end
+        return True
+
+    # -- internals ---------------------------------------------------------------------------
+    def _sample_due(self, t: float) -> None:
+        if self._Ts is None:
+            return
+        tol = 1e-9 * self._Ts
+        while self.start + self._k * self._Ts <= t + tol:
+            self.d = np.asarray(self.plant.discrete_update(t, self.s, self.d, self.u), float)
+            self._k += 1
+
+    def _kin(self, t, s, ds):
+        x, v, load = self.plant.contact(t, s, self.d, self.u)
+        a = self.plant.contact_acceleration(t, s, ds, self.d, self.u) if ds is not None \
+            else self._a
+        return (x, v, a, load)
+
+    def _friction_now(self) -> float:
+        if self.fric is None:
+            return self.u["F_friction"]
+        x, v, load = self.plant.contact(self.time, self.s, self.d, self.u)
+        return self.fric.force(self.z, x, v, self._a, load)
+
+    def _integrate(self, ta: float, tb: float) -> None:
+        n = max(1, int(math.ceil((tb - ta) / self.substep - 1e-9)))
+        h = (tb - ta) / n
+        p = self.plant
+        d, u = self.d, self.u
+        s, z, F = self.s, self.z, self._F
+        for i in range(n):
+            t0 = ta + i * h
+            k1 = p.derivatives(t0, s, d, F, u)
+            s_pred = s + h * k1
+            if self.fric is None:
+                k2 = p.derivatives(t0 + h, s_pred, d, F, u)
+                s = s + 0.5 * h * (k1 + k2)
+                continue
+            kin0 = self._kin(t0, s, k1)
+            _, F_pred = self.fric.advance(z, h, kin0, self._kin(t0 + h, s_pred, k1))
+            k2 = p.derivatives(t0 + h, s_pred, d, F_pred, u)
+            s = s + 0.5 * h * (k1 + k2)
+            ds_mean = 0.5 * (k1 + k2)
+            z, F = self.fric.advance(z, h, kin0, self._kin(t0 + h, s, ds_mean))
+            self._a = p.contact_acceleration(t0 + h, s, ds_mean, d, u)
+        self.s, self.z, self._F = s, z, F

@@ -1,0 +1,503 @@
+"""FMU-side runtime: the ``Fmi2Slave`` classes that every frictionlab FMU runs.
+
+This module travels inside each FMU (vendored under a unique name such as
+``_fl_lugre_runtime``); it needs only ``pythonfmu`` (bundled by the builder), numpy, and the
+vendored ``friction`` / ``plants`` copies whose module names the generated slave script
+passes in. It must not import frictionlab, scipy or matplotlib.
+
+Three slave kinds share one base:
+
+* :class:`LawSlave` - a friction law from ``friction.MODELS``. Inputs ``v`` [m/s] (and
+  ``a``, ``load``, ``x`` when the law needs them), outputs ``F`` [N] (direct feedthrough
+  of the inputs) and the law's states. Parameters come from the law's ``Params`` metadata.
+* :class:`MassSlave` - a rigid mass driven by a built-in force signal plus the inputs
+  ``F_ext`` and ``F_friction`` (the mass+friction proof loop).
+* :class:`StepperSlave` - a plant or controller of the ``plants`` package through its
+  ``stepper()`` (numpy/numba only).
+
+The variable list of a slave (:func:`law_variables`, :func:`mass_variables`, ...) is the single
+source for both the runtime and the ``modelDescription.xml`` written by ``fmus.build``: the
+value reference of a variable is its index in that list.
+
+Bad input: a NaN/inf on any input or parameter, or a parameter outside its bounds, is logged
+at error level naming the variable and rejected (pythonfmu turns the raised exception into a
+non-OK FMI status; see ``fmus.build`` for the mapping), never stored silently. A step that
+produces a non-finite state is refused (``do_step`` returns False -> ``fmi2Discard``) with a
+log message naming the state.
+"""
+from __future__ import annotations
+
+import dataclasses
+import importlib
+import math
+
+import numpy as np
+from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability
+from pythonfmu.enums import Fmi2Status
+from pythonfmu.variables import Boolean, Integer, Real, String
+
+__all__ = ["Var", "law_variables", "mass_variables", "stepper_variables", "SlaveBase",
+           "LawSlave", "MassSlave", "StepperSlave", "INPUT_INFO"]
+
+#: unit and description of the kinematic inputs a law may need
+INPUT_INFO = {
+    "v": ("m/s", "sliding velocity"),
+    "a": ("m/s2", "acceleration"),
+    "load": ("N", "normal / deformation load"),
+    "x": ("m", "displacement"),
+}
+
+
+@dataclasses.dataclass
+class Var:
+    """One FMU variable (what the model description lists and the runtime stores)."""
+    name: str
+    causality: str                  # "parameter" | "input" | "output"
+    type: str = "Real"              # "Real" | "Integer" | "Boolean" | "String"
+    start: object = 0.0
+    unit: str = ""
+    description: str = ""
+    lower: float = -math.inf
+    upper: float = math.inf
+    lower_open: bool = False
+    upper_open: bool = False
+    #: optional parameter (Python ``None``): this start value stands for "unset"
+    unset: float | None = None
+    #: outputs: names of the inputs they depend on directly (feedthrough)
+    depends: tuple = ()
+
+    def bound_text(self) -> str:
+        parts = []
+        if self.lower > -math.inf:
+            parts.append(f"{'>' if self.lower_open else '>='} {self.lower:g}")
+        if self.upper < math.inf:
+            parts.append(f"{'<' if self.upper_open else '<='} {self.upper:g}")
+        return " and ".join(parts) or "finite"
+
+    def admissible(self, value: float) -> bool:
+        if self.unset is not None and value == self.unset:
+            return True
+        if not math.isfinite(value):
+            return False
+        if value < self.lower or (self.lower_open and value == self.lower):
+            return False
+        if value > self.upper or (self.upper_open and value == self.upper):
+            return False
+        return True
+
+
+# -- variable lists ------------------------------------------------------------------------
+
+def _param_vars(params_cls) -> list[Var]:
+    """FMU parameters from a frozen parameter dataclass (``friction.base.param`` metadata)."""
+    out = []
+    for f in dataclasses.fields(params_cls):
+        if f.name.startswith("_"):
+            continue
+        md = f.metadata
+        default = f.default
+        if default is dataclasses.MISSING:
+            if f.default_factory is not dataclasses.MISSING:  # type: ignore[misc]
+                default = f.default_factory()  # type: ignore[misc]
+            else:
+                continue
+        desc = md.get("description", f"{f.name} (see {params_cls.__name__})")
+        unit = md.get("unit", "")
+        if isinstance(default, bool):
+            out.append(Var(f.name, "parameter", "Boolean", bool(default), "", desc))
+            continue
+        if isinstance(default, str):
+            out.append(Var(f.name, "parameter", "String", default, "", desc))
+            continue
+        if isinstance(default, int) and not md:
+            out.append(Var(f.name, "parameter", "Integer", int(default), "", desc))
+            continue
+        if default is not None and not isinstance(default, (int, float)):
+            continue  # arrays, nested objects: not an FMU scalar
+        lower, upper = md.get("lower", -math.inf), md.get("upper", math.inf)
+        v = Var(f.name, "parameter", "Real", None, unit, desc, lower, upper,
+                md.get("lower_open", False), md.get("upper_open", False))
+        if default is None:
+            # optional value (e.g. a direction-dependent twin): a start value outside the
+            # admissible range stands for Python None
+            v.unset = (lower - 1.0) if math.isfinite(lower) else (upper + 1.0 if math.isfinite(upper) else 0.0)
+            v.start = v.unset
+            v.description = f"{desc} [FMU: {v.unset:g} = None]"
+        else:
+            v.start = float(default)
+        if unit and "[" not in v.description:
+            v.description = f"{v.description} [{unit}]"
+        v.description += f" ({v.bound_text()})" if v.bound_text() != "finite" else ""
+        out.append(v)
+    return out
+
+
+def law_variables(model_cls) -> list[Var]:
+    """Parameters, inputs and outputs of the FMU of a friction law class."""
+    vs = _param_vars(model_cls.Params)
+    inputs = ["v"] + [n for n in ("a", "load", "x") if n in model_cls.extra_inputs]
+    for n in inputs:
+        unit, desc = INPUT_INFO[n]
+        vs.append(Var(n, "input", "Real", 0.0, unit, f"{desc} [{unit}]"))
+    vs.append(Var("F", "output", "Real", None, "N", "friction force [N]", depends=tuple(inputs)))
+    units = getattr(model_cls, "state_units", None)
+    for j, s in enumerate(model_cls.state_names):
+        unit = units[j] if units else ("m" if j == 0 else "N" if s.startswith("F") else "")
+        desc = "bristle deflection" if j == 0 else f"internal state {s}"
+        vs.append(Var(s, "output", "Real", None, unit,
+                      f"{desc}" + (f" [{unit}]" if unit else ""), depends=()))
+    return vs
+
+
+def mass_variables() -> list[Var]:
+    """A rigid mass on a line, driven by u(t) = u0 + u_amp sin(2 pi u_freq t) + F_ext - F_friction."""
+    return [
+        Var("m", "parameter", "Real", 1.0, "kg", "moving mass [kg] (> 0)", 0.0, math.inf, True),
+        Var("x0", "parameter", "Real", 0.0, "m", "initial position [m]"),
+        Var("v0", "parameter", "Real", 0.0, "m/s", "initial velocity [m/s]"),
+        Var("u0", "parameter", "Real", 0.0, "N", "constant drive force [N]"),
+        Var("u_amp", "parameter", "Real", 2.0, "N", "amplitude of the sinusoidal drive force [N]"),
+        Var("u_freq", "parameter", "Real", 1.0, "Hz", "frequency of the drive force [Hz] (>= 0)",
+            0.0),
+        Var("F_friction", "input", "Real", 0.0, "N", "friction force opposing the motion [N]"),
+        Var("F_ext", "input", "Real", 0.0, "N", "additional external force along +x [N]"),
+        Var("x", "output", "Real", None, "m", "position [m]"),
+        Var("v", "output", "Real", None, "m/s", "velocity [m/s]"),
+        Var("a", "output", "Real", None, "m/s2", "acceleration [m/s2]",
+            depends=("F_friction", "F_ext")),
+    ]
+
+
+def stepper_variables(stepper, params_cls=None, units=None, depends=None) -> list[Var]:
+    """Variables of a ``plants`` stepper: its parameters (from ``params_cls`` metadata when
+    given), inputs and outputs. ``units`` maps signal names to (unit, description);
+    ``depends`` maps outputs to the inputs they depend on directly (default: none)."""
+    units = units or {}
+    depends = depends or {}
+    vs = _param_vars(params_cls) if params_cls is not None else []
+    pnames = set(getattr(stepper, "parameter_names", ()) or ())
+    if pnames and vs:
+        vs = [v for v in vs if v.name in pnames]
+    for n in stepper.input_names:
+        unit, desc = units.get(n, ("", n))
+        vs.append(Var(n, "input", "Real", 0.0, unit, f"{desc}" + (f" [{unit}]" if unit else "")))
+    for n in stepper.output_names:
+        unit, desc = units.get(n, ("", n))
+        vs.append(Var(n, "output", "Real", None, unit, f"{desc}" + (f" [{unit}]" if unit else ""),
+                      depends=tuple(depends.get(n, ()))))
+    return vs
+
+
+# -- slaves ---------------------------------------------------------------------------------
+
+_CAUS = {"parameter": Fmi2Causality.parameter, "input": Fmi2Causality.input,
+         "output": Fmi2Causality.output}
+_TYPES = {"Real": Real, "Integer": Integer, "Boolean": Boolean, "String": String}
+
+
+class SlaveBase(Fmi2Slave):
+    """Value store, bound checks and error reporting shared by all frictionlab slaves.
+
+    Subclasses set ``model_identifier`` and implement ``make_variables``, ``rebuild``
+    (parameters changed), ``compute_outputs`` (fill output values from state + inputs) and
+    ``advance(t, h)``.
+    """
+    model_identifier = "frictionlab"
+    fmu_description = ""
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self.modelName = self.model_identifier
+        self.description = self.fmu_description
+        self.variables = self.make_variables()
+        self.values = [v.start for v in self.variables]
+        self.index = {v.name: i for i, v in enumerate(self.variables)}
+        self.roles = [v.causality for v in self.variables]
+        for i, v in enumerate(self.variables):
+            var_cls = _TYPES[v.type]
+            variability = (Fmi2Variability.tunable if v.causality == "parameter"
+                           else Fmi2Variability.continuous if v.type == "Real"
+                           else Fmi2Variability.discrete)
+            self.register_variable(var_cls(
+                v.name, causality=_CAUS[v.causality], variability=variability,
+                description=v.description,
+                getter=(lambda i=i: self.values[i]),
+                setter=(lambda value, i=i: self.values.__setitem__(i, value))),
+                nested=False)
+        self.params_dirty = True
+        self.outputs_dirty = True
+        self.time = 0.0
+
+    # subclasses ---------------------------------------------------------------------------
+    def make_variables(self) -> list[Var]:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def rebuild(self, initial: bool) -> None:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def compute_outputs(self) -> None:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def advance(self, t: float, h: float) -> None:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    # helpers ------------------------------------------------------------------------------
+    def fail(self, message: str):
+        msg = f"{self.instance_name}: {message}"
+        self.log(msg, Fmi2Status.error)
+        raise ValueError(msg)
+
+    def param_values(self) -> dict:
+        out = {}
+        for v, value in zip(self.variables, self.values):
+            if v.causality != "parameter":
+                continue
+            out[v.name] = None if (v.unset is not None and value == v.unset) else value
+        return out
+
+    def value(self, name: str):
+        return self.values[self.index[name]]
+
+    def _ensure_model(self, initial: bool = False) -> None:
+        if self.params_dirty:
+            try:
+                self.rebuild(initial)
+            except ValueError as exc:  # ParameterError names the parameter and bound
+                self.fail(f"invalid parameters: {exc}")
+            self.params_dirty = False
+            self.outputs_dirty = True
+
+    # FMI ----------------------------------------------------------------------------------
+    def setup_experiment(self, start_time, stop_time=None, tolerance=None):
+        self.time = float(start_time)
+
+    def exit_initialization_mode(self):
+        self._ensure_model(initial=True)
+
+    def do_step(self, current_time, step_size):
+        self._ensure_model()
+        try:
+            self.advance(current_time, step_size)
+        except ValueError as exc:
+            self.log(f"{self.instance_name}: step [{current_time:g}, +{step_size:g}] failed: "
+                     f"{exc}", Fmi2Status.error)
+            return False
+        self.time = current_time + step_size
+        self.outputs_dirty = True
+        try:
+            self.compute_outputs()
+        except ValueError as exc:
+            self.log(f"{self.instance_name}: t = {self.time:g}: {exc}", Fmi2Status.error)
+            return False
+        self.outputs_dirty = False
+        for i, role in enumerate(self.roles):
+            if role == "output" and not math.isfinite(self.values[i]):
+                self.log(f"{self.instance_name}: output {self.variables[i].name} = "
+                         f"{self.values[i]!r} is not finite after the step to t = "
+                         f"{self.time:g}", Fmi2Status.error)
+                return False
+        return True
+
+    def _check_set(self, vr, value):
+        v = self.variables[vr]
+        role = self.roles[vr]
+        if role == "output":
+            self.fail(f"{v.name} is an output and cannot be set")
+        if v.type == "Real":
+            value = float(value)
+            if not math.isfinite(value):
+                self.fail(f"{role} {v.name} = {value!r} is not finite ({v.description})")
+            if role == "parameter" and not v.admissible(value):
+                self.fail(f"parameter {v.name} = {value!r} is out of bounds: must be "
+                          f"{v.bound_text()} [{v.unit}] ({v.description})")
+        self.values[vr] = value
+        if role == "parameter":
+            self.params_dirty = True
+        self.outputs_dirty = True
+
+    def set_real(self, vrs, values):
+        for vr, value in zip(vrs, values):
+            self._check_set(vr, value)
+
+    set_integer = set_real
+    set_boolean = set_real
+    set_string = set_real
+
+    def get_real(self, vrs):
+        if self.outputs_dirty:
+            self._ensure_model()
+            try:
+                self.compute_outputs()
+            except ValueError as exc:
+                self.fail(str(exc))
+            self.outputs_dirty = False
+        values = self.values
+        return [values[vr] for vr in vrs]
+
+    def get_integer(self, vrs):
+        return [int(self.values[vr]) for vr in vrs]
+
+    def get_boolean(self, vrs):
+        return [bool(self.values[vr]) for vr in vrs]
+
+    def get_string(self, vrs):
+        return [str(self.values[vr]) for vr in vrs]
+
+
+class LawSlave(SlaveBase):
+    """FMU of one friction law (``law`` = registry name in ``<friction_package>.MODELS``).
+
+    Inputs are held constant over a communication step (zero-order hold); the state is
+    advanced by the law's own stable kernel (exact exponential bristle update), so any step
+    size is stable. ``F`` is evaluated from the current state and the current inputs (direct
+    feedthrough), as the law's ``simulate`` does at a sample.
+    """
+    law = "lugre"
+    friction_package = "friction"
+
+    @classmethod
+    def model_class(cls):
+        return importlib.import_module(cls.friction_package).MODELS[cls.law]
+
+    def make_variables(self):
+        return law_variables(self.model_class())
+
+    def rebuild(self, initial):
+        cls = self.model_class()
+        model = cls(cls.Params(**self.param_values()))
+        self.model = model
+        self.theta = np.ascontiguousarray(model.theta, dtype=np.float64)
+        self.kernel = model._kernel
+        if initial or not hasattr(self, "state"):
+            self.state = np.asarray(model.initial_state(), dtype=np.float64).copy()
+        ins = ["v"] + [n for n in ("a", "load", "x") if n in cls.extra_inputs]
+        self.in_idx = [self.index[n] for n in ins]
+        self.F_idx = self.index["F"]
+        self.state_idx = [self.index[s] for s in cls.state_names]
+        empty = np.zeros(0)
+        self.t1 = np.zeros(1)
+        self.t2 = np.zeros(2)
+        self.buf1 = {n: (np.zeros(1) if n in ins else empty) for n in ("v", "a", "load", "x")}
+        self.buf2 = {n: (np.zeros(2) if n in ins else empty) for n in ("v", "a", "load", "x")}
+        self.names = ins
+
+    def _fill(self, bufs):
+        for n, i in zip(self.names, self.in_idx):
+            bufs[n][:] = self.values[i]
+
+    def compute_outputs(self):
+        b = self.buf1
+        self._fill(b)
+        F, _ = self.kernel(self.t1, b["v"], b["a"], b["load"], b["x"], self.theta, 0, self.state)
+        self.values[self.F_idx] = float(F[0])
+        for j, i in enumerate(self.state_idx):
+            self.values[i] = float(self.state[j])
+
+    def advance(self, t, h):
+        if self.state.size == 0:
+            return  # a static map: nothing to integrate
+        b = self.buf2
+        self._fill(b)
+        self.t2[1] = h
+        _, S = self.kernel(self.t2, b["v"], b["a"], b["load"], b["x"], self.theta, 0, self.state)
+        new = np.array(S[1], dtype=np.float64)
+        if not np.all(np.isfinite(new)):
+            bad = [n for n, s in zip(self.model.state_names, new) if not math.isfinite(s)]
+            raise ValueError(f"state {', '.join(bad)} became non-finite")
+        self.state = new
+
+
+class MassSlave(SlaveBase):
+    """A rigid mass, m dv/dt = u0 + u_amp sin(2 pi u_freq t) + F_ext - F_friction.
+
+    The inputs are held over the step and the sinusoid is integrated in closed form, so the
+    step is exact for held inputs; ``a`` is the acceleration at the current time with the
+    current inputs (direct feedthrough of ``F_friction`` and ``F_ext``).
+    """
+    model_identifier = "fl_mass"
+    fmu_description = "Rigid mass driven by a sinusoidal force against an external friction force"
+
+    def make_variables(self):
+        return mass_variables()
+
+    def rebuild(self, initial):
+        p = self.param_values()
+        if not p["m"] > 0:
+            raise ValueError(f"m = {p['m']!r} is out of bounds: must be > 0 [kg]")
+        self.p = p
+        if initial or not hasattr(self, "x"):
+            self.x, self.v = float(p["x0"]), float(p["v0"])
+
+    def drive(self, t):
+        p = self.p
+        return p["u0"] + p["u_amp"] * math.sin(2.0 * math.pi * p["u_freq"] * t)
+
+    def compute_outputs(self):
+        vals, ix = self.values, self.index
+        vals[ix["x"]] = self.x
+        vals[ix["v"]] = self.v
+        vals[ix["a"]] = (self.drive(self.time) + vals[ix["F_ext"]] - vals[ix["F_friction"]]) / self.p["m"]
+
+    def advance(self, t, h):
+        p, vals, ix = self.p, self.values, self.index
+        held = p["u0"] + vals[ix["F_ext"]] - vals[ix["F_friction"]]
+        w = 2.0 * math.pi * p["u_freq"]
+        if w > 0.0:
+            c0, c1 = math.cos(w * t), math.cos(w * (t + h))
+            s0, s1 = math.sin(w * t), math.sin(w * (t + h))
+            i1 = p["u_amp"] * (c0 - c1) / w                           # int sin
+            i2 = p["u_amp"] * (h * c0 / w - (s1 - s0) / (w * w))       # double integral
+        else:
+            i1 = i2 = 0.0
+        m = p["m"]
+        self.x = self.x + self.v * h + (0.5 * held * h * h + i2) / m
+        self.v = self.v + (held * h + i1) / m
+
+
+class StepperSlave(SlaveBase):
+    """FMU of a ``plants`` component through its ``stepper()`` (see the plant contract).
+
+    ``factory`` (set by the generated script) is ``"<module>:<callable>"`` returning the
+    stepper for a dict of parameter values; ``variables_factory`` returns the variable list.
+    """
+    factory = ""
+    variables_factory = ""
+
+    @staticmethod
+    def _resolve(spec):
+        mod, _, name = spec.partition(":")
+        obj = importlib.import_module(mod)
+        for part in name.split("."):
+            obj = getattr(obj, part)
+        return obj
+
+    def make_variables(self):
+        return self._resolve(self.variables_factory)()
+
+    def rebuild(self, initial):
+        if initial or not hasattr(self, "stepper"):
+            self.stepper = self._resolve(self.factory)(self.param_values())
+            self.stepper.reset()
+            self.in_names = list(self.stepper.input_names)
+            self.out_names = list(self.stepper.output_names)
+            self.in_idx = [self.index[n] for n in self.in_names]
+            self.out_idx = [self.index[n] for n in self.out_names]
+        else:
+            setp = getattr(self.stepper, "set_parameters", None)
+            if setp is None:
+                raise ValueError("this component's parameters cannot change after "
+                                 "initialization")
+            setp(self.param_values())
+
+    def _push_inputs(self):
+        self.stepper.set_inputs({n: self.values[i] for n, i in zip(self.in_names, self.in_idx)})
+
+    def compute_outputs(self):
+        self._push_inputs()
+        out = self.stepper.outputs()
+        for n, i in zip(self.out_names, self.out_idx):
+            self.values[i] = float(out[n])
+
+    def advance(self, t, h):
+        self._push_inputs()
+        self.stepper.do_step(t, h)

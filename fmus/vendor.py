@@ -1,0 +1,77 @@
+"""Copy a package into an FMU under a unique name, so FMUs never clash in one process.
+
+``vendor_package("friction", dest, "_fl_lugre_friction")`` copies ``friction/*.py`` to
+``dest/_fl_lugre_friction/`` and rewrites:
+
+* absolute imports of the vendored packages (``from friction.x import``, ``import plants``)
+  to their unique names (the ``renames`` map);
+* numba ``cache=True`` to ``cache=False`` (an FMU unpacks into a fresh temporary folder each
+  time, and numba's cache does not work for modules loaded by the pythonfmu runtime);
+* top-level ``from scipy... import name`` to a lazy stub that imports scipy only when
+  ``name`` is called, so an FMU runs where scipy is not installed (the FMU code paths
+  never call them).
+
+Modules whose name is in ``exclude`` (the reference integrator, demos, plotting) are left out.
+"""
+from __future__ import annotations
+
+import pathlib
+import re
+import shutil
+
+__all__ = ["vendor_package", "rewrite_source", "DEFAULT_EXCLUDE"]
+
+#: modules an FMU never needs (scipy/matplotlib users and demo/CLI code)
+DEFAULT_EXCLUDE = ("demo", "reference", "numerics", "cli", "plotting", "plots", "report")
+
+_LAZY = '''def {name}(*args, **kwargs):  # lazy: vendored FMU copy (scipy only if called)
+    from {module} import {orig} as _f
+    return _f(*args, **kwargs)
+'''
+
+
+def rewrite_source(text: str, renames: dict[str, str]) -> str:
+    """Apply the import renames, the numba-cache and the lazy-scipy rewrites to a module."""
+    for old, new in renames.items():
+        text = re.sub(rf"^(\s*)from\s+{old}(\s|\.)", rf"\1from {new}\2", text, flags=re.M)
+        text = re.sub(rf"^(\s*)import\s+{old}(\s*$|\.|\s+as\s)", rf"\1import {new}\2", text,
+                      flags=re.M)
+        text = re.sub(rf"(import_module\(\s*[\"']){old}([\"'.])", rf"\1{new}\2", text)
+    text = re.sub(r"cache\s*=\s*True", "cache=False", text)
+
+    def lazy(m: re.Match) -> str:
+        module, names = m.group(1), m.group(2)
+        names = names.strip().strip("()")
+        stubs = []
+        for item in filter(None, (s.strip() for s in names.split(","))):
+            orig, _, alias = item.partition(" as ")
+            stubs.append(_LAZY.format(name=(alias or orig).strip(), module=module,
+                                      orig=orig.strip()))
+        return "\n".join(stubs)
+
+    text = re.sub(r"^from\s+(scipy[\w.]*)\s+import\s+(\([^)]*\)|[^\n]+)$", lazy, text,
+                  flags=re.M)
+    return text
+
+
+def vendor_package(src: str | pathlib.Path, dest_dir: str | pathlib.Path, new_name: str,
+                   renames: dict[str, str], exclude=DEFAULT_EXCLUDE) -> pathlib.Path:
+    """Copy package ``src`` (a folder) to ``dest_dir/new_name`` with rewritten imports.
+
+    Returns the new package folder. Sub-packages are copied recursively.
+    """
+    src = pathlib.Path(src)
+    out = pathlib.Path(dest_dir) / new_name
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    for f in sorted(src.rglob("*.py")):
+        rel = f.relative_to(src)
+        if "__pycache__" in rel.parts or "tests" in rel.parts:
+            continue
+        if rel.stem in exclude and len(rel.parts) == 1:
+            continue
+        target = out / rel
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_text(rewrite_source(f.read_text(), renames))
+    return out

@@ -84,7 +84,7 @@ def _law_recipes() -> list[FmuRecipe]:
         doc = (cls.__doc__ or name).strip().splitlines()[0]
         out.append(FmuRecipe(
             name=name, base="LawSlave",
-            variables=(lambda cls=cls: runtime.law_variables(cls)),
+            variables=(lambda cls=cls: runtime.law_variables(cls, probe=True)),
             attributes=dict(law=name, friction_package="{pkg:friction}"),
             description=f"Friction law '{name}': {doc}"))
     return out

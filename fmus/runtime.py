@@ -132,14 +132,52 @@ def _param_vars(params_cls) -> list[Var]:
     return out
 
 
-def law_variables(model_cls) -> list[Var]:
-    """Parameters, inputs and outputs of the FMU of a friction law class."""
+#: probe point of the feedthrough test (typical magnitudes; perturbed by 10 % each)
+_PROBE = {"v": 1e-3, "a": 0.5, "load": 1e3, "x": 1e-4}
+
+
+def law_feedthrough(model_cls, inputs) -> tuple:
+    """Inputs the force output depends on directly, probed at the default parameters.
+
+    ``F`` is evaluated by the law's ``force(state, v, **inputs)`` at a probe point and with
+    each input perturbed; an input that changes ``F`` is a direct dependency. (A law whose
+    structure changes with a parameter, e.g. modified LuGre with tau = 0 where F_d becomes
+    algebraic in ``a``, is described at its defaults.)
+    """
+    try:
+        model = model_cls()
+        state = np.asarray(model.initial_state(), dtype=float)
+        base = {n: _PROBE[n] for n in inputs}
+
+        def F(vals):
+            kw = {k: vals[k] for k in inputs if k != "v"}
+            return float(model.force(state, vals["v"], **kw))
+
+        f0 = F(base)
+        deps = []
+        for n in inputs:
+            pert = dict(base)
+            pert[n] = base[n] * 1.1 + 1e-9
+            if abs(F(pert) - f0) > 1e-12 * (1.0 + abs(f0)):
+                deps.append(n)
+        return tuple(deps)
+    except Exception:  # noqa: BLE001 - cannot probe: declare every input (safe side)
+        return tuple(inputs)
+
+
+def law_variables(model_cls, probe: bool = False) -> list[Var]:
+    """Parameters, inputs and outputs of the FMU of a friction law class.
+
+    ``probe=True`` (build time) narrows the declared dependencies of ``F`` to the inputs
+    it really depends on (:func:`law_feedthrough`); otherwise all inputs are declared.
+    """
     vs = _param_vars(model_cls.Params)
     inputs = ["v"] + [n for n in ("a", "load", "x") if n in model_cls.extra_inputs]
     for n in inputs:
         unit, desc = INPUT_INFO[n]
         vs.append(Var(n, "input", "Real", 0.0, unit, f"{desc} [{unit}]"))
-    vs.append(Var("F", "output", "Real", None, "N", "friction force [N]", depends=tuple(inputs)))
+    deps = law_feedthrough(model_cls, inputs) if probe else tuple(inputs)
+    vs.append(Var("F", "output", "Real", None, "N", "friction force [N]", depends=deps))
     units = getattr(model_cls, "state_units", None)
     for j, s in enumerate(model_cls.state_names):
         unit = units[j] if units else ("m" if j == 0 else "N" if s.startswith("F") else "")

@@ -146,3 +146,18 @@ def test_bad_arguments():
         local_sensitivity(m, t, v, x=bad)
     with pytest.raises(ValueError, match="load="):
         local_sensitivity(make_model("load_lugre"), t, v * 1e-3)
+
+
+def test_example_writes_figure_and_json(tmp_path):
+    import importlib.util
+    import json
+    import pathlib
+
+    path = pathlib.Path(__file__).resolve().parents[1] / "examples" / "mre_sensitivity.py"
+    spec = importlib.util.spec_from_file_location("mre_sensitivity_example", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    out = mod.run_example(show_plot=False, out_dir=str(tmp_path), rate=256.0, sobol_n=64)
+    assert (tmp_path / "mre_sensitivity.png").stat().st_size > 10_000
+    saved = json.loads((tmp_path / "mre_sensitivity.json").read_text())
+    assert saved["local"]["ranking"] == list(TABLE4_RANKING["local"]) == out["local"]["ranking"]

@@ -65,14 +65,15 @@ class MultistartLeastSquares(Algorithm):
     """Latin-hypercube screening in one population call, then least squares from the best
     few starts (and from the model's current values).
 
-    Global enough for the LuGre family's few basins (Stribeck velocity vs. stiffness trade-off)
-    and as precise as least squares.
+    Each start gets a short run (``max_nfev`` iterations); the best is then polished with
+    ``polish_nfev``. Global enough for the LuGre family's few basins (Stribeck velocity vs.
+    stiffness trade-off) and as precise as least squares.
     """
     name = "multistart_ls"
     kind = "local"
     steppable = False
-    defaults = dict(n_screen=None, n_starts=3, max_nfev=100, ftol=1e-10, xtol=1e-10,
-                    gtol=1e-10, polish_nfev=200)
+    defaults = dict(n_screen=None, n_starts=3, max_nfev=15, ftol=1e-10, xtol=1e-10,
+                    gtol=1e-10, polish_nfev=200, target=1e-9)
     source = "Latin hypercube (scipy.stats.qmc) + scipy.optimize.least_squares"
 
     def run(self, problem, rng, u0, progress=None):
@@ -98,6 +99,8 @@ class MultistartLeastSquares(Algorithm):
                 break
             if best is None or res.cost < best.cost:
                 best = res
+            if problem.best_cost < self.target:  # exact fit already: the other starts add nothing
+                break
         if best is not None and not problem.exhausted and self.polish_nfev:
             res = run_least_squares(problem, best.x, max_nfev=self.polish_nfev, ftol=self.ftol,
                                     xtol=self.xtol, gtol=self.gtol)

@@ -24,6 +24,7 @@ class CMAES(Algorithm):
         if self.pop_size:
             opts["popsize"] = int(self.pop_size)
         es = cma.CMAEvolutionStrategy(np.clip(u0, 0.01, 0.99).tolist(), self.sigma0, opts)
+        problem.evaluate(np.asarray(u0)[None, :])  # the initial guess is a candidate too
         return {"es": es, "iteration": 0}
 
     def step(self, problem, rng, state):

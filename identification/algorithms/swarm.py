@@ -156,6 +156,7 @@ class FFOA(Algorithm):
 
     def start(self, problem, rng, u0):
         axes = rng.uniform(self.axis_low, self.axis_high, (self.n_axes, problem.dim))
+        problem.evaluate(np.asarray(u0)[None, :])  # the initial guess is on the bulletin too
         return {"axes": axes, "best": np.inf, "iteration": 0}
 
     def _radius(self, state):

@@ -47,7 +47,14 @@ from .sensors import quantize
 from .sources import SCurve
 
 __all__ = ["XML350Params", "XML350", "XML350Mechanics", "TrajectoryBlock", "xml350_friction",
-           "run_assembled", "tracking_metrics"]
+           "run_assembled", "tracking_metrics", "compensation_reduction", "mismatch_table",
+           "PAPER_REDUCTIONS", "MOVES"]
+
+#: seed 003 Table II: fractional tracking-error reductions by the LuGre feedforward
+PAPER_REDUCTIONS = {"100um": {"rms_reduction": 0.923, "peak_reduction": 0.939},
+                    "1um": {"rms_reduction": 0.873, "peak_reduction": 0.884}}
+#: the paper's point-to-point moves [m]
+MOVES = {"100um": 1e-4, "1um": 1e-6}
 
 
 def xml350_friction(**overrides) -> FrictionModel:
@@ -399,3 +406,96 @@ def tracking_metrics(result: np.ndarray, window: tuple[float, float] | None = No
     sel = np.ones(t.size, bool) if window is None else (t >= window[0]) & (t <= window[1])
     e = result["e"][sel]
     return {"rms": float(np.sqrt(np.mean(e ** 2))), "peak": float(np.max(np.abs(e)))}
+
+
+def compensation_reduction(distance: float = 1e-4, *, compensator: FrictionModel | None = None,
+                           plant: XML350 | None = None, stop_time: float | None = None,
+                           method: str = "fast", baseline: np.ndarray | None = None,
+                           return_results: bool = False, **options) -> dict:
+    """Tracking-error reduction by the LuGre feedforward on one S-curve move.
+
+    Parameters
+    ----------
+    distance : float
+        Move length [m].
+    compensator : FrictionModel, optional
+        Feedforward law (default: the plant's own law, a perfect model).
+    plant : XML350, optional
+        Stage (default: seed 003 numbers and friction).
+    stop_time : float, optional
+        End of the run [s] (default experiment's stop). Errors are measured from the move
+        start to ``stop_time`` (move plus settling).
+    baseline : structured array, optional
+        An uncompensated run to reuse (saves one simulation in sweeps).
+    **options
+        Further XML-350 experiment options.
+
+    Returns
+    -------
+    dict
+        ``rms_reduction``, ``peak_reduction`` (1 - compensated / uncompensated), and the
+        ``rms``/``peak`` errors [m] of both runs (``*_off``, ``*_on``).
+    """
+    plant = plant or XML350()
+    kw = dict(distance=distance, **options)
+    off = baseline if baseline is not None else plant.simulate(stop_time, method=method,
+                                                               compensation=False, **kw)
+    on = plant.simulate(stop_time, method=method, compensation=True, compensator=compensator,
+                        **kw)
+    window = (plant.with_options(**kw).move_window()[0], float(on["time"][-1]))
+    m_off, m_on = tracking_metrics(off, window), tracking_metrics(on, window)
+    out = {"rms_reduction": 1.0 - m_on["rms"] / m_off["rms"],
+           "peak_reduction": 1.0 - m_on["peak"] / m_off["peak"],
+           "rms_off": m_off["rms"], "rms_on": m_on["rms"],
+           "peak_off": m_off["peak"], "peak_on": m_on["peak"]}
+    if return_results:
+        out["results"] = (off, on)
+    return out
+
+
+def mismatch_table(levels=(0.1, 0.2, 0.3), names=("Fc", "Fs", "sigma0", "sigma1", "sigma2",
+                                                   "vs", "all"),
+                   moves=None, signs=(1, -1), plant: XML350 | None = None,
+                   progress=None) -> list[dict]:
+    """How the feedforward's benefit falls when the compensator's parameters are off.
+
+    For each move, parameter (``"all"``: every listed parameter at once), level and sign,
+    the compensator is the plant's law with that parameter scaled by ``1 + sign * level``.
+
+    Returns
+    -------
+    list of dict
+        Rows ``{"move", "param", "error", "rms_reduction", "peak_reduction"}`` where
+        ``error`` is the signed relative parameter error (e.g. -0.2); the first rows per
+        move are the exact compensator (``param="exact"``, ``error=0``).
+    """
+    plant = plant or XML350()
+    law = plant.friction
+    moves = moves or MOVES
+    singles = [n for n in names if n != "all"]
+    rows = []
+    total = len(moves) * (1 + len(names) * len(levels) * len(signs))
+    done = 0
+    for label, dist in moves.items():
+        off = plant.simulate(compensation=False, distance=dist)
+        r = compensation_reduction(dist, plant=plant, baseline=off)
+        rows.append({"move": label, "param": "exact", "error": 0.0,
+                     "rms_reduction": r["rms_reduction"],
+                     "peak_reduction": r["peak_reduction"]})
+        done += 1
+        for name in names:
+            for level in levels:
+                for sg in signs:
+                    f = 1.0 + sg * level
+                    keys = singles if name == "all" else [name]
+                    comp = law.with_values(**{k: getattr(law.params, k) * f for k in keys})
+                    r = compensation_reduction(dist, plant=plant, baseline=off,
+                                               compensator=comp)
+                    rows.append({"move": label, "param": name, "error": sg * level,
+                                 "rms_reduction": r["rms_reduction"],
+                                 "peak_reduction": r["peak_reduction"]})
+                    done += 1
+                    if progress is not None:
+                        progress(1, f"{label} {name} {sg * level:+.0%}")
+    del total, done
+    return rows

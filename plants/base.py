@@ -273,15 +273,30 @@ class Plant:
         if unknown:
             raise TypeError(f"{self.name}: unknown experiment option(s) {sorted(unknown)}; "
                             f"choose from {sorted(self.options)}")
-        new = copy.copy(self)
+        new = self._copy()
         new.opts = {**self.opts, **options}
         return new
 
     def with_params(self, **values) -> "Plant":
         """A copy with some plant parameters changed (validated)."""
-        new = copy.copy(self)
+        new = self._copy()
         new.params = self.params.replace(**values)
         return new
+
+    def _copy(self) -> "Plant":
+        # shallow copy without derived data: a subclass may cache objects built from
+        # params/options in ``self._cache`` (dict), rebuilt on first use
+        new = copy.copy(self)
+        new._cache = {}
+        return new
+
+    @property
+    def cache(self) -> dict:
+        """Per-instance store for objects derived from params/options (cleared on copies)."""
+        c = self.__dict__.get("_cache")
+        if c is None:
+            c = self._cache = {}
+        return c
 
     def _experiment(self, stop_time, experiment_options) -> tuple[Experiment, dict]:
         exp_fields = {f.name for f in fields(Experiment)}

@@ -9,6 +9,7 @@ the coloured-noise filter design imports scipy when it is built (offline, never 
 """
 from __future__ import annotations
 
+import bisect
 import math
 
 import numpy as np
@@ -338,6 +339,9 @@ class SCurve:
         self.duration = float(self.tk[-1])
         # the end state is (d, 0, 0) up to rounding: store the exact target
         self.state[-1] = (abs(self.distance), 0.0, 0.0)
+        self._tk_list = self.tk.tolist()
+        self._state_list = [tuple(r) for r in self.state.tolist()]
+        self._jerk_list = self.jerks.tolist()
 
     @property
     def end_time(self) -> float:
@@ -350,6 +354,15 @@ class SCurve:
         return self.x0 + self.distance
 
     def __call__(self, t):
+        if np.ndim(t) == 0:  # scalar fast path (called at every controller sample)
+            tau = min(max(float(t) - self.t0, 0.0), self.duration)
+            i = min(bisect.bisect_right(self._tk_list, tau) - 1, len(self._tk_list) - 1)
+            dt = tau - self._tk_list[i]
+            s0, v0, a0 = self._state_list[i]
+            j = self._jerk_list[i]
+            sg = self.sign
+            return (self.x0 + sg * (s0 + v0 * dt + a0 * dt * dt / 2 + j * dt ** 3 / 6),
+                    sg * (v0 + a0 * dt + j * dt * dt / 2), sg * (a0 + j * dt))
         t = _as(t)
         tau = np.clip(t - self.t0, 0.0, self.duration)
         i = np.clip(np.searchsorted(self.tk, tau, side="right") - 1, 0, self.tk.size - 1)

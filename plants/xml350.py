@@ -202,12 +202,9 @@ class XML350(Plant):
 
     # -- configuration of one run ---------------------------------------------------------------
     def _blocks(self):
-        key = (self.params, self.friction is None or id(self.friction),
-               tuple(sorted((k, v if isinstance(v, (int, float, str, type(None))) else id(v))
-                            for k, v in self.opts.items())))
-        cache = getattr(self, "_block_cache", None)
-        if cache is not None and cache[0] == key:
-            return cache[1]
+        blocks = self.cache.get("blocks")
+        if blocks is not None:
+            return blocks
         o, p = self.opts, self.params
         if o["controller"] not in ("sdpid", "pid"):
             raise ValueError(f"controller must be 'sdpid' or 'pid', got {o['controller']!r}")
@@ -224,7 +221,7 @@ class XML350(Plant):
                 law = self.friction if self.friction is not None else self.default_friction()
             ff = LuGreFeedforward(law, mass=p.M_ctrl, sample_time=p.Ts)
         blocks = dict(traj=traj, ref=ref, pid=pid, ff=ff, motor=p.motor())
-        self._block_cache = (key, blocks)
+        self.cache["blocks"] = blocks
         return blocks
 
     def _layout(self):
@@ -331,7 +328,7 @@ class XML350Mechanics(Plant):
 
     def derivatives(self, t, s, d, F, u):
         p = self.params
-        motor = p.motor()
+        motor = self.cache.get("motor") or self.cache.setdefault("motor", p.motor())
         if self.external_friction:
             F = u["F_friction"]
         return np.array([s[1], (motor.force(s[2]) - F) / p.M,

@@ -100,18 +100,72 @@ def bristle_update(z, v, a, h, method):
     return z * e + v * (1.0 - e) / a
 
 
+@njit(cache=True, inline="always")
+def _cutoff(Fc, Fs):
+    """x = |v/vs|^alpha beyond which (Fs - Fc) e^{-x} < Fc 2^-54: g rounds to Fc exactly."""
+    d = abs(Fs - Fc)
+    if d == 0.0:
+        return -1.0  # no Stribeck bump: g = Fc at every speed
+    return 38.5 + math.log(d / Fc)  # 54 ln 2 = 37.43, plus margin
+
+
+@njit(cache=True, inline="always")
+def _g_fast(v, Fc, Fs, ivs, alpha, shape, cut, s0, s0_fc):
+    """(g(v), sigma0/g(v)) as :func:`friction.shapes.stribeck_g`, with 1/vs and sigma0/Fc
+    given; exp and division are skipped where they cannot change the result (high speed,
+    the common sliding case)."""
+    r = abs(v) * ivs
+    if shape == 1:
+        g = Fc + (Fs - Fc) / (1.0 + r * r)
+        return g, s0 / g
+    x = r * r if alpha == 2.0 else r ** alpha
+    if x > cut:
+        return Fc, s0_fc
+    g = Fc + (Fs - Fc) * math.exp(-x)
+    return g, s0 / g
+
+
+@njit(cache=True, inline="always")
+def _em1(s):
+    """e^{-s} - 1 for s >= 0: expm1 only where the plain exp would lose digits."""
+    if s > 40.0:
+        return -1.0  # e^{-s} < 5e-18: below rounding of 1
+    if s > 0.5:
+        return math.exp(-s) - 1.0
+    return math.expm1(-s)
+
+
 @njit(cache=True)
 def lugre_run(t, v, th, method, z0, F, Z):
-    """Simulate one parameter set along (t, v); writes F[k] and Z[k] in place."""
+    """Simulate one parameter set along (t, v); writes F[k] and Z[k] in place.
+
+    The exact update is written as z+ = z + (z - z_ss) (e^{-s} - 1), with
+    s = h sigma0 |v_m| / g and z_ss = sgn(v_m) g / sigma0 (the same as
+    :func:`bristle_update`, without dividing by s and accurate for small s).
+    """
     n = t.size
     s0 = th[S0]
     s1 = th[S1]
     b = th[B]
+    is0 = 1.0 / s0
+    alpha = th[ALPHA]
+    shape = th[SHAPE]
+    fcp, fsp, ivsp, s2p = th[FCP], th[FSP], 1.0 / th[VSP], th[S2P]
+    fcn, fsn, ivsn, s2n = th[FCN], th[FSN], 1.0 / th[VSN], th[S2N]
+    cutp = _cutoff(fcp, fsp)
+    cutn = _cutoff(fcn, fsn)
+    rp = s0 / fcp
+    rn = s0 / fcn
     z = z0
     for k in range(n):
         vk = v[k]
-        g, s2 = _g_dir(vk, th)
-        zd = vk - s0 * abs(vk) / g * z
+        if vk >= 0.0:
+            g, cg = _g_fast(vk, fcp, fsp, ivsp, alpha, shape, cutp, s0, rp)
+            s2 = s2p
+        else:
+            g, cg = _g_fast(vk, fcn, fsn, ivsn, alpha, shape, cutn, s0, rn)
+            s2 = s2n
+        zd = vk - cg * abs(vk) * z
         F[k] = s0 * z + s1 * zd + s2 * vk + b
         Z[k] = z
         if k + 1 < n:
@@ -120,16 +174,21 @@ def lugre_run(t, v, th, method, z0, F, Z):
                 z = z + h * zd
             else:
                 vm = 0.5 * (vk + v[k + 1])
-                gm, _ = _g_dir(vm, th)
-                z = bristle_update(z, vm, s0 * abs(vm) / gm, h, 0)
+                if vm >= 0.0:
+                    gm, cgm = _g_fast(vm, fcp, fsp, ivsp, alpha, shape, cutp, s0, rp)
+                    zss = gm * is0
+                else:
+                    gm, cgm = _g_fast(vm, fcn, fsn, ivsn, alpha, shape, cutn, s0, rn)
+                    zss = -gm * is0
+                z = z + (z - zss) * _em1(h * cgm * abs(vm))
 
 
 @njit(cache=True)
 def _kernel(t, v, a, load, x, th, method, state0):
     F = np.empty(t.size)
-    Z = np.empty((t.size, 1))
-    lugre_run(t, v, th, method, state0[0], F, Z[:, 0])
-    return F, Z
+    Z = np.empty(t.size)  # contiguous 1-D for the loop; the (N, 1) state view is free
+    lugre_run(t, v, th, method, state0[0], F, Z)
+    return F, Z.reshape(t.size, 1)
 
 
 @njit(cache=True, parallel=True)

@@ -11,9 +11,10 @@ the ``plants`` package provides them, the plant and controller FMUs. Each FMU
   InitialUnknowns, DefaultExperiment; see :mod:`fmus.modeldescription`);
 * passes ``fmpy.validation.validate_fmu`` with zero problems (checked after each build).
 
-Error statuses: the pythonfmu 0.7 binary maps an exception raised by the slave (bad input,
-out-of-bounds parameter) to ``fmi2Fatal`` after forwarding the slave's error-level log message,
-and a refused step to ``fmi2Discard``; it has no ``fmi2Error`` path.
+Error statuses: the pythonfmu 0.7 binary maps an exception raised by the slave to
+``fmi2Fatal`` and a refused step to ``fmi2Discard``, and has no ``fmi2Error`` path. Our slaves
+therefore never raise on bad input: the value is rejected with an error-level log message
+naming it and the next ``fmi2DoStep`` returns ``fmi2Discard`` (see :mod:`fmus.runtime`).
 """
 from __future__ import annotations
 

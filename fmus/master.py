@@ -85,7 +85,8 @@ class _Instance:
         self.slave = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
                                modelIdentifier=md.coSimulation.modelIdentifier,
                                instanceName=name)
-        self.slave.instantiate(callbacks=callbacks, loggingOn=False)
+        # loggingOn: the pythonfmu runtime forwards error messages only when logging is on
+        self.slave.instantiate(callbacks=callbacks, loggingOn=True)
         f = self.slave._functions
         self.c = self.slave.component
         self.f_set = f["fmi2SetReal"]

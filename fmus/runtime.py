@@ -19,11 +19,12 @@ The variable list of a slave (:func:`law_variables`, :func:`mass_variables`, ...
 source for both the runtime and the ``modelDescription.xml`` written by ``fmus.build``: the
 value reference of a variable is its index in that list.
 
-Bad input: a NaN/inf on any input or parameter, or a parameter outside its bounds, is logged
-at error level naming the variable and rejected (pythonfmu turns the raised exception into a
-non-OK FMI status; see ``fmus.build`` for the mapping), never stored silently. A step that
-produces a non-finite state is refused (``do_step`` returns False -> ``fmi2Discard``) with a
-log message naming the state.
+Bad input: a NaN/inf on any input or parameter, or a parameter outside its bounds (or an
+inadmissible combination), is never stored: it is logged at error level naming the variable
+and its bound, and the next ``fmi2DoStep`` is refused with ``fmi2Discard`` and the message
+again, until a valid value is set. (pythonfmu 0.7 maps exceptions raised by a slave to
+``fmi2Fatal``, which makes every instance unusable and may drop the message; it has no
+``fmi2Error`` path.) A step that produces a non-finite output is refused the same way.
 """
 from __future__ import annotations
 
@@ -264,6 +265,7 @@ class SlaveBase(Fmi2Slave):
                 nested=False)
         self.params_dirty = True
         self.outputs_dirty = True
+        self.pending: dict[str, str] = {}
         self.time = 0.0
 
     # subclasses ---------------------------------------------------------------------------
@@ -280,10 +282,16 @@ class SlaveBase(Fmi2Slave):
         raise NotImplementedError
 
     # helpers ------------------------------------------------------------------------------
-    def fail(self, message: str):
+    def reject(self, key: str, message: str) -> None:
+        """Log an error naming the culprit and refuse the next step until it is fixed.
+
+        pythonfmu's runtime turns a raised exception into ``fmi2Fatal`` (all instances
+        unusable) and may lose the message, so a bad value is not stored, the error is
+        logged at once, and ``fmi2DoStep`` answers ``fmi2Discard`` with the message again.
+        """
         msg = f"{self.instance_name}: {message}"
+        self.pending[key] = msg
         self.log(msg, Fmi2Status.error)
-        raise ValueError(msg)
 
     def param_values(self) -> dict:
         out = {}
@@ -296,14 +304,29 @@ class SlaveBase(Fmi2Slave):
     def value(self, name: str):
         return self.values[self.index[name]]
 
-    def _ensure_model(self, initial: bool = False) -> None:
+    def _ensure_model(self, initial: bool = False) -> bool:
         if self.params_dirty:
             try:
                 self.rebuild(initial)
             except ValueError as exc:  # ParameterError names the parameter and bound
-                self.fail(f"invalid parameters: {exc}")
+                self.reject("parameters", f"invalid parameters: {exc}")
+                return False
+            self.pending.pop("parameters", None)
             self.params_dirty = False
             self.outputs_dirty = True
+        return "parameters" not in self.pending
+
+    def _update_outputs(self) -> bool:
+        if not self._ensure_model():
+            return False
+        try:
+            self.compute_outputs()
+        except ValueError as exc:
+            self.reject("outputs", str(exc))
+            return False
+        self.pending.pop("outputs", None)
+        self.outputs_dirty = False
+        return True
 
     # FMI ----------------------------------------------------------------------------------
     def setup_experiment(self, start_time, stop_time=None, tolerance=None):
@@ -313,26 +336,23 @@ class SlaveBase(Fmi2Slave):
         self._ensure_model(initial=True)
 
     def do_step(self, current_time, step_size):
-        self._ensure_model()
+        if self.pending or not self._ensure_model():
+            for msg in self.pending.values():
+                self.log(f"{msg} (step at t = {current_time:g} refused)", Fmi2Status.error)
+            return False
         try:
             self.advance(current_time, step_size)
         except ValueError as exc:
-            self.log(f"{self.instance_name}: step [{current_time:g}, +{step_size:g}] failed: "
-                     f"{exc}", Fmi2Status.error)
+            self.reject("step", f"step [{current_time:g}, +{step_size:g}] failed: {exc}")
             return False
         self.time = current_time + step_size
         self.outputs_dirty = True
-        try:
-            self.compute_outputs()
-        except ValueError as exc:
-            self.log(f"{self.instance_name}: t = {self.time:g}: {exc}", Fmi2Status.error)
+        if not self._update_outputs():
             return False
-        self.outputs_dirty = False
         for i, role in enumerate(self.roles):
             if role == "output" and not math.isfinite(self.values[i]):
-                self.log(f"{self.instance_name}: output {self.variables[i].name} = "
-                         f"{self.values[i]!r} is not finite after the step to t = "
-                         f"{self.time:g}", Fmi2Status.error)
+                self.reject("step", f"output {self.variables[i].name} = {self.values[i]!r} "
+                                    f"is not finite after the step to t = {self.time:g}")
                 return False
         return True
 
@@ -340,14 +360,20 @@ class SlaveBase(Fmi2Slave):
         v = self.variables[vr]
         role = self.roles[vr]
         if role == "output":
-            self.fail(f"{v.name} is an output and cannot be set")
+            self.reject(v.name, f"{v.name} is an output and cannot be set")
+            return
         if v.type == "Real":
             value = float(value)
             if not math.isfinite(value):
-                self.fail(f"{role} {v.name} = {value!r} is not finite ({v.description})")
+                self.reject(v.name, f"{role} {v.name} = {value!r} is not finite "
+                                    f"({v.description}); value rejected")
+                return
             if role == "parameter" and not v.admissible(value):
-                self.fail(f"parameter {v.name} = {value!r} is out of bounds: must be "
-                          f"{v.bound_text()} [{v.unit}] ({v.description})")
+                self.reject(v.name, f"parameter {v.name} = {value!r} is out of bounds: must be "
+                                    f"{v.bound_text()} [{v.unit}] ({v.description}); "
+                                    f"value rejected")
+                return
+        self.pending.pop(v.name, None)
         self.values[vr] = value
         if role == "parameter":
             self.params_dirty = True
@@ -363,12 +389,7 @@ class SlaveBase(Fmi2Slave):
 
     def get_real(self, vrs):
         if self.outputs_dirty:
-            self._ensure_model()
-            try:
-                self.compute_outputs()
-            except ValueError as exc:
-                self.fail(str(exc))
-            self.outputs_dirty = False
+            self._update_outputs()
         values = self.values
         return [values[vr] for vr in vrs]
 

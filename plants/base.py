@@ -411,10 +411,15 @@ class Plant:
             samples = exp.start + Ts * np.arange(nsamp + 1)
         else:
             samples = np.array([exp.start])
-        bps = np.union1d(samples, times)
-        bps = bps[np.concatenate(([True], np.diff(bps) > 1e-12 * max(1.0, abs(exp.stop))))]
+        eps = 1e-12 * max(1.0, abs(exp.stop))
+        # segment ends: sample instants of the discrete part, the stop time, and the output
+        # instants when inputs are given (they are held over each output interval)
+        bps = np.union1d(samples, [times[-1]])
+        if inputs is not None:
+            bps = np.union1d(bps, times)
+        bps = bps[np.concatenate(([True], np.diff(bps) > eps))]
         is_sample = np.zeros(bps.size, bool)
-        is_sample[np.searchsorted(bps, samples - 1e-12 * max(1.0, abs(exp.stop)))] = True
+        is_sample[np.searchsorted(bps, samples - eps)] = True
         scale = np.ones(ns) if self.state_scale is None else np.asarray(self.state_scale, float)
         zscale = np.full(nz, getattr(law, "z_max", lambda: 1e-5)())
         atol = rtol * np.concatenate((scale, zscale)) * 10.0
@@ -449,7 +454,6 @@ class Plant:
         d = np.asarray(self.initial_discrete(), float)
         u = self._u(inputs(exp.start) if inputs else None)
         cols = {n: np.empty(times.size) for n in self.all_output_names}
-        out_idx = {float(tk): i for i, tk in enumerate(times)}
         ti = 0
 
         def record(t, y, d, u):
@@ -463,22 +467,33 @@ class Plant:
             if progress is not None and ti % 100 == 0:
                 progress(100, f"t={t:.4g} s")
 
-        for j, tb in enumerate(bps):
-            if j > 0:
-                ta = bps[j - 1]
-                sol = solve_ivp(rhs, (ta, tb), y, method="Radau", rtol=rtol, atol=atol,
-                                args=(d, u), first_step=min(tb - ta, 1e-7))
-                if not sol.success:
-                    raise RuntimeError(f"{self.name}: reference integrator failed at "
-                                       f"t={ta:.6g} s: {sol.message}")
-                y = sol.y[:, -1]
+        if abs(times[0] - bps[0]) <= eps:  # the start instant
+            if is_sample[0]:
+                d = np.asarray(self.discrete_update(bps[0], y[:ns], d, u), float)
+            record(bps[0], y, d, u)
+        for j in range(1, bps.size):
+            ta, tb = bps[j - 1], bps[j]
+            lo = np.searchsorted(times, ta + eps, side="left")
+            hi = np.searchsorted(times, tb + eps, side="left")
+            t_eval = times[lo:hi]
+            sol = solve_ivp(rhs, (ta, tb), y, method="Radau", rtol=rtol, atol=atol,
+                            args=(d, u), first_step=min(tb - ta, 1e-7),
+                            t_eval=np.concatenate((t_eval, [tb])) if (
+                                t_eval.size == 0 or abs(t_eval[-1] - tb) > eps) else t_eval)
+            if not sol.success:
+                raise RuntimeError(f"{self.name}: reference integrator failed at "
+                                   f"t={ta:.6g} s: {sol.message}")
+            for k, tk in enumerate(t_eval):
+                if abs(tk - tb) <= eps:
+                    break
+                record(tk, sol.y[:, k], d, u)   # output inside the segment: d held
+            y = sol.y[:, -1]
             if is_sample[j]:
                 d = np.asarray(self.discrete_update(tb, y[:ns], d, u), float)
-            if ti < times.size and abs(tb - times[ti]) <= 1e-12 * max(1.0, abs(exp.stop)):
+            if ti < times.size and abs(tb - times[ti]) <= eps:
                 if inputs is not None:
                     u = self._u(inputs(tb))
                 record(tb, y, d, u)
-        del out_idx
         return structured({"time": times, **cols})
 
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from friction.base import FrictionModel
+from friction.base import METHODS, FrictionModel
 from friction.dataset import Dataset
 
 __all__ = ["Objective", "InProcessObjective", "check_data"]
@@ -100,5 +100,19 @@ class InProcessObjective(Objective):
 
     def predict(self, X) -> np.ndarray:
         X = np.atleast_2d(np.asarray(X, float))
+        if X.shape[0] == 1:
+            # one set (least-squares residual): the serial kernel, no thread-pool launch;
+            # same update code as the population kernel, so the same numbers
+            m = self.model
+            theta = m.population_theta(self.names, X)[0]
+            t, v, a, load, x = self._prepared()
+            F, _ = m._kernel(t, v, a, load, x, theta, METHODS[self.method],
+                             m.initial_state())
+            return F[None, :]
         return self.model.simulate_population(self.data.t, self.data.v, self.names, X,
                                               method=self.method, **self._inputs)
+
+    def _prepared(self):
+        if getattr(self, "_prep", None) is None:
+            self._prep = self.model._inputs(self.data.t, self.data.v, **self._inputs)
+        return self._prep

@@ -59,7 +59,7 @@ def default_bounds(model: FrictionModel, names, data=None) -> dict[str, tuple[fl
             elif kind == "damping" and sv:
                 hi = max(hi, 2 * sF / sv)
             elif kind == "stiffness" and sF > 1:
-                lo, hi = lo * sF, hi * sF
+                hi = hi * sF  # stiffer contacts carry larger forces; keep the soft end
             elif kind == "velocity" and sv:
                 hi = max(hi, sv)
         cur = getattr(model.params, n)

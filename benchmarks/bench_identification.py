@@ -1,0 +1,156 @@
+"""Benchmark every identification algorithm on the same datasets, in one run.
+
+Datasets: synthetic data from each seed's law with the seed's parameter table and excitation
+(``identification.synthetic``), with 2 % white measurement noise (RMS relative to std F),
+the same noise-free for the default, and the real data (EMPS estimation set; Franka case 4
+slow, every 4th sample). Columns: final cost (NRMSE), largest relative parameter error
+(synthetic), evaluations, wall time, and the default's wall time as a fraction of the best
+seed metaheuristic's (measured in this run).
+
+Goals checked and printed:
+* noise-free: the default recovers every parameter within 1 %;
+* the default reaches a cost no worse than the best of the seeds' metaheuristics (AFSA, IAFSA,
+  FFOA, IFFOA, chaotic PSO, adaptive GA) in at most a tenth of its wall time.
+
+Usage::
+
+    python benchmarks/bench_identification.py [--quick] [--budget N] [--json OUT]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import time
+
+import numpy as np
+
+from friction import make_model
+from identification import DEFAULT_ALGORITHM, identify
+from identification.synthetic import CASES, make_case
+
+SEED_METAHEURISTICS = ["afsa", "iafsa", "ffoa", "iffoa", "chaotic_pso", "adaptive_ga"]
+MODERN = ["cmaes", "differential_evolution", "least_squares", "multistart_ls"]
+LUGRE_ASYM = ["sigma0", "sigma1", "sigma2", "sigma2_neg", "Fc", "Fc_neg", "Fs", "Fs_neg", "vs",
+              "b"]
+
+
+def real_cases():
+    """(name, data, start model, names, bounds) for the real data (skipped if absent)."""
+    out = []
+    try:
+        from identification.real_data import load_emps, load_franka
+    except ImportError:
+        return out
+    try:
+        emps = load_emps("estimation")
+        start = make_model("lugre", sigma0=1e5, sigma1=100.0, sigma2=200.0, sigma2_neg=200.0,
+                           Fc=20.0, Fc_neg=20.0, Fs=25.0, Fs_neg=25.0, vs=0.01, b=-3.0)
+        bounds = dict(sigma0=(1e3, 1e8), sigma1=(0.0, 5e3), sigma2=(0.0, 500.0),
+                      sigma2_neg=(0.0, 500.0), Fc=(0.01, 60.0), Fc_neg=(0.01, 60.0),
+                      Fs=(0.01, 80.0), Fs_neg=(0.01, 80.0), vs=(1e-4, 0.3), b=(-30.0, 30.0))
+        out.append(("EMPS (real)", emps, start, LUGRE_ASYM, bounds))
+    except FileNotFoundError:
+        pass
+    try:
+        fr = load_franka(4, "slow").select(slice(0, None, 4))
+        start = make_model("lugre", sigma0=100.0, sigma1=1.0, sigma2=0.5, sigma2_neg=0.5,
+                           Fc=0.3, Fc_neg=0.3, Fs=0.4, Fs_neg=0.4, vs=0.01, b=0.0)
+        bounds = dict(sigma0=(1.0, 1e6), sigma1=(0.0, 50.0), sigma2=(0.0, 20.0),
+                      sigma2_neg=(0.0, 20.0), Fc=(1e-3, 2.0), Fc_neg=(1e-3, 2.0),
+                      Fs=(1e-3, 3.0), Fs_neg=(1e-3, 3.0), vs=(1e-4, 1.0), b=(-1.0, 1.0))
+        out.append(("Franka case4 slow (real)", fr, start, LUGRE_ASYM, bounds))
+    except FileNotFoundError:
+        pass
+    return out
+
+
+def run(algorithm, data, start, names, bounds, budget, seed=0):
+    kw = {} if algorithm == DEFAULT_ALGORITHM else {"max_evals": budget}
+    t0 = time.perf_counter()
+    r = identify(data, start, algorithm=algorithm, names=names, bounds=bounds, seed=seed, **kw)
+    return r, time.perf_counter() - t0
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="small budgets (smoke test)")
+    ap.add_argument("--budget", type=int, default=None,
+                    help="evaluation budget of every non-default algorithm (default 30000)")
+    ap.add_argument("--noise", type=float, default=0.02)
+    ap.add_argument("--cases", default=",".join(CASES))
+    ap.add_argument("--no-real", action="store_true")
+    ap.add_argument("--json", default=None)
+    args = ap.parse_args(argv)
+    budget = args.budget or (3000 if args.quick else 30000)
+    algorithms = [DEFAULT_ALGORITHM] + [a for a in SEED_METAHEURISTICS + MODERN
+                                        if a != DEFAULT_ALGORITHM]
+    rows, goals = [], []
+    # warm the numba caches so compilation is not timed
+    for key in args.cases.split(","):
+        c = make_case(key)
+        identify(c.data, c.start, algorithm="least_squares", names=c.names, bounds=c.bounds,
+                 max_evals=30)
+
+    datasets = []
+    for key in args.cases.split(","):
+        clean = make_case(key)
+        noisy = make_case(key, noise=args.noise)
+        datasets.append((f"{clean.name} noise-free", clean, [DEFAULT_ALGORITHM]))
+        datasets.append((f"{noisy.name} {args.noise:.0%} noise", noisy, algorithms))
+    if not args.no_real:
+        for name, data, start, names, bounds in real_cases():
+            datasets.append((name, (data, start, names, bounds), algorithms))
+
+    print(f"budget per non-default algorithm: {budget} evaluations; default: "
+          f"{DEFAULT_ALGORITHM} (own stopping rule)\n")
+    header = "| dataset | algorithm | cost (NRMSE) | param. error | evals | wall [s] |"
+    print(header)
+    print("|---|---|---|---|---|---|")
+    for label, case, algs in datasets:
+        if isinstance(case, tuple):
+            data, start, names, bounds = case
+            perr = None
+        else:
+            data, start, names, bounds = case.data, case.start, case.names, case.bounds
+            perr = case.param_error
+        res = {}
+        for alg in algs:
+            r, wall = run(alg, data, start, names, bounds, budget)
+            pe = perr(r.params) if perr else None
+            res[alg] = (r.fit_nrmse, wall, r.n_evals, pe)
+            rows.append(dict(dataset=label, algorithm=alg, cost=r.fit_nrmse, param_error=pe,
+                             evals=r.n_evals, wall=wall))
+            pes = f"{pe:.2e}" if pe is not None else "-"
+            print(f"| {label} | {alg} | {r.fit_nrmse:.4g} | {pes} | {r.n_evals} | {wall:.2f} |",
+                  flush=True)
+        d_cost, d_wall, _, d_pe = res[DEFAULT_ALGORITHM]
+        if len(algs) == 1 and d_pe is not None:
+            goals.append(dict(dataset=label, goal="default within 1 % on every parameter",
+                              value=d_pe, ok=bool(d_pe <= 0.01)))
+        metas = {a: res[a] for a in SEED_METAHEURISTICS if a in res}
+        if metas:
+            best = min(metas, key=lambda a: metas[a][0])
+            b_cost, b_wall = metas[best][0], metas[best][1]
+            ok = d_cost <= b_cost * (1 + 1e-9) and d_wall <= 0.1 * b_wall
+            goals.append(dict(dataset=label, goal=f"default cost <= best seed metaheuristic "
+                              f"({best}: {b_cost:.4g}) in <= 1/10 of its time",
+                              value=dict(default_cost=d_cost, best_cost=b_cost,
+                                         time_ratio=d_wall / b_wall), ok=bool(ok)))
+    print("\nGoals")
+    for g in goals:
+        v = g["value"]
+        if isinstance(v, dict):
+            v = (f"default {v['default_cost']:.4g} vs {v['best_cost']:.4g}, time ratio "
+                 f"{v['time_ratio']:.3f}")
+        else:
+            v = f"{v:.2e}"
+        print(f"- [{'x' if g['ok'] else ' '}] {g['dataset']}: {g['goal']}: {v}")
+    if args.json:
+        with open(args.json, "w") as fh:
+            json.dump(dict(budget=budget, rows=rows, goals=goals), fh, indent=2,
+                      default=lambda o: None if o is None else float(o))
+    return rows, goals
+
+
+if __name__ == "__main__":
+    main()

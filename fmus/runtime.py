@@ -12,8 +12,8 @@ Three slave kinds share one base:
   of the inputs) and the law's states. Parameters come from the law's ``Params`` metadata.
 * :class:`MassSlave` - a rigid mass driven by a built-in force signal plus the inputs
   ``F_ext`` and ``F_friction`` (the mass+friction proof loop).
-* :class:`StepperSlave` - a plant or controller of the ``plants`` package through its
-  ``stepper()`` (numpy/numba only).
+* :class:`StepperSlave` - a plant of the ``plants`` package in external-friction mode through
+  its ``stepper()`` (numpy/numba only).
 
 The variable list of a slave (:func:`law_variables`, :func:`mass_variables`, ...) is the single
 source for both the runtime and the ``modelDescription.xml`` written by ``fmus.build``: the
@@ -37,7 +37,7 @@ from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability
 from pythonfmu.enums import Fmi2Status
 from pythonfmu.variables import Boolean, Integer, Real, String
 
-__all__ = ["Var", "law_variables", "mass_variables", "stepper_variables", "SlaveBase",
+__all__ = ["Var", "law_variables", "mass_variables", "plant_variables", "SlaveBase",
            "LawSlave", "MassSlave", "StepperSlave", "INPUT_INFO"]
 
 #: unit and description of the kinematic inputs a law may need
@@ -207,23 +207,55 @@ def mass_variables() -> list[Var]:
     ]
 
 
-def stepper_variables(stepper, params_cls=None, units=None, depends=None) -> list[Var]:
-    """Variables of a ``plants`` stepper: its parameters (from ``params_cls`` metadata when
-    given), inputs and outputs. ``units`` maps signal names to (unit, description);
-    ``depends`` maps outputs to the inputs they depend on directly (default: none)."""
-    units = units or {}
-    depends = depends or {}
-    vs = _param_vars(params_cls) if params_cls is not None else []
-    pnames = set(getattr(stepper, "parameter_names", ()) or ())
-    if pnames and vs:
-        vs = [v for v in vs if v.name in pnames]
-    for n in stepper.input_names:
-        unit, desc = units.get(n, ("", n))
-        vs.append(Var(n, "input", "Real", 0.0, unit, f"{desc}" + (f" [{unit}]" if unit else "")))
-    for n in stepper.output_names:
-        unit, desc = units.get(n, ("", n))
-        vs.append(Var(n, "output", "Real", None, unit, f"{desc}" + (f" [{unit}]" if unit else ""),
-                      depends=tuple(depends.get(n, ()))))
+def _option_vars(options: dict) -> list[Var]:
+    """Scalar experiment options of a plant as FMU parameters (None/tuples are not exposed)."""
+    out = []
+    for k, v in options.items():
+        desc = f"experiment option {k} (see the plant's options)"
+        if isinstance(v, bool):
+            out.append(Var(k, "parameter", "Boolean", v, "", desc))
+        elif isinstance(v, str):
+            out.append(Var(k, "parameter", "String", v, "", desc))
+        elif isinstance(v, (int, float)):
+            out.append(Var(k, "parameter", "Real", float(v), "", desc))
+    return out
+
+
+def plant_feedthrough(plant_cls) -> dict:
+    """Outputs of the external-friction plant that change at once with ``F_friction``."""
+    try:
+        st = plant_cls(external_friction=True).stepper()
+        st.set_inputs({"F_friction": 0.0})
+        o0 = st.outputs()
+        st.set_inputs({"F_friction": 1.0})
+        o1 = st.outputs()
+        return {n: ("F_friction",) for n in st.output_names
+                if abs(o1[n] - o0[n]) > 1e-12 * (1.0 + abs(o0[n]))}
+    except Exception:  # noqa: BLE001 - cannot probe: every output depends (safe side)
+        return {n: tuple(plant_cls(external_friction=True).all_input_names)
+                for n in plant_cls(external_friction=True).all_output_names}
+
+
+def plant_variables(plant_cls, probe: bool = False) -> list[Var]:
+    """Parameters (plant ``Params`` and scalar options), inputs and outputs of the FMU of a
+    plant in external-friction mode (input ``F_friction``)."""
+    plant = plant_cls(external_friction=True)
+    numeric = set(plant.parameter_names)
+    vs = [v for v in _param_vars(plant_cls.Params) if v.name in numeric or v.type != "Real"]
+    names = {v.name for v in vs}
+    vs += [v for v in _option_vars(dict(plant_cls.options)) if v.name not in names]
+    signals = dict(getattr(plant_cls, "signals", {}) or {})
+    signals.setdefault("F_friction", ("N", "friction force on the contact, opposing the "
+                                             "sliding velocity"))
+    deps = plant_feedthrough(plant_cls) if probe else \
+        {n: tuple(plant.all_input_names) for n in plant.all_output_names}
+    for n in plant.all_input_names:
+        unit, desc = signals.get(n, ("", n))
+        vs.append(Var(n, "input", "Real", 0.0, unit, desc + (f" [{unit}]" if unit else "")))
+    for n in plant.all_output_names:
+        unit, desc = signals.get(n, ("", n))
+        vs.append(Var(n, "output", "Real", None, unit, desc + (f" [{unit}]" if unit else ""),
+                      depends=tuple(deps.get(n, ()))))
     return vs
 
 
@@ -514,39 +546,38 @@ class MassSlave(SlaveBase):
 
 
 class StepperSlave(SlaveBase):
-    """FMU of a ``plants`` component through its ``stepper()`` (see the plant contract).
+    """FMU of a plant of the ``plants`` package (external friction: input ``F_friction``)
+    through its ``stepper()``; parameters are the plant's ``Params`` and scalar options.
 
-    ``factory`` (set by the generated script) is ``"<module>:<callable>"`` returning the
-    stepper for a dict of parameter values; ``variables_factory`` returns the variable list.
+    Parameters are structural for a plant (they shape its state and controllers): changes
+    after initialization are applied by rebuilding the stepper only before the first step.
     """
-    factory = ""
-    variables_factory = ""
+    plant = "xml350"
+    plants_package = "plants"
 
-    @staticmethod
-    def _resolve(spec):
-        mod, _, name = spec.partition(":")
-        obj = importlib.import_module(mod)
-        for part in name.split("."):
-            obj = getattr(obj, part)
-        return obj
+    @classmethod
+    def plant_class(cls):
+        return importlib.import_module(cls.plants_package).PLANTS[cls.plant]
 
     def make_variables(self):
-        return self._resolve(self.variables_factory)()
+        return plant_variables(self.plant_class())
 
     def rebuild(self, initial):
-        if initial or not hasattr(self, "stepper"):
-            self.stepper = self._resolve(self.factory)(self.param_values())
-            self.stepper.reset()
-            self.in_names = list(self.stepper.input_names)
-            self.out_names = list(self.stepper.output_names)
-            self.in_idx = [self.index[n] for n in self.in_names]
-            self.out_idx = [self.index[n] for n in self.out_names]
-        else:
-            setp = getattr(self.stepper, "set_parameters", None)
-            if setp is None:
-                raise ValueError("this component's parameters cannot change after "
-                                 "initialization")
-            setp(self.param_values())
+        if not initial and getattr(self, "stepped", False):
+            raise ValueError("plant parameters cannot change after the first step")
+        cls = self.plant_class()
+        values = self.param_values()
+        pnames = {f.name for f in dataclasses.fields(cls.Params)}
+        params = {k: v for k, v in values.items() if k in pnames}
+        options = {k: v for k, v in values.items() if k not in pnames and k in cls.options}
+        plant = cls(external_friction=True, **params)
+        self.stepper = plant.stepper(**options)
+        self.stepper.reset(self.time)
+        self.in_names = list(self.stepper.input_names)
+        self.out_names = list(self.stepper.output_names)
+        self.in_idx = [self.index[n] for n in self.in_names]
+        self.out_idx = [self.index[n] for n in self.out_names]
+        self.stepped = False
 
     def _push_inputs(self):
         self.stepper.set_inputs({n: self.values[i] for n, i in zip(self.in_names, self.in_idx)})
@@ -560,3 +591,4 @@ class StepperSlave(SlaveBase):
     def advance(self, t, h):
         self._push_inputs()
         self.stepper.do_step(t, h)
+        self.stepped = True

@@ -1,0 +1,149 @@
+"""FMUs of the plants (external friction) and the co-simulation proof against each plant's
+reference integrator.
+
+Each plant of ``plants.PLANTS`` becomes ``<plant>.fmu``: the plant in external-friction mode
+(input ``F_friction`` [N]; outputs its signals, among them the kinematics ``x, v, a`` and the
+load the law needs). A friction-law FMU closes the loop::
+
+    plant.v -> friction.v, plant.a -> friction.a, plant.x -> friction.x,
+    plant.<load> -> friction.load, friction.F -> plant.F_friction
+
+:func:`plant_proof` runs that loop with our master at the plant's data rate and compares the
+main output with ``Plant(friction=law).simulate(method="reference")`` (monolithic
+``solve_ivp``), for the classic LuGre and for the plant's own seed law.
+"""
+from __future__ import annotations
+
+import dataclasses
+import os
+
+import numpy as np
+
+from . import runtime
+
+__all__ = ["recipes", "plant_connections", "classic_lugre_for", "plant_laws",
+           "plant_master", "plant_proof", "LOAD_SIGNALS"]
+
+#: plant output carrying the friction law's load input, in order of preference
+LOAD_SIGNALS = ("load", "F_sigma", "F_N")
+
+
+def recipes():
+    """Build recipes of the plant FMUs (one per registered plant)."""
+    from .build import FmuRecipe
+    import plants
+    out = []
+    for name, cls in plants.PLANTS.items():
+        de = cls.default_experiment
+        doc = (cls.__doc__ or name).strip().splitlines()[0]
+        out.append(FmuRecipe(
+            name=name, base="StepperSlave",
+            variables=(lambda cls=cls: runtime.plant_variables(cls, probe=True)),
+            attributes=dict(plant=name, plants_package="{pkg:plants}"),
+            packages=("friction", "plants"),
+            description=f"Plant '{name}' with external friction (input F_friction): {doc}",
+            default_experiment={"startTime": float(de.start), "stopTime": float(de.stop),
+                                "stepSize": float(de.step)}))
+    return out
+
+
+def plant_connections(plant_cls, law_cls) -> list[tuple[str, str]]:
+    """Connections plant <-> friction law for the law's inputs."""
+    outs = plant_cls(external_friction=True).all_output_names
+    conns = [("plant.v", "friction.v"), ("friction.F", "plant.F_friction")]
+    if "a" in law_cls.extra_inputs:
+        conns.append(("plant.a", "friction.a"))
+    if "x" in law_cls.extra_inputs:
+        conns.append(("plant.x", "friction.x"))
+    if "load" in law_cls.extra_inputs:
+        src = next((s for s in LOAD_SIGNALS if s in outs), None)
+        if src is None:
+            raise ValueError(f"plant {plant_cls.name!r} has no load output for law "
+                             f"{law_cls.name!r} (looked for {LOAD_SIGNALS})")
+        conns.append((f"plant.{src}", "friction.load"))
+    return conns
+
+
+def classic_lugre_for(plant_cls):
+    """Classic LuGre with the plant's seed-law levels (shared names; Fc0 -> Fc, ...)."""
+    import friction
+    seed = plant_cls.default_friction()
+    if seed.name == "lugre":
+        return seed
+    vals = {f.name: getattr(seed.params, f.name) for f in dataclasses.fields(seed.params)}
+    alias = {"Fc0": "Fc", "Fs0": "Fs", "sigma20": "sigma2"}
+    lugre_fields = {f.name for f in dataclasses.fields(friction.LuGreParams)}
+    info = {i.name: i for i in friction.LuGreParams.info()}
+    kw = {}
+    for k, v in vals.items():
+        k2 = alias.get(k, k)
+        if k2 in lugre_fields and v is not None:
+            i = info.get(k2)
+            if i is not None and isinstance(v, float):  # e.g. a press stiffer than LuGre's
+                v = min(max(v, i.lower), i.upper)        # admissible sigma0 <= 1e9 N/m
+            kw[k2] = v
+    return friction.make_model("lugre", **kw)
+
+
+def plant_laws(plant_cls) -> dict:
+    """The two laws of the proof: ``{"lugre": classic LuGre, <seed name>: seed law}``."""
+    seed = plant_cls.default_friction()
+    laws = {"lugre": classic_lugre_for(plant_cls)}
+    laws[seed.name] = seed
+    return laws
+
+
+def _law_params(model) -> dict:
+    out = {}
+    for f in dataclasses.fields(model.params):
+        v = getattr(model.params, f.name)
+        if v is None:
+            continue  # the FMU's "unset" start value already means None
+        out[f.name] = v
+    return out
+
+
+def plant_master(fmu_dir, plant_name: str, law, *, algorithm: str = "gauss-seidel",
+                 iterations: int = 0, record=None):
+    """An open :class:`fmus.master.Master` of ``<plant>.fmu`` + ``<law>.fmu``."""
+    import plants
+    from .master import Master
+    cls = plants.PLANTS[plant_name]
+    fmus = {"plant": os.path.join(fmu_dir, f"{plant_name}.fmu"),
+            "friction": os.path.join(fmu_dir, f"{law.name}.fmu")}
+    main = cls.main_output
+    return Master(fmus, plant_connections(cls, type(law)), algorithm=algorithm,
+                  parameters={"friction": _law_params(law)}, iterations=iterations,
+                  record=record or [f"plant.{main}", "friction.F"])
+
+
+def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 3,
+                stop: float | None = None, rtol: float = 1e-9) -> dict:
+    """NRMSE of the co-simulated main output against the plant's reference integrator.
+
+    The co-simulation runs at the plant's data rate (``h = 1/data_rate``; the reported
+    ``nrmse``) and at ``h / 2**k`` (k < refinements; results decimated to the data rate) for
+    the observed order: below the data rate the plant's internal substep (<= the
+    communication step) shrinks too, so the coupling error is not masked by a fixed
+    integrator error.
+    """
+    import plants
+    from friction.metrics import nrmse
+    from .proof import observed_order
+    cls = plants.PLANTS[plant_name]
+    plant = cls(friction=law)
+    h = 1.0 / cls.data_rate
+    stop = float(cls.default_experiment.stop) if stop is None else float(stop)
+    n = int(round(stop / h))
+    ref = plant.simulate(n * h, method="reference", rtol=rtol)
+    main = cls.main_output
+    steps, errors = [], []
+    with plant_master(fmu_dir, plant_name, law) as m:
+        for k in range(refinements):
+            hk = h / 2 ** k
+            res = m.simulate(stop_time=n * h, step_size=hk)
+            errors.append(nrmse(ref[main], res[f"plant.{main}"][:: 2 ** k]))
+            steps.append(hk)
+    return {"nrmse": errors[0], "steps": steps, "errors": errors,
+            "order": observed_order(steps, errors) if refinements > 1 else float("nan"),
+            "law": law.name, "step": h, "stop": n * h}

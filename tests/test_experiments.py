@@ -117,7 +117,7 @@ def test_frf_of_a_known_oscillator():
     Ad, Bd, Cd, Dd, _ = signal.cont2discrete((A, np.array([[0.0], [1 / M]]),
                                               np.array([[1.0, 0.0]]), np.zeros((1, 1))),
                                              1 / fs, method="zoh")
-    _, x = signal.dlsim((Ad, Bd, Cd, Dd, 1 / fs), f_in)
+    _, x, _ = signal.dlsim((Ad, Bd, Cd, Dd, 1 / fs), f_in)
     freq, G, coh = frf(t, f_in, x.ravel(), nperseg=4096)
     fit = fit_presliding(freq, G, M, band=(5.0, 60.0), coherence=coh)
     assert fit["sigma0"] == pytest.approx(k, rel=0.05)

@@ -49,7 +49,8 @@ from numba import njit, prange
 from ._validation import ParameterError
 from .base import FrictionModel, FrictionParams, param
 from .lugre import _LAYOUT as _LUGRE_LAYOUT
-from .lugre import B, S0, S1, _g_dir, bristle_update
+from .lugre import ALPHA, B, FCN, FCP, FSN, FSP, S0, S1, S2N, S2P, SHAPE, VSN, VSP
+from .lugre import _cutoff, _em1, _g_fast
 from .shapes import SHAPES, stribeck_g_np
 
 __all__ = ["ModifiedLuGreParams", "ModifiedLuGre", "GAMMA_FORMS", "FD_FORMS",
@@ -222,6 +223,15 @@ def mlugre_run(t, v, a, th, method, z0, q0, F, Z, Q):
     s0 = th[S0]
     s1 = th[S1]
     b = th[B]
+    is0 = 1.0 / s0
+    alpha = th[ALPHA]
+    shape = th[SHAPE]
+    fcp, fsp, ivsp, s2p = th[FCP], th[FSP], 1.0 / th[VSP], th[S2P]
+    fcn, fsn, ivsn, s2n = th[FCN], th[FSN], 1.0 / th[VSN], th[S2N]
+    cutp = _cutoff(fcp, fsp)
+    cutn = _cutoff(fcn, fsn)
+    rp = s0 / fcp
+    rn = s0 / fcn
     v1 = th[V1]
     v2 = th[V2]
     gform = th[GFORM]
@@ -230,11 +240,19 @@ def mlugre_run(t, v, a, th, method, z0, q0, F, Z, Q):
     z = z0
     q = q0
     u = _lag_input(v[0], a[0], th, form)
+    h_lag = -1.0  # step whose lag factors are cached (uniform sampling: computed once)
+    e_lag = 0.0
+    phi_lag = 0.0
     for k in range(n):
         vk = v[k]
-        g, s2 = _g_dir(vk, th)
+        if vk >= 0.0:
+            g, cg = _g_fast(vk, fcp, fsp, ivsp, alpha, shape, cutp, s0, rp)
+            s2 = s2p
+        else:
+            g, cg = _g_fast(vk, fcn, fsn, ivsn, alpha, shape, cutn, s0, rn)
+            s2 = s2n
         G = switch_gamma(vk, v1, v2, gform)
-        zd = G * (vk - s0 * abs(vk) / g * z)
+        zd = G * (vk - cg * abs(vk) * z)
         if tau == 0.0:
             q = u  # static F_d: no memory
         Fd = q if form == 0 else fd_steady(vk, q, th)
@@ -250,9 +268,15 @@ def mlugre_run(t, v, a, th, method, z0, q0, F, Z, Q):
                     q = q + h * (u - q) / tau
             else:
                 vm = 0.5 * (vk + v[k + 1])
-                gm, _ = _g_dir(vm, th)
+                if vm >= 0.0:
+                    gm, cgm = _g_fast(vm, fcp, fsp, ivsp, alpha, shape, cutp, s0, rp)
+                    zss = gm * is0
+                else:
+                    gm, cgm = _g_fast(vm, fcn, fsn, ivsn, alpha, shape, cutn, s0, rn)
+                    zss = -gm * is0
                 Gm = switch_gamma(vm, v1, v2, gform)
-                z = bristle_update(z, Gm * vm, Gm * s0 * abs(vm) / gm, h, 0)
+                # dz/dt = Gm (vm - a z): exact, same z_ss, rate Gm a (lugre.lugre_run form)
+                z = z + (z - zss) * _em1(h * Gm * cgm * abs(vm))
                 if tau > 0.0:
                     vn = v[k + 1]
                     if form == 0 and (vk < 0.0) != (vn < 0.0) and vk != vn:
@@ -264,7 +288,12 @@ def mlugre_run(t, v, a, th, method, z0, q0, F, Z, Q):
                         q = _lag_step(q, _fd_set(0.0, ac, th, vn < 0.0), u1,
                                       (1.0 - c) * h, tau)
                     else:
-                        q = _lag_step(q, u, u1, h, tau)
+                        if abs(h - h_lag) > 1e-9 * h:  # sampling jitter of t: reuse
+                            sl = h / tau
+                            e_lag = math.exp(-sl)
+                            phi_lag = -math.expm1(-sl) / sl if sl > 1e-12 else 1.0 - 0.5 * sl
+                            h_lag = h
+                        q = u1 + (q - u) * e_lag - (u1 - u) * phi_lag
             u = u1
 
 

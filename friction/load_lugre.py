@@ -199,12 +199,17 @@ def _loaded(v, load, th):
 def load_lugre_run(t, v, load, th, method, z0, F, Z):
     """Simulate one parameter set along (t, v, load); writes F[k], Z[k] in place.
 
-    A sample whose loaded Stribeck level g is not positive gives NaN (inadmissible).
+    A sample whose loaded Stribeck level g is not positive, or a theta whose split velocity
+    vc is not positive/NaN, gives NaN from there on (inadmissible parameter set).
     """
     n = t.size
     s0 = th[S0]
     s1 = th[S1]
     z = z0
+    if not th[VC] > 0.0:  # no regime split (a population row without Stribeck minimum)
+        F[:] = np.nan
+        Z[:] = np.nan
+        return
     for k in range(n):
         vk = v[k]
         g, s2 = _loaded(vk, load[k], th)

@@ -117,6 +117,12 @@ def test_population_matches_single_runs_and_vc_follows_the_no_load_parameters():
         single = m.with_values(Fc0=row[0], Fs0=row[1])
         assert single.vc != m.vc
         np.testing.assert_allclose(P[i], single.simulate(t, v, load=load), rtol=1e-12, atol=1e-6)
+    # inadmissible rows give NaN instead of a silent wrong regime: no Stribeck minimum
+    # (Fs0 < Fc0) or a load that drives Fc negative
+    P = m.simulate_population(t, v, ["Fs0", "Fc0"], [[1e5, 2e5]], load=load)
+    assert np.all(np.isnan(P))
+    P = m.simulate_population(t, v, ["k1_low"], [[-1e3]], load=load)
+    assert np.isnan(P[0, -1]) and np.isfinite(P[0, 0])
 
 
 def test_regime_condition_diagnostic_matches_equations_md():

@@ -212,3 +212,17 @@ def test_bad_options_are_named():
         XML350().simulate(ff_mode="magic")
     with pytest.raises(Exception, match="M = -1"):
         XML350Params(M=-1.0)
+
+
+def test_example_draws_compensation_figure(tmp_path):
+    import importlib.util
+    import pathlib
+    path = pathlib.Path(__file__).resolve().parents[1] / "examples" / "xml350_compensation.py"
+    spec = importlib.util.spec_from_file_location("xml350_example", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    res = mod.run_example(show_plot=False, out_dir=str(tmp_path), mismatch=False)
+    assert (tmp_path / "xml350_compensation.png").stat().st_size > 10_000
+    assert (tmp_path / "xml350_compensation.json").exists()
+    for r in res["reductions"].values():
+        assert r["rms_reduction"] >= 0.85

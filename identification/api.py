@@ -234,13 +234,14 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     except Exception as exc:  # an inadmissible box edge: report it clearly
         raise ValueError(f"identified parameters are not admissible for {model.name}: {exc}") \
             from None
-    F_fit = fitted.simulate(data.t, data.v, a=data.a, load=data.load, x=data.x, method=method) \
-        if objective is None else obj.predict(x_best[None, :])[0]
+    # the reported cost is the objective's own prediction (the numba kernel, without the
+    # input-range checks of simulate(), so a box edge the law rejects still gets a number)
+    F_fit = obj.predict(x_best[None, :])[0]
     fit = nrmse(data.F, F_fit)
     val = None
     if validation is not None:
-        F_val = fitted.simulate(validation.t, validation.v, a=validation.a,
-                                load=validation.load, x=validation.x, method=method)
+        F_val = InProcessObjective(model, validation, space.names,
+                                   method=method).predict(x_best[None, :])[0]
         val = nrmse(validation.F, F_val)
     ci = None
     if info.get("jac") is not None and info.get("u") is not None:

@@ -623,6 +623,7 @@ class PlantStepper:
             if self.fric is None:
                 k2 = p.derivatives(t0 + h, s_pred, d, F, u)
                 s = s + 0.5 * h * (k1 + k2)
+                F = self.u["F_friction"]
                 continue
             kin0 = self._kin(t0, s, k1)
             _, F_pred = self.fric.advance(z, h, kin0, self._kin(t0 + h, s_pred, k1))
@@ -631,4 +632,8 @@ class PlantStepper:
             ds_mean = 0.5 * (k1 + k2)
             z, F = self.fric.advance(z, h, kin0, self._kin(t0 + h, s, ds_mean))
             self._a = p.contact_acceleration(t0 + h, s, ds_mean, d, u)
+        if not (np.all(np.isfinite(s)) and math.isfinite(F)):
+            raise FloatingPointError(
+                f"{p.name}: the fast integrator diverged between t={ta:.6g} s and {tb:.6g} s "
+                f"(substep {h:.3g} s); try a smaller substep= or check the parameters")
         self.s, self.z, self._F = s, z, F

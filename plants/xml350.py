@@ -149,7 +149,14 @@ _OPTIONS = dict(distance=1e-4, vmax=0.25, amax=4.0, jerk=None, t_move=1e-3,
                 open_loop=False, ff_mode="invert")
 
 
-class XML350(Plant):
+class _SubstepFromCurrentLoop:
+    @property
+    def max_substep(self) -> float:
+        """2.5e-5 s, or less for a fast current loop (Heun is stable for h w_c < 2)."""
+        return min(2.5e-5, 1.0 / (2 * math.pi * self.params.f_current))
+
+
+class XML350(_SubstepFromCurrentLoop, Plant):
     """XML-350 stage in closed loop with the XPS-D SD-PID and the LuGre feedforward.
 
     Experiment options
@@ -186,7 +193,6 @@ class XML350(Plant):
     output_names = ("x", "v", "a", "x_meas", "x_d", "v_d", "a_d", "e", "i", "u", "u_ff")
     discrete_names = ("i_cmd", "u", "u_sd", "u_ff", "x_d", "v_d", "a_d", "x_meas")
     control_rate = 10_000.0
-    max_substep = 2.5e-5
     options = _OPTIONS
     signals = {"x": ("m", "stage position"), "v": ("m/s", "stage velocity"),
                "a": ("m/s^2", "stage acceleration"), "x_meas": ("m", "encoder position"),
@@ -299,7 +305,7 @@ class XML350(Plant):
         return t0, t0 + getattr(tr, "duration", 0.0)
 
 
-class XML350Mechanics(Plant):
+class XML350Mechanics(_SubstepFromCurrentLoop, Plant):
     """The XML-350 stage alone: motor with current loop, mass, friction, encoder.
 
     Input ``i_cmd`` [A] (current command); outputs ``x, x_meas, v, a, i`` and the thrust
@@ -315,7 +321,6 @@ class XML350Mechanics(Plant):
     state_scale = (1e-6, 1e-4, 1e-2)
     input_names = ("i_cmd",)
     output_names = ("x", "x_meas", "v", "a", "i", "f_e")
-    max_substep = 2.5e-5
     signals = {**XML350.signals, "i_cmd": ("A", "current command"),
                "f_e": ("N", "motor thrust")}
 

@@ -3,7 +3,7 @@
 Datasets: synthetic data from each seed's law with the seed's parameter table and excitation
 (``identification.synthetic``), with 2 % white measurement noise (RMS relative to std F),
 the same noise-free for the default, and the real data (EMPS estimation set; Franka case 4
-slow, every 4th sample). Columns: final cost (NRMSE), largest relative parameter error
+slow, every 10th sample). Columns: final cost (NRMSE), largest relative parameter error
 (synthetic), evaluations, wall time, and the default's wall time as a fraction of the best
 seed metaheuristic's (measured in this run).
 
@@ -52,7 +52,7 @@ def real_cases():
     except FileNotFoundError:
         pass
     try:
-        fr = load_franka(4, "slow").select(slice(0, None, 4))
+        fr = load_franka(4, "slow").select(slice(0, None, 10))
         start = make_model("lugre", sigma0=100.0, sigma1=1.0, sigma2=0.5, sigma2_neg=0.5,
                            Fc=0.3, Fc_neg=0.3, Fs=0.4, Fs_neg=0.4, vs=0.01, b=0.0)
         bounds = dict(sigma0=(1.0, 1e6), sigma1=(0.0, 50.0), sigma2=(0.0, 20.0),
@@ -75,13 +75,13 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="small budgets (smoke test)")
     ap.add_argument("--budget", type=int, default=None,
-                    help="evaluation budget of every non-default algorithm (default 30000)")
+                    help="evaluation budget of every non-default algorithm (default 10000)")
     ap.add_argument("--noise", type=float, default=0.02)
     ap.add_argument("--cases", default=",".join(CASES))
     ap.add_argument("--no-real", action="store_true")
     ap.add_argument("--json", default=None)
     args = ap.parse_args(argv)
-    budget = args.budget or (3000 if args.quick else 30000)
+    budget = args.budget or (3000 if args.quick else 10000)
     algorithms = [DEFAULT_ALGORITHM] + [a for a in SEED_METAHEURISTICS + MODERN
                                         if a != DEFAULT_ALGORITHM]
     rows, goals = [], []

@@ -88,9 +88,9 @@ def _finish(name, paper, true, t, F, names, noise, seed, **cols):
 
 def case_seed000(noise=0.0, seed=0):
     """SHAO (seed 000) modified LuGre (the law's defaults: Tables 1-3 are not in the seed),
-    5 Hz / 8 mm sine as the valve tests, 5 kHz."""
+    one period of the 5 Hz / 8 mm sine of the valve tests, 5 kHz."""
     true = make_model("modified_lugre")
-    t = np.arange(0, 0.4, 2e-4)
+    t = np.arange(0, 0.2, 2e-4)  # one period
     w = 2 * np.pi * 5
     v = 8e-3 * w * np.cos(w * t)
     a = -8e-3 * w * w * np.sin(w * t)

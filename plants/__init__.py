@@ -15,11 +15,13 @@ from __future__ import annotations
 
 import importlib
 
-from .base import Experiment, FrictionStep, Plant, PlantParams, PlantStepper, structured
+from .base import (Experiment, FrictionComponent, FrictionStep, Plant, PlantParams,
+                   PlantStepper, structured)
 from .interfaces import Flange, HydraulicPort, PartialCompliant
 
 __all__ = ["PLANTS", "make_plant", "Plant", "PlantStepper", "PlantParams", "Experiment",
-           "FrictionStep", "structured", "Flange", "HydraulicPort", "PartialCompliant"]
+           "FrictionStep", "FrictionComponent", "structured", "Flange", "HydraulicPort",
+           "PartialCompliant"]
 
 #: registry name -> plant class (filled by the machine modules that exist)
 PLANTS: dict[str, type[Plant]] = {}

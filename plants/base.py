@@ -58,8 +58,8 @@ import numpy as np
 
 from friction.base import FrictionModel, FrictionParams
 
-__all__ = ["Experiment", "Plant", "PlantStepper", "FrictionStep", "PlantParams",
-           "structured"]
+__all__ = ["Experiment", "Plant", "PlantStepper", "FrictionStep", "FrictionComponent",
+           "PlantParams", "structured"]
 
 #: parameter dataclasses of plants use the same validated base as friction laws
 PlantParams = FrictionParams
@@ -495,6 +495,72 @@ class Plant:
                     u = self._u(inputs(tb))
                 record(tb, y, d, u)
         return structured({"time": times, **cols})
+
+
+class FrictionComponent:
+    """A friction law as a stand-alone stepper component (friction FMU of an assembled loop).
+
+    Inputs ``v`` [m/s] and, if the law needs them, ``x`` [m], ``a`` [m/s^2], ``load`` [N];
+    output ``F`` [N]. Same interface as :class:`PlantStepper`.
+
+    Semantics: the state over ``[t, t+h]`` is advanced lazily, when the inputs at ``t+h``
+    arrive (``set_inputs``) or the outputs are read, with the law's stable update between
+    the inputs at both ends - exactly ``law.simulate`` on the sampled motion. ``F`` depends
+    on the current inputs (direct feedthrough), so a Gauss-Seidel master reads it after
+    setting ``v`` at each communication point.
+    """
+
+    def __init__(self, law: FrictionModel, method: str = "exact", start: float = 0.0):
+        self.law = law
+        self.fric = FrictionStep(law, method)
+        self.input_names = ("v",) + tuple(n for n in ("x", "a", "load")
+                                          if n in law.extra_inputs)
+        self.output_names = ("F",)
+        self.parameter_names = tuple(n for n in law.Params.numeric_names()
+                                     if getattr(law.params, n) is not None)
+        self.start = float(start)
+        self.reset()
+
+    def reset(self, start: float | None = None) -> None:
+        if start is not None:
+            self.start = float(start)
+        self.time = self.start
+        self.z = self.law.initial_state().astype(float)
+        self.inputs = {n: 0.0 for n in self.input_names}
+        self._pending = 0.0
+
+    def _kin(self, inp):
+        return (inp.get("x", 0.0), inp["v"], inp.get("a", 0.0), inp.get("load"))
+
+    def _advance(self, new_inputs) -> None:
+        if self._pending > 0:
+            self.z, _ = self.fric.advance(self.z, self._pending, self._kin(self.inputs),
+                                          self._kin(new_inputs))
+            self._pending = 0.0
+
+    def set_inputs(self, values: dict) -> None:
+        for k in values:
+            if k not in self.inputs:
+                raise KeyError(f"{self.law.name}: unknown input {k!r}; inputs are "
+                               f"{list(self.inputs)}")
+        new = {**self.inputs, **{k: float(v) for k, v in values.items()}}
+        self._advance(new)
+        self.inputs = new
+
+    def outputs(self) -> dict[str, float]:
+        self._advance(self.inputs)  # no new inputs arrived: held over the step
+        i = self.inputs
+        return {"F": self.fric.force(self.z, i.get("x", 0.0), i["v"], i.get("a", 0.0),
+                                     i.get("load"))}
+
+    def do_step(self, t: float, h: float) -> bool:
+        if abs(t - self.time) > 1e-9 * max(1.0, abs(t)):
+            raise ValueError(f"do_step(t={t!r}) but the component is at time {self.time!r}")
+        if not h > 0:
+            raise ValueError(f"h = {h!r} is out of bounds: must be > 0 [s]")
+        self._pending += h
+        self.time = t + h
+        return True
 
 
 class PlantStepper:

@@ -47,7 +47,7 @@ from .sensors import quantize
 from .sources import SCurve
 
 __all__ = ["XML350Params", "XML350", "XML350Mechanics", "TrajectoryBlock", "xml350_friction",
-           "run_assembled", "tracking_metrics", "compensation_reduction", "mismatch_table",
+           "run_assembled", "loop_parts", "tracking_metrics", "compensation_reduction", "mismatch_table",
            "PAPER_REDUCTIONS", "MOVES"]
 
 #: seed 003 Table II: fractional tracking-error reductions by the LuGre feedforward
@@ -350,50 +350,115 @@ class XML350Mechanics(_SubstepFromCurrentLoop, Plant):
                 "a": (f_e - Fr) / p.M, "i": s[2], "f_e": f_e}
 
 
-def run_assembled(stop_time: float = 0.06, *, distance: float = 1e-4, compensation: bool = True,
-                  friction: FrictionModel | None = None, compensator: FrictionModel | None = None,
-                  params: XML350Params | None = None, controller: str = "sdpid",
-                  t_move: float = 1e-3, ff_mode: str = "invert") -> np.ndarray:
-    """The XML-350 loop assembled from separate steppers (what the FMU master does).
+def loop_parts(*, distance: float = 1e-4, compensation: bool = True,
+               friction: FrictionModel | None = None, compensator: FrictionModel | None = None,
+               params: XML350Params | None = None, controller: str = "sdpid",
+               t_move: float = 1e-3, ff_mode: str = "invert",
+               separate_friction: bool = False) -> dict:
+    """The XML-350 loop's components as separate steppers (what the FMU build wraps).
 
-    Components: :class:`TrajectoryBlock` (its ``a_ff`` feeds the PID's ``a_d`` input, its
-    ``x_ff, v_ff, a_ff`` the feedforward), :class:`plants.controllers.LuGreFeedforward`,
-    the (SD-)PID, and :class:`XML350Mechanics` with its internal friction law. Gauss-Seidel
-    order at each 10 kHz communication point: trajectory -> feedforward -> controller
-    (fed the mechanics' encoder output) -> current command -> mechanics ``do_step``.
-
-    Returns the structured array ``time, x, x_d, e, i_cmd`` at 10 kHz.
+    Returns
+    -------
+    dict
+        ``"trajectory"``: :class:`TrajectoryBlock` stepper (outputs ``x_d, v_d, a_d, x_f,
+        x_ff, v_ff, a_ff``); ``"controller"``: (SD-)PID stepper (inputs ``x_d, v_d, a_d,
+        x, x_f, u_ff``; output ``u`` [m/s^2]); ``"feedforward"`` (when ``compensation``):
+        LuGre feedforward stepper (inputs ``x_d, v_d, a_d``; output ``u_ff``);
+        ``"mechanics"``: :class:`XML350Mechanics` stepper (input ``i_cmd`` [A], plus
+        ``F_friction`` [N] when ``separate_friction``); ``"friction"`` (when
+        ``separate_friction``): :class:`plants.base.FrictionComponent` (input ``v``,
+        output ``F``); ``"params"``: the :class:`XML350Params` (``i_cmd = M_ctrl u / Kf``).
     """
+    from .base import FrictionComponent
+
     p = params or XML350Params()
     law = friction or xml350_friction()
     Ts = p.Ts
     traj = TrajectoryBlock(SCurve(distance, t0=t_move), sample_time=Ts, f_current=p.f_current,
                            ff_mode=ff_mode)
-    comps = {"traj": DiscreteStepper(traj),
-             "pid": DiscreteStepper(p.pid(state_dependent=controller == "sdpid"))}
+    parts = {"trajectory": DiscreteStepper(traj),
+             "controller": DiscreteStepper(p.pid(state_dependent=controller == "sdpid")),
+             "params": p}
     if compensation:
-        comps["ff"] = DiscreteStepper(LuGreFeedforward(compensator or law, p.M_ctrl, Ts))
-    mech = XML350Mechanics(law, params=p).stepper()
+        parts["feedforward"] = DiscreteStepper(LuGreFeedforward(compensator or law,
+                                                                p.M_ctrl, Ts))
+    if separate_friction:
+        parts["mechanics"] = XML350Mechanics(external_friction=True, params=p).stepper()
+        parts["friction"] = FrictionComponent(law)
+    else:
+        parts["mechanics"] = XML350Mechanics(law, params=p).stepper()
+    return parts
+
+
+def run_assembled(stop_time: float = 0.06, *, separate_friction: bool = False,
+                  exchanges: int = 1, **part_options) -> np.ndarray:
+    """The XML-350 loop assembled from the separate steppers of :func:`loop_parts`.
+
+    Gauss-Seidel order at each 10 kHz control instant: trajectory -> feedforward (fed
+    ``x_ff, v_ff, a_ff``) -> controller (fed the mechanics' encoder output and ``u_ff``; the
+    trajectory's ``a_ff`` is its ``a_d``) -> current command ``i_cmd = M_ctrl u / Kf``. The
+    mechanics then advance over the control period in ``exchanges`` communication steps;
+    with a separate friction component, friction and mechanics exchange ``v`` and
+    ``F_friction`` at each of them (force held over a step). With the law inside the
+    mechanics this reproduces :class:`XML350` to round-off.
+
+    Parameters
+    ----------
+    stop_time : float
+        End time [s].
+    separate_friction : bool
+        Friction as its own component (the friction FMU) instead of inside the mechanics.
+    exchanges : int
+        Communication steps per control period between friction and mechanics (the
+        coupling's zero-order hold error falls with their number).
+    **part_options
+        Passed to :func:`loop_parts` (distance, compensation, friction, compensator, ...).
+
+    Returns
+    -------
+    ndarray
+        Structured array ``time, x, x_d, e, i_cmd`` at the control rate.
+    """
+    parts = loop_parts(separate_friction=separate_friction, **part_options)
+    p = parts["params"]
+    Ts = p.Ts
+    hc = Ts / int(exchanges)
+    traj, pid, mech = parts["trajectory"], parts["controller"], parts["mechanics"]
+    ff, fric = parts.get("feedforward"), parts.get("friction")
     n = int(round(stop_time / Ts))
     rows = np.empty((n + 1, 5))
+
+    def couple():
+        if fric is not None:
+            fric.set_inputs({"v": mech.outputs()["v"]})
+            mech.set_inputs({"F_friction": fric.outputs()["F"]})
+
     for k in range(n + 1):
         t = k * Ts
-        ref = comps["traj"].outputs()
+        ref = traj.outputs()
         u_ff = 0.0
-        if "ff" in comps:
-            comps["ff"].set_inputs({"x_d": ref["x_ff"], "v_d": ref["v_ff"], "a_d": ref["a_ff"]})
-            u_ff = comps["ff"].outputs()["u_ff"]
+        if ff is not None:
+            ff.set_inputs({"x_d": ref["x_ff"], "v_d": ref["v_ff"], "a_d": ref["a_ff"]})
+            u_ff = ff.outputs()["u_ff"]
+        couple()
         mo = mech.outputs()
-        comps["pid"].set_inputs({"x_d": ref["x_d"], "v_d": ref["v_d"], "a_d": ref["a_ff"],
-                                 "x_f": ref["x_f"], "x": mo["x_meas"], "u_ff": u_ff})
-        u = comps["pid"].outputs()["u"]
-        i_cmd = p.M_ctrl * u / p.Kf
+        pid.set_inputs({"x_d": ref["x_d"], "v_d": ref["v_d"], "a_d": ref["a_ff"],
+                        "x_f": ref["x_f"], "x": mo["x_meas"], "u_ff": u_ff})
+        i_cmd = p.M_ctrl * pid.outputs()["u"] / p.Kf
         mech.set_inputs({"i_cmd": i_cmd})
         rows[k] = (t, mo["x"], ref["x_d"], ref["x_d"] - mo["x"], i_cmd)
-        if k < n:
-            for c in comps.values():
+        if k == n:
+            break
+        for c in (traj, ff, pid):
+            if c is not None:
                 c.do_step(t, Ts)
-            mech.do_step(t, Ts)
+        for j in range(int(exchanges)):
+            if j > 0:
+                couple()
+            tj = t + j * hc
+            if fric is not None:
+                fric.do_step(tj, hc)
+            mech.do_step(tj, hc)
     names = ("time", "x", "x_d", "e", "i_cmd")
     out = np.empty(n + 1, dtype=[(nm, "f8") for nm in names])
     for j, nm in enumerate(names):

@@ -5,7 +5,7 @@ import pytest
 
 from friction.metrics import nrmse
 from plants import PLANTS, make_plant
-from plants.base import FrictionStep
+from plants.base import FrictionComponent, FrictionStep
 from plants.controllers import DiscreteStepper, LuGreFeedforward, PID, StateDependentPID
 from plants.sources import SCurve
 from plants.xml350 import (MOVES, PAPER_REDUCTIONS, XML350, XML350Mechanics, XML350Params,
@@ -103,6 +103,18 @@ def test_assembled_from_parts_equals_monolithic(stage):
     assert np.max(np.abs(parts["x"] - mono["x"])) < 1e-15
 
 
+def test_assembled_with_separate_friction_converges_with_exchanges():
+    # friction as its own component (the friction FMU): force held over each exchange, so
+    # the loop approaches the monolithic one as the exchanges per control period grow
+    p = XML350Params(resolution=0.0)
+    mono = XML350(params=p).simulate(0.02, distance=1e-6)
+    errs = [nrmse(mono["x"], run_assembled(0.02, distance=1e-6, params=p,
+                                           separate_friction=True, exchanges=m)["x"])
+            for m in (1, 10)]
+    assert errs[1] < errs[0] / 5, errs
+    assert errs[1] < 2e-3
+
+
 def test_external_friction_mechanics_matches_internal():
     mech_int = XML350Mechanics()
     mech_ext = XML350Mechanics(external_friction=True)
@@ -175,6 +187,20 @@ def test_pid_block_steady_integral_and_feedthrough():
     pid = DiscreteStepper(PID(Kp=2.0, Ki=0.0, Kd=0.0))
     pid.set_inputs({"x_d": 1.0, "x": 0.25, "a_d": 0.5, "u_ff": 0.1})
     assert pid.outputs()["u"] == pytest.approx(2.0 * 0.75 + 0.5 + 0.1)
+
+
+def test_friction_component_equals_law_simulate():
+    law = xml350_friction()
+    comp = FrictionComponent(law)
+    assert comp.input_names == ("v",) and comp.output_names == ("F",)
+    t = np.arange(400) * 1e-4
+    v = 2e-3 * np.sin(2 * np.pi * 20 * t)
+    F = []
+    for k, tk in enumerate(t):
+        comp.set_inputs({"v": v[k]})
+        F.append(comp.outputs()["F"])
+        comp.do_step(tk, 1e-4)
+    np.testing.assert_allclose(F, law.simulate(t, v), rtol=1e-12, atol=1e-12)
 
 
 def test_feedforward_equals_law_along_desired_velocity():

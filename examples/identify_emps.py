@@ -1,0 +1,48 @@
+"""Identify friction on the real EMPS benchmark data (Janot, Gautier, Brunot;
+nonlinearbenchmark.org): re-run the published inverse-dynamic-model baseline
+(M ddq + Fv dq + Fc sign(dq) + OF = gtau vir) and fit an asymmetric LuGre law on DATA_EMPS,
+then compare both on DATA_EMPS_PULSES (relative motor-force error).
+
+    python examples/identify_emps.py [--algorithm NAME] [--json OUT]
+"""
+import argparse
+
+import numpy as np
+
+from friction import make_model
+from identification import identify
+from identification.real_data import EMPS_PUBLISHED, emps_baseline, load_emps
+
+NAMES = ["sigma0", "sigma1", "sigma2", "sigma2_neg", "Fc", "Fc_neg", "Fs", "Fs_neg", "vs", "b"]
+
+
+def relative_error(ds, friction_force):
+    y = ds.extra["motor_force"]
+    return np.linalg.norm(y - (EMPS_PUBLISHED["M"] * ds.a + friction_force)) / np.linalg.norm(y)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--algorithm", default="least_squares")
+    ap.add_argument("--json", default=None)
+    args = ap.parse_args()
+    base = emps_baseline()
+    print("baseline (this run) vs published:")
+    for k, v in EMPS_PUBLISHED.items():
+        print(f"  {k:<3} {getattr(base, k):10.4f}  published {v:10.4f}  "
+              f"({getattr(base, k) / v - 1:+.2%})")
+    est, val = load_emps("estimation"), load_emps("validation")
+    start = make_model("lugre", sigma0=1e5, sigma1=100.0, sigma2=200.0, sigma2_neg=200.0,
+                       Fc=20.0, Fc_neg=20.0, Fs=25.0, Fs_neg=25.0, vs=0.01, b=-3.0)
+    r = identify(est, start, algorithm=args.algorithm, names=NAMES, validation=val, progress=True)
+    print(r.summary())
+    print(f"relative error on DATA_EMPS        : baseline {relative_error(est, base.friction(est.v)):.2%}"
+          f", LuGre {relative_error(est, r.model.simulate(est.t, est.v)):.2%}")
+    print(f"relative error on DATA_EMPS_PULSES : baseline {relative_error(val, base.friction(val.v)):.2%}"
+          f", LuGre {relative_error(val, r.model.simulate(val.t, val.v)):.2%}")
+    if args.json:
+        r.to_json(args.json)
+
+
+if __name__ == "__main__":
+    main()

@@ -183,12 +183,13 @@ def test_gamma_stays_stable_where_classic_euler_diverges():
 def test_mass_reference_consistent_with_discrete_update():
     m = make_model("modified_lugre", **ASYM)
     t = np.linspace(0, 0.05, 1001)
-    u = 40.0 * np.sin(2 * np.pi * 20 * t)
-    out = simulate_mass(m, 0.05, t, u)
-    assert np.all(np.isfinite(out["F"])) and np.max(np.abs(out["v"])) > 0.05
+    u = 25.0 * np.sin(2 * np.pi * 20 * t)
+    out = simulate_mass(m, 0.05, t, u, rtol=1e-8)
+    # the motion crosses the Gamma band (|v| up to ~0.9 m/s) and reverses
+    assert np.all(np.isfinite(out["F"])) and np.max(np.abs(out["v"])) > m.params.v2
     F = m.simulate(t, out["v"], a=out["a"])
     rms = np.sqrt(np.mean((F - out["F"]) ** 2)) / np.std(out["F"])
-    assert rms < 2e-3, rms
+    assert rms < 5e-4, rms
     m0 = make_model("modified_lugre", tau=0.0)
     with pytest.raises(ValueError, match="algebraic"):
         simulate_mass(m0, 0.05, t[:10], u[:10])

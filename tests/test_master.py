@@ -1,0 +1,157 @@
+"""Co-simulation master: algorithms, proof against the reference, errors, external tools."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+fmpy = pytest.importorskip("fmpy")
+pytest.importorskip("pythonfmu")
+
+from fmus.master import FMUError, Master  # noqa: E402
+from fmus.proof import mass_connections, mass_master, mass_proof  # noqa: E402
+from fmus.testing import built_fmus  # noqa: E402
+
+REC = ["mass.x", "friction.F"]
+
+
+@pytest.fixture(scope="session")
+def fmu_dir():
+    import friction
+    return built_fmus(tuple(sorted(friction.MODELS)) + ("mass",))
+
+
+def _loop(fmu_dir, law="lugre"):
+    return {"mass": fmu_dir / "mass.fmu", "friction": fmu_dir / f"{law}.fmu"}
+
+
+def test_result_is_a_structured_array_with_time_first(fmu_dir):
+    with Master(_loop(fmu_dir), mass_connections("lugre")) as m:
+        res = m.simulate(stop_time=0.01, step_size=1e-3)
+    assert res.dtype.names[0] == "time"
+    assert set(res.dtype.names[1:]) == {"mass.x", "mass.v", "mass.a", "friction.F", "friction.z"}
+    np.testing.assert_allclose(res["time"], 1e-3 * np.arange(11), atol=1e-15)
+
+
+def test_defaults_come_from_the_default_experiment(fmu_dir):
+    with Master(_loop(fmu_dir), mass_connections("lugre"), record=["mass.x"]) as m:
+        de = m.default_experiment()
+        assert de == {"start_time": 0.0, "stop_time": 1.0, "step_size": 1e-4}
+        res = m.simulate()
+    assert res.size == 10001 and res["time"][-1] == pytest.approx(1.0)
+
+
+def test_gauss_seidel_and_jacobi_converge_first_order_to_the_reference(fmu_dir):
+    # the mass + LuGre loop against the monolithic solve_ivp reference (stick-slip)
+    for alg, bound in (("gauss-seidel", 1e-3), ("jacobi", 3e-3)):
+        r = mass_proof(fmu_dir, "lugre", stop=0.2, rtol=1e-8, algorithm=alg)
+        assert r["nrmse"] < bound, (alg, r)
+        assert r["order"] > 0.9, (alg, r)
+        assert r["errors"][0] > 1.8 * r["errors"][1], (alg, r)
+
+
+def test_jacobi_lags_gauss_seidel_by_the_coupling_delay(fmu_dir):
+    out = {}
+    for alg in ("gauss-seidel", "jacobi"):
+        with Master(_loop(fmu_dir), mass_connections("lugre"), algorithm=alg, record=REC) as m:
+            out[alg] = m.simulate(stop_time=0.05, step_size=1e-4)
+    d = np.abs(out["jacobi"]["mass.x"] - out["gauss-seidel"]["mass.x"])
+    assert d.max() > 0
+    assert d.max() < 1e-2 * np.ptp(out["gauss-seidel"]["mass.x"])
+
+
+@pytest.mark.slow
+def test_fixed_point_iteration_makes_the_loop_consistent(fmu_dir):
+    # mass.a is a feedthrough of F_friction: after the step the friction force changes, so
+    # without iteration the recorded acceleration is stale; with it, m a = u(t) - F holds
+    conns = mass_connections("modified_lugre")
+    rec = ["mass.a", "friction.F"]
+    params = {"mass": {"u_amp": 12.0, "u0": 0.0, "u_freq": 1.0, "m": 1.0}}
+    gaps = {}
+    for it in (0, 10):
+        with Master(_loop(fmu_dir, "modified_lugre"), conns, iterations=it, record=rec,
+                    parameters=params) as m:
+            res = m.simulate(stop_time=0.05, step_size=1e-4)
+        u = 12.0 * np.sin(2 * np.pi * res["time"])
+        gaps[it] = np.max(np.abs(res["mass.a"] - (u - res["friction.F"])))
+    assert gaps[0] > 1e-3
+    assert gaps[10] < 1e-9 * (1 + gaps[0])
+
+
+def test_parameters_and_start_values_per_instance(fmu_dir):
+    res = {}
+    for m_ in (1.0, 4.0):
+        with Master(_loop(fmu_dir), mass_connections("lugre"), record=["mass.x"],
+                    parameters={"mass": {"m": m_, "u0": 5.0, "u_amp": 0.0}}) as m:
+            res[m_] = m.simulate(stop_time=0.2, step_size=1e-4)["mass.x"][-1]
+    assert res[1.0] > 3.5 * res[4.0] > 0  # x ~ (u0 - F) t^2 / 2m
+
+
+def test_connection_and_name_errors_are_clear(fmu_dir):
+    fmus = _loop(fmu_dir)
+    with pytest.raises(ValueError, match="no variable 'vel'"):
+        Master(fmus, [("mass.vel", "friction.v")])
+    with pytest.raises(ValueError, match="unknown instance 'bogus'"):
+        Master(fmus, [("bogus.v", "friction.v")])
+    with pytest.raises(ValueError, match="not an output"):
+        Master(fmus, [("friction.v", "mass.F_friction")])
+    with pytest.raises(ValueError, match="driven twice"):
+        Master(fmus, [("mass.v", "friction.v"), ("mass.x", "friction.v")])
+    with pytest.raises(ValueError, match="algorithm"):
+        Master(fmus, [], algorithm="newton")
+
+
+def test_fmu_errors_name_the_instance_the_call_and_the_time(fmu_dir):
+    # an inadmissible parameter: refused at the first step after initialization
+    with Master(_loop(fmu_dir), mass_connections("lugre"),
+                parameters={"friction": {"sigma0": -1.0}}) as m:
+        with pytest.raises(FMUError) as exc:
+            m.simulate(stop_time=0.51, step_size=1e-3, start_time=0.5)
+    e = exc.value
+    assert e.instance == "friction" and e.call == "fmi2DoStep" and e.time == pytest.approx(0.5)
+    assert "sigma0" in str(e) and "friction" in str(e) and "t = 0.5" in str(e)
+    # an overflow inside the mass FMU at a later time
+    with Master(_loop(fmu_dir), mass_connections("lugre"),
+                parameters={"mass": {"m": 1e-300, "u0": 0.0, "u_amp": 1e-10,
+                                     "u_freq": 1.0}}) as m:
+        with pytest.raises(FMUError) as exc:
+            m.simulate(stop_time=1.0, step_size=1e-3)
+    assert exc.value.instance == "mass" and "not finite" in str(exc.value)
+
+
+def test_progress_is_shown_on_long_runs(fmu_dir, capsys):
+    with Master(_loop(fmu_dir), mass_connections("lugre"), record=["mass.x"]) as m:
+        m.simulate(stop_time=0.2, step_size=1e-4, progress=True)
+    assert "[cosim]" in capsys.readouterr().err
+
+
+# -- external tools ------------------------------------------------------------------------
+
+def test_libcosim_gives_our_jacobi_trajectories(fmu_dir):
+    pytest.importorskip("libcosimpy", reason="libcosimpy (OSP libcosim) is not importable")
+    from fmus.external import run_libcosim
+    fmus, conns = _loop(fmu_dir), mass_connections("lugre")
+    ext = run_libcosim(fmus, conns, step_size=1e-4, stop_time=0.1, record=REC)
+    with Master(fmus, conns, algorithm="jacobi", record=REC) as m:
+        ours = m.simulate(stop_time=0.1, step_size=1e-4)
+    np.testing.assert_allclose(ext["time"], ours["time"][1:], atol=1e-12)
+    for c in REC:
+        np.testing.assert_allclose(ext[c], ours[c][1:], rtol=1e-9,
+                                   atol=1e-12 * np.max(np.abs(ours[c])))
+
+
+@pytest.mark.parametrize("sequential,alg", [(True, "gauss-seidel"), (False, "jacobi")])
+def test_container_fmu_gives_our_trajectories(fmu_dir, tmp_path, sequential, alg):
+    pytest.importorskip("fmu_manipulation_toolbox",
+                        reason="fmu-manipulation-toolbox is not importable")
+    from fmus.build import validate
+    from fmus.external import make_container
+    fmus, conns = _loop(fmu_dir), mass_connections("lugre")
+    cont = make_container(fmus, conns, tmp_path / "loop.fmu", step_size=1e-4, expose=REC,
+                          sequential=sequential)
+    assert validate(cont) == []
+    with Master({"c": cont}, [], record=["c.mass_x", "c.friction_F"]) as m:
+        ext = m.simulate(stop_time=0.1, step_size=1e-4)
+    with Master(fmus, conns, algorithm=alg, record=REC) as m:
+        ours = m.simulate(stop_time=0.1, step_size=1e-4)
+    np.testing.assert_allclose(ext["c.mass_x"], ours["mass.x"], rtol=1e-12, atol=1e-18)
+    np.testing.assert_allclose(ext["c.friction_F"], ours["friction.F"], rtol=1e-10, atol=1e-14)

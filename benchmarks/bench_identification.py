@@ -10,7 +10,8 @@ seed metaheuristic's (measured in this run).
 Goals checked and printed:
 * noise-free: the default recovers every parameter within 1 %;
 * the default reaches a cost no worse than the best of the seeds' metaheuristics (AFSA, IAFSA,
-  FFOA, IFFOA, chaotic PSO, adaptive GA) in at most a tenth of its wall time.
+  FFOA, IFFOA, chaotic PSO, adaptive GA) in at most a tenth of that metaheuristic's wall time
+  (time to reach, from the default's trace of improvements; its total time is printed too).
 
 Usage::
 
@@ -113,17 +114,19 @@ def main(argv=None):
         else:
             data, start, names, bounds = case.data, case.start, case.names, case.bounds
             perr = case.param_error
-        res = {}
+        res, traces = {}, {}
         for alg in algs:
             r, wall = run(alg, data, start, names, bounds, budget)
             pe = perr(r.params) if perr else None
             res[alg] = (r.fit_nrmse, wall, r.n_evals, pe)
+            traces[alg] = r.trace
             rows.append(dict(dataset=label, algorithm=alg, cost=r.fit_nrmse, param_error=pe,
                              evals=r.n_evals, wall=wall))
             pes = f"{pe:.2e}" if pe is not None else "-"
             print(f"| {label} | {alg} | {r.fit_nrmse:.4g} | {pes} | {r.n_evals} | {wall:.2f} |",
                   flush=True)
         d_cost, d_wall, _, d_pe = res[DEFAULT_ALGORITHM]
+        d_trace = traces[DEFAULT_ALGORITHM]
         if len(algs) == 1 and d_pe is not None:
             goals.append(dict(dataset=label, goal="default within 1 % on every parameter",
                               value=d_pe, ok=bool(d_pe <= 0.01)))
@@ -131,17 +134,23 @@ def main(argv=None):
         if metas:
             best = min(metas, key=lambda a: metas[a][0])
             b_cost, b_wall = metas[best][0], metas[best][1]
-            ok = d_cost <= b_cost * (1 + 1e-9) and d_wall <= 0.1 * b_wall
-            goals.append(dict(dataset=label, goal=f"default cost <= best seed metaheuristic "
-                              f"({best}: {b_cost:.4g}) in <= 1/10 of its time",
+            # time the default took to first reach the best metaheuristic's final cost
+            reach = next((sec for _, sec, c in d_trace if c <= b_cost * (1 + 1e-9)), None)
+            ok = reach is not None and reach <= 0.1 * b_wall
+            goals.append(dict(dataset=label, goal=f"default reaches the best seed "
+                              f"metaheuristic's cost ({best}: {b_cost:.4g}) in <= 1/10 of its "
+                              f"wall time ({b_wall:.2f} s)",
                               value=dict(default_cost=d_cost, best_cost=b_cost,
-                                         time_ratio=d_wall / b_wall), ok=bool(ok)))
+                                         time_to_reach=reach, default_total=d_wall,
+                                         time_ratio=None if reach is None else reach / b_wall,
+                                         total_ratio=d_wall / b_wall), ok=bool(ok)))
     print("\nGoals")
     for g in goals:
         v = g["value"]
         if isinstance(v, dict):
-            v = (f"default {v['default_cost']:.4g} vs {v['best_cost']:.4g}, time ratio "
-                 f"{v['time_ratio']:.3f}")
+            tr = "never" if v["time_ratio"] is None else f"{v['time_ratio']:.3f}"
+            v = (f"default {v['default_cost']:.4g} vs {v['best_cost']:.4g}; time to reach / "
+                 f"metaheuristic time {tr} (default total / metaheuristic {v['total_ratio']:.3f})")
         else:
             v = f"{v:.2e}"
         print(f"- [{'x' if g['ok'] else ' '}] {g['dataset']}: {g['goal']}: {v}")

@@ -253,6 +253,7 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
         params=params, model=fitted, fit_nrmse=float(fit),
         validation_nrmse=None if val is None else float(val),
         cost_history=[float(c) for c in history], n_evals=int(problem.n_evals),
+        trace=[[int(n), float(sec) + elapsed_before, float(c)] for n, sec, c in problem.trace],
         wall_time=float(wall), ci=ci, algorithm=alg.name, seed=seed,
         options=dict(alg.options), bounds=space.as_json(), resumed=resumed,
         message=str(info.get("message", "")), data=data.name,

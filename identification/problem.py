@@ -7,6 +7,8 @@ and enforces the evaluation budget.
 """
 from __future__ import annotations
 
+import time
+
 import numpy as np
 
 from .space import ParameterSpace
@@ -37,6 +39,9 @@ class Problem:
         self.n_evals = 0
         self.best_u = None
         self.best_cost = np.inf
+        #: (evaluations, seconds since start, best cost) after every improvement
+        self.trace: list[tuple[int, float, float]] = []
+        self._t0 = time.perf_counter()
 
     @property
     def dim(self) -> int:
@@ -55,6 +60,14 @@ class Problem:
         if c[k] < self.best_cost:
             self.best_cost = float(c[k])
             self.best_u = np.array(U[k], float)
+            self.trace.append((self.n_evals, time.perf_counter() - self._t0, self.best_cost))
+
+    def time_to(self, target: float) -> float | None:
+        """Seconds until the best cost first reached ``target`` (None if never)."""
+        for _, sec, c in self.trace:
+            if c <= target:
+                return sec
+        return None
 
     def evaluate(self, U) -> np.ndarray:
         """Costs of a population ``U[npop, D]`` (clipped into the cube). Rows past the budget

@@ -42,6 +42,8 @@ class IdentificationResult(dict):
         NRMSE on the validation data, if given.
     cost_history : list of float
         Best cost after each iteration / stage.
+    trace : list of [evaluations, seconds, best cost]
+        Every improvement of the best cost (time-to-target analyses).
     n_evals : int
         Number of simulations (one per parameter set).
     wall_time : float

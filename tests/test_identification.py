@@ -79,3 +79,22 @@ def test_bad_data_and_bad_arguments_are_named(synthetic):
         identify(synthetic, "lugre", names=["Fc"], bounds={"Fc": (2.0, 1.0)})
     with pytest.raises(TypeError, match="Dataset"):
         identify({"t": [0, 1]}, "lugre")
+
+
+def test_real_data_folder_missing_gives_a_clear_error(monkeypatch, tmp_path):
+    from identification.real_data import load_emps
+    monkeypatch.setenv("FRICTIONLAB_SHARED", str(tmp_path / "nowhere"))
+    with pytest.raises(FileNotFoundError, match="FRICTIONLAB_SHARED"):
+        load_emps()
+
+
+def test_progress_lines_and_path_input(synthetic, start, tmp_path, capsys):
+    csv = tmp_path / "d.csv"
+    synthetic.to_csv(csv)
+    r = identify(str(csv), start, algorithm="cmaes", names=NAMES, max_iter=3, progress=True)
+    err = capsys.readouterr().err
+    assert "[identify cmaes]" in err and "cost=" in err
+    assert r.n_evals > 0 and len(r.trace) >= 1
+    # the trace is monotone in evaluations, time and cost
+    tr = np.array(r.trace)
+    assert np.all(np.diff(tr[:, 0]) >= 0) and np.all(np.diff(tr[:, 2]) < 0)

@@ -143,10 +143,36 @@ class TrajectoryBlock(DiscreteBlock):
         out.update(x_ff=x_l, v_ff=v_l, a_ff=a_l)
         return state, out
 
+    def sample(self, times) -> np.ndarray:
+        """Outputs at many instants at once: array (N, 7) in ``output_names`` order."""
+        times = np.asarray(times, dtype=float)
+        try:
+            cols = self._sample_vectorised(times)
+        except (TypeError, ValueError):  # a trajectory that only takes scalars
+            rows = [self.step(float(t), None, {})[1] for t in times]
+            cols = [np.array([r[n] for r in rows]) for n in self.output_names]
+        return np.column_stack([np.broadcast_to(np.asarray(c, float), times.shape)
+                                for c in cols])
+
+    def _sample_vectorised(self, t):
+        x, v, a = (np.asarray(c, float) for c in self.traj(t))
+        if x.shape != t.shape:
+            raise ValueError("trajectory is not vectorised")
+        xf = np.full(t.shape, self.target)
+        if self.ff_mode == "none":
+            return [x, v, a, xf, x, v, a]
+        Ts, tau = self.sample_time, self.tau
+        x_l, v_l, a_l = self.traj(t + 0.5 * Ts + tau)
+        if self.ff_mode == "invert":
+            th = t + 0.5 * Ts
+            da = (self.traj(th + 0.5 * Ts)[2] - self.traj(th - 0.5 * Ts)[2]) / Ts
+            a_l = self.traj(th)[2] + tau * da
+        return [x, v, a, xf, x_l, v_l, a_l]
+
 
 _OPTIONS = dict(distance=1e-4, vmax=0.25, amax=4.0, jerk=None, t_move=1e-3,
                 controller="sdpid", compensation=True, compensator=None, trajectory=None,
-                open_loop=False, ff_mode="invert")
+                open_loop=False, ff_mode="invert", engine="auto")
 
 
 class _SubstepFromCurrentLoop:
@@ -182,6 +208,12 @@ class XML350(_SubstepFromCurrentLoop, Plant):
         test (acceleration input).
     ff_mode : {"invert", "lead", "none"}
         Timing of the feedforward signals, see :class:`TrajectoryBlock`.
+    engine : {"auto", "python", "numba"}
+        Fast method's engine: ``numba`` runs the loop in one compiled kernel
+        (:mod:`plants._xml350_kernel`; classic LuGre friction and compensator, output step
+        = control period, no external inputs; same scheme and results to ~1e-13); ``auto``
+        uses it when eligible (and the run has >= 100 samples); ``python`` is the generic
+        stepper (what ``stepper()`` and the FMUs run).
     """
     name = "xml350"
     Params = XML350Params
@@ -296,6 +328,57 @@ class XML350(_SubstepFromCurrentLoop, Plant):
         return {"x": s[0], "v": s[1], "a": (motor.force(s[2]) - Fr) / p.M, "x_meas": d[7],
                 "x_d": d[4], "v_d": d[5], "a_d": d[6], "e": d[4] - s[0], "i": s[2],
                 "u": d[1], "u_ff": d[3]}
+
+    # -- fast path ----------------------------------------------------------------------------
+    def _numba_eligible(self, exp, inputs) -> str | None:
+        """Why the compiled kernel cannot run this experiment (None: it can)."""
+        from friction.lugre import LuGre
+        if self.external_friction or inputs is not None:
+            return "external inputs"
+        if type(self.friction) is not LuGre:
+            return f"friction law {type(self.friction).__name__} (kernel inlines LuGre)"
+        ff = self._blocks()["ff"]
+        if ff is not None and type(ff.law) is not LuGre:
+            return f"compensator law {type(ff.law).__name__}"
+        Ts = self.params.Ts
+        if abs(exp.step - Ts) > 1e-9 * Ts:
+            return "output step differs from the control period"
+        return None
+
+    def _simulate_fast(self, exp, progress, inputs, substep):
+        engine = self.opts["engine"]
+        if engine not in ("auto", "python", "numba"):
+            raise ValueError(f"engine must be 'auto', 'python' or 'numba', got {engine!r}")
+        times = exp.times()
+        why = self._numba_eligible(exp, inputs) if engine != "python" else "python"
+        if engine == "numba" and why is not None:
+            raise ValueError(f"engine='numba' cannot run this experiment: {why}")
+        if why is not None or (engine == "auto" and times.size < 100):
+            return super()._simulate_fast(exp, progress, inputs, substep)
+        from ._xml350_kernel import OUT_COLS, xml350_loop
+        from .base import structured
+
+        b, p = self._blocks(), self.params
+        ref = b["ref"].sample(times)
+        ff = b["ff"]
+        pars = np.array([p.M, p.Kf, 2.0 * math.pi * p.f_current, p.resolution, p.Ts,
+                         p.M_ctrl, b["pid"].params.Kp, b["pid"].params.Ki, b["pid"].params.Kd,
+                         b["pid"].params.alpha_p, b["pid"].params.alpha_i,
+                         b["pid"].params.alpha_d, b["pid"].params.beta,
+                         float(bool(self.opts["open_loop"])), b["motor"].i_max,
+                         float(ff is not None)])
+        h = float(substep or self.max_substep)
+        nsub = max(1, int(math.ceil(p.Ts / h - 1e-9)))
+        out = np.empty((times.size, len(OUT_COLS)))
+        theta_ff = ff.law.theta if ff is not None else self.friction.theta
+        xml350_loop(times, ref, self.friction.theta, theta_ff, pars, nsub, out)
+        if not np.all(np.isfinite(out)):
+            raise FloatingPointError(f"{self.name}: the fast integrator diverged "
+                                     f"(substep {p.Ts / nsub:.3g} s)")
+        if progress is not None:
+            progress(times.size, "numba kernel")
+        cols = dict(zip(OUT_COLS, out.T))
+        return structured({"time": times, **{n: cols[n] for n in self.all_output_names}})
 
     # -- conveniences --------------------------------------------------------------------------
     def move_window(self) -> tuple[float, float]:

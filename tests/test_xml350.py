@@ -142,6 +142,28 @@ def test_external_friction_mechanics_matches_internal():
     assert nrmse(np.array(xa), np.array(xb)) < 0.02
 
 
+@pytest.mark.parametrize("resolution", [0.0, 1e-9])
+def test_numba_kernel_equals_python_stepper(resolution):
+    st = XML350(resolution=resolution)
+    for kw in (dict(distance=1e-6), dict(distance=1e-4, compensation=False),
+               dict(distance=1e-4, controller="pid", f_current=None)):
+        plant = st.with_params(f_current=2000.0) if kw.pop("f_current", 0) is None else st
+        a = plant.simulate(0.03, engine="python", **kw)
+        b = plant.simulate(0.03, engine="numba", **kw)
+        for name in a.dtype.names:
+            scale = np.max(np.abs(a[name])) + 1e-300
+            assert np.max(np.abs(a[name] - b[name])) <= 1e-9 * scale, (name, kw)
+
+
+def test_numba_engine_refuses_other_laws():
+    from friction import make_model
+    st = XML350(make_model("stribeck"))
+    r = st.simulate(0.012, distance=1e-6)   # auto: falls back to the Python stepper
+    assert np.all(np.isfinite(r["x"]))
+    with pytest.raises(ValueError, match="engine='numba' cannot run"):
+        st.simulate(0.012, distance=1e-6, engine="numba")
+
+
 def test_stepper_reproduces_simulate(stage):
     st = stage.stepper(distance=1e-6)
     assert st.output_names[-1] == "F" and "x" in st.output_names
@@ -150,7 +172,7 @@ def test_stepper_reproduces_simulate(stage):
     for k in range(100):
         st.do_step(k * 1e-4, 1e-4)
         xs.append(st.outputs()["x"])
-    ref = stage.simulate(0.01, distance=1e-6)
+    ref = stage.simulate(0.01, distance=1e-6, engine="python")
     np.testing.assert_allclose(xs, ref["x"][1:101], rtol=1e-12, atol=1e-21)
 
 

@@ -22,9 +22,10 @@ from numba import njit, prange
 
 from ._validation import ParameterError
 from .base import FrictionModel, FrictionParams, param
+from .lugre import _cutoff, _g_fast
 from .shapes import SHAPES, stribeck_g, stribeck_g_np
 
-__all__ = ["StribeckParams", "StaticStribeck", "stribeck_force"]
+__all__ = ["StribeckParams", "StaticStribeck", "stribeck_force", "stribeck_run"]
 
 
 @dataclass(frozen=True)
@@ -82,23 +83,41 @@ def stribeck_force(v, th):
 
 
 @njit(cache=True)
+def stribeck_run(v, th, F):
+    """F[k] = F(v[k]) for a packed theta, constants hoisted and the exp skipped where it
+    cannot change g (see :func:`friction.lugre._g_fast`)."""
+    alpha = th[ALPHA]
+    shape = th[SHAPE]
+    b = th[B]
+    fcp, fsp, ivsp, s2p = th[FCP], th[FSP], 1.0 / th[VSP], th[S2P]
+    fcn, fsn, ivsn, s2n = th[FCN], th[FSN], 1.0 / th[VSN], th[S2N]
+    cutp = _cutoff(fcp, fsp)
+    cutn = _cutoff(fcn, fsn)
+    for k in range(v.size):
+        vk = v[k]
+        if vk > 0.0:
+            g, _ = _g_fast(vk, fcp, fsp, ivsp, alpha, shape, cutp, 1.0, 1.0)
+            F[k] = g + s2p * vk + b
+        elif vk < 0.0:
+            g, _ = _g_fast(vk, fcn, fsn, ivsn, alpha, shape, cutn, 1.0, 1.0)
+            F[k] = -g + s2n * vk + b
+        else:
+            F[k] = b  # sgn(0) = 0 (seed 000 Eq. 6)
+
+
+@njit(cache=True)
 def _kernel(t, v, a, load, x, th, method, state0):
-    n = t.size
-    F = np.empty(n)
-    for k in range(n):
-        F[k] = stribeck_force(v[k], th)
-    return F, np.empty((n, 0))
+    F = np.empty(t.size)
+    stribeck_run(v, th, F)
+    return F, np.empty((t.size, 0))
 
 
 @njit(cache=True, parallel=True)
 def _population_kernel(t, v, a, load, x, Theta, method):
     npop = Theta.shape[0]
-    n = t.size
-    F = np.empty((npop, n))
+    F = np.empty((npop, t.size))
     for i in prange(npop):
-        th = Theta[i]
-        for k in range(n):
-            F[i, k] = stribeck_force(v[k], th)
+        stribeck_run(v, Theta[i], F[i])
     return F
 
 

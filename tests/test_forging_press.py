@@ -1,0 +1,88 @@
+"""Forging press of seed 004: Stribeck minimum at vc, crawling below vc, numerics."""
+import numpy as np
+import pytest
+
+from friction import MODELS, ParameterError
+from plants.forging_press import (TABLE1, ForgingPress, crawl_metrics, schedule_reference,
+                                  shortened_schedule, steady_friction)
+
+
+def nrmse(a, b):
+    return float(np.sqrt(np.mean((a - b) ** 2)) / np.std(b))
+
+
+@pytest.fixture(scope="module")
+def press():
+    return ForgingPress()
+
+
+@pytest.fixture(scope="module")
+def schedule_run(press):
+    return press.simulate()            # shortened Table 1 schedule with the workpiece
+
+
+def test_table1_schedule_reductions():
+    x, v = schedule_reference(np.array([50.0, 290.0, 370.0, 1370.0]), TABLE1)
+    assert np.allclose(x * 1e3, [60.0, 84.0, 88.0, 90.0])          # 60 / 24 / 4 / 2 mm
+    assert shortened_schedule(0.1)[0] == (1.2e-3, 5.0)
+
+
+def test_steady_curve_minimum_at_vc(press):
+    law = press.friction
+    v = np.logspace(-6, -2.5, 4000)
+    kw = {"load": np.zeros_like(v)} if "load" in law.extra_inputs else {}
+    Fss = law.steady_state(v, **kw)
+    assert v[np.argmin(Fss)] * 1e3 == pytest.approx(0.19, abs=0.005)   # Table 2: vc = 0.19 mm/s
+    # the plant's friction "measured" by Eq. 1 in no-load constant-speed tests sits on it
+    meas = steady_friction(press, (0.3e-3, 1.2e-3), duration=4.0)
+    kw = {"load": np.zeros(2)} if "load" in law.extra_inputs else {}
+    assert np.allclose(meas[:, 1], law.steady_state(meas[:, 0], **kw), rtol=5e-3)
+    assert meas[1, 1] > meas[0, 1]                                  # rising branch above vc
+
+
+def test_crawls_below_vc_smooth_above_in_the_schedule(schedule_run):
+    """Table 1 schedule: 1.2 mm/s (> vc) smooth; 0.05 and 0.002 mm/s (< vc) crawl."""
+    r = schedule_run
+    fast = crawl_metrics(r, t_from=4.0, t_to=6.0)
+    assert not fast["crawling"] and fast["intermittency"] == 0.0 and fast["cv"] < 0.1
+    step3 = crawl_metrics(r, t_from=12.0, t_to=16.0)
+    assert step3["crawling"] and step3["slips"] >= 2
+    step4 = crawl_metrics(r, t_from=18.0, t_to=41.0)                 # 0.002 mm/s
+    assert step4["crawling"] and step4["peak_ratio"] > 100
+    assert r["F_sigma"].max() > 5e5                                  # the workpiece was forged
+
+
+def test_crawl_band_without_load(press):
+    """No-load constant speed: the Stribeck drop destabilises sliding below vc only."""
+    slow = press.simulate(8.0, schedule=((0.05e-3, 9.0),), workpiece=False)
+    above = press.simulate(4.0, schedule=((0.3e-3, 5.0),), workpiece=False)
+    assert crawl_metrics(slow, t_from=2.0)["crawling"]
+    ma = crawl_metrics(above, t_from=2.0)
+    assert not ma["crawling"] and ma["cv"] < 0.05
+
+
+def test_fast_matches_reference_and_converges(press):
+    ref = press.simulate(0.5, method="reference", rtol=1e-7, workpiece=False)
+    fast = press.simulate(0.5, workpiece=False)
+    fine = press.simulate(0.5, substep=5e-5, workpiece=False)
+    e_fast, e_fine = nrmse(fast["x"], ref["x"]), nrmse(fine["x"], ref["x"])
+    assert e_fast < 1e-5 and e_fine < e_fast / 5                    # second order in the step
+    assert nrmse(fast["F"], ref["F"]) < 1e-4
+
+
+def test_schedule_with_load_converges_in_substep(press):
+    sched = ((1.2e-3, 3.0),)
+    a = press.simulate(2.0, schedule=sched)
+    b = press.simulate(2.0, schedule=sched, substep=1.25e-4)
+    assert nrmse(a["x"], b["x"]) < 1e-4 and nrmse(a["F_sigma"], b["F_sigma"]) < 1e-3
+
+
+def test_default_friction_and_bad_input(press):
+    if "load_lugre" in MODELS:
+        assert press.friction.name == "load_lugre"
+    with pytest.raises(ParameterError, match="A1"):
+        ForgingPress(A1=-1.0)
+    with pytest.raises(ValueError, match="crushed"):
+        ForgingPress(H0=0.01).simulate(12.0, schedule=((1.2e-3, 12.0),))
+    with pytest.raises(ValueError, match="positive constant speed"):
+        crawl_metrics(press.simulate(0.2, schedule=((0.0, 1.0),)))

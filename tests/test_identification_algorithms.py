@@ -181,3 +181,18 @@ def test_cli_identify_writes_json(data, tmp_path):
                           "--model", "nope"], capture_output=True, text=True, timeout=120)
     assert bad.returncode != 0 and "unknown friction model" in bad.stderr
     assert "Traceback" not in bad.stderr
+
+
+def test_benchmark_functions_of_seed_002():
+    from identification.functions import ackley, griewank, minimize
+    assert ackley(np.zeros((1, 3)))[0] == pytest.approx(0.0, abs=1e-12)
+    assert griewank(np.zeros((1, 3)))[0] == pytest.approx(0.0, abs=1e-12)
+    # 2-D, the papers' small settings: the swarm methods get close to the global minimum 0
+    for alg, kw in [("chaotic_pso", dict(max_iter=100)), ("cmaes", {}),
+                    ("ffoa", dict(pop_size=30, max_iter=100))]:
+        r = minimize(ackley, [-5, -5], [5, 5], algorithm=alg, seed=1, **kw)
+        assert r["fun"] < 0.1, alg
+    # IAFSA's stall handling (Gauss mutation of the worst fish, chaotic search) fires
+    r = minimize(griewank, [-5, -5], [5, 5], algorithm="iafsa", seed=1, max_iter=40)
+    assert r["state"]["n_chaos"] > 0 and r["state"]["n_mutations"] > 0
+    assert r["fun"] < 0.05

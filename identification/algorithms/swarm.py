@@ -127,9 +127,11 @@ class IAFSA(AFSA):
                          0.0, 1.0)
             X[worst], Y[worst] = Xm, problem.evaluate(Xm)
             state["ban"] = self.ban
+            state["n_mutations"] = state.get("n_mutations", 0) + 1
         if gain == 0.0:  # bulletin unchanged: chaotic search around the best fish
             ib = int(np.argmin(Y))
             xb, yb = X[ib].copy(), Y[ib]
+            state["n_chaos"] = state.get("n_chaos", 0) + 1
             z = np.clip(xb, 1e-3, 1 - 1e-3) + 1e-6 * rng.random(xb.size)  # Eq. 24
             used = 0
             while used < self.max_chaos and not problem.exhausted:

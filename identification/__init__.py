@@ -1,6 +1,13 @@
 """Identification of friction-law parameters: the seeds' metaheuristics beside fast modern
 optimisers, in-process and co-simulation objectives, real-data loaders.
 
+Modules: :mod:`.api` (``identify``), :mod:`.algorithms` (``ALGORITHMS``), :mod:`.objectives`
+and :mod:`.cosim` (in-process / FMU co-simulation costs), :mod:`.executors` (inline,
+processes, dask), :mod:`.real_data` (loaders of ``../shared/data/real``), :mod:`.synthetic`
+(the seeds' laws and tables as test cases), :mod:`.xml350_protocol` (seed 003 end to end),
+:mod:`.functions` (plain minimisation, Ackley/Griewank), :mod:`.sensitivity` (seed 002
+sensitivity, by helper "laws-2"), :mod:`.cli`, :mod:`.demo`.
+
 >>> from identification import identify, ALGORITHMS
 >>> from identification.real_data import load_emps
 """
@@ -9,6 +16,7 @@ from __future__ import annotations
 from .algorithms import ALGORITHMS, DEFAULT_ALGORITHM, Algorithm, get_algorithm
 from .api import confidence_intervals, identify
 from .executors import DaskExecutor, InlineExecutor, ProcessExecutor
+from .functions import minimize
 from .objectives import InProcessObjective, Objective
 from .result import IdentificationResult
 from .space import ParameterSpace, default_bounds
@@ -16,4 +24,4 @@ from .space import ParameterSpace, default_bounds
 __all__ = ["identify", "IdentificationResult", "ALGORITHMS", "DEFAULT_ALGORITHM", "Algorithm",
            "get_algorithm", "confidence_intervals", "Objective", "InProcessObjective",
            "ParameterSpace", "default_bounds", "InlineExecutor", "ProcessExecutor",
-           "DaskExecutor"]
+           "DaskExecutor", "minimize"]

@@ -144,9 +144,9 @@ def _identification_figure(out: str, summary: dict, quick: bool) -> None:
     from .xml350 import xml350_friction
 
     law = xml350_friction()
-    speeds = stribeck_speeds(6 if quick else 16, 0.03, 2e-4)
-    _, v, F = xml350_stribeck(speeds, plateau=0.06 if quick else 0.15, accel=0.5)
-    prbs = xml350_prbs(duration=1.0 if quick else 3.0)
+    speeds = stribeck_speeds(8 if quick else 24, 0.03, 2e-4)
+    _, v, F = xml350_stribeck(speeds, plateau=0.1 if quick else 0.2, accel=0.5)
+    prbs = xml350_prbs(duration=1.0 if quick else 4.0)
     fit = prbs["fit"]
     summary["xml350_identification"] = {
         "stribeck_points": {"v": v.tolist(), "F": F.tolist()},

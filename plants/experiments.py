@@ -235,7 +235,7 @@ def _xml_force(res, stage) -> np.ndarray:
 
 
 def xml350_stribeck(speeds=None, *, plateau: float = 0.2, accel: float = 0.2,
-                    friction=None, noise_x: float = 0.0, substep: float | None = 1e-4,
+                    friction=None, noise_x: float = 0.0, substep: float | None = None,
                     progress=None) -> tuple[Dataset, np.ndarray, np.ndarray]:
     """Seed 003's static step: trapezoidal plateaus within +-30 mm/s tracked by the linear
     PID; returns the processed dataset and the steady-state points (v [m/s], F [N])."""
@@ -252,7 +252,7 @@ def xml350_stribeck(speeds=None, *, plateau: float = 0.2, accel: float = 0.2,
 
 
 def xml350_prbs(*, rms: float = 5e-3, f_max: float = 500.0, duration: float = 2.0,
-                seed: int = 1, friction=None, substep: float | None = 1e-4) -> dict:
+                seed: int = 1, friction=None, substep: float | None = None) -> dict:
     """Seed 003's dynamic step: open-loop PRBS acceleration in pre-sliding; returns
     ``{"result", "freq", "G", "coherence", "fit"}`` with the fitted sigma0, sigma1."""
     from .xml350 import XML350
@@ -270,7 +270,7 @@ def xml350_prbs(*, rms: float = 5e-3, f_max: float = 500.0, duration: float = 2.
 
 
 def xml350_refinement(seed: int = 0, *, duration: float = 14.0, rms: float = 5e-3,
-                      friction=None, noise_x: float = 0.0, substep: float | None = 1e-4,
+                      friction=None, noise_x: float = 0.0, substep: float | None = None,
                       progress=None) -> Dataset:
     """Seed 003's refinement data: coloured-noise velocity reference tracked by the linear
     PID, processed to 1 kHz (N = 1000 * duration samples; the paper: 14000 and 10000)."""

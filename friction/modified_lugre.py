@@ -353,6 +353,13 @@ class ModifiedLuGre(FrictionModel):
         if self.params.fd_form == "filtered_acceleration":
             self.state_names = ("z", "a_f")
 
+    #: preset constants of the switch (not identified in seed 000: not in its 20 parameters)
+    presets = ("v1", "v2")
+
+    def free_names(self) -> list[str]:
+        """Parameters identification may vary: as the base, without the presets v1, v2."""
+        return [n for n in super().free_names() if n not in self.presets]
+
     def _pack(self, p: ModifiedLuGreParams) -> np.ndarray:
         r = p.resolved
         return np.array([p.sigma0, p.sigma1, p.sigma2, r("sigma2", -1), p.Fc, r("Fc", -1),

@@ -235,3 +235,14 @@ def test_bad_signals():
         m.simulate(t, np.zeros(10), state0=[0.0])
     with pytest.raises(ValueError, match="acceleration"):
         m.derivatives(np.zeros(2), 0.1)
+
+
+def test_identification_names_exclude_the_switch_presets():
+    m = make_model("modified_lugre", Fc_neg=5.0)
+    names = m.free_names()
+    assert "v1" not in names and "v2" not in names
+    assert {"sigma0", "sigma1", "beta", "gamma", "tau", "f_a", "a_s", "v_c", "alpha",
+            "Fc", "Fc_neg", "Fs", "vs", "sigma2"} <= set(names)
+    # every free name has a finite search range (identification builds its box from them)
+    info = {i.name: i for i in m.Params.info()}
+    assert all(info[n].search is not None for n in names)

@@ -284,6 +284,7 @@ class SlaveBase(Fmi2Slave):
         self.values = [v.start for v in self.variables]
         self.index = {v.name: i for i, v in enumerate(self.variables)}
         self.roles = [v.causality for v in self.variables]
+        self.output_idx = [i for i, r in enumerate(self.roles) if r == "output"]
         for i, v in enumerate(self.variables):
             var_cls = _TYPES[v.type]
             variability = (Fmi2Variability.tunable if v.causality == "parameter"
@@ -310,7 +311,9 @@ class SlaveBase(Fmi2Slave):
     def compute_outputs(self) -> None:  # pragma: no cover - abstract
         raise NotImplementedError
 
-    def advance(self, t: float, h: float) -> None:  # pragma: no cover - abstract
+    def advance(self, t: float, h: float) -> bool:  # pragma: no cover - abstract
+        """Integrate [t, t+h] with the inputs held; return True if the outputs at t+h were
+        set as well (otherwise ``compute_outputs`` runs)."""
         raise NotImplementedError
 
     # helpers ------------------------------------------------------------------------------
@@ -373,17 +376,21 @@ class SlaveBase(Fmi2Slave):
                 self.log(f"{msg} (step at t = {current_time:g} refused)", Fmi2Status.error)
             return False
         try:
-            self.advance(current_time, step_size)
+            done = self.advance(current_time, step_size)
         except ValueError as exc:
             self.reject("step", f"step [{current_time:g}, +{step_size:g}] failed: {exc}")
             return False
         self.time = current_time + step_size
-        self.outputs_dirty = True
-        if not self._update_outputs():
-            return False
-        for i, role in enumerate(self.roles):
-            if role == "output" and not math.isfinite(self.values[i]):
-                self.reject("step", f"output {self.variables[i].name} = {self.values[i]!r} "
+        if done:  # advance() already set the outputs for the held inputs
+            self.outputs_dirty = False
+        else:
+            self.outputs_dirty = True
+            if not self._update_outputs():
+                return False
+        values = self.values
+        for i in self.output_idx:
+            if not math.isfinite(values[i]):
+                self.reject("step", f"output {self.variables[i].name} = {values[i]!r} "
                                     f"is not finite after the step to t = {self.time:g}")
                 return False
         return True
@@ -486,16 +493,22 @@ class LawSlave(SlaveBase):
 
     def advance(self, t, h):
         if self.state.size == 0:
-            return  # a static map: nothing to integrate
+            return False  # a static map: nothing to integrate
         b = self.buf2
         self._fill(b)
         self.t2[1] = h
-        _, S = self.kernel(self.t2, b["v"], b["a"], b["load"], b["x"], self.theta, 0, self.state)
-        new = np.array(S[1], dtype=np.float64)
-        if not np.all(np.isfinite(new)):
-            bad = [n for n, s in zip(self.model.state_names, new) if not math.isfinite(s)]
-            raise ValueError(f"state {', '.join(bad)} became non-finite")
+        F, S = self.kernel(self.t2, b["v"], b["a"], b["load"], b["x"], self.theta, 0, self.state)
+        new = S[1].copy()
+        vals = self.values
+        for j, i in enumerate(self.state_idx):
+            zj = float(new[j])
+            if not math.isfinite(zj):
+                raise ValueError(f"state {self.model.state_names[j]} = {zj!r} became non-finite")
+            vals[i] = zj
         self.state = new
+        # the kernel's force at the second sample: new state, same (held) inputs
+        vals[self.F_idx] = float(F[1])
+        return True
 
 
 class MassSlave(SlaveBase):
@@ -543,6 +556,9 @@ class MassSlave(SlaveBase):
         m = p["m"]
         self.x = self.x + self.v * h + (0.5 * held * h * h + i2) / m
         self.v = self.v + (held * h + i1) / m
+        self.time = t + h
+        self.compute_outputs()
+        return True
 
 
 class StepperSlave(SlaveBase):
@@ -592,3 +608,4 @@ class StepperSlave(SlaveBase):
         self._push_inputs()
         self.stepper.do_step(t, h)
         self.stepped = True
+        return False

@@ -112,7 +112,8 @@ def xml350_compensation_figures(out: str, summary: dict, quick: bool = False) ->
                f"-{PAPER_REDUCTIONS[label]['peak_reduction']:.1%})")
     summary["xml350_compensation"] = comp
     summary["xml350_compensation_paper"] = PAPER_REDUCTIONS
-    plot_compensation(runs, os.path.join(out, "xml350_compensation.png"))
+    figs = summary.setdefault("figures", [])
+    figs.append(plot_compensation(runs, os.path.join(out, "xml350_compensation.png")))
 
     if quick:
         levels, names = (0.1, 0.3), ("Fc", "sigma0", "all")
@@ -127,7 +128,7 @@ def xml350_compensation_figures(out: str, summary: dict, quick: bool = False) ->
         "rows": rows}
     with open(os.path.join(out, "xml350_mismatch.json"), "w") as fh:
         json.dump(rows, fh, indent=1)
-    _plot_mismatch(rows, os.path.join(out, "xml350_mismatch.png"))
+    figs.append(_plot_mismatch(rows, os.path.join(out, "xml350_mismatch.png")))
     worst = {mv: min(r["rms_reduction"] for r in rows if r["move"] == mv
                      and abs(r["error"]) >= 0.3 - 1e-9) for mv in MOVES}
     report(f"  xml350 mismatch: worst RMS reduction at 30 % error {worst}")
@@ -175,8 +176,10 @@ def _identification_figure(out: str, summary: dict, quick: bool) -> None:
     axes[1].legend(fontsize=8)
     axes[1].grid(alpha=0.3, which="both")
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "xml350_identification.png"), dpi=120)
+    path = os.path.join(out, "xml350_identification.png")
+    fig.savefig(path, dpi=120)
     plt.close(fig)
+    summary.setdefault("figures", []).append(path)
 
 
 def run_stage(out: str, summary: dict, quick: bool = False) -> None:

@@ -274,3 +274,21 @@ def test_example_draws_compensation_figure(tmp_path):
     assert (tmp_path / "xml350_compensation.json").exists()
     for r in res["reductions"].values():
         assert r["rms_reduction"] >= 0.85
+
+
+def test_demo_stage_writes_compensation_summary(tmp_path, monkeypatch):
+    import plants.demo as demo
+    # machines' demos are theirs to test: replace the list with an absent module
+    monkeypatch.setattr(demo, "MACHINE_DEMOS", ("no_such_machine",))
+    summary = {}
+    demo.run_stage(str(tmp_path), summary, quick=True)
+    comp = summary["xml350_compensation"]
+    assert set(comp) == {"100um", "1um"}
+    for r in comp.values():
+        assert r["rms_reduction"] >= 0.85 and r["peak_reduction"] >= 0.85
+    rows = summary["xml350_mismatch"]["rows"]
+    assert {r["param"] for r in rows} >= {"exact", "Fc", "all"}
+    assert summary["plants_demo"] == {"ran": ["xml350"], "missing": ["no_such_machine"]}
+    for name in ("xml350_compensation.png", "xml350_mismatch.png", "xml350_identification.png"):
+        assert (tmp_path / name).stat().st_size > 10_000
+    assert summary["xml350_identification"]["stribeck_max_rel_error"] < 0.01

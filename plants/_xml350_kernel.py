@@ -36,9 +36,10 @@ def _deriv(x, v, i, F, i_cmd, M, Kf, wc, i_max, out):
 
 
 @njit(cache=True)
-def xml350_loop(times, ref, theta, theta_ff, pars, nsub, out):
+def xml350_loop(times, ref, theta, theta_ff, pars, nsub, s0, out):
     """Run the loop; ``times`` are the control instants, ``ref`` (N, 7) the sampled
-    reference (:data:`REF_COLS`), ``out`` (N, 12) receives :data:`OUT_COLS`."""
+    reference (:data:`REF_COLS`), ``s0`` the initial (x, v, i), ``out`` (N, 12) receives
+    :data:`OUT_COLS`."""
     M, Kf, wc, res, Ts = pars[0], pars[1], pars[2], pars[3], pars[4]
     M_ctrl, Kp, Ki, Kd = pars[5], pars[6], pars[7], pars[8]
     ap, ai, ad, beta = pars[9], pars[10], pars[11], pars[12]
@@ -55,11 +56,12 @@ def xml350_loop(times, ref, theta, theta_ff, pars, nsub, out):
     k1 = np.zeros(3)
     k2 = np.zeros(3)
     # continuous states, friction state, discrete states
-    x, v, i = 0.0, 0.0, 0.0
+    x, v, i = s0[0], s0[1], s0[2]
     z = 0.0
     integral, e_prev, pid_started = 0.0, 0.0, False
     z_ff, v_ff_prev, ff_started = 0.0, 0.0, False
-    lugre_run(t1, v1, theta, 0, z, F1, Z1)   # force at rest, state z = 0
+    v1[0] = v
+    lugre_run(t1, v1, theta, 0, z, F1, Z1)   # force at the start, state z = 0
     F = F1[0]
     a_held = 0.0
     for k in range(n):

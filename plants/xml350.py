@@ -371,7 +371,8 @@ class XML350(_SubstepFromCurrentLoop, Plant):
         nsub = max(1, int(math.ceil(p.Ts / h - 1e-9)))
         out = np.empty((times.size, len(OUT_COLS)))
         theta_ff = ff.law.theta if ff is not None else self.friction.theta
-        xml350_loop(times, ref, self.friction.theta, theta_ff, pars, nsub, out)
+        s0 = np.asarray(self.initial_state(), dtype=float)
+        xml350_loop(times, ref, self.friction.theta, theta_ff, pars, nsub, s0, out)
         if not np.all(np.isfinite(out)):
             raise FloatingPointError(f"{self.name}: the fast integrator diverged "
                                      f"(substep {p.Ts / nsub:.3g} s)")

@@ -155,6 +155,16 @@ def test_numba_kernel_equals_python_stepper(resolution):
             assert np.max(np.abs(a[name] - b[name])) <= 1e-9 * scale, (name, kw)
 
 
+def test_numba_kernel_starts_where_the_trajectory_starts():
+    from plants.sources import Sine
+    st = XML350()
+    kw = dict(trajectory=Sine(1e-5, 20.0, offset=3e-3))
+    a = st.simulate(0.03, engine="python", **kw)
+    b = st.simulate(0.03, engine="numba", **kw)
+    assert a["x"][0] == 3e-3
+    np.testing.assert_allclose(b["x"], a["x"], rtol=1e-12, atol=1e-18)
+
+
 def test_numba_engine_refuses_other_laws():
     from friction import make_model
     st = XML350(make_model("stribeck"))

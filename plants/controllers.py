@@ -53,8 +53,11 @@ class DiscreteBlock:
 
     @property
     def parameter_names(self) -> tuple[str, ...]:
+        """Numeric parameters of the block (unset optional ones left out)."""
         p = getattr(self, "params", None)
-        return tuple(p.numeric_names()) if p is not None else ()
+        if p is None:
+            return ()
+        return tuple(n for n in p.numeric_names() if getattr(p, n) is not None)
 
 
 @dataclass(frozen=True)

@@ -246,3 +246,37 @@ def test_identification_names_exclude_the_switch_presets():
     # every free name has a finite search range (identification builds its box from them)
     info = {i.name: i for i in m.Params.info()}
     assert all(info[n].search is not None for n in names)
+
+
+def test_euler_option_is_the_paper_sketch():
+    """method="euler" is EQUATIONS.md A.9 line by line (asymmetric sets, logistic Gamma).
+
+    The sketch updates F_d before the output; the package reports the state at t_k, so
+    its F_d at sample k+1 is the sketch's F_d after update k (a one-sample shift).
+    """
+    m = make_model("modified_lugre", **ASYM)
+    p = m.params
+    t = np.arange(0, 0.06, H)
+    v = 0.3 * np.sin(2 * np.pi * 20 * t) + 0.02
+    a = 0.3 * 2 * np.pi * 20 * np.cos(2 * np.pi * 20 * t)
+    F, S = m.simulate(t, v, a=a, method="euler", return_state=True)
+    kappa = 2 * np.log(99) / (p.v2 - p.v1)
+    z = Fd = 0.0
+    for k in range(t.size - 1):
+        h = t[k + 1] - t[k]
+        vk, ak = v[k], a[k]
+        sfx = "" if vk >= 0 else "_neg"
+        Fc, Fs, vs, s2, fa, as_, vc = (getattr(p, n + sfx) if getattr(p, n + sfx) is not None
+                                       else getattr(p, n) for n in
+                                       ("Fc", "Fs", "vs", "sigma2", "f_a", "a_s", "v_c"))
+        g = Fc + (Fs - Fc) * np.exp(-abs(vk / vs) ** p.alpha)
+        gamma = 1 / (1 + np.exp(kappa * (abs(vk) - (p.v1 + p.v2) / 2)))
+        zd = gamma * (vk - p.sigma0 * abs(vk) * z / g)
+        Fdss = fa * np.sign(ak) * (1 - np.exp(-(abs(ak) / as_) ** p.beta)) \
+            * np.exp(-(abs(vk) / vc) ** p.gamma)
+        assert F[k] == pytest.approx(p.sigma0 * z + p.sigma1 * zd + s2 * vk + Fd + p.b,
+                                     rel=1e-9, abs=1e-9)
+        Fd = Fd + h * (Fdss - Fd) / p.tau
+        z = z + h * zd
+        assert S[k + 1, 0] == pytest.approx(z, rel=1e-9, abs=1e-15)
+        assert S[k + 1, 1] == pytest.approx(Fd, rel=1e-9, abs=1e-12)

@@ -343,8 +343,8 @@ class SlaveBase(Fmi2Slave):
         if self.params_dirty:
             try:
                 self.rebuild(initial)
-            except ValueError as exc:  # ParameterError names the parameter and bound
-                self.reject("parameters", f"invalid parameters: {exc}")
+            except Exception as exc:  # noqa: BLE001 - ParameterError names the parameter
+                self.reject("parameters", f"invalid parameters: {type(exc).__name__}: {exc}")
                 return False
             self.pending.pop("parameters", None)
             self.params_dirty = False
@@ -356,8 +356,8 @@ class SlaveBase(Fmi2Slave):
             return False
         try:
             self.compute_outputs()
-        except ValueError as exc:
-            self.reject("outputs", str(exc))
+        except Exception as exc:  # noqa: BLE001
+            self.reject("outputs", f"{type(exc).__name__}: {exc}")
             return False
         self.pending.pop("outputs", None)
         self.outputs_dirty = False
@@ -377,7 +377,7 @@ class SlaveBase(Fmi2Slave):
             return False
         try:
             done = self.advance(current_time, step_size)
-        except ValueError as exc:
+        except Exception as exc:  # noqa: BLE001 - never let an exception become fmi2Fatal
             self.reject("step", f"step [{current_time:g}, +{step_size:g}] failed: {exc}")
             return False
         self.time = current_time + step_size

@@ -25,8 +25,35 @@ __all__ = ["vendor_package", "rewrite_source", "DEFAULT_EXCLUDE"]
 DEFAULT_EXCLUDE = ("demo", "reference", "numerics", "cli", "plotting", "plots", "report")
 
 _LAZY = '''def {name}(*args, **kwargs):  # lazy: vendored FMU copy (scipy only if called)
-    from {module} import {orig} as _f
+    try:
+        from {module} import {orig} as _f
+    except ImportError:
+        if "{orig}" == "brentq":  # root bracketing used by parameter set-up: pure Python
+            return _fl_brentq(*args, **kwargs)
+        raise ImportError("{module}.{orig} needs scipy, which this FMU does not require "
+                          "for simulation") from None
     return _f(*args, **kwargs)
+'''
+
+_BRENTQ = '''def _fl_brentq(f, a, b, args=(), xtol=2e-12, rtol=8.881784197001252e-16, maxiter=200,
+               **_ignored):  # bisection fallback of scipy.optimize.brentq (vendored FMU copy)
+    fa, fb = f(a, *args), f(b, *args)
+    if fa == 0.0:
+        return a
+    if fb == 0.0:
+        return b
+    if (fa > 0) == (fb > 0):
+        raise ValueError("f(a) and f(b) must have different signs")
+    for _ in range(max(int(maxiter), 200) * 4):
+        m = 0.5 * (a + b)
+        fm = f(m, *args)
+        if fm == 0.0 or abs(b - a) <= xtol + rtol * abs(m):
+            return m
+        if (fm > 0) == (fa > 0):
+            a, fa = m, fm
+        else:
+            b = m
+    return 0.5 * (a + b)
 '''
 
 
@@ -39,19 +66,23 @@ def rewrite_source(text: str, renames: dict[str, str]) -> str:
         text = re.sub(rf"(import_module\(\s*[\"']){old}([\"'.])", rf"\1{new}\2", text)
     text = re.sub(r"cache\s*=\s*True", "cache=False", text)
 
+    inserted = []
+
     def lazy(m: re.Match) -> str:
         module, names = m.group(1), m.group(2)
         names = names.strip().strip("()")
         stubs = []
+        if not inserted:  # the fallbacks go before the first stub (module code may call them)
+            inserted.append(True)
+            stubs.append(_BRENTQ)
         for item in filter(None, (s.strip() for s in names.split(","))):
             orig, _, alias = item.partition(" as ")
             stubs.append(_LAZY.format(name=(alias or orig).strip(), module=module,
                                       orig=orig.strip()))
         return "\n".join(stubs)
 
-    text = re.sub(r"^from\s+(scipy[\w.]*)\s+import\s+(\([^)]*\)|[^\n]+)$", lazy, text,
+    return re.sub(r"^from\s+(scipy[\w.]*)\s+import\s+(\([^)]*\)|[^\n]+)$", lazy, text,
                   flags=re.M)
-    return text
 
 
 def vendor_package(src: str | pathlib.Path, dest_dir: str | pathlib.Path, new_name: str,

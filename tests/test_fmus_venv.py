@@ -21,8 +21,12 @@ SCRIPT = textwrap.dedent('''
     for path in sorted(glob.glob(os.path.join(sys.argv[1], "*.fmu"))):
         name = os.path.basename(path)[:-4]
         problems = validate_fmu(path)
-        res = simulate_fmu(path, stop_time=0.01, output_interval=1e-3)
-        out[name] = {"problems": problems, "rows": len(res),
+        try:
+            res = simulate_fmu(path, stop_time=0.01, output_interval=1e-3)
+        except Exception as exc:
+            out[name] = {"problems": problems, "error": repr(exc)}
+            continue
+        out[name] = {"problems": problems, "rows": len(res), "error": None,
                      "finite": bool(all(all(abs(float(v)) < 1e300 for v in row) for row in res))}
     try:
         import frictionlab  # noqa: F401
@@ -62,4 +66,5 @@ def test_every_fmu_runs_in_a_clean_venv(tmp_path):
     assert set(out) == set(catalogue())
     for name, r in out.items():
         assert r["problems"] == [], name
+        assert r["error"] is None, (name, r)
         assert r["rows"] >= 10 and r["finite"], (name, r)

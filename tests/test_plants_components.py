@@ -215,3 +215,25 @@ def test_damper_and_mass():
     assert Mass(m=2.0, g=-9.81).acceleration(19.62) == pytest.approx(0.0)
     with pytest.raises(ParameterError, match="m = 0"):
         Mass(m=0.0)
+
+
+# -- every registered machine ------------------------------------------------------------------
+def _registered():
+    from plants import PLANTS
+    return sorted(PLANTS)
+
+
+@pytest.mark.parametrize("name", _registered())
+def test_every_registered_plant_converges_to_a_finer_run(name):
+    # the fast path at its default substep against 4x finer substeps, on the main output,
+    # over the first 200 output samples of the default experiment
+    from plants import PLANTS
+    plant = PLANTS[name]()
+    exp = plant.default_experiment
+    stop = min(exp.stop, exp.start + 200 * exp.step)
+    coarse = plant.simulate(stop)
+    fine = plant.simulate(stop, substep=plant.max_substep / 4)
+    y = plant.main_output
+    assert coarse.dtype.names[0] == "time" and y in coarse.dtype.names
+    assert np.ptp(fine[y]) > 0
+    assert nrmse(fine[y], coarse[y]) < 1e-3

@@ -85,7 +85,6 @@ def test_fast_converges_to_a_finer_run_of_itself(stage):
         assert ra["rms"] == pytest.approx(rb["rms"], rel=0.05)
 
 
-@pytest.mark.slow
 def test_reference_converges_to_tighter_tolerance():
     st = XML350(resolution=0.0)
     tight = st.simulate(0.01, method="reference", rtol=1e-10, distance=1e-6)

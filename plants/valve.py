@@ -411,25 +411,41 @@ def demo_figures(out, summary: dict, quick: bool = True):
 
     law = plant.friction
     classic = classic_lugre_twin(law)
-    fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4))
     obs = {}
-    for f in (5.0, 10.0):
-        t = np.arange(0.0, 0.1, 1.0 / SAMPLE_RATE)
+    t = np.arange(0.0, 0.1, 1.0 / SAMPLE_RATE)
+    for f in (5.0, 10.0, 20.0):
         _, vr, ar = sine_reference(t, f, 8e-3)
         c = euler_observer(classic, t, vr)
-        m = euler_observer(law, t, vr, a=ar if "a" in law.extra_inputs else None,
-                           h_inject=c["t"][c["k0"]])
-        k0 = c["k0"]
-        ax[0].plot(t[k0:k0 + 40] * 1e3, c["error"][:40], ".-", label=f"classic, {f:g} Hz")
-        ax[0].plot(t[k0:k0 + 40] * 1e3, m["error"][:40], ".-", label=f"modified, {f:g} Hz")
-        ax[1].plot(t * 1e3, c["factor"], label=f"{f:g} Hz")
-        obs[f"{f:g}Hz"] = {"onset_time": c["onset_time"], "onset_speed": c["onset_speed"]}
-    ax[0].set(xlabel="t [ms]", ylabel="observer error in z [m]",
-              title="Euler observer, error injected at onset")
-    ax[1].axhline(0, color="k", lw=0.5)
-    ax[1].set(xlabel="t [ms]", ylabel="1 - h sigma0 |v| / g", title="Euler factor (Eq. 29)")
-    ax[0].legend(fontsize=7)
-    ax[1].legend()
+        ax[2].plot(t * 1e3, c["factor"], label=f"{f:g} Hz")
+        obs[f"{f:g}Hz"] = {k: (None if math.isnan(c[k]) else round(c[k], 5))
+                           for k in ("onset_time", "onset_speed")}
+        akw = {"a": ar} if "a" in law.extra_inputs else {}
+        if f == 10.0:   # oscillation: error injected at the onset flips sign every sample
+            e = c["error"][:12] / c["error"][0]
+            k = np.arange(e.size)
+            ax[1].semilogy(k, np.abs(e), "k-", lw=0.5)
+            ax[1].semilogy(k[e > 0], e[e > 0], "o", label="classic, error > 0")
+            ax[1].semilogy(k[e < 0], -e[e < 0], "s", label="classic, error < 0")
+            m = euler_observer(law, t, vr, h_inject=t[c["k0"]], **akw)
+            ax[1].semilogy(k, np.abs(m["error"][:12] / m["error"][0]), "^-",
+                           label=f"{law.name}")
+        if f == 20.0:   # divergence: above 2 v_cr the injected error grows while it flips
+            kg = int(np.argmax(c["factor"] < -1.0))
+            g = euler_observer(classic, t, vr, h_inject=t[kg])
+            m = euler_observer(law, t, vr, h_inject=t[kg], **akw)
+            n = 90
+            ax[0].plot(np.arange(n), g["error"][:n] / g["error"][0], ".-", label="classic LuGre")
+            ax[0].plot(np.arange(n), m["error"][:n] / m["error"][0], ".-", label=law.name)
+    ax[0].set(xlabel="samples after injection", ylabel="error / injected error",
+              title="20 Hz / 8 mm: Euler observer error (h = 50 us)")
+    ax[1].set(xlabel="samples after injection", ylabel="|error| / injected error",
+              title="10 Hz / 8 mm: sign flips from the onset (0.0225 s)")
+    ax[2].axhline(0, color="k", lw=0.5)
+    ax[2].axhline(-1, color="k", lw=0.5, ls="--")
+    ax[2].set(xlabel="t [ms]", ylabel="1 - h sigma0 |v| / g", title="Euler factor (Eq. 29)")
+    for a_ in ax:
+        a_.legend(fontsize=7)
     fig.tight_layout()
     p2 = out / "valve_euler_observer.png"
     fig.savefig(p2, dpi=110)

@@ -17,11 +17,22 @@ import importlib
 
 from .base import (Experiment, FrictionComponent, FrictionStep, Plant, PlantParams,
                    PlantStepper, structured)
+from .components import (Damper, Fixed, ForceSource, Mass, PositionSource, Spring,
+                         SpringDamper)
+from .controllers import (PID, DiscreteBlock, DiscreteStepper, LuGreFeedforward, PIDParams,
+                          StateDependentPID)
 from .interfaces import Flange, HydraulicPort, PartialCompliant
+from .motor import LinearMotor
+from .sensors import AccelerationSensor, PositionSensor, VelocitySensor
+from .sources import PRBS, ColoredNoise, Sampled, SCurve, Sine, Triangle, VelocityPlateaus
 
 __all__ = ["PLANTS", "make_plant", "Plant", "PlantStepper", "PlantParams", "Experiment",
            "FrictionStep", "FrictionComponent", "structured", "Flange", "HydraulicPort",
-           "PartialCompliant"]
+           "PartialCompliant", "Mass", "Spring", "Damper", "SpringDamper", "Fixed",
+           "ForceSource", "PositionSource", "PID", "PIDParams", "StateDependentPID",
+           "LuGreFeedforward", "DiscreteBlock", "DiscreteStepper", "LinearMotor",
+           "PositionSensor", "VelocitySensor", "AccelerationSensor", "Sine", "Triangle",
+           "VelocityPlateaus", "PRBS", "ColoredNoise", "SCurve", "Sampled"]
 
 #: registry name -> plant class (filled by the machine modules that exist)
 PLANTS: dict[str, type[Plant]] = {}

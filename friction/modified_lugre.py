@@ -27,9 +27,9 @@ law reduces exactly to the Stribeck curve (Eq. 5). Direction-dependent values (t
 v >= 0, the "-" set for v < 0): Fc, Fs, vs, sigma2, f_a, a_s, v_c.
 
 Numerics (``method="exact"``): dz/dt is still linear in z over a step, dz/dt = G v - G a z with
-G = Gamma(v), a = sigma0 |v| / g(v), so :func:`friction.lugre.bristle_update` advances it
-exactly with the coefficients frozen at the step's midpoint velocity (stable at any step and
-stiffness). The lag is advanced by its exact solution for an input that is linear over the
+G = Gamma(v), a = sigma0 |v| / g(v), so the exponential update of :mod:`friction.lugre`
+(z+ = z + (z - z_ss)(e^{-G a h} - 1), z_ss = g sgn(v) / sigma0) advances it exactly with the
+coefficients frozen at the step's midpoint velocity (stable at any step and stiffness). The lag is advanced by its exact solution for an input that is linear over the
 step (first-order hold of the sampled F_d^ss or a), stable for any h/tau.
 ``method="euler"`` is the paper's explicit Euler (A.9 sketch): z += h dz/dt,
 F_d += h (F_d^ss - F_d)/tau. Its bristle update stays bounded wherever Gamma ~ 0 covers the

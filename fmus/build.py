@@ -51,7 +51,8 @@ class FmuRecipe:
     name : str
         File stem (``<name>.fmu``) and the key used by ``build_all(only=...)``.
     base : str
-        Slave base class in :mod:`fmus.runtime` (``LawSlave``, ``MassSlave``, ``StepperSlave``).
+        Slave base class in :mod:`fmus.runtime` (``LawSlave``, ``MassSlave``,
+        ``StepperSlave``, ``BlockSlave``).
     variables : callable
         Returns the :class:`fmus.runtime.Var` list (build-time, from the repository packages).
     attributes : dict

@@ -22,7 +22,8 @@ import numpy as np
 from . import runtime
 
 __all__ = ["recipes", "plant_connections", "classic_lugre_for", "plant_laws",
-           "plant_master", "plant_proof", "coupling_step", "LOAD_SIGNALS"]
+           "plant_master", "plant_proof", "coupling_step", "LOAD_SIGNALS",
+           "XML350_ORDER", "XML350_CONNECTIONS", "xml350_loop_master"]
 
 #: plant output carrying the friction law's load input, in order of preference
 LOAD_SIGNALS = ("load", "F_sigma", "F_N")
@@ -44,7 +45,68 @@ def recipes():
             description=f"Plant '{name}' with external friction (input F_friction): {doc}",
             default_experiment={"startTime": float(de.start), "stopTime": float(de.stop),
                                 "stepSize": float(de.step)}))
+    out += _xml350_part_recipes()
     return out
+
+
+def _xml350_part_recipes():
+    """The XML-350 loop from parts: stage mechanics, SD-PID, LuGre feedforward, trajectory."""
+    from .build import FmuRecipe
+    try:
+        from plants import xml350
+    except ImportError:
+        return []
+    mech = xml350.XML350Mechanics
+    de = {"startTime": 0.0, "stopTime": float(mech.default_experiment.stop),
+          "stepSize": float(mech.default_experiment.step)}
+    out = [FmuRecipe(
+        name="xml350_mechanics", base="StepperSlave",
+        variables=lambda: runtime.plant_variables(mech, probe=True),
+        attributes=dict(plant="xml350:XML350Mechanics", plants_package="{pkg:plants}"),
+        packages=("friction", "plants"), default_experiment=dict(de),
+        description="XML-350 stage mechanics (current loop, mass, encoder) with external "
+                    "friction: inputs i_cmd [A], F_friction [N]")]
+    descs = {"sdpid": "State-dependent PID of seed 003 Eq. (15) (acceleration units) with "
+                      "current command output i_cmd = M_ctrl u / Kf",
+             "lugre_feedforward": "LuGre friction feedforward of seed 003 Eq. (16)",
+             "xml350_trajectory": "S-curve point-to-point trajectory of the XML-350 tests"}
+    for kind, desc in descs.items():
+        out.append(FmuRecipe(
+            name=kind, base="BlockSlave",
+            variables=(lambda kind=kind: runtime.block_variables(kind, "plants")),
+            attributes=dict(block=kind, plants_package="{pkg:plants}"),
+            packages=("friction", "plants"), default_experiment=dict(de), description=desc))
+    return out
+
+
+#: the XML-350 loop from part FMUs: Gauss-Seidel order and connections (the controller
+#: samples after the stage has advanced, the stage uses the friction of the previous
+#: communication point; reproduces ``plants.xml350.run_assembled(separate_friction=True)``)
+XML350_ORDER = ["trajectory", "feedforward", "mechanics", "friction", "controller"]
+XML350_CONNECTIONS = [
+    ("trajectory.x_ff", "feedforward.x_d"), ("trajectory.v_ff", "feedforward.v_d"),
+    ("trajectory.a_ff", "feedforward.a_d"),
+    ("trajectory.x_d", "controller.x_d"), ("trajectory.v_d", "controller.v_d"),
+    ("trajectory.a_ff", "controller.a_d"), ("trajectory.x_f", "controller.x_f"),
+    ("feedforward.u_ff", "controller.u_ff"), ("mechanics.x_meas", "controller.x"),
+    ("controller.i_cmd", "mechanics.i_cmd"),
+    ("mechanics.v", "friction.v"), ("friction.F", "mechanics.F_friction"),
+]
+
+
+def xml350_loop_master(fmu_dir, *, friction_params: dict | None = None, record=None):
+    """An open :class:`fmus.master.Master` of the XML-350 loop assembled from part FMUs."""
+    from plants.xml350 import xml350_friction
+    from .master import Master
+    fmus = {"trajectory": "xml350_trajectory", "feedforward": "lugre_feedforward",
+            "mechanics": "xml350_mechanics", "friction": "lugre", "controller": "sdpid"}
+    fmus = {k: os.path.join(fmu_dir, f"{v}.fmu") for k, v in fmus.items()}
+    law = xml350_friction()
+    params = {"friction": {**_law_params(law), **(friction_params or {})}}
+    return Master(fmus, XML350_CONNECTIONS, order=XML350_ORDER, iterations=1,
+                  parameters=params,
+                  record=record or ["mechanics.x", "trajectory.x_d", "controller.i_cmd",
+                                    "friction.F"])
 
 
 def plant_connections(plant_cls, law_cls) -> list[tuple[str, str]]:

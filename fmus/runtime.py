@@ -37,8 +37,9 @@ from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability
 from pythonfmu.enums import Fmi2Status
 from pythonfmu.variables import Boolean, Integer, Real, String
 
-__all__ = ["Var", "law_variables", "mass_variables", "plant_variables", "SlaveBase",
-           "LawSlave", "MassSlave", "StepperSlave", "INPUT_INFO"]
+__all__ = ["Var", "law_variables", "mass_variables", "plant_variables", "block_variables",
+           "SlaveBase", "LawSlave", "MassSlave", "StepperSlave", "BlockSlave", "INPUT_INFO",
+           "BLOCKS"]
 
 #: unit and description of the kinematic inputs a law may need
 INPUT_INFO = {
@@ -573,6 +574,9 @@ class StepperSlave(SlaveBase):
 
     @classmethod
     def plant_class(cls):
+        if ":" in cls.plant:  # a plant outside the registry, e.g. "xml350:XML350Mechanics"
+            mod, _, name = cls.plant.partition(":")
+            return getattr(importlib.import_module(f"{cls.plants_package}.{mod}"), name)
         return importlib.import_module(cls.plants_package).PLANTS[cls.plant]
 
     def make_variables(self):
@@ -603,6 +607,145 @@ class StepperSlave(SlaveBase):
         out = self.stepper.outputs()
         for n, i in zip(self.out_names, self.out_idx):
             self.values[i] = float(out[n])
+
+    def advance(self, t, h):
+        self._push_inputs()
+        self.stepper.do_step(t, h)
+        self.stepped = True
+        return False
+
+
+# -- discrete blocks of the XML-350 loop (controllers, feedforward, trajectory) -------------
+
+#: units of the loop signals (those not in the plant's ``signals``)
+_LOOP_UNITS = {"x_d": ("m", "desired position"), "v_d": ("m/s", "desired velocity"),
+               "a_d": ("m/s^2", "desired acceleration"), "x": ("m", "measured position"),
+               "x_f": ("m", "target position of the move"),
+               "u_ff": ("m/s^2", "friction feedforward (acceleration)"),
+               "u": ("m/s^2", "acceleration command"),
+               "u_sd": ("m/s^2", "feedback + acceleration feedforward"),
+               "e": ("m", "position error x_d - x"), "i_cmd": ("A", "current command M_ctrl u / Kf"),
+               "F_ff": ("N", "feedforward friction force estimate"),
+               "x_ff": ("m", "feedforward position"), "v_ff": ("m/s", "feedforward velocity"),
+               "a_ff": ("m/s^2", "feedforward acceleration")}
+
+BLOCKS = ("sdpid", "pid", "lugre_feedforward", "xml350_trajectory")
+
+
+def _block_parts(kind: str, plants_package: str):
+    """(parameter Var list, input names, output names) of a loop block."""
+    xml = importlib.import_module(f"{plants_package}.xml350")
+    ctrl = importlib.import_module(f"{plants_package}.controllers")
+    P = xml.XML350Params()
+    if kind in ("sdpid", "pid"):
+        pid = P.pid(state_dependent=kind == "sdpid")
+        pv = _param_vars(ctrl.PIDParams)
+        for v in pv:
+            v.start = float(getattr(pid.params, v.name))
+        pv += [Var("M_ctrl", "parameter", "Real", P.M_ctrl, "kg",
+                   "mass converting acceleration to force in i_cmd [kg] (> 0)", 0.0, math.inf,
+                   True),
+               Var("Kf", "parameter", "Real", P.Kf, "N/A",
+                   "motor force constant converting force to current in i_cmd [N/A] (> 0)",
+                   0.0, math.inf, True)]
+        return pv, list(ctrl.PID.input_names), list(ctrl.PID.output_names) + ["i_cmd"]
+    if kind == "lugre_feedforward":
+        law = xml.xml350_friction()
+        pv = _param_vars(type(law.params))
+        for v in pv:
+            val = getattr(law.params, v.name)
+            v.start = v.unset if val is None else val
+        pv += [Var("mass", "parameter", "Real", P.M_ctrl, "kg",
+                   "mass converting the friction force to acceleration [kg] (> 0)", 0.0,
+                   math.inf, True),
+               Var("Ts", "parameter", "Real", P.Ts, "s", "sample time [s] (> 0)", 0.0,
+                   math.inf, True)]
+        return pv, list(ctrl.LuGreFeedforward.input_names), \
+            list(ctrl.LuGreFeedforward.output_names)
+    if kind == "xml350_trajectory":
+        pv = [Var("distance", "parameter", "Real", 1e-4, "m", "S-curve move distance [m]"),
+              Var("t_move", "parameter", "Real", 1e-3, "s", "start time of the move [s] (>= 0)",
+                  0.0),
+              Var("Ts", "parameter", "Real", P.Ts, "s", "sample time [s] (> 0)", 0.0,
+                  math.inf, True),
+              Var("f_current", "parameter", "Real", P.f_current, "Hz",
+                  "current-loop bandwidth used to time the feedforward [Hz] (> 0)", 0.0,
+                  math.inf, True),
+              Var("ff_mode", "parameter", "String", "invert", "",
+                  "feedforward timing: invert, lead or none")]
+        return pv, [], list(xml.TrajectoryBlock.output_names)
+    raise ValueError(f"unknown block {kind!r}; choose from {BLOCKS}")
+
+
+def block_variables(kind: str, plants_package: str = "plants") -> list[Var]:
+    """Variables of a loop block FMU; outputs depend directly on every input (a block
+    samples at the communication point with the inputs just set)."""
+    pv, ins, outs = _block_parts(kind, plants_package)
+    vs = list(pv)
+    for n in ins:
+        unit, desc = _LOOP_UNITS.get(n, ("", n))
+        vs.append(Var(n, "input", "Real", 0.0, unit, desc + (f" [{unit}]" if unit else "")))
+    for n in outs:
+        unit, desc = _LOOP_UNITS.get(n, ("", n))
+        vs.append(Var(n, "output", "Real", None, unit, desc + (f" [{unit}]" if unit else ""),
+                      depends=tuple(ins)))
+    return vs
+
+
+class BlockSlave(SlaveBase):
+    """FMU of a discrete block of the XML-350 loop (state-dependent PID of seed 003 Eq. 15,
+    LuGre feedforward Eq. 16, S-curve trajectory) through ``plants.controllers
+    .DiscreteStepper``: the block samples at ``start + k Ts``; reading the outputs at a
+    sample instant runs that sample with the inputs just set (direct feedthrough), a step
+    runs the samples inside it with the inputs held."""
+    block = "sdpid"
+    plants_package = "plants"
+
+    def make_variables(self):
+        return block_variables(self.block, self.plants_package)
+
+    def rebuild(self, initial):
+        if not initial and getattr(self, "stepped", False):
+            raise ValueError("block parameters cannot change after the first step")
+        pk = self.plants_package
+        xml = importlib.import_module(f"{pk}.xml350")
+        ctrl = importlib.import_module(f"{pk}.controllers")
+        vals = self.param_values()
+        self.gain = None
+        if self.block in ("sdpid", "pid"):
+            names = {f.name for f in dataclasses.fields(ctrl.PIDParams)}
+            blk = ctrl.PID(ctrl.PIDParams(**{k: v for k, v in vals.items() if k in names}))
+            self.gain = vals["M_ctrl"] / vals["Kf"]
+        elif self.block == "lugre_feedforward":
+            fr = importlib.import_module(pk.replace("_plants", "_friction")
+                                         if pk.endswith("_plants") else "friction")
+            names = {f.name for f in dataclasses.fields(fr.LuGreParams)}
+            law = fr.LuGre(fr.LuGreParams(**{k: v for k, v in vals.items() if k in names}))
+            blk = ctrl.LuGreFeedforward(law, vals["mass"], vals["Ts"])
+        else:
+            src = importlib.import_module(f"{pk}.sources")
+            blk = xml.TrajectoryBlock(src.SCurve(vals["distance"], t0=vals["t_move"]),
+                                      sample_time=vals["Ts"], f_current=vals["f_current"],
+                                      ff_mode=vals["ff_mode"])
+        self.stepper = ctrl.DiscreteStepper(blk, start=self.time)
+        self.in_names = list(self.stepper.input_names)
+        self.in_idx = [self.index[n] for n in self.in_names]
+        self.out_names = list(self.stepper.output_names)
+        self.out_idx = [self.index[n] for n in self.out_names]
+        self.stepped = False
+
+    def _push_inputs(self):
+        if self.in_names:
+            self.stepper.set_inputs({n: self.values[i]
+                                     for n, i in zip(self.in_names, self.in_idx)})
+
+    def compute_outputs(self):
+        self._push_inputs()
+        out = self.stepper.outputs()
+        for n, i in zip(self.out_names, self.out_idx):
+            self.values[i] = float(out[n])
+        if self.gain is not None:
+            self.values[self.index["i_cmd"]] = self.gain * self.values[self.index["u"]]
 
     def advance(self, t, h):
         self._push_inputs()

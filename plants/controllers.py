@@ -21,7 +21,6 @@ current sample.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np

@@ -22,8 +22,7 @@ import numpy as np
 
 from frictionlab.progress import Progress, report
 
-from .xml350 import (MOVES, PAPER_REDUCTIONS, XML350, compensation_reduction, mismatch_table,
-                     tracking_metrics)
+from .xml350 import MOVES, PAPER_REDUCTIONS, XML350, compensation_reduction, mismatch_table
 
 __all__ = ["run_stage", "plot_compensation", "xml350_compensation_figures", "MACHINE_DEMOS"]
 

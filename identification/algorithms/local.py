@@ -17,8 +17,13 @@ __all__ = ["LeastSquares", "MultistartLeastSquares", "run_least_squares"]
 
 
 def run_least_squares(problem, u0, *, method="trf", max_nfev=None, ftol=1e-10, xtol=1e-10,
-                      gtol=1e-10, diff_step=1e-6):
+                      gtol=1e-10, diff_step=1e-6, tr_solver="lsmr"):
     """Trust-region reflective least squares from ``u0`` inside the unit cube.
+
+    ``tr_solver="lsmr"`` (default) solves the trust-region subproblems with products of the
+    Jacobian only. The ``"exact"`` solver takes a dense SVD of the tall N x D Jacobian each
+    iteration, which multithreaded OpenBLAS makes up to ~70 times slower on a loaded
+    2-core machine (measured: 0.17 s instead of 2.4 ms for 4000 x 9).
 
     Returns the scipy result (``x``, ``jac``, ``fun``) or ``None`` if the budget ran out
     before the first iteration finished.
@@ -37,7 +42,8 @@ def run_least_squares(problem, u0, *, method="trf", max_nfev=None, ftol=1e-10, x
     u0 = np.clip(np.asarray(u0, float), 1e-9, 1 - 1e-9)
     try:
         return least_squares(fun, u0, jac=jac, bounds=(0.0, 1.0), method=method,
-                             x_scale="jac", ftol=ftol, xtol=xtol, gtol=gtol, max_nfev=max_nfev)
+                             x_scale="jac", ftol=ftol, xtol=xtol, gtol=gtol, max_nfev=max_nfev,
+                             tr_solver=tr_solver)
     except BudgetExhausted:
         return None
 
@@ -48,12 +54,12 @@ class LeastSquares(Algorithm):
     name = "least_squares"
     kind = "local"
     steppable = False
-    defaults = dict(max_nfev=200, ftol=1e-10, xtol=1e-10, gtol=1e-10)
+    defaults = dict(max_nfev=200, ftol=1e-10, xtol=1e-10, gtol=1e-10, tr_solver="lsmr")
     source = "scipy.optimize.least_squares (Branch, Coleman, Li 1999 TRF)"
 
     def run(self, problem, rng, u0, progress=None):
         res = run_least_squares(problem, u0, max_nfev=self.max_nfev, ftol=self.ftol,
-                                xtol=self.xtol, gtol=self.gtol)
+                                xtol=self.xtol, gtol=self.gtol, tr_solver=self.tr_solver)
         if progress is not None:
             progress(1, f"cost={problem.best_cost:.4g}")
         if res is None:
@@ -62,51 +68,55 @@ class LeastSquares(Algorithm):
 
 
 class MultistartLeastSquares(Algorithm):
-    """Latin-hypercube screening in one population call, then least squares from the best
-    few starts (and from the model's current values).
+    """Latin-hypercube screening in one population call, a full least-squares run from the
+    best screened point (or the model's current values if better), then short runs from the
+    next best starts; a start that beats the first is polished in full.
 
-    Each start gets a short run (``max_nfev`` iterations); the best is then polished with
-    ``polish_nfev``. Global enough for the LuGre family's few basins (Stribeck velocity vs.
-    stiffness trade-off) and as precise as least squares.
+    Fast where one basin dominates (the first run converges and the trace reaches the optimum
+    early) and robust where the LuGre family has a few basins (Stribeck velocity vs.
+    stiffness trade-off): the extra starts check them.
     """
     name = "multistart_ls"
     kind = "local"
     steppable = False
     defaults = dict(n_screen=None, n_starts=3, max_nfev=15, ftol=1e-10, xtol=1e-10,
-                    gtol=1e-10, polish_nfev=200, target=1e-9)
+                    gtol=1e-10, polish_nfev=200, target=1e-9, tr_solver="lsmr")
     source = "Latin hypercube (scipy.stats.qmc) + scipy.optimize.least_squares"
+
+    def _ls(self, problem, u, nfev):
+        return run_least_squares(problem, u, max_nfev=nfev, ftol=self.ftol, xtol=self.xtol,
+                                 gtol=self.gtol, tr_solver=self.tr_solver)
 
     def run(self, problem, rng, u0, progress=None):
         D = problem.dim
         n_screen = self.n_screen or max(64, 16 * D)
-        U = latin_hypercube(n_screen, D, rng)
+        u0 = np.clip(np.asarray(u0, float), 0, 1)
+        U = np.vstack([u0[None, :], latin_hypercube(n_screen, D, rng)])
         history = []
         try:
             c = problem.evaluate(U)
         except BudgetExhausted:
             return {"message": "evaluation budget exhausted during screening"}
         history.append(problem.best_cost)
-        order = np.argsort(c)
-        starts = [np.clip(np.asarray(u0, float), 0, 1)] + [U[i] for i in order[:self.n_starts]]
-        best = None
-        for k, s in enumerate(starts):
-            res = run_least_squares(problem, s, max_nfev=self.max_nfev, ftol=self.ftol,
-                                    xtol=self.xtol, gtol=self.gtol)
-            history.append(problem.best_cost)
-            if progress is not None:
-                progress(1, f"start {k + 1}/{len(starts)} cost={problem.best_cost:.4g}")
-            if res is None:
-                break
-            if best is None or res.cost < best.cost:
-                best = res
-            if problem.best_cost < self.target:  # exact fit already: the other starts add nothing
-                break
-        if best is not None and not problem.exhausted and self.polish_nfev:
-            res = run_least_squares(problem, best.x, max_nfev=self.polish_nfev, ftol=self.ftol,
-                                    xtol=self.xtol, gtol=self.gtol)
-            if res is not None and res.cost <= best.cost:
-                best = res
-            history.append(problem.best_cost)
+        order = [int(i) for i in np.argsort(c, kind="stable")]
+        if 0 not in order[:self.n_starts + 1]:
+            order = order[:self.n_starts] + [0]  # the user's guess is always tried
+        best = self._ls(problem, U[order[0]], self.polish_nfev)
+        history.append(problem.best_cost)
+        if progress is not None:
+            progress(1, f"start 1/{len(order[:self.n_starts + 1])} cost={problem.best_cost:.4g}")
         if best is None:
             return {"message": "evaluation budget exhausted", "history": history}
+        for k, i in enumerate(order[1:self.n_starts + 1], start=2):
+            if problem.best_cost < self.target or problem.exhausted:
+                break  # exact fit already: the other starts add nothing
+            res = self._ls(problem, U[i], self.max_nfev)
+            if res is not None and res.cost < best.cost * (1 - 1e-6):
+                res = self._ls(problem, res.x, self.polish_nfev) or res  # a better basin
+                if res.cost < best.cost:
+                    best = res
+            history.append(problem.best_cost)
+            if progress is not None:
+                progress(1, f"start {k}/{len(order[:self.n_starts + 1])} "
+                            f"cost={problem.best_cost:.4g}")
         return {"jac": best.jac, "u": best.x, "message": best.message, "history": history}

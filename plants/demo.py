@@ -95,6 +95,7 @@ def _plot_mismatch(rows: list[dict], path: str) -> str:
 
 def xml350_compensation_figures(out: str, summary: dict, quick: bool = False) -> None:
     """The XML-350 part of the stage (compensation, mismatch, identification protocol)."""
+    os.makedirs(out, exist_ok=True)
     stage = XML350()
     runs = {}
     comp = {}
@@ -111,6 +112,18 @@ def xml350_compensation_figures(out: str, summary: dict, quick: bool = False) ->
                f"-{PAPER_REDUCTIONS[label]['peak_reduction']:.1%})")
     summary["xml350_compensation"] = comp
     summary["xml350_compensation_paper"] = PAPER_REDUCTIONS
+    # the modelling choice made visible: untimed feedforward (literal Eqs. 14/16) and the
+    # linear PID with a 2 kHz current loop
+    variants = {}
+    for key, plant, opts in (("ff_mode_none", stage, {"ff_mode": "none"}),
+                             ("linear_pid_2kHz_current_loop",
+                              XML350(f_current=2000.0), {"controller": "pid"})):
+        variants[key] = {}
+        for label, dist in MOVES.items():
+            r = compensation_reduction(dist, plant=plant, **opts)
+            variants[key][label] = {"rms_reduction": r["rms_reduction"],
+                                    "peak_reduction": r["peak_reduction"]}
+    summary["xml350_compensation_variants"] = variants
     figs = summary.setdefault("figures", [])
     figs.append(plot_compensation(runs, os.path.join(out, "xml350_compensation.png")))
 

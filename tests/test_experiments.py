@@ -121,3 +121,34 @@ def test_frf_of_a_known_oscillator():
     freq, G, coh = frf(t, f_in, x.ravel(), nperseg=4096)
     fit = fit_presliding(freq, G, M, band=(5.0, 60.0), coherence=coh)
     assert fit["sigma0"] == pytest.approx(k, rel=0.05)
+
+
+def test_sensors_quantise_add_noise_and_filter_without_phase():
+    from plants.sensors import (PositionSensor, VelocitySensor, differentiate, quantize,
+                                zero_phase_lowpass)
+    enc = PositionSensor(resolution=1e-9)
+    assert enc.measure(1.4e-9) == pytest.approx(1e-9)
+    assert enc.measure(-2.6e-9) == pytest.approx(-3e-9)
+    x = np.linspace(0, 1e-6, 1001)
+    q = enc.measure(x)
+    assert np.max(np.abs(q - x)) <= 0.5e-9 + 1e-18
+    noisy = PositionSensor(resolution=0.0, noise=1e-6, seed=2).measure(np.zeros(20000))
+    assert np.std(noisy) == pytest.approx(1e-6, rel=0.03)
+    assert VelocitySensor().measure(0.3) == 0.3
+    with pytest.raises(ValueError, match="resolution"):
+        quantize(1.0, -1e-9)
+    # zero-phase: a 5 Hz sine through a 100 Hz Butterworth keeps its phase exactly
+    fs = 10_000.0
+    t = np.arange(0, 2.0, 1 / fs)
+    s = np.sin(2 * np.pi * 5 * t)
+    y = zero_phase_lowpass(s + 0.1 * np.sin(2 * np.pi * 1500 * t), fs, 100.0)
+    core = slice(2000, -2000)
+    assert np.max(np.abs(y[core] - s[core])) < 2e-3
+    with pytest.raises(ValueError, match="cutoff"):
+        zero_phase_lowpass(s, fs, 6000.0)
+    # second-order differences: error falls 4x per halving of the step
+    errs = []
+    for n in (200, 400):
+        tt = np.linspace(0, 1, n)
+        errs.append(np.max(np.abs(differentiate(np.sin(3 * tt), tt) - 3 * np.cos(3 * tt))))
+    assert errs[0] / errs[1] > 3.5

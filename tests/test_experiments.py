@@ -152,3 +152,29 @@ def test_sensors_quantise_add_noise_and_filter_without_phase():
         tt = np.linspace(0, 1, n)
         errs.append(np.max(np.abs(differentiate(np.sin(3 * tt), tt) - 3 * np.cos(3 * tt))))
     assert errs[0] / errs[1] > 3.5
+
+
+@pytest.mark.parametrize("make", [
+    lambda: __import__("plants.sources", fromlist=["Sine"]).Sine(2e-3, 5.0, offset=1e-3),
+    lambda: __import__("plants.sources", fromlist=["Triangle"]).Triangle(4e-3, 2.0),
+    lambda: stribeck_plateaus([0.01, -0.005], accel=0.3, plateau=0.1, rest=0.05),
+    lambda: prbs_excitation(duration=0.5),
+    lambda: __import__("plants.sources", fromlist=["SCurve"]).SCurve(1e-4, t0=0.01),
+])
+def test_sources_are_consistent_kinematics(make):
+    # s, v, a of every generator integrate each other (checked where they are smooth)
+    src = make()
+    t = np.linspace(0, 0.5, 200_001)
+    s, v, a = src(t)
+    ds = np.gradient(s, t)
+    dv = np.gradient(v, t)
+    vs = np.max(np.abs(v)) + 1e-30
+    assert np.median(np.abs(ds - v)) < 1e-6 * vs
+    assert np.mean(np.abs(ds - v) < 1e-3 * vs) > 0.99
+    smooth = np.abs(dv - a) < 1e-3 * max(np.max(np.abs(a)), vs / 0.5)
+    assert smooth.mean() > 0.95
+    # scalar calls return floats equal to the vectorised ones
+    k = 12345
+    sk = src(float(t[k]))
+    assert all(isinstance(c, float) for c in sk)
+    np.testing.assert_allclose(sk, (s[k], v[k], a[k]), rtol=1e-12, atol=1e-15)

@@ -183,6 +183,13 @@ def test_stepper_reproduces_simulate(stage):
         xs.append(st.outputs()["x"])
     ref = stage.simulate(0.01, distance=1e-6, engine="python")
     np.testing.assert_allclose(xs, ref["x"][1:101], rtol=1e-12, atol=1e-21)
+    # communication steps of 10 control periods: the samples inside run on the way
+    st = stage.stepper(distance=1e-6)
+    xs = []
+    for k in range(10):
+        st.do_step(k * 1e-3, 1e-3)
+        xs.append(st.outputs()["x"])
+    np.testing.assert_allclose(xs, ref["x"][10::10], rtol=1e-12, atol=1e-21)
 
 
 def test_encoder_quantises_to_1nm(stage):

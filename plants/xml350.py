@@ -34,7 +34,8 @@ Two forms:
 Stability note: with the nominal linear PID (Kp = 3e6 /s^2, Kd = 800 /s) the position
 loop crosses over near 290 Hz with about 10 deg of phase margin before any lag; a
 first-order 400 Hz current loop adds ~36 deg of lag there, so the LINEAR PID with a 400 Hz
-current loop is unstable (discrete closed-loop spectral radius 1.02). The paper's
+current loop is unstable (discrete closed-loop spectral radius 1.02, see
+:func:`loop_spectral_radius`). The paper's
 compensation task uses the SD-PID, whose gains near the target (x0.34 Kp) keep the loop
 stable with the 400 Hz current loop; this module uses it by default. The identification
 experiments (linear PID) therefore run with a faster current loop (``f_current`` 2 kHz,
@@ -59,7 +60,7 @@ from .sources import SCurve
 
 __all__ = ["XML350Params", "XML350", "XML350Mechanics", "TrajectoryBlock", "xml350_friction",
            "run_assembled", "loop_parts", "tracking_metrics", "compensation_reduction",
-           "mismatch_table", "PAPER_REDUCTIONS", "MOVES"]
+           "mismatch_table", "loop_spectral_radius", "PAPER_REDUCTIONS", "MOVES"]
 
 #: seed 003 Table II: fractional tracking-error reductions by the LuGre feedforward
 PAPER_REDUCTIONS = {"100um": {"rms_reduction": 0.923, "peak_reduction": 0.939},
@@ -661,3 +662,53 @@ def mismatch_table(levels=(0.1, 0.2, 0.3), names=("Fc", "Fs", "sigma0", "sigma1"
                         progress(1, f"{label} {name} {sg * level:+.0%}")
     del total, done
     return rows
+
+
+def loop_spectral_radius(params: XML350Params | None = None, *, controller: str = "pid",
+                         distance_to_target: float = math.inf,
+                         friction: FrictionModel | None = None,
+                         presliding: bool = False) -> float:
+    """Spectral radius of the linearised sampled position loop (< 1: stable).
+
+    The stage ``M x'' = K_f i - c v - k x`` (sliding: ``c = sigma2``, ``k = 0``;
+    pre-sliding: ``c = sigma1``, ``k = sigma0`` of the law), the first-order current loop,
+    the ZOH at ``Ts`` and the discrete (SD-)PID with frozen gains at the given distance to
+    the target (Eq. 15), the velocity error by backward difference as in
+    :class:`plants.controllers.PID`.
+
+    Parameters
+    ----------
+    params : XML350Params, optional
+    controller : {"pid", "sdpid"}
+    distance_to_target : float
+        ``|x_f - x|`` [m] at which the SD-PID gains are frozen (``inf``: nominal gains).
+    friction : FrictionModel, optional
+        LuGre-type law for the linearisation (default: the stage's).
+    presliding : bool
+        Linearise in pre-sliding (bristle spring) instead of sliding.
+    """
+    from scipy.linalg import expm  # analysis helper, not used by the simulation
+
+    p = params or XML350Params()
+    law = friction or xml350_friction()
+    pid = p.pid(state_dependent=controller == "sdpid")
+    d = distance_to_target
+    kp, ki, kd = pid.gains(0.0, d) if math.isfinite(d) else (p.Kp, p.Ki, p.Kd)
+    lp = law.params
+    k_f, c_f = (lp.sigma0, lp.sigma1 + lp.sigma2) if presliding else (0.0, lp.sigma2)
+    wc = 2 * math.pi * p.f_current
+    A = np.array([[0.0, 1.0, 0.0], [-k_f / p.M, -c_f / p.M, p.Kf / p.M], [0.0, 0.0, -wc]])
+    B = np.array([0.0, 0.0, wc])
+    Ts = p.Ts
+    # ZOH discretisation through the augmented matrix exponential
+    E = expm(np.block([[A, B[:, None]], [np.zeros((1, 4))]]) * Ts)
+    Ad, Bd = E[:3, :3], E[:3, 3]
+    # state [x, v, i, I, e_prev]; e = -x; I+ = I + Ts e; u = ki I+ + kp e + kd (e - e_prev)/Ts
+    g = p.M_ctrl / p.Kf
+    K = g * np.array([-(ki * Ts + kp + kd / Ts), 0.0, 0.0, ki, -kd / Ts])  # i_cmd = K @ state
+    Phi = np.zeros((5, 5))
+    Phi[:3, :3] = Ad
+    Phi[:3, :] += np.outer(Bd, K)
+    Phi[3, 0], Phi[3, 3] = -Ts, 1.0
+    Phi[4, 0] = -1.0
+    return float(np.max(np.abs(np.linalg.eigvals(Phi))))

@@ -9,7 +9,8 @@ from plants.base import FrictionComponent, FrictionStep
 from plants.controllers import DiscreteStepper, LuGreFeedforward, PID, StateDependentPID
 from plants.sources import SCurve
 from plants.xml350 import (MOVES, PAPER_REDUCTIONS, XML350, XML350Mechanics, XML350Params,
-                           compensation_reduction, mismatch_table, run_assembled,
+                           compensation_reduction, loop_spectral_radius, mismatch_table,
+                           run_assembled,
                            tracking_metrics, xml350_friction)
 
 
@@ -206,6 +207,13 @@ def test_linear_pid_needs_a_faster_current_loop():
                                                 compensation=False)
     stable = XML350(f_current=2000.0).simulate(0.03, controller="pid", distance=1e-6,
                                                compensation=False)
+    # the linearised sampled loop says the same
+    assert loop_spectral_radius(XML350Params(), controller="pid") > 1.01
+    assert loop_spectral_radius(XML350Params(f_current=2000.0), controller="pid") < 1.0
+    for d in (0.0, 1e-6, 1e-4):  # SD-PID over the paper's moves, sliding and pre-sliding
+        for pre in (False, True):
+            assert loop_spectral_radius(XML350Params(), controller="sdpid",
+                                        distance_to_target=d, presliding=pre) < 1.0
     e_u, e_s = np.abs(unstable["e"]), np.abs(stable["e"])
     assert e_u[-50:].max() > 5 * e_u[:100].max()        # growing oscillation
     assert e_s[-50:].max() < 0.5 * e_s[:100].max()      # decaying

@@ -237,3 +237,15 @@ def test_every_registered_plant_converges_to_a_finer_run(name):
     assert coarse.dtype.names[0] == "time" and y in coarse.dtype.names
     assert np.ptp(fine[y]) > 0
     assert nrmse(fine[y], coarse[y]) < 1e-3
+
+
+def test_public_names_are_documented_and_exported():
+    import importlib
+    for mod in ("base", "interfaces", "components", "sources", "sensors", "controllers",
+                "motor", "xml350", "experiments", "demo"):
+        m = importlib.import_module(f"plants.{mod}")
+        assert m.__doc__ and len(m.__doc__) > 80, mod
+        for name in m.__all__:
+            obj = getattr(m, name)   # every exported name exists
+            if callable(obj) and not isinstance(obj, dict):
+                assert obj.__doc__, f"plants.{mod}.{name} has no docstring"

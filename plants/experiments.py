@@ -33,7 +33,7 @@ from .sensors import add_noise, differentiate, zero_phase_lowpass
 from .sources import PRBS, ColoredNoise, SCurve, Sine, VelocityPlateaus
 
 __all__ = ["sinusoid_grid", "stribeck_speeds", "stribeck_plateaus", "prbs_excitation",
-           "refinement_reference", "SCURVE_MOVES", "measured_dataset", "steady_state_points",
+           "refinement_reference", "SCURVE_MOVES", "PRESS_SPEEDS", "measured_dataset", "steady_state_points",
            "dataset_from_result", "frf", "fit_presliding", "xml350_stribeck", "xml350_prbs",
            "xml350_refinement", "xml350_scurve", "IDENTIFICATION_F_CURRENT",
            "identification_stage"]
@@ -43,6 +43,9 @@ IDENTIFICATION_F_CURRENT = 2000.0
 
 #: seed 003 point-to-point moves [m]
 SCURVE_MOVES = {"100um": 1e-4, "1um": 1e-6}
+
+#: seed 004 Table 1: constant ram speeds of the isothermal forging rule [m/s]
+PRESS_SPEEDS = (1.2e-3, 0.1e-3, 0.05e-3, 0.002e-3)
 
 
 # -- protocol definitions ---------------------------------------------------------------------

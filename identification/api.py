@@ -248,6 +248,8 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
         u_ci = np.asarray(info["u"], float)
         if np.allclose(u_ci, u_best):
             ci = confidence_intervals(space, u_ci, info["jac"], problem.best_cost, len(data))
+    if obj is not objective and hasattr(obj, "close"):
+        obj.close()  # FMU instances we opened are freed now, not at interpreter exit
     wall = elapsed_before + time.perf_counter() - t_start
     return IdentificationResult(
         params=params, model=fitted, fit_nrmse=float(fit),

@@ -63,6 +63,9 @@ class _MasterHolder:
     def __getstate__(self):
         d = dict(self.__dict__)
         d["_master"] = None
+        for k in [k for k in d if k.startswith("_") and k not in ("_master",)]:
+            del d[k]  # ctypes buffers and FMU handles belong to this process
+        d["n_runs"] = 0
         return d
 
     def close(self):
@@ -94,7 +97,8 @@ class CoSimObjective(_MasterHolder, Objective):
         self.model = model
         self.data = check_data(data)
         self.names = list(names)
-        self.fmu_dir = fmu_dir
+        # resolved (built) here, once, so worker processes receive a ready folder
+        self.fmu_dir = fmu_dir_for([model.name], fmu_dir)
         self._master = None
         self.n_runs = 0
 
@@ -200,7 +204,7 @@ class ClosedLoopCoSimObjective(_MasterHolder, Objective):
         if abs(ratio - round(ratio)) > 1e-9:
             raise ValueError(f"step = {self.step!r} must divide the data interval {self.dt!r}")
         self.every = int(round(ratio))
-        self.fmu_dir = fmu_dir
+        self.fmu_dir = fmu_dir_for([model.name, "mass"], fmu_dir)
         self._master = None
 
     def _open(self):

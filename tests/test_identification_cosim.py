@@ -72,3 +72,19 @@ def test_closed_loop_cosim_reaches_the_in_process_optimum():
         assert ri.params[n] == pytest.approx(truth, rel=5e-3)
         assert rc.params[n] == pytest.approx(truth, rel=5e-3)
         assert rc.params[n] == pytest.approx(ri.params[n], rel=5e-3)
+
+
+def test_cosim_objective_runs_in_worker_processes(prescribed):
+    from identification.executors import ProcessExecutor, make_executor
+    names = ["Fc", "Fs"]
+    model = make_model("lugre", **TRUE)
+    co = CoSimObjective(model, prescribed, names)
+    assert isinstance(make_executor("auto", co), ProcessExecutor)  # FMU runs are serial
+    X = np.array([[1.0, 1.5], [0.8, 2.0], [1.2, 1.3], [0.9, 1.6]])
+    ex = ProcessExecutor(workers=2)
+    try:
+        c_proc = ex.costs(co, X)
+    finally:
+        ex.close()
+    c_in = InProcessObjective(model, prescribed, names).costs(X)
+    np.testing.assert_allclose(c_proc, c_in, rtol=1e-9)

@@ -34,7 +34,7 @@ def test_steady_curve_minimum_at_vc(press):
     Fss = law.steady_state(v, **kw)
     assert v[np.argmin(Fss)] * 1e3 == pytest.approx(0.19, abs=0.005)   # Table 2: vc = 0.19 mm/s
     # the plant's friction "measured" by Eq. 1 in no-load constant-speed tests sits on it
-    meas = steady_friction(press, (0.3e-3, 1.2e-3), duration=4.0)
+    meas = steady_friction(press, (0.3e-3, 1.2e-3), duration=3.0)
     kw = {"load": np.zeros(2)} if "load" in law.extra_inputs else {}
     assert np.allclose(meas[:, 1], law.steady_state(meas[:, 0], **kw), rtol=5e-3)
     assert meas[1, 1] > meas[0, 1]                                  # rising branch above vc
@@ -54,17 +54,17 @@ def test_crawls_below_vc_smooth_above_in_the_schedule(schedule_run):
 
 def test_crawl_band_without_load(press):
     """No-load constant speed: the Stribeck drop destabilises sliding below vc only."""
-    slow = press.simulate(8.0, schedule=((0.05e-3, 9.0),), workpiece=False)
-    above = press.simulate(4.0, schedule=((0.3e-3, 5.0),), workpiece=False)
+    slow = press.simulate(6.0, schedule=((0.05e-3, 7.0),), workpiece=False)
+    above = press.simulate(3.0, schedule=((0.3e-3, 4.0),), workpiece=False)
     assert crawl_metrics(slow, t_from=2.0)["crawling"]
     ma = crawl_metrics(above, t_from=2.0)
     assert not ma["crawling"] and ma["cv"] < 0.05
 
 
 def test_fast_matches_reference_and_converges(press):
-    ref = press.simulate(0.5, method="reference", rtol=1e-7, workpiece=False)
-    fast = press.simulate(0.5, workpiece=False)
-    fine = press.simulate(0.5, substep=5e-5, workpiece=False)
+    ref = press.simulate(0.3, method="reference", rtol=1e-7, workpiece=False)
+    fast = press.simulate(0.3, workpiece=False)
+    fine = press.simulate(0.3, substep=5e-5, workpiece=False)
     e_fast, e_fine = nrmse(fast["x"], ref["x"]), nrmse(fine["x"], ref["x"])
     assert e_fast < 1e-5 and e_fine < e_fast / 5                    # second order in the step
     assert nrmse(fast["F"], ref["F"]) < 1e-4
@@ -86,3 +86,23 @@ def test_default_friction_and_bad_input(press):
         ForgingPress(H0=0.01).simulate(12.0, schedule=((1.2e-3, 12.0),))
     with pytest.raises(ValueError, match="positive constant speed"):
         crawl_metrics(press.simulate(0.2, schedule=((0.0, 1.0),)))
+
+
+def test_hydraulic_components():
+    from plants.hydraulics import HydraulicChamber, ServoValve
+    from plants.interfaces import HydraulicPort
+    sv = ServoValve()
+    dp = np.array([0.7e6, 2e6, 10e6, 20e6])                          # > 7 dp_lam
+    reg = sv.flow(1e-3, sv.ps - dp)
+    assert np.allclose(reg, sv.turbulent_flow(1e-3, dp), rtol=0.01)   # turbulent law
+    small = sv.flow(1e-3, sv.ps - np.array([1e3, 2e3]))
+    assert small[1] == pytest.approx(2 * small[0], rel=1e-3)          # laminar near dp = 0
+    assert sv.flow(-1e-3, sv.pt) == 0.0 and sv.flow(-1e-3, 5e6) < 0   # drains to tank
+    ch = HydraulicChamber(A=0.5, V0=0.2, beta_e=1e9)
+    assert ch.dpdt(HydraulicPort(p=1e6, q=1e-3), 0.1, 0.0) == pytest.approx(1e9 / 0.25 * 1e-3)
+    assert ch.dpdt(HydraulicPort(p=1e6, q=0.0), 0.1, 2e-3) == pytest.approx(-1e9 / 0.25 * 1e-3)
+    assert ch.hydraulic_stiffness(0.0) == pytest.approx(1e9 * 0.25 / 0.2)
+    with pytest.raises(ValueError, match="volume"):
+        ch.volume(-1.0)
+    with pytest.raises(ParameterError, match="pt"):
+        ServoValve(ps=1e6, pt=2e6)

@@ -397,7 +397,8 @@ class Master:
                 self._gather_set(inst, t0)
         for inst in insts:
             self._call(inst, "fmi2ExitInitializationMode", t0, inst.slave.exitInitializationMode)
-        for inst in insts:
+        for inst in insts:  # in order: a discrete block samples t0 with its inputs at t0
+            self._gather_set(inst, t0)
             self._get(inst, t0)
         self._settle(t0, max(self.iterations, len(insts)))
 

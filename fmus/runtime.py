@@ -704,6 +704,12 @@ class BlockSlave(SlaveBase):
     def make_variables(self):
         return block_variables(self.block, self.plants_package)
 
+    def exit_initialization_mode(self):
+        # outputs read during initialization may have run the sample at t0 before the
+        # inputs were connected: start from a fresh block so t0 samples the final inputs
+        self.params_dirty = True
+        self._ensure_model(initial=True)
+
     def rebuild(self, initial):
         if not initial and getattr(self, "stepped", False):
             raise ValueError("block parameters cannot change after the first step")

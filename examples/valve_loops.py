@@ -95,5 +95,6 @@ def run_example(show_plot: bool = False, out_dir: str = "valve_loops_out") -> di
 if __name__ == "__main__":
     res = run_example()
     for k, v in res["frequency"].items():
-        print(f"8 mm {k}: vertical loop {v['vertical']:.3f} N, horizontal {v['horizontal']:.4f} m/s")
+        print(f"8 mm {k}: vertical loop {v['vertical']:.3f} N, "
+              f"horizontal {v['horizontal']:.4f} m/s")
     print("Euler onset (classic LuGre, h = 50 us):", res["euler"])

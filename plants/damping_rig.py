@@ -107,9 +107,10 @@ _WAVES = ("sine", "triangle", "trapezoid")
 class DampingRig(Plant):
     """Valve damping test rig of seed 001 (see the module docstring).
 
-    Outputs: ``x`` piston displacement [m], ``v`` relative sliding velocity [m/s], ``a``
-    relative acceleration [m/s^2], ``x_c`` cylinder displacement [m], ``F_meas`` sum of the
-    four sensor forces [N], ``u`` motor force in the open-loop experiment [N], ``F`` friction.
+    Outputs: ``x`` sliding displacement piston - cylinder [m], ``v`` sliding velocity [m/s],
+    ``a`` relative acceleration [m/s^2], ``x_p`` piston displacement [m], ``x_c`` cylinder
+    displacement [m], ``F_meas`` sum of the four sensor forces [N], ``u`` motor force in the
+    open-loop experiment (0 for the kinematic drives) [N], ``F`` friction.
     Options: ``drive`` ("linear", "piezo", "open_loop"), ``waveform`` ("sine", "triangle",
     "trapezoid"), ``freq`` [Hz], ``amplitude`` [m].
     """
@@ -121,10 +122,12 @@ class DampingRig(Plant):
     default_experiment = Experiment(start=0.0, stop=0.5, step=1.0 / LINEAR_RATE)
     state_names = ("s_p", "v_p", "x_c", "v_c")
     state_scale = (1e-3, 1e-2, 1e-7, 1e-4)
-    output_names = ("x", "v", "a", "x_c", "F_meas", "u")
+    output_names = ("x", "v", "a", "x_p", "x_c", "F_meas", "u")
     max_substep = 2e-5
     options = {"drive": "linear", "waveform": "sine", "freq": 4.0, "amplitude": 0.02}
-    signals = {"x": ("m", "piston displacement"), "v": ("m/s", "sliding velocity piston-cylinder"),
+    signals = {"x": ("m", "sliding displacement piston-cylinder"),
+               "x_p": ("m", "piston displacement"),
+               "v": ("m/s", "sliding velocity piston-cylinder"),
                "a": ("m/s2", "relative acceleration"), "x_c": ("m", "cylinder displacement"),
                "F_meas": ("N", "sum of the four force sensors"),
                "u": ("N", "motor force (open-loop experiment)"),
@@ -208,9 +211,10 @@ class DampingRig(Plant):
         p = self.params
         ds = self.derivatives(t, s, d, F, u)
         sp, vp = self._piston(t, s)
-        return {"x": sp, "v": vp - float(s[3]), "a": self.contact_acceleration(t, s, ds, d, u),
-                "x_c": float(s[2]), "F_meas": p.k_s * float(s[2]) + p.c_s * float(s[3]),
-                "u": self.motor_force(t) if self._open() else math.nan}
+        return {"x": sp - float(s[2]), "v": vp - float(s[3]),
+                "a": self.contact_acceleration(t, s, ds, d, u), "x_p": sp, "x_c": float(s[2]),
+                "F_meas": p.k_s * float(s[2]) + p.c_s * float(s[3]),
+                "u": self.motor_force(t) if self._open() else 0.0}
 
 
 def demo_figures(out, summary: dict, quick: bool = True):
@@ -235,7 +239,7 @@ def demo_figures(out, summary: dict, quick: bool = True):
     ax[1].plot(pz["time"] * 1e3, pz["F_meas"], label="sensors")
     ax[1].plot(pz["time"] * 1e3, pz["F"], "--", label="ring friction")
     ax[1].set(xlabel="t [ms]", ylabel="force [N]", title="piezo, sine 600 Hz (Fig. 4)")
-    ax[2].plot(ol["time"], ol["x"] * 1e3)
+    ax[2].plot(ol["time"], ol["x_p"] * 1e3)
     ax[2].set(xlabel="t [s]", ylabel="s [mm]", title="open loop, u = 1.1 sin 5t (Eqs. 17-18)")
     for a in ax[:2]:
         a.legend(fontsize=7)

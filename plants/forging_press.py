@@ -11,15 +11,17 @@ Hydraulics (:mod:`plants.hydraulics`):
 * major chamber ``V1 = V10 + A1 x``, fed by a 3-way servo valve from supply ``ps``
   (drained to tank for a negative command): ``dp1/dt = beta/V1 (q_v - A1 dx/dt)``;
 * supporting chamber ``V2 = V20 - A2 x``, discharging through a fixed orifice into the
-  back-pressure accumulator ``p_acc`` that balances the beam: ``dp2/dt = beta/V2 (A2 dx/dt - q_o)``;
+  back-pressure accumulator ``p_acc`` that balances the beam:
+  ``dp2/dt = beta/V2 (A2 dx/dt - q_o)``;
 * spool ``tau_v dx_v/dt = x_max u - x_v``.
 
 Deformation resistance F_sigma = f(T, rate, extent) (Eq. 2): the die/frame stiffness ``k_w``
 in series with the viscoplastic flow of the workpiece (volume constant, height
 ``h = H0 - x_p``, contact area ``V_w / h``)::
 
-    F_sigma = k_w max(x - x_p, 0) s(x),    sigma = F_sigma h / V_w
-    dx_p/dt = h eps_ref (sigma / sigma_f)^(1/m_r),   sigma_f = sigma_ref (eps + eps0)^n e^{Q/(R T) - Q/(R T_ref)}
+    F_sigma = k_w max(x - gap - x_p, 0),    sigma = F_sigma h / V_w
+    dx_p/dt = h eps_ref (sigma / sigma_f)^(1/m_r)
+    sigma_f = sigma_ref (eps + eps0)^n exp(Q/(R T) - Q/(R T_ref))
 
 so that in steady flow sigma = sigma_f (rate / eps_ref)^m_r: the flow stress of a hot titanium
 alloy with strain-rate sensitivity ``m_r`` and hardening ``n`` at temperature ``T``.
@@ -35,9 +37,19 @@ Friction: ``load_lugre`` (seed 004 Eqs. 4-11), load = F_sigma. Its Table 3 coeff
 read per MN of deformation resistance (k1 = 103.95 kN/MN, k3 = 319.91 kN.s/mm per MN): the
 per-kN reading makes the friction of a 1 MN load reach 1e8 N, which no press could move.
 
-Crawling: steady sliding is unstable where the steady-state friction falls with speed,
-i.e. below the critical velocity vc = 0.19 mm/s of Eq. 13 (the beam's oil columns are the
-spring, the Stribeck drop the negative damping). :func:`crawl_metrics` measures it.
+Crawling (:func:`crawl_metrics`): steady sliding can only lose stability where the
+steady-state friction falls with speed, i.e. below the critical velocity vc = 0.19 mm/s of
+Eq. 13 (the oil columns are the spring, the Stribeck drop the negative damping). What the
+simulations show with the seed's parameters:
+
+* no-load constant-speed runs crawl from 0.01 to 0.15 mm/s and run smoothly from 0.3 mm/s up
+  (``examples/forging_press_crawl.py``);
+* at 0.002 mm/s, started from rest without load, the beam creeps smoothly: far below vs the
+  Gaussian Stribeck slope vanishes like v and the bristle memory g/sigma0 damps the drop, so
+  steady creep is locally stable;
+* in the Table 1 schedule the beam comes down from the loaded faster steps; while it sticks the
+  workpiece relaxes, and the press lands on the stick-slip cycle that coexists with the creep:
+  it crawls at 0.05 and 0.002 mm/s and moves smoothly at 1.2 mm/s (the default experiment).
 """
 from __future__ import annotations
 
@@ -164,7 +176,8 @@ class ForgingPress(Plant):
     """Isothermal forging press of seed 004 under servo speed control (module docstring).
 
     Outputs: ``x`` beam travel [m] (down), ``v`` [m/s], ``a`` [m/s^2], ``p1``, ``p2`` [Pa],
-    ``F_sigma`` deformation resistance [N], ``x_ref`` [m], ``v_ref`` [m/s], ``u`` valve
+    ``F_sigma`` deformation resistance [N], ``load`` (= F_sigma, the friction law's load
+    input) [N], ``x_ref`` [m], ``v_ref`` [m/s], ``u`` valve
     command [-], ``F`` friction [N]. Options: ``schedule`` ((speed, duration), ...),
     ``workpiece`` (False: the no-load constant-speed tests of Section 4).
     """
@@ -176,7 +189,7 @@ class ForgingPress(Plant):
     default_experiment = Experiment(start=0.0, stop=41.0, step=0.01)
     state_names = ("x", "v", "p1", "p2", "x_v", "x_p")
     state_scale = (1e-3, 1e-3, 1e6, 1e6, 1e-4, 1e-3)
-    output_names = ("x", "v", "a", "p1", "p2", "F_sigma", "x_ref", "v_ref", "u")
+    output_names = ("x", "v", "a", "p1", "p2", "F_sigma", "load", "x_ref", "v_ref", "u")
     discrete_names = ("u", "integ")
     control_rate = 1000.0
     max_substep = 2.5e-4
@@ -185,7 +198,9 @@ class ForgingPress(Plant):
     signals = {"x": ("m", "beam travel, downwards"), "v": ("m/s", "beam velocity"),
                "a": ("m/s2", "beam acceleration"), "p1": ("Pa", "major chamber pressure"),
                "p2": ("Pa", "supporting chamber pressure"),
-               "F_sigma": ("N", "deformation resistance"), "x_ref": ("m", "position reference"),
+               "F_sigma": ("N", "deformation resistance"),
+               "load": ("N", "load input of the friction law (= F_sigma)"),
+               "x_ref": ("m", "position reference"),
                "v_ref": ("m/s", "speed reference"), "u": ("1", "servo valve command"),
                "F": ("N", "friction (seals + guide), opposing v"),
                "F_friction": ("N", "friction force input (external friction)")}
@@ -276,7 +291,7 @@ class ForgingPress(Plant):
         Fs, _ = self.deformation(float(s[0]), float(s[5]))
         x_r, v_r = self._ref(t)
         return {"x": float(s[0]), "v": float(s[1]), "a": float(ds[1]), "p1": float(s[2]),
-                "p2": float(s[3]), "F_sigma": Fs, "x_ref": x_r, "v_ref": v_r,
+                "p2": float(s[3]), "F_sigma": Fs, "load": Fs, "x_ref": x_r, "v_ref": v_r,
                 "u": float(d[0])}
 
     # -- analysis ---------------------------------------------------------------------------------

@@ -63,7 +63,8 @@ def test_open_loop_experiment_eqs_17_18(rig):
     assert np.max(np.abs(p.m_p * res["a"] - (u - res["F"]))) < 2e-3 * p.U
     # |u| = 1.1 N < Fc: the ring never slides, the piston stays in pre-sliding (z ~ u/sigma0)
     s0 = rig.friction.params.sigma0
-    assert np.max(np.abs(res["x"])) < 1.5 * p.U / s0
+    assert np.max(np.abs(res["x_p"])) < 1.5 * p.U / s0
+    assert np.allclose(res["x"], res["x_p"] - res["x_c"])
 
 
 def test_drive_ranges_are_checked():

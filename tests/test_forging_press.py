@@ -106,3 +106,13 @@ def test_hydraulic_components():
         ch.volume(-1.0)
     with pytest.raises(ParameterError, match="pt"):
         ServoValve(ps=1e6, pt=2e6)
+
+
+@pytest.mark.slow
+def test_crawl_at_0p002_persists_and_is_step_independent(press):
+    """Longer 0.002 mm/s step after the loaded faster steps: repeated slips at any substep."""
+    sched = ((1.2e-3, 6.0), (0.05e-3, 5.0), (0.002e-3, 120.0))
+    for sub in (None, 1.25e-4):
+        r = press.simulate(131.0, schedule=sched, substep=sub)
+        m = crawl_metrics(r, t_from=20.0, t_to=131.0)
+        assert m["crawling"] and m["slips"] >= 2, (sub, m)

@@ -21,12 +21,15 @@ SCRIPT = textwrap.dedent('''
     for path in sorted(glob.glob(os.path.join(sys.argv[1], "*.fmu"))):
         name = os.path.basename(path)[:-4]
         problems = validate_fmu(path)
+        log = []
+        def logger(*args):
+            log.append(" ".join(a.decode() if isinstance(a, bytes) else str(a) for a in args[-2:]))
         try:
-            res = simulate_fmu(path, stop_time=0.01, output_interval=1e-3)
+            res = simulate_fmu(path, stop_time=0.01, output_interval=1e-3, logger=logger)
         except Exception as exc:
-            out[name] = {"problems": problems, "error": repr(exc)}
+            out[name] = {"problems": problems, "error": repr(exc), "log": log[-5:]}
             continue
-        out[name] = {"problems": problems, "rows": len(res), "error": None,
+        out[name] = {"problems": problems, "rows": len(res), "error": None, "log": log[-5:],
                      "finite": bool(all(all(abs(float(v)) < 1e300 for v in row) for row in res))}
     try:
         import frictionlab  # noqa: F401

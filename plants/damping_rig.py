@@ -39,7 +39,7 @@ from .base import Experiment, Plant, PlantParams
 from .sources import Sine, Triangle
 
 __all__ = ["DampingRigParams", "DampingRig", "rig_friction", "Trapezoid", "TABLE_I",
-           "LINEAR_RATE", "PIEZO_RATE", "demo_figures"]
+           "LINEAR_RATE", "PIEZO_RATE", "rig_dataset", "demo_figures"]
 
 LINEAR_RATE = 1000.0    # Hz, force sampling with the linear motor
 PIEZO_RATE = 50_000.0   # Hz, with the piezo motor
@@ -215,6 +215,13 @@ class DampingRig(Plant):
                 "a": self.contact_acceleration(t, s, ds, d, u), "x_p": sp, "x_c": float(s[2]),
                 "F_meas": p.k_s * float(s[2]) + p.c_s * float(s[3]),
                 "u": self.motor_force(t) if self._open() else 0.0}
+
+
+def rig_dataset(res, name: str = "damping_rig"):
+    """A rig run as a :class:`friction.dataset.Dataset`: F = the four sensors' force."""
+    from friction.dataset import Dataset
+    return Dataset.from_arrays(res["time"], res["F_meas"], x=res["x"], v=res["v"], a=res["a"],
+                               name=name, extra={"F_true": np.asarray(res["F"])})
 
 
 def demo_figures(out, summary: dict, quick: bool = True):

@@ -66,6 +66,7 @@ from .hydraulics import OIL_BULK_MODULUS, OIL_DENSITY, orifice_flow, valve_3way_
 
 __all__ = ["ForgingPressParams", "ForgingPress", "press_friction", "TABLE1",
            "schedule_reference", "shortened_schedule", "crawl_metrics", "steady_friction",
+           "press_dataset",
            "demo_figures", "GAS_CONSTANT"]
 
 GAS_CONSTANT = 8.314  # J/(mol K)
@@ -383,6 +384,14 @@ def crawl_metrics(res, *, t_from: float | None = None, t_to: float | None = None
     return {"v_ref": vr, "intermittency": inter, "peak_ratio": pk,
             "cv": float(np.std(v) / vr), "slips": slips,
             "crawling": bool(inter > 0.3 and pk > 3.0)}
+
+
+def press_dataset(res, plant: ForgingPress, name: str = "forging_press"):
+    """A press run as a :class:`friction.dataset.Dataset`: F from Eq. 1, load = F_sigma."""
+    from friction.dataset import Dataset
+    return Dataset.from_arrays(res["time"], plant.friction_from_eq1(res), x=res["x"],
+                               v=res["v"], a=res["a"], load=res["F_sigma"], name=name,
+                               extra={"p1": np.asarray(res["p1"]), "p2": np.asarray(res["p2"])})
 
 
 def steady_friction(plant: ForgingPress, speeds, *, duration: float = 6.0, progress=None):

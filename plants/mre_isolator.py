@@ -27,7 +27,7 @@ from friction.base import FrictionModel, param
 
 from .base import Experiment, Plant, PlantParams
 
-__all__ = ["MREIsolatorParams", "MREIsolator", "isolator_law", "loop_metrics",
+__all__ = ["MREIsolatorParams", "MREIsolator", "isolator_law", "loop_metrics", "isolator_dataset",
            "SAMPLE_RATE", "AMPLITUDES", "CURRENTS", "demo_figures"]
 
 SAMPLE_RATE = 256.0               # Hz
@@ -156,6 +156,13 @@ def loop_metrics(res, freq: float = 4.0, cycles: int = 1):
     k_eff = (F[i] - F[j]) / (x[i] - x[j])
     area = abs(float(np.sum(0.5 * (F[1:] + F[:-1]) * np.diff(x)))) / cycles
     return {"k_eff": float(k_eff), "area": area, "F_max": float(np.max(np.abs(F)))}
+
+
+def isolator_dataset(res, name: str = "mre_isolator"):
+    """A shake-table run as a :class:`friction.dataset.Dataset`: F = load-cell force."""
+    from friction.dataset import Dataset
+    return Dataset.from_arrays(res["time"], res["F_meas"], x=res["x"], v=res["v"], a=res["a"],
+                               name=name, extra={"F_true": np.asarray(res["F"])})
 
 
 def demo_figures(out, summary: dict, quick: bool = True):

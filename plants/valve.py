@@ -47,6 +47,7 @@ from .tables import Table2D, bilinear, bilinear_inverse_y, make_fmag_table
 
 __all__ = ["ValveParams", "ValveActuator", "valve_friction", "classic_lugre_twin",
            "sine_reference", "recover_friction", "euler_observer", "loop_features", "loops_at",
+           "valve_dataset",
            "demo_figures", "FREQUENCIES", "MAGNITUDES"]
 
 #: seed 000 protocol
@@ -251,6 +252,38 @@ def recover_friction(res, plant: ValveActuator, *, cutoff: float = 1000.0, order
     p = plant.params
     F = plant.fmag(S, i) - p.k * (S + p.const) - p.m * acc
     return {"t": t, "x": S, "v": v, "a": acc, "i": i, "F": F}
+
+
+def valve_dataset(freq: float = 10.0, magnitude: float = 8e-3, *, cycles: float = 2.0,
+                  plant: ValveActuator | None = None, cutoff: float = 1000.0,
+                  current_noise: float = 0.0, seed: int | None = 0):
+    """A seed-000 sinusoid run as a :class:`friction.dataset.Dataset` (friction by Eq. 1).
+
+    Parameters
+    ----------
+    freq, magnitude : float
+        Sinusoid frequency [Hz] and peak-to-peak lift [m].
+    cycles : float
+        Number of periods simulated.
+    plant : ValveActuator, optional
+        Plant (default: its own modified LuGre).
+    cutoff, current_noise, seed
+        See :func:`recover_friction`.
+
+    Returns
+    -------
+    Dataset
+        ``t, x, v, a, F`` with F recovered as the paper does; the plant's true friction is
+        kept as the extra column ``F_true``.
+    """
+    from friction.dataset import Dataset
+
+    plant = plant or ValveActuator()
+    res = plant.simulate(cycles / freq, freq=freq, magnitude=magnitude)
+    rec = recover_friction(res, plant, cutoff=cutoff, current_noise=current_noise, seed=seed)
+    return Dataset.from_arrays(rec["t"], rec["F"], x=rec["x"], v=rec["v"], a=rec["a"],
+                               name=f"valve_{freq:g}Hz_{magnitude * 1e3:g}mm",
+                               extra={"F_true": np.asarray(res["F"]), "i": rec["i"]})
 
 
 def euler_observer(law: FrictionModel, t, v, *, a=None, h_inject: float | None = None,

@@ -76,3 +76,10 @@ def test_drive_ranges_are_checked():
         DampingRig().with_options(drive="hydraulic")
     with pytest.raises(ValueError, match="Table I"):
         rig_friction(5.0)
+
+
+def test_rig_dataset(rig):
+    from plants.damping_rig import rig_dataset
+    res = rig.simulate(0.1)
+    ds = rig_dataset(res)
+    assert np.array_equal(ds.F, res["F_meas"]) and np.array_equal(ds.v, res["v"])

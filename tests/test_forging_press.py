@@ -116,3 +116,12 @@ def test_crawl_at_0p002_persists_and_is_step_independent(press):
         r = press.simulate(131.0, schedule=sched, substep=sub)
         m = crawl_metrics(r, t_from=20.0, t_to=131.0)
         assert m["crawling"] and m["slips"] >= 2, (sub, m)
+
+
+def test_press_dataset_eq1_identity(press):
+    from plants.forging_press import press_dataset
+    res = press.simulate(1.5)
+    ds = press_dataset(res, press)
+    # Eq. (1) solved for F_r returns the friction the law applied, sample by sample
+    assert np.allclose(ds.F, res["F"], rtol=1e-9, atol=1e-6 * np.max(np.abs(res["F"])))
+    assert np.array_equal(ds.load, res["F_sigma"]) and ds.load.max() > 0

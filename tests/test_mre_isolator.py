@@ -57,3 +57,10 @@ def test_bad_input():
         MREIsolator(current=4.0)
     with pytest.raises(ValueError, match="amplitude"):
         MREIsolator().simulate(0.1, amplitude=0.2)
+
+
+def test_isolator_dataset():
+    from plants.mre_isolator import isolator_dataset
+    res = MREIsolator().simulate(0.5)
+    ds = isolator_dataset(res)
+    assert np.array_equal(ds.F, res["F_meas"]) and np.array_equal(ds.x, res["x"])

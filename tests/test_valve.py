@@ -172,3 +172,11 @@ def test_recover_friction_rejects_bad_cutoff(plant):
     res = plant.simulate(0.01)
     with pytest.raises(ValueError, match="Nyquist"):
         recover_friction(res, plant, cutoff=20_000.0)
+
+
+def test_valve_dataset_contract():
+    from plants.valve import valve_dataset
+    ds = valve_dataset(5.0, cycles=1.25, current_noise=0.005)
+    assert ds.t.size == int(round(1.25 / 5.0 * SAMPLE_RATE)) + 1
+    err = np.sqrt(np.mean((ds.F - ds.extra["F_true"]) ** 2))
+    assert err < 0.05 * np.ptp(ds.extra["F_true"])

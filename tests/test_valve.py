@@ -1,4 +1,4 @@
-"""Valve actuator of seed 000: force table, control, Euler observer (Fig. 10), loops (Figs. 5-7)."""
+"""Valve actuator of seed 000: force table, control, Euler observer (Fig. 10), loops (Figs 5-7)."""
 import math
 
 import numpy as np

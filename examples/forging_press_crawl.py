@@ -106,4 +106,5 @@ if __name__ == "__main__":
         print(f"no load {k:>6} mm/s: {'crawls' if m['crawling'] else 'smooth'} "
               f"(peak {m['peak_ratio']:.3g} v_ref, below v_ref/2 {m['intermittency']:.0%})")
     for k, m in res["schedule"].items():
-        print(f"schedule {k:>10}: {'crawls' if m['crawling'] else 'smooth'}")
+        state = "crawls" if m["crawling"] else ("stalled" if m["stalled"] else "smooth")
+        print(f"schedule {k:>10}: {state}")

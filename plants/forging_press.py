@@ -365,7 +365,9 @@ def crawl_metrics(res, *, t_from: float | None = None, t_to: float | None = None
         ``v_ref`` [m/s]; ``intermittency``: share of samples moving slower than v_ref / 2
         (stuck or moving back); ``peak_ratio``: max |v - v_ref| / v_ref; ``cv``: std(v) / v_ref;
         ``slips``: number of slip events (upward crossings of 3 v_ref); ``crawling``:
-        intermittency > 0.3 and peak_ratio > 3.
+        intermittency > 0.3 and peak_ratio > 3 (stick-slip inside the window); ``stalled``:
+        the beam stays below v_ref / 2 for more than 90 % of the window (a stick phase
+        longer than the window).
     """
     t = np.asarray(res["time"])
     t_from = t[0] + 0.3 * (t[-1] - t[0]) if t_from is None else t_from
@@ -383,7 +385,7 @@ def crawl_metrics(res, *, t_from: float | None = None, t_to: float | None = None
     slips = int(np.sum(above[1:] & ~above[:-1]))
     return {"v_ref": vr, "intermittency": inter, "peak_ratio": pk,
             "cv": float(np.std(v) / vr), "slips": slips,
-            "crawling": bool(inter > 0.3 and pk > 3.0)}
+            "crawling": bool(inter > 0.3 and pk > 3.0), "stalled": bool(inter > 0.9)}
 
 
 def press_dataset(res, plant: ForgingPress, name: str = "forging_press"):
@@ -450,7 +452,8 @@ def demo_figures(out, summary: dict, quick: bool = True):
         m = (res["time"] >= t0) & (res["time"] <= t1)
         ax[axk].plot(res["time"][m], res["v"][m] * 1e3, lw=0.8, label="beam")
         ax[axk].plot(res["time"][m], res["v_ref"][m] * 1e3, "k--", lw=0.8, label="reference")
-        state = "crawls" if crawl[f"{vref * 1e3:g}mm/s"]["crawling"] else "smooth"
+        cm = crawl[f"{vref * 1e3:g}mm/s"]
+        state = "crawls" if cm["crawling"] else ("stalled" if cm["stalled"] else "smooth")
         ax[axk].set(xlabel="t [s]", ylabel="v [mm/s]",
                     title=f"schedule step at {vref * 1e3:g} mm/s: {state}")
         ax[axk].legend(fontsize=7)

@@ -71,3 +71,16 @@ def test_xml350_loop_from_part_fmus_matches_the_reference(plant_fmu_dir):
     asm = run_assembled(0.03, separate_friction=True)
     assert nrmse(asm["x"], res["mechanics.x"]) < 1e-3
     assert np.ptp(res["mechanics.x"]) > 0.5 * 1e-4 * 0.1  # the stage did move
+
+
+@pytest.mark.slow
+def test_examples_run():
+    import importlib.util
+    import pathlib
+    root = pathlib.Path(__file__).resolve().parents[1] / "examples"
+    spec = importlib.util.spec_from_file_location("cosim_mass_friction",
+                                                  root / "cosim_mass_friction.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    r = mod.run_cosim_mass_friction(show_plot=False, stop=0.3)
+    assert r["nrmse"] < 1e-3

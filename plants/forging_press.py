@@ -141,7 +141,7 @@ def press_friction(**overrides) -> FrictionModel:
                     k2_high=102.88e-3, k3_high=319.91)
         base.update(overrides)
         return make_model("load_lugre", **base)
-    base = dict(sigma0=2e10, sigma1=1e6, Fc=203.23e3, Fs=377.39e3, vs=0.076e-3,
+    base = dict(sigma0=1e9, sigma1=1e6, Fc=203.23e3, Fs=377.39e3, vs=0.076e-3,
                 sigma2=19.77e6)
     base.update(overrides)
     return make_model("lugre", **base)

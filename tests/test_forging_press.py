@@ -125,3 +125,13 @@ def test_press_dataset_eq1_identity(press):
     # Eq. (1) solved for F_r returns the friction the law applied, sample by sample
     assert np.allclose(ds.F, res["F"], rtol=1e-9, atol=1e-6 * np.max(np.abs(res["F"])))
     assert np.array_equal(ds.load, res["F_sigma"]) and ds.load.max() > 0
+
+
+def test_press_takes_a_classic_lugre():
+    from friction import make_model
+    law = make_model("lugre", sigma0=1e9, sigma1=1e6, Fc=203.23e3, Fs=377.39e3, vs=7.6e-5,
+                     sigma2=1.977e7)
+    p = ForgingPress(law)
+    res = p.simulate(3.0, schedule=((1.2e-3, 4.0),), workpiece=False)
+    assert abs(np.mean(res["v"][-50:]) - 1.2e-3) < 0.05 * 1.2e-3
+    assert np.allclose(p.friction_from_eq1(res), res["F"], rtol=1e-9, atol=1e-3)

@@ -64,3 +64,11 @@ def test_isolator_dataset():
     res = MREIsolator().simulate(0.5)
     ds = isolator_dataset(res)
     assert np.array_equal(ds.F, res["F_meas"]) and np.array_equal(ds.x, res["x"])
+
+
+def test_isolator_takes_a_classic_lugre():
+    from friction import make_model
+    law = make_model("lugre", sigma0=1e5, sigma1=100.0, sigma2=300.0, Fc=20.0, Fs=25.0)
+    res = MREIsolator(law).simulate(0.5)
+    k = res["time"] > 0.25
+    assert np.all(np.isfinite(res["F_meas"])) and nrmse(res["F_meas"][k], res["F"][k]) < 0.02

@@ -180,3 +180,14 @@ def test_valve_dataset_contract():
     assert ds.t.size == int(round(1.25 / 5.0 * SAMPLE_RATE)) + 1
     err = np.sqrt(np.mean((ds.F - ds.extra["F_true"]) ** 2))
     assert err < 0.05 * np.ptp(ds.extra["F_true"])
+
+
+@pytest.mark.parametrize("name", ["lugre", "stribeck"])
+def test_valve_takes_other_laws(name):
+    from friction import make_model
+    kw = dict(Fc=6.0, Fs=6.5, vs=5e-3, sigma2=20.0)
+    if name == "lugre":
+        kw.update(sigma0=4.86e5, sigma1=40.0)
+    res = ValveActuator(make_model(name, **kw)).simulate(0.03)
+    S_ref, _, _ = sine_reference(res["time"], 10.0, 8e-3)
+    assert np.all(np.isfinite(res["F"])) and np.max(np.abs(res["x"] - S_ref)) < 3e-4

@@ -80,6 +80,7 @@ def main(argv=None):
     ap.add_argument("--noise", type=float, default=0.02)
     ap.add_argument("--cases", default=",".join(CASES))
     ap.add_argument("--no-real", action="store_true")
+    ap.add_argument("--no-robustness", action="store_true")
     ap.add_argument("--json", default=None)
     args = ap.parse_args(argv)
     budget = args.budget or (3000 if args.quick else 10000)
@@ -144,6 +145,29 @@ def main(argv=None):
                                          time_to_reach=reach, default_total=d_wall,
                                          time_ratio=None if reach is None else reach / b_wall,
                                          total_ratio=d_wall / b_wall), ok=bool(ok)))
+    if not args.no_robustness:
+        print("\nRobustness: 8 random starts inside the box (2 % noise); a run 'reaches the "
+              "optimum' if its cost is within 0.1 % of the best of all runs")
+        print("| dataset | algorithm | reached optimum | median wall [s] |")
+        print("|---|---|---|---|")
+        rng = np.random.default_rng(5)
+        for key in ("seed001", "seed003"):
+            c = make_case(key, noise=args.noise)
+            from identification.space import ParameterSpace
+            sp = ParameterSpace.build(c.true, c.names, c.bounds, c.data)
+            runs = {"least_squares": [], DEFAULT_ALGORITHM: []}
+            for trial in range(8):
+                x = sp.to_physical(rng.random(len(c.names)))
+                start = c.true.with_values(**dict(zip(c.names, x)))
+                for alg in runs:
+                    r, wall = run(alg, c.data, start, c.names, c.bounds, budget, seed=trial)
+                    runs[alg].append((r.fit_nrmse, wall))
+            best = min(v[0] for lst in runs.values() for v in lst)
+            for alg, lst in runs.items():
+                ok = sum(v[0] <= best * 1.001 for v in lst)
+                print(f"| {c.name} | {alg} | {ok}/8 | {np.median([v[1] for v in lst]):.2f} |")
+                rows.append(dict(dataset=c.name, algorithm=alg, robustness=ok / 8))
+
     print("\nGoals")
     for g in goals:
         v = g["value"]

@@ -1,4 +1,13 @@
-"""Identification algorithms by name (``ALGORITHMS``); see :mod:`.base` for the contract."""
+"""Identification algorithms by name (``ALGORITHMS``); see :mod:`.base` for the contract.
+
+Default: ``multistart_ls`` (Latin-hypercube screening in one population call, then
+trust-region least squares). ``benchmarks/bench_identification.py`` (one run, shared 2-core
+machine) justifies it: on the seeds' five laws with their tables and on the EMPS and Franka
+real data it reaches a cost no worse than the best seed metaheuristic (chaotic PSO in every
+case, 10 000 evaluations) in 1-8 % of that metaheuristic's wall time, recovers every
+parameter within 1 % on noise-free data (worst 0.13 %, seed 004), and from 8 random starts
+in the box it found the optimum 8/8 times where plain least squares found it 5/8 (seed 001).
+"""
 from __future__ import annotations
 
 from .base import Algorithm

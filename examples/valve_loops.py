@@ -9,6 +9,8 @@ with Eq. (1) from the Butterworth-filtered encoder and current signals, and draw
   at the reversals (``valve_loops_grid.png``);
 * the classic LuGre against the modified LuGre at 1 Hz / 8 mm (Fig. 11)
   (``valve_classic_vs_modified.png``);
+* the steady-state tests (Fig. 9): friction at constant speeds in +-0.02 m/s against the
+  law's Stribeck curve (``valve_stribeck.png``);
 * the explicit-Euler observer of Eqs. (27)-(30) at 5/10/20 Hz (Fig. 10)
   (``valve_euler_observer.png``), and the loop features as JSON (``valve_loops.json``).
 
@@ -22,7 +24,8 @@ import os
 import numpy as np
 
 from plants.valve import (FREQUENCIES, MAGNITUDES, ValveActuator, classic_lugre_twin,
-                          demo_figures, loop_features, loops_at, valve_friction)
+                          demo_figures, loop_features, loops_at, stribeck_points,
+                          valve_friction)
 
 
 def run_example(show_plot: bool = False, out_dir: str = "valve_loops_out") -> dict:
@@ -79,11 +82,24 @@ def run_example(show_plot: bool = False, out_dir: str = "valve_loops_out") -> di
     p2 = os.path.join(out_dir, "valve_classic_vs_modified.png")
     fig2.savefig(p2, dpi=120)
 
+    mags = np.geomspace(1e-3, 0.02, 8)
+    pts = stribeck_points(np.concatenate((-mags[::-1], mags)), plant=plant)
+    vg = np.linspace(-0.021, 0.021, 801)
+    fig3, ax3 = plt.subplots(figsize=(6, 4))
+    ax3.plot(vg, plant.friction.steady_state(vg), label="law, Eq. (5)")
+    ax3.plot(pts[:, 0], pts[:, 1], "o", label="constant-speed tests, Eq. (1)")
+    ax3.set(xlabel="v [m/s]", ylabel="friction [N]", title="steady state (Fig. 9)")
+    ax3.legend(fontsize=8)
+    fig3.tight_layout()
+    p3 = os.path.join(out_dir, "valve_stribeck.png")
+    fig3.savefig(p3, dpi=120)
+    out["stribeck"] = pts.tolist()
+
     summary: dict = {}
     files = demo_figures(out_dir, summary, quick=True)
     out["euler"] = summary["valve"]["euler_onset"]
     out["v_cr"] = summary["valve"]["v_cr"]
-    out["files"] = [p1, p2] + [str(f) for f in files]
+    out["files"] = [p1, p2, p3] + [str(f) for f in files]
     with open(os.path.join(out_dir, "valve_loops.json"), "w") as fh:
         json.dump(out, fh, indent=2, default=lambda x: None if np.isnan(x) else float(x))
     if show_plot:

@@ -47,7 +47,7 @@ from .tables import Table2D, bilinear, bilinear_inverse_y, make_fmag_table
 
 __all__ = ["ValveParams", "ValveActuator", "valve_friction", "classic_lugre_twin",
            "sine_reference", "recover_friction", "euler_observer", "loop_features", "loops_at",
-           "valve_dataset",
+           "valve_dataset", "stribeck_points",
            "demo_figures", "FREQUENCIES", "MAGNITUDES"]
 
 #: seed 000 protocol
@@ -117,7 +117,8 @@ class ValveActuator(Plant):
 
     Outputs: ``x`` lift S [m], ``v`` [m/s], ``a`` [m/s^2], ``i`` coil current [A],
     ``i_cmd`` [A], ``S_ref`` [m], ``S_meas`` quantised encoder position [m], ``F`` friction [N].
-    Options: ``freq`` [Hz], ``magnitude`` [m] (peak-to-peak lift).
+    Options: ``freq`` [Hz], ``magnitude`` [m] (peak-to-peak lift); ``speed`` [m/s] (nonzero:
+    constant-speed stroke of the steady-state tests instead of the sinusoid), ``t_acc`` [s].
     """
 
     name = "valve"
@@ -131,7 +132,7 @@ class ValveActuator(Plant):
     discrete_names = ("i_cmd", "integ", "S_prev", "v_filt")
     control_rate = SAMPLE_RATE
     max_substep = 2.5e-5
-    options = {"freq": 10.0, "magnitude": 8e-3}
+    options = {"freq": 10.0, "magnitude": 8e-3, "speed": 0.0, "t_acc": 0.02}
     signals = {"x": ("m", "valve lift S"), "v": ("m/s", "valve velocity"),
                "a": ("m/s2", "valve acceleration"), "i": ("A", "coil current"),
                "i_cmd": ("A", "current command"), "S_ref": ("m", "lift reference"),
@@ -156,8 +157,28 @@ class ValveActuator(Plant):
         return self._fmag
 
     def reference(self, t):
-        """(S_ref, v_ref, a_ref) of the current options at time(s) ``t``."""
-        return sine_reference(t, self.opts["freq"], self.opts["magnitude"])
+        """(S_ref, v_ref, a_ref) of the current options at time(s) ``t``.
+
+        ``speed = 0``: the lift sinusoid; otherwise a constant-speed stroke (seed 000's
+        steady-state tests under velocity control) from the start lift, reaching ``speed``
+        [m/s] with a constant acceleration over ``t_acc`` [s].
+        """
+        speed = float(self.opts["speed"])
+        if speed == 0.0:
+            return sine_reference(t, self.opts["freq"], self.opts["magnitude"])
+        ta = float(self.opts["t_acc"])
+        t = np.asarray(t, float)
+        S0 = self._start_lift()
+        tc = np.minimum(t, ta)
+        S = S0 + speed * (0.5 * tc * tc / ta + np.maximum(t - ta, 0.0))
+        return S, speed * tc / ta, np.where(t < ta, speed / ta, 0.0)
+
+    def _start_lift(self) -> float:
+        """Start lift [m]: 0 for the sinusoids; 1 mm (speed > 0) or 7 mm (speed < 0) ramps."""
+        speed = float(self.opts["speed"])
+        if speed == 0.0:
+            return 0.0
+        return 1e-3 if speed > 0 else 7e-3
 
     def _quantise(self, S):
         q = self.params.q_S
@@ -166,14 +187,16 @@ class ValveActuator(Plant):
     # -- plant contract -------------------------------------------------------------------------
     def _hold_current(self) -> float:
         p = self.params
+        S0 = self._start_lift()
         xg, yg, Z = self.fmag.arrays()
-        return float(bilinear_inverse_y(xg, yg, Z, 0.0, p.k * p.const))
+        return float(bilinear_inverse_y(xg, yg, Z, S0, p.k * (S0 + p.const)))
 
     def initial_state(self):
-        return np.array([0.0, 0.0, self._hold_current()])
+        return np.array([self._start_lift(), 0.0, self._hold_current()])
 
     def initial_discrete(self):
-        return np.array([self._hold_current(), 0.0, 0.0, 0.0])
+        S0 = self._quantise(self._start_lift())
+        return np.array([self._hold_current(), 0.0, S0, 0.0])
 
     def derivatives(self, t, s, d, F, u):
         p = self.params
@@ -192,7 +215,7 @@ class ValveActuator(Plant):
         S_m = self._quantise(float(s[0]))
         S_r, v_r, a_r = (float(x) for x in self.reference(t))
         e = S_r - S_m
-        v_raw = (S_m - S_prev) / Ts if t > 0 else 0.0
+        v_raw = (S_m - S_prev) / Ts
         v_filt = v_filt + Ts / (p.tau_d + Ts) * (v_raw - v_filt)
         integ = integ + p.Ki * e * Ts
         F_cmd = p.m * a_r + p.k * (S_r + p.const) + p.Kp * e + integ + p.Kd * (v_r - v_filt)
@@ -284,6 +307,41 @@ def valve_dataset(freq: float = 10.0, magnitude: float = 8e-3, *, cycles: float 
     return Dataset.from_arrays(rec["t"], rec["F"], x=rec["x"], v=rec["v"], a=rec["a"],
                                name=f"valve_{freq:g}Hz_{magnitude * 1e3:g}mm",
                                extra={"F_true": np.asarray(res["F"]), "i": rec["i"]})
+
+
+def stribeck_points(speeds, *, plant: ValveActuator | None = None, travel: float = 2e-3,
+                    progress=None) -> np.ndarray:
+    """Seed 000's steady-state tests (Fig. 9): friction at constant speeds by Eq. (1).
+
+    Each speed runs a stroke under velocity control; the recovered friction is averaged
+    over the constant-speed part after the first quarter of the travel.
+
+    Parameters
+    ----------
+    speeds : array_like
+        Speeds [m/s] (signed, nonzero; the paper used 48 in +-0.02 m/s).
+    plant : ValveActuator, optional
+    travel : float
+        Lift travelled at constant speed [m] (within the 8 mm stroke).
+
+    Returns
+    -------
+    ndarray, shape (n, 2)
+        Mean velocity [m/s] and mean recovered friction [N] per speed.
+    """
+    plant = plant or ValveActuator()
+    out = []
+    for sp in np.asarray(speeds, float):
+        if sp == 0 or not np.isfinite(sp):
+            raise ValueError(f"speed {sp!r} m/s: steady-state tests need a nonzero speed")
+        ta = float(plant.opts["t_acc"])
+        T = ta + travel / abs(sp)
+        res = plant.simulate(T, speed=float(sp), progress=progress)
+        rec = recover_friction(res, plant, cutoff=min(1000.0, 0.45 * SAMPLE_RATE))
+        m = rec["t"] > ta + 0.25 * (T - ta)
+        m &= rec["t"] < T - 0.05 * (T - ta)   # filtfilt edge
+        out.append((float(np.mean(rec["v"][m])), float(np.mean(rec["F"][m]))))
+    return np.array(out)
 
 
 def euler_observer(law: FrictionModel, t, v, *, a=None, h_inject: float | None = None,

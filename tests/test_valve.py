@@ -191,3 +191,14 @@ def test_valve_takes_other_laws(name):
     res = ValveActuator(make_model(name, **kw)).simulate(0.03)
     S_ref, _, _ = sine_reference(res["time"], 10.0, 8e-3)
     assert np.all(np.isfinite(res["F"])) and np.max(np.abs(res["x"] - S_ref)) < 3e-4
+
+
+def test_steady_state_tests_recover_stribeck_curve(plant):
+    """Seed 000 Fig. 9: constant-speed strokes, friction by Eq. (1), on the law's Eq. (5)."""
+    from plants.valve import stribeck_points
+    pts = stribeck_points([-0.02, -0.005, 0.005, 0.02], plant=plant)
+    Fss = plant.friction.steady_state(pts[:, 0])
+    assert np.allclose(pts[:, 1], Fss, rtol=2e-3)
+    assert pts[3, 1] > pts[2, 1] and pts[0, 1] < 0                   # asymmetric law: +/-
+    with pytest.raises(ValueError, match="nonzero"):
+        stribeck_points([0.0], plant=plant)

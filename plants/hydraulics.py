@@ -115,8 +115,9 @@ class HydraulicChamber(FrictionParams):
 class ServoValve(FrictionParams):
     """3-way servo valve: regularised orifice flow and a first-order spool.
 
-    The spool opening ``x_v = x_max u`` follows the normalised command ``u`` in [-1, 1] with
-    time constant ``tau_v``.
+    The spool position ``x_v`` follows ``x_max u`` (normalised command ``u`` in [-1, 1]) with
+    time constant ``tau_v``; the metering edge opens only beyond the overlap
+    ``overlap * x_max`` (0: critically lapped).
     """
     Cd: float = param(0.61, "1", "discharge coefficient", lower=0, lower_open=True, upper=1)
     w: float = param(0.02, "m", "area gradient (orifice width per spool travel)", lower=0,
@@ -129,6 +130,8 @@ class ServoValve(FrictionParams):
     dp_lam: float = param(0.1e6, "Pa", "laminar-transition pressure of the regularisation",
                           lower=0, lower_open=True)
     leak: float = param(0.0, "m^3/(s.Pa)", "centred-spool leakage conductance", lower=0)
+    overlap: float = param(0.0, "1", "spool overlap (dead band) as a fraction of x_max",
+                           lower=0, upper=0.5)
 
     def _check_relations(self):
         from friction._validation import ParameterError
@@ -140,9 +143,14 @@ class ServoValve(FrictionParams):
         """Cd w [m]."""
         return self.Cd * self.w
 
+    def metering_opening(self, x_v):
+        """Opening of the metering edge [m]: the spool travel beyond the overlap, signed."""
+        x_v = np.asarray(x_v, float)
+        return np.sign(x_v) * np.maximum(np.abs(x_v) - self.overlap * self.x_max, 0.0)
+
     def flow(self, x_v, p) -> np.ndarray:
-        """Flow [m^3/s] into the chamber at pressure ``p`` for spool opening ``x_v`` [m]."""
-        xb, pb = np.broadcast_arrays(np.asarray(x_v, float), np.asarray(p, float))
+        """Flow [m^3/s] into the chamber at pressure ``p`` for spool position ``x_v`` [m]."""
+        xb, pb = np.broadcast_arrays(self.metering_opening(x_v), np.asarray(p, float))
         out = np.array([valve_3way_flow(self.kq, a, self.ps, self.pt, b, self.rho,
                                         self.dp_lam, self.leak)
                         for a, b in zip(xb.ravel(), pb.ravel())]).reshape(xb.shape)

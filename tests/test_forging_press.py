@@ -135,3 +135,10 @@ def test_press_takes_a_classic_lugre():
     res = p.simulate(3.0, schedule=((1.2e-3, 4.0),), workpiece=False)
     assert abs(np.mean(res["v"][-50:]) - 1.2e-3) < 0.05 * 1.2e-3
     assert np.allclose(p.friction_from_eq1(res), res["F"], rtol=1e-9, atol=1e-3)
+
+
+def test_servo_valve_overlap():
+    from plants.hydraulics import ServoValve
+    lapped = ServoValve(overlap=0.1)
+    assert lapped.flow(0.05e-3, 5e6) == 0.0                           # inside the dead band
+    assert lapped.flow(0.2e-3, 5e6) == pytest.approx(ServoValve().flow(0.1e-3, 5e6))

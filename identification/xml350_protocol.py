@@ -117,7 +117,7 @@ def run_xml350_protocol(*, quick: bool = False, noise_x: float = 0.0, k: int = 5
     static = stribeck_fit(v_ss, F_ss, shape="lorentzian")
     per_dir = {}
     for label, sel in (("negative", v_ss < 0), ("positive", v_ss > 0)):
-        f = stribeck_fit(np.abs(v_ss[sel]), np.abs(F_ss[sel]), shape="lorentzian")
+        f = stribeck_fit(np.abs(v_ss[sel]), np.abs(F_ss[sel]), shape="lorentzian", offset=False)
         per_dir[label] = {k_: f[k_] for k_ in ("Fc", "Fs", "vs", "sigma2")}
     out["static"] = {"both": static, **per_dir, "points": int(v_ss.size)}
     out["timings"]["static"] = time.monotonic() - t0

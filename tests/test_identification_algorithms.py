@@ -196,3 +196,29 @@ def test_benchmark_functions_of_seed_002():
     r = minimize(griewank, [-5, -5], [5, 5], algorithm="iafsa", seed=1, max_iter=40)
     assert r["state"]["n_chaos"] > 0 and r["state"]["n_mutations"] > 0
     assert r["fun"] < 0.05
+
+
+def test_static_ls_recovers_seed_004_tables_from_constant_speed_tests():
+    """Seed 004: Phi = [Fc0, Fs0, vs, sigma20] from no-load constant-speed tests (Eq. 16), then
+    [k1, k2, k3] per regime from loaded ones by the linear system of Eq. 18."""
+    from friction.load_lugre import critical_velocity
+    base = make_model("load_lugre").params
+    vc = critical_velocity(base.Fc0, base.Fs0, base.vs, base.sigma20)
+    true = make_model("load_lugre", vc=vc)
+    v_free = np.geomspace(2e-6, 2e-3, 40)
+    v_low = np.geomspace(3e-6, 0.9 * vc, 12)
+    v_high = np.geomspace(1.2 * vc, 2e-3, 12)
+    v = np.concatenate([v_free, v_low, v_low, v_high, v_high])
+    load = np.concatenate([np.zeros(40), np.full(12, 5e4), np.full(12, 1.2e5),
+                           np.full(12, 5e4), np.full(12, 1.2e5)])
+    F = true.steady_state(v, load=load)
+    d = Dataset.from_arrays(np.arange(v.size, dtype=float), F, v=v, a=np.zeros_like(v),
+                            load=load, check_units=False)
+    names = ["Fc0", "Fs0", "vs", "sigma20", "k1_low", "k2_low", "k3_low", "k1_high", "k2_high",
+             "k3_high"]
+    r = identify(d, make_model("load_lugre", vc=vc), algorithm="static_ls", names=names)
+    for n in ("Fc0", "Fs0", "vs", "sigma20", "k1_low", "k2_low", "k3_low", "k1_high",
+              "k3_high"):
+        assert r.params[n] == pytest.approx(getattr(true.params, n), rel=1e-3, abs=1e-6), n
+    with pytest.raises(ValueError, match="load_lugre"):
+        identify(d, "lugre", algorithm="static_ls")

@@ -36,9 +36,13 @@ def quasi_steady(data, accel_tol: float | None = None, v_min: float | None = Non
     return (a <= accel_tol) & (v >= v_min)
 
 
-def stribeck_fit(v, F, shape: str = "gaussian", alpha: float = 2.0, x0=None):
+def stribeck_fit(v, F, shape: str = "gaussian", alpha: float = 2.0, x0=None,
+                 offset: bool = True):
     """Nonlinear least-squares Stribeck fit ``F = g(v) sgn(v) + sigma2 v + b`` (seed 003 Eq. 6,
-    seed 004 Eq. 8). Returns dict Fc, Fs, vs, sigma2, b."""
+    seed 004 Eq. 8). Returns dict Fc, Fs, vs, sigma2, b.
+
+    ``offset=False`` fixes ``b = 0`` (Eq. 8; also needed when all speeds have one sign, where
+    b and Fc cannot be told apart)."""
     v, F = np.asarray(v, float), np.asarray(F, float)
     sv = max(np.percentile(np.abs(v), 95), 1e-12)
     sF = max(np.percentile(np.abs(F), 95), 1e-12)
@@ -53,7 +57,10 @@ def stribeck_fit(v, F, shape: str = "gaussian", alpha: float = 2.0, x0=None):
         x0 = [0.5 * sF, 0.2 * sF, np.log(max(vmin * 3, sv * 0.05)), 0.3 * sF / sv, 0.0]
     lo = [0.0, 0.0, np.log(vmin * 0.1), 0.0, -sF]
     hi = [2 * sF, 2 * sF, np.log(sv * 2), 10 * sF / sv, sF]
-    x0 = np.clip(x0, np.array(lo) + 1e-12, np.array(hi) - 1e-12)
+    if not offset:  # b pinned at 0: an (almost) empty interval keeps the solver's shape
+        x0 = list(x0)
+        x0[4], lo[4], hi[4] = 0.0, -1e-12 * sF, 1e-12 * sF
+    x0 = np.clip(x0, np.array(lo) + 1e-15 * sF, np.array(hi) - 1e-15 * sF)
     best = None
     for lvs0 in (x0[2], np.log(sv * 0.01), np.log(sv * 0.1), np.log(max(vmin, sv * 1e-3))):
         start = np.array(x0, float)
@@ -210,8 +217,7 @@ class StaticLeastSquares(Algorithm):
         free = np.abs(Fl) <= tol
         if free.sum() < 4:
             raise ValueError("static_ls: fewer than 4 no-load constant-speed samples for Phi")
-        fit = stribeck_fit(v[free], F[free])
-        # Eq. 8 has no offset: refit with b = 0 by absorbing it would bias; report it instead
+        fit = stribeck_fit(v[free], F[free], offset=False)
         Fc0, Fs0, vs, s20 = fit["Fc"], fit["Fs"], fit["vs"], fit["sigma2"]
         out = {"Fc0": Fc0, "Fs0": Fs0, "vs": vs, "sigma20": s20}
         vc = critical_velocity(Fc0, Fs0, vs, s20)

@@ -222,3 +222,18 @@ def test_static_ls_recovers_seed_004_tables_from_constant_speed_tests():
         assert r.params[n] == pytest.approx(getattr(true.params, n), rel=1e-3, abs=1e-6), n
     with pytest.raises(ValueError, match="load_lugre"):
         identify(d, "lugre", algorithm="static_ls")
+
+
+def test_algorithm_variants_and_option_errors():
+    from identification.functions import ackley, minimize
+    r = minimize(ackley, [-5, -5], [5, 5], algorithm="afsa", seed=1, crowd_test="food",
+                 max_iter=30)
+    assert r["fun"] < 0.1
+    for sched in ("power", "one_minus_power", "exp"):
+        r = minimize(ackley, [-5, -5], [5, 5], algorithm="iffoa", seed=1, schedule=sched,
+                     pop_size=30, max_iter=50)
+        assert np.isfinite(r["fun"]) and r["n_evals"] == 30 * 50 + 1
+    with pytest.raises(ValueError, match="crowd_test"):
+        minimize(ackley, [-5, -5], [5, 5], algorithm="afsa", crowd_test="nope", max_iter=2)
+    with pytest.raises(TypeError, match="no option"):
+        minimize(ackley, [-5, -5], [5, 5], algorithm="afsa", bogus=1)

@@ -26,9 +26,11 @@ def _unit(d):
 
 class AFSA(Algorithm):
     """Plain artificial fish swarm: preying (18)-(19), swarming (20), following (21), random
-    move (22), bulletin. Crowd test in SHAO's ratio form ``n_f / n < eta`` (EQUATIONS A.5)."""
+    move (22), bulletin. Crowd test in SHAO's ratio form ``n_f / n < eta`` (EQUATIONS A.5), or
+    the classical food-per-fish test ``Y / n_f < eta Y_i`` with ``crowd_test="food"`` (D.2)."""
     name = "afsa"
-    defaults = dict(n_fish=50, step_length=0.5, visual=0.6, try_number=3, eta=0.7, max_iter=1000)
+    defaults = dict(n_fish=50, step_length=0.5, visual=0.6, try_number=3, eta=0.7, max_iter=1000,
+                    crowd_test="ratio")
     source = "SHAO 2018 (seed 000) Eqs. 18-22; Li Xiao-lei AFSA"
     improved = False
 
@@ -50,7 +52,12 @@ class AFSA(Algorithm):
         close = np.all(np.abs(X[:, None, :] - X[None, :, :]) < vis, axis=2)
         np.fill_diagonal(close, False)
         nf = close.sum(axis=1)
-        crowd_ok = (nf > 0) & (nf / n < self.eta)
+        if self.crowd_test == "ratio":  # SHAO: neighbours / population below eta
+            crowd_ok = (nf > 0) & (nf / n < self.eta)
+        elif self.crowd_test == "food":  # classical (D.2), minimisation: Y_c / n_f < eta Y_i
+            crowd_ok = nf > 0  # applied per behaviour below
+        else:
+            raise ValueError(f"crowd_test = {self.crowd_test!r}: use 'ratio' or 'food'")
         # swarming: centre of the neighbours
         centre = np.where(nf[:, None] > 0, (close @ X) / np.maximum(nf, 1)[:, None], X)
         # following: best neighbour
@@ -66,6 +73,9 @@ class AFSA(Algorithm):
             Xf = self._move(X[idx], X[jbest[idx]], rng)
             use_s = Yc < Y[idx]
             use_f = ybest[idx] < Y[idx]
+            if self.crowd_test == "food":
+                use_s &= Yc / nf[idx] < self.eta * Y[idx]
+                use_f &= ybest[idx] / nf[idx] < self.eta * Y[idx]
             cand_idx = np.concatenate([idx[use_s], idx[use_f]])
             cand = np.vstack([Xs[use_s], Xf[use_f]]) if cand_idx.size else np.empty((0, D))
             if cand_idx.size:
@@ -185,14 +195,23 @@ class FFOA(Algorithm):
 class IFFOA(FFOA):
     """Improved FFOA (YU, EQUATIONS B.4, REC-L): three axes (X, Y, Z), self-adaptive step
     ``omega = omega0 (1 - Nc/Niter)^p`` (p = 4) as flight radius, and the transfer factor
-    ``theta = omega (0.5 - rand)`` added to ``S = 1/Dist`` so S can leave (0, inf)."""
+    ``theta = omega (0.5 - rand)`` added to ``S = 1/Dist`` so S can leave (0, inf). The
+    omega schedule is pluggable (EQUATIONS B.4 is REC-L): ``"power"`` omega0 (1 - Nc/Niter)^p,
+    ``"one_minus_power"`` omega0 (1 - (Nc/Niter)^p), ``"exp"`` omega0 exp(-p Nc/Niter)."""
     name = "iffoa"
-    defaults = dict(FFOA.defaults, omega0=1.0, p=4)
+    defaults = dict(FFOA.defaults, omega0=1.0, p=4, schedule="power")
     source = "YU 2015 (seed 002) Eqs. 8-10 (reconstructed)"
     n_axes = 3
 
     def _radius(self, state):
-        return self.omega0 * (1.0 - state["iteration"] / self.max_iter) ** self.p  # Eq. 8a-b
+        r = min(state["iteration"] / self.max_iter, 1.0)
+        if self.schedule == "power":  # Eq. 8a-b (default reconstruction)
+            return self.omega0 * (1.0 - r) ** self.p
+        if self.schedule == "one_minus_power":
+            return self.omega0 * (1.0 - r ** self.p)
+        if self.schedule == "exp":
+            return self.omega0 * np.exp(-self.p * r)
+        raise ValueError(f"schedule = {self.schedule!r}: use 'power', 'one_minus_power' or 'exp'")
 
     def _candidates(self, rng, state, D):
         flies, S = super()._candidates(rng, state, D)

@@ -278,3 +278,13 @@ def test_all_fmus_load_together_in_one_process(fmu_dir):
     ref = mass_cosim(fmu_dir, "lugre", step=1e-4, stop=0.05,
                      scenario=dict(m=1.0, u0=0.0, u_amp=2.0, u_freq=1.0, v0=0.0, stop=0.05))
     np.testing.assert_allclose(res["mass.x"], ref["mass.x"], rtol=1e-12, atol=1e-15)
+
+
+def test_cli_build_fmus(tmp_path, capsys):
+    from frictionlab.cli import main
+    assert main(["build-fmus", "--out", str(tmp_path), "--only", "stribeck"]) == 0
+    assert validate(tmp_path / "stribeck.fmu") == []
+    assert "[build-fmus 1/1]" in capsys.readouterr().err
+    assert main(["build-fmus", "--out", str(tmp_path), "--only", "nonsense"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "unknown FMU name" in err[0] and "nonsense" in err[0]

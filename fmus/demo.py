@@ -82,7 +82,8 @@ def run_stage(out, summary: dict, quick: bool = False) -> None:
         name: max(r["nrmse"] for r in d.values() if "nrmse" in r)
         for name, d in detail.items() if any("nrmse" in r for r in d.values())}
     summary["cosim_vs_reference_detail"] = {
-        name: {law: ({"nrmse": r["nrmse"], "order": r["order"], "step": r["step"]}
+        name: {law: ({"nrmse": r["nrmse"], "order": r["order"], "step": r["step"],
+                      "data_step": r["data_step"]}
                      if "nrmse" in r else r) for law, r in d.items()}
         for name, d in detail.items()}
     with open(os.path.join(out, "cosim_vs_reference.json"), "w") as fh:

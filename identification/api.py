@@ -166,7 +166,15 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     exe = make_executor(executor, obj)
     problem = Problem(obj, space, exe, max_evals=max_evals)
     rng = np.random.default_rng(seed)
-    x0 = np.array([getattr(model.params, n) for n in space.names], float)
+    def _initial(n):  # a direction twin left None starts from its "+" value
+        v = getattr(model.params, n)
+        if v is None and n.endswith("_neg"):
+            v = getattr(model.params, n[:-4], None)
+        if v is None:
+            raise ValueError(f"{n} has no value to start from; set it on the model first")
+        return float(v)
+
+    x0 = np.array([_initial(n) for n in space.names], float)
     u0 = np.clip(space.to_unit(x0), 0.0, 1.0)
     prog = _as_progress(progress, f"identify {alg.name}")
 

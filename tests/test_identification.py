@@ -98,3 +98,15 @@ def test_progress_lines_and_path_input(synthetic, start, tmp_path, capsys):
     # the trace is monotone in evaluations, time and cost
     tr = np.array(r.trace)
     assert np.all(np.diff(tr[:, 0]) >= 0) and np.all(np.diff(tr[:, 2]) < 0)
+
+
+def test_direction_twins_can_be_identified_from_a_symmetric_start():
+    true = make_model("lugre", Fc=1.0, Fc_neg=1.4, sigma2=0.4, sigma2_neg=0.8)
+    t = np.arange(0, 4, 1e-3)
+    v = 0.01 * np.sin(2 * np.pi * 0.5 * t)
+    d = Dataset.from_arrays(t, true.simulate(t, v), v=v)
+    r = identify(d, "lugre", names=["Fc", "Fc_neg", "sigma2", "sigma2_neg"],
+                 algorithm="least_squares")
+    assert r.params["Fc_neg"] == pytest.approx(1.4, rel=1e-4)
+    assert r.params["sigma2_neg"] == pytest.approx(0.8, rel=1e-3)
+    assert r.model.params.Fc_neg == pytest.approx(1.4, rel=1e-4)

@@ -36,10 +36,10 @@ def main():
                        Fc=20.0, Fc_neg=20.0, Fs=25.0, Fs_neg=25.0, vs=0.01, b=-3.0)
     r = identify(est, start, algorithm=args.algorithm, names=NAMES, validation=val, progress=True)
     print(r.summary())
-    print(f"relative error on DATA_EMPS        : baseline {relative_error(est, base.friction(est.v)):.2%}"
-          f", LuGre {relative_error(est, r.model.simulate(est.t, est.v)):.2%}")
-    print(f"relative error on DATA_EMPS_PULSES : baseline {relative_error(val, base.friction(val.v)):.2%}"
-          f", LuGre {relative_error(val, r.model.simulate(val.t, val.v)):.2%}")
+    for label, ds in (("DATA_EMPS       ", est), ("DATA_EMPS_PULSES", val)):
+        eb = relative_error(ds, base.friction(ds.v))
+        el = relative_error(ds, r.model.simulate(ds.t, ds.v))
+        print(f"relative error on {label}: baseline {eb:.2%}, LuGre {el:.2%}")
     if args.json:
         r.to_json(args.json)
 

@@ -20,7 +20,6 @@ one master stays open per objective (and per worker process) and is reset betwee
 """
 from __future__ import annotations
 
-import math
 import os
 
 import numpy as np

@@ -49,7 +49,8 @@ def real_data_dir() -> pathlib.Path:
         If the folder is absent, naming where it was looked for.
     """
     env = os.environ.get("FRICTIONLAB_SHARED")
-    shared = pathlib.Path(env) if env else pathlib.Path(__file__).resolve().parents[1].parent / "shared"
+    repo = pathlib.Path(__file__).resolve().parents[1]
+    shared = pathlib.Path(env) if env else repo.parent / "shared"
     real = shared / "data" / "real"
     if not real.is_dir():
         raise FileNotFoundError(

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import tempfile
 
-import numpy as np
 
 
 def run_cosim_mass_friction(show_plot: bool = False, stop: float = 1.0, step: float = 1e-4):

@@ -22,7 +22,6 @@ import dataclasses
 import io
 import os
 import pathlib
-import shutil
 import sys
 import tempfile
 import zipfile

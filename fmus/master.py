@@ -248,6 +248,8 @@ class Master:
         for di, dv, si, sv in self.connections:
             dst, src = self.instances[di], self.instances[si]
             self._gather[di].append((dst.inputs.index(dv), src, src.outputs.index(sv)))
+        self._conn_src = [(self.instances[si].out_buf, self.instances[si].outputs.index(sv))
+                          for _, _, si, sv in self.connections]
         self._columns = []
         for ref in self.record:
             inst, var = Connection.split(ref)
@@ -336,8 +338,7 @@ class Master:
                 self._check(inst, "fmi2GetReal", st, t)
 
     def _connected_values(self):
-        return np.array([self.instances[si].out_buf[self.instances[si].outputs.index(sv)]
-                         for _, _, si, sv in self.connections])
+        return np.array([buf[k] for buf, k in self._conn_src])
 
     def _settle(self, t, passes):
         """Propagate connected values through feedthrough outputs (fixed-point iteration)."""

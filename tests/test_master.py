@@ -8,7 +8,7 @@ fmpy = pytest.importorskip("fmpy")
 pytest.importorskip("pythonfmu")
 
 from fmus.master import FMUError, Master  # noqa: E402
-from fmus.proof import mass_connections, mass_master, mass_proof  # noqa: E402
+from fmus.proof import mass_connections, mass_proof  # noqa: E402
 from fmus.testing import built_fmus  # noqa: E402
 
 REC = ["mass.x", "friction.F"]

@@ -155,3 +155,11 @@ def test_container_fmu_gives_our_trajectories(fmu_dir, tmp_path, sequential, alg
         ours = m.simulate(stop_time=0.1, step_size=1e-4)
     np.testing.assert_allclose(ext["c.mass_x"], ours["mass.x"], rtol=1e-12, atol=1e-18)
     np.testing.assert_allclose(ext["c.friction_F"], ours["friction.F"], rtol=1e-10, atol=1e-14)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("law", ["stribeck", "modified_lugre", "load_lugre", "mre_lugre"])
+def test_every_law_in_the_mass_loop_matches_the_reference(fmu_dir, law):
+    r = mass_proof(fmu_dir, law, rtol=1e-9)
+    assert r["nrmse"] <= 1e-3, r
+    assert r["order"] > 0.9, r

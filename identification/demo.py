@@ -2,7 +2,8 @@
 
 Writes PNG figures and fills ``summary["identification"]`` (called by ``frictionlab demo``).
 Quick mode (< 15 s): the synthetic seed 001 case and the EMPS fit. Full mode (< 60 s) adds a
-convergence comparison of the default against seed metaheuristics and a Franka joint.
+convergence comparison of the default against seed metaheuristics, a Franka joint and seed
+003's XML-350 protocol (short records).
 """
 from __future__ import annotations
 
@@ -161,5 +162,14 @@ def run_stage(out, summary: dict, quick: bool = False) -> None:
             _franka(entry)
         except FileNotFoundError as exc:
             entry["franka_case4_high"] = {"skipped": str(exc)}
+        try:
+            from .xml350_protocol import run_xml350_protocol
+        except ImportError as exc:  # the plant library is not there
+            entry["xml350_protocol"] = {"skipped": str(exc)}
+        else:
+            res = run_xml350_protocol(quick=True)
+            entry["xml350_protocol"] = {k: res[k] for k in (
+                "init", "final", "true", "accuracy", "paper_accuracy", "samples", "dynamic")}
+            report(f"  identification: XML-350 protocol done ({time.monotonic() - t0:.1f} s)")
     entry["figures"] = sorted(set(os.path.basename(f) for f in figures))
     entry["wall_time"] = time.monotonic() - t0

@@ -206,9 +206,67 @@ class ForgingPress(Plant):
                "F": ("N", "friction (seals + guide), opposing v"),
                "F_friction": ("N", "friction force input (external friction)")}
 
+    def __init__(self, friction=None, **kwargs):
+        super().__init__(friction, **kwargs)
+        self._set_substep()
+
     @classmethod
     def default_friction(cls) -> FrictionModel:
         return press_friction()
+
+    def with_options(self, **options):
+        new = super().with_options(**options)
+        new._set_substep()
+        return new
+
+    def with_params(self, **values):
+        new = super().with_params(**values)
+        new._set_substep()
+        return new
+
+    # -- explicit stability of the fast integrator -------------------------------------------------
+    def max_deformation_load(self) -> float:
+        """Upper estimate of F_sigma over the schedule [N] (steady flow at each step's end)."""
+        p = self.params
+        if not self.opts["workpiece"]:
+            return 0.0
+        temp = math.exp(p.Q_act / GAS_CONSTANT * (1.0 / p.T - 1.0 / p.T_ref))
+        red, Fmax = 0.0, 0.0
+        for speed, dur in self.opts["schedule"]:
+            red += max(speed, 0.0) * dur
+            h = max(p.H0 - max(red - p.contact_gap, 0.0), 0.05 * p.H0)
+            rate = max(speed, 0.0) / h
+            strain = math.log(p.H0 / h)
+            sigma = (p.sigma_ref * temp * (strain + p.eps0) ** p.n_hard
+                     * (rate / p.eps_ref) ** p.m_rate)
+            Fmax = max(Fmax, sigma * p.V_w / h)
+        return min(Fmax, p.ps * p.A1 + p.m * p.g)  # the press cannot push harder than this
+
+    def _set_substep(self) -> None:
+        """Keep Heun stable against the friction's (load-dependent) viscous slope.
+
+        The friction force enters the explicit update, so the step must satisfy
+        h c / m < 2 with c = dF_ss/dv + sigma1 at the largest deformation load of the
+        schedule (load_lugre's sigma2 grows with F_sigma); a factor 2 margin is kept.
+        """
+        base = type(self).max_substep
+        law = self.friction
+        if law is None:
+            self.max_substep = base
+            return
+        speeds = [abs(sp) for sp, _ in self.opts["schedule"]] or [1e-3]
+        v = max(max(speeds), 1e-4)
+        vv = np.array([v, 1.01 * v])
+        kw = {}
+        if "load" in law.extra_inputs:
+            kw["load"] = np.full(2, 1.2 * self.max_deformation_load())
+        try:
+            F = law.steady_state(vv, **kw)
+        except Exception:  # a law without a steady state (or inadmissible load): keep default
+            self.max_substep = base
+            return
+        c = abs(float(F[1] - F[0])) / (0.01 * v) + float(getattr(law.params, "sigma1", 0.0))
+        self.max_substep = min(base, self.params.m / c) if c > 0 else base
 
     # -- pieces --------------------------------------------------------------------------------
     def _p1_balance(self) -> float:

@@ -82,8 +82,8 @@ def test_default_friction_and_bad_input(press):
         assert press.friction.name == "load_lugre"
     with pytest.raises(ParameterError, match="A1"):
         ForgingPress(A1=-1.0)
-    with pytest.raises(ValueError, match="crushed"):
-        ForgingPress(H0=0.01).simulate(12.0, schedule=((1.2e-3, 12.0),))
+    with pytest.raises(ValueError, match="crushed"):   # a soft, thin workpiece
+        ForgingPress(H0=0.01, sigma_ref=1e5).simulate(12.0, schedule=((1.2e-3, 12.0),))
     with pytest.raises(ValueError, match="positive constant speed"):
         crawl_metrics(press.simulate(0.2, schedule=((0.0, 1.0),)))
 
@@ -142,3 +142,10 @@ def test_servo_valve_overlap():
     lapped = ServoValve(overlap=0.1)
     assert lapped.flow(0.05e-3, 5e6) == 0.0                           # inside the dead band
     assert lapped.flow(0.2e-3, 5e6) == pytest.approx(ServoValve().flow(0.1e-3, 5e6))
+
+
+def test_substep_follows_the_load_dependent_viscous_slope(press):
+    full = press.with_options(schedule=TABLE1)
+    assert 1.5e6 < full.max_deformation_load() < 4e6                # ~2.3 MN after step 1
+    assert full.max_substep < press.max_substep <= ForgingPress.max_substep
+    assert press.with_options(workpiece=False).max_substep == ForgingPress.max_substep

@@ -12,22 +12,26 @@ guide friction ``load_lugre`` with Tables 2-3) and draw what a user of the paper
   (smooth) and at 0.002 mm/s (crawling), the deformation resistance and the friction
   (``forging_press_crawl.png``, ``forging_press_schedule.png``).
 
-Run ``python examples/forging_press_crawl.py`` (writes into ``./forging_press_out``).
+Run ``python examples/forging_press_crawl.py`` (writes into ``./forging_press_out``); add
+``--full`` to run the whole 1370 s schedule of Table 1 instead of the shortened one (about
+10-20 minutes, with progress lines).
 """
 from __future__ import annotations
 
 import json
 import os
+import sys
 
 import numpy as np
 
-from plants.forging_press import ForgingPress, crawl_metrics, demo_figures
+from frictionlab.progress import Progress
+from plants.forging_press import TABLE1, ForgingPress, crawl_metrics, demo_figures
 
 SWEEP = (0.01e-3, 0.03e-3, 0.05e-3, 0.1e-3, 0.15e-3, 0.3e-3, 0.6e-3, 1.2e-3)   # m/s
 
 
 def run_example(show_plot: bool = False, out_dir: str = "forging_press_out",
-                sweep=SWEEP, duration: float = 8.0) -> dict:
+                sweep=SWEEP, duration: float = 8.0, full: bool = False) -> dict:
     """Speed sweep, schedule run and Stribeck curve; figures and JSON into ``out_dir``.
 
     Parameters
@@ -40,6 +44,8 @@ def run_example(show_plot: bool = False, out_dir: str = "forging_press_out",
         No-load constant speeds [m/s].
     duration : float
         Length of each constant-speed run [s].
+    full : bool
+        Plot the full Table 1 schedule (1370 s) instead of the shortened default experiment.
 
     Returns
     -------
@@ -75,7 +81,13 @@ def run_example(show_plot: bool = False, out_dir: str = "forging_press_out",
     p1 = os.path.join(out_dir, "forging_press_crawl_map.png")
     fig.savefig(p1, dpi=120)
 
-    res = press.simulate()
+    if full:
+        exp = press.default_experiment
+        n = int(sum(d for _, d in TABLE1) / exp.step) + 1
+        with Progress(total=n, label="press Table 1", interval=10.0) as prog:
+            res = press.simulate(sum(d for _, d in TABLE1), schedule=TABLE1, progress=prog)
+    else:
+        res = press.simulate()
     fig2, ax2 = plt.subplots(3, 1, figsize=(9, 7), sharex=True)
     ax2[0].plot(res["time"], res["v"] * 1e3, lw=0.7, label="beam")
     ax2[0].plot(res["time"], res["v_ref"] * 1e3, "k--", lw=0.7, label="schedule")
@@ -100,7 +112,7 @@ def run_example(show_plot: bool = False, out_dir: str = "forging_press_out",
 
 
 if __name__ == "__main__":
-    res = run_example()
+    res = run_example(full="--full" in sys.argv[1:])
     print(f"vc = {res['vc_mm_s']} mm/s")
     for k, m in res["sweep"].items():
         print(f"no load {k:>6} mm/s: {'crawls' if m['crawling'] else 'smooth'} "

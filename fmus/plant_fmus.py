@@ -128,23 +128,36 @@ def plant_connections(plant_cls, law_cls) -> list[tuple[str, str]]:
 
 
 def classic_lugre_for(plant_cls):
-    """Classic LuGre with the plant's seed-law levels (shared names; Fc0 -> Fc, ...)."""
+    """Classic LuGre at the levels of the plant's seed law.
+
+    Shared names carry over (``sigma0, sigma1, sigma2, Fc, Fs, vs, alpha, b, shape``); the
+    load law's no-load levels map ``Fc0, Fs0, sigma20 -> Fc, Fs, sigma2``; the MRE law maps
+    ``beta, eps, c0, f0 -> sigma0, sigma1, sigma2, b`` with ``Fc = Fs = beta / alpha`` (its
+    saturated hysteretic force; the spring k0 x has no LuGre counterpart). Values are
+    clipped into LuGre's admissible bounds (a press contact stiffer than 1e9 N/m).
+    """
     import friction
     seed = plant_cls.default_friction()
     if seed.name == "lugre":
         return seed
     vals = {f.name: getattr(seed.params, f.name) for f in dataclasses.fields(seed.params)}
-    alias = {"Fc0": "Fc", "Fs0": "Fs", "sigma20": "sigma2"}
-    lugre_fields = {f.name for f in dataclasses.fields(friction.LuGreParams)}
+    if seed.name == "mre_lugre":
+        level = vals["beta"] / vals["alpha"]
+        kw = dict(sigma0=vals["beta"], sigma1=vals["eps"], sigma2=vals["c0"], Fc=level,
+                  Fs=level, b=vals["f0"])
+    else:
+        alias = {"Fc0": "Fc", "Fs0": "Fs", "sigma20": "sigma2"}
+        lugre_fields = {f.name for f in dataclasses.fields(friction.LuGreParams)}
+        kw = {}
+        for k, v in vals.items():
+            k2 = alias.get(k, k)
+            if k2 in lugre_fields and v is not None:
+                kw[k2] = v
     info = {i.name: i for i in friction.LuGreParams.info()}
-    kw = {}
-    for k, v in vals.items():
-        k2 = alias.get(k, k)
-        if k2 in lugre_fields and v is not None:
-            i = info.get(k2)
-            if i is not None and isinstance(v, float):  # e.g. a press stiffer than LuGre's
-                v = min(max(v, i.lower), i.upper)        # admissible sigma0 <= 1e9 N/m
-            kw[k2] = v
+    for k, v in list(kw.items()):
+        i = info.get(k)
+        if i is not None and isinstance(v, float):
+            kw[k] = min(max(v, i.lower), i.upper)
     return friction.make_model("lugre", **kw)
 
 

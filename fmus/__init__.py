@@ -1,7 +1,15 @@
 """FMI 2.0 co-simulation FMUs of the friction laws and plants, and an fmpy co-simulation master.
 
+Modules: :mod:`fmus.build` (``build_all``, the catalogue), :mod:`fmus.runtime` (the slave
+classes that travel inside the FMUs), :mod:`fmus.modeldescription` (complete
+``modelDescription.xml``), :mod:`fmus.vendor` (unique package names inside FMUs),
+:mod:`fmus.master` (the co-simulation master), :mod:`fmus.proof` and :mod:`fmus.plant_fmus`
+(co-simulation against the reference integrators), :mod:`fmus.external` (libcosim and
+container-FMU runs), :mod:`fmus.demo` (the demo stage).
+
 >>> from fmus.build import build_all           # doctest: +SKIP
 >>> paths = build_all("out/fmus")               # doctest: +SKIP
 >>> from fmus.master import Master, Connection  # doctest: +SKIP
 """
-__all__ = ["build", "master", "runtime", "modeldescription", "vendor"]
+__all__ = ["build", "master", "runtime", "modeldescription", "vendor", "proof", "plant_fmus",
+           "external", "testing"]

@@ -13,7 +13,9 @@ Three slave kinds share one base:
 * :class:`MassSlave` - a rigid mass driven by a built-in force signal plus the inputs
   ``F_ext`` and ``F_friction`` (the mass+friction proof loop).
 * :class:`StepperSlave` - a plant of the ``plants`` package in external-friction mode through
-  its ``stepper()`` (numpy/numba only).
+  its ``stepper()`` (numpy/numba only);
+* :class:`BlockSlave` - a discrete block of the XML-350 loop (state-dependent PID, LuGre
+  feedforward, S-curve trajectory) through ``plants.controllers.DiscreteStepper``.
 
 The variable list of a slave (:func:`law_variables`, :func:`mass_variables`, ...) is the single
 source for both the runtime and the ``modelDescription.xml`` written by ``fmus.build``: the

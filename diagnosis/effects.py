@@ -1,0 +1,231 @@
+"""Library of named candidate effects: real extensions of a base friction law.
+
+Every candidate changes the model in one of four ways, applied in this order:
+
+1. ``modify_law``   - a different law or more free parameters of the law itself
+                      (``stribeck_shape``: free exponent / Lorentzian; ``presliding``: bristle
+                      dynamics added to a static map);
+2. ``multiplicative`` - the law's force scaled (``load``: levels grow with the normal load;
+                      ``drift``: levels change over time);
+3. ``additive``     - a force term added (``acceleration``, ``asymmetry``, ``position``,
+                      ``inertia``);
+4. ``shift``        - the whole prediction shifted in time (``delay``).
+
+so candidates compose: the greedy sequence of :mod:`diagnosis.core` stacks them.
+Each candidate declares its own parameters with a physical box computed from the fit data
+(``context``), so no candidate has a free scale an optimiser could abuse.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from friction import make_model
+
+__all__ = ["Candidate", "CANDIDATES", "EFFECT_NAMES", "Context", "make_context"]
+
+EFFECT_NAMES = ("acceleration", "load", "asymmetry", "stribeck_shape", "presliding",
+                "position", "inertia", "delay", "drift")
+
+
+@dataclass
+class Context:
+    """Scales of the fit data that fix each candidate's parameter box."""
+    sF: float       # force scale [N] (99th percentile of |F|)
+    sv: float       # velocity scale [m/s]
+    sa: float       # acceleration scale [m/s^2]
+    x_lo: float
+    x_hi: float     # position range of the fit data [m]
+    t0: float
+    T: float        # fit data start and duration [s]
+    dt: float       # sample interval [s]
+    L0: float | None  # mean load of the fit data [N]
+    L_span: float   # load spread of the fit data [N]
+
+
+def make_context(fit) -> Context:
+    sF = float(np.percentile(np.abs(fit.F), 99)) or 1.0
+    sv = float(np.percentile(np.abs(fit.v), 99)) or 1e-3
+    sa = float(np.percentile(np.abs(fit.a), 99)) or 1e-3
+    L0 = float(np.mean(fit.load)) if fit.load is not None else None
+    L_span = float(np.ptp(fit.load)) if fit.load is not None else 0.0
+    return Context(sF, sv, sa, float(np.min(fit.x)), float(np.max(fit.x)), float(fit.t[0]),
+                   float(fit.t[-1] - fit.t[0]), fit.dt, L0, L_span)
+
+
+@dataclass
+class Extra:
+    """One extra parameter of a candidate: name, start value and box (physical units)."""
+    name: str
+    x0: float
+    lo: float
+    hi: float
+    unit: str = ""
+
+
+@dataclass
+class Candidate:
+    """A named effect. Subclasses override the hooks they need."""
+    name: str
+    description: str
+    stage: str = "additive"   # modify_law | multiplicative | additive | shift
+    tags: tuple = field(default_factory=tuple)
+
+    def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
+        return True, ""
+
+    def modify_law(self, law, base_names, ctx: Context):
+        """Return the list of (law, base_names) variants to try (best on fit is kept)."""
+        return [(law, list(base_names))]
+
+    def extras(self, ctx: Context) -> list[Extra]:
+        return []
+
+    def apply(self, F, p: dict, data, ctx: Context) -> np.ndarray:
+        return F
+
+
+def _sig_neg(v, ctx):
+    # smooth indicator of the negative direction: a sign change is not a step in measured data
+    return 0.5 * (1.0 - np.tanh(v / (0.02 * ctx.sv)))
+
+
+class Acceleration(Candidate):
+    def extras(self, ctx):
+        return [Extra("f_a", 0.0, -ctx.sF, ctx.sF, "N"),
+                Extra("a_s", 0.3 * ctx.sa, 0.02 * ctx.sa, 3 * ctx.sa, "m/s^2"),
+                Extra("v_c", ctx.sv, 0.05 * ctx.sv, 20 * ctx.sv, "m/s")]
+
+    def apply(self, F, p, data, ctx):
+        # acceleration-dependent part (seed 000): grows with |a|, fades with |v|, zero at a = 0
+        return F + p["f_a"] * np.tanh(data.a / p["a_s"]) * np.exp(-np.abs(data.v) / p["v_c"])
+
+
+class Load(Candidate):
+    def applicable(self, law, fit, ctx):
+        if fit.load is None:
+            return False, "the data has no load column"
+        if ctx.L0 is None or not ctx.L0 > 0 or ctx.L_span <= 1e-9 * abs(ctx.L0):
+            return False, "the load does not vary in the fit data"
+        return True, ""
+
+    def extras(self, ctx):
+        # exponent in [0, 1]: friction does not fall with the normal load and grows at most
+        # in proportion to it (Amontons); elastic/elastomer contacts sit below 1
+        return [Extra("gamma_L", 0.0, 0.0, 1.0, "1")]
+
+    def apply(self, F, p, data, ctx):
+        # friction levels scale with the normal load (seed 004: Fc, Fs, sigma2 grow with load)
+        ratio = np.clip(data.load / ctx.L0, 1e-3, None)
+        return F * ratio ** p["gamma_L"]
+
+
+class Drift(Candidate):
+    def extras(self, ctx):
+        return [Extra("k_drift", 0.0, -2.0, 2.0, "1")]
+
+    def apply(self, F, p, data, ctx):
+        # friction level changing over time (warming): relative change per fit duration
+        return F * (1.0 + p["k_drift"] * (data.t - ctx.t0) / ctx.T)
+
+
+class Asymmetry(Candidate):
+    def extras(self, ctx):
+        return [Extra("b", 0.0, -ctx.sF, ctx.sF, "N"),
+                Extra("dF_neg", 0.0, -ctx.sF, ctx.sF, "N"),
+                Extra("dsigma2_neg", 0.0, -2 * ctx.sF / ctx.sv, 2 * ctx.sF / ctx.sv, "N.s/m")]
+
+    def apply(self, F, p, data, ctx):
+        # direction-dependent levels and an offset (seeds 000, 003)
+        s = _sig_neg(data.v, ctx)
+        return F + p["b"] - p["dF_neg"] * s + p["dsigma2_neg"] * data.v * s
+
+
+class Position(Candidate):
+    ORDER = 4
+    stage_doc = "friction level scaled along the stroke"
+
+    def extras(self, ctx):
+        return [Extra(f"c_x{k}", 0.0, -1.0, 1.0, "1") for k in range(1, self.ORDER + 1)]
+
+    def apply(self, F, p, data, ctx):
+        span = max(ctx.x_hi - ctx.x_lo, 1e-12)
+        xi = np.clip(2.0 * (data.x - ctx.x_lo) / span - 1.0, -1.0, 1.0)
+        coef = np.zeros(self.ORDER + 1)
+        for k in range(1, self.ORDER + 1):
+            coef[k] = p[f"c_x{k}"]
+        # friction level varying along the stroke: a smooth Legendre series in position
+        return F * (1.0 + np.polynomial.legendre.legval(xi, coef))
+
+
+class Inertia(Candidate):
+    def extras(self, ctx):
+        m = ctx.sF / ctx.sa
+        return [Extra("dm", 0.0, -m, m, "kg")]
+
+    def apply(self, F, p, data, ctx):
+        # mass error of the inverse dynamics leaks dm * a into the "measured" friction
+        return F + p["dm"] * data.a
+
+
+class Delay(Candidate):
+    MAX_SAMPLES = 25
+
+    def extras(self, ctx):
+        d = self.MAX_SAMPLES * ctx.dt
+        return [Extra("delay", 0.0, -d, d, "s")]
+
+    def apply(self, F, p, data, ctx):
+        # the force channel lags (delay > 0) the motion channels
+        return np.interp(data.t - p["delay"], data.t, F)
+
+
+class StribeckShape(Candidate):
+    def applicable(self, law, fit, ctx):
+        if not hasattr(law.params, "shape") or not hasattr(law.params, "alpha"):
+            return False, f"{law.name} has no Stribeck-shape parameters"
+        return True, ""
+
+    def modify_law(self, law, base_names, ctx):
+        out = [(law, list(base_names) + ["alpha"])]
+        other = "lorentzian" if law.params.shape == "gaussian" else "gaussian"
+        out.append((law.with_values(shape=other), list(base_names)))
+        return out
+
+
+class Presliding(Candidate):
+    def applicable(self, law, fit, ctx):
+        if law.state_names:
+            return False, f"{law.name} already has bristle dynamics"
+        if law.name != "stribeck":
+            return False, "presliding is added to the static Stribeck map only"
+        return True, ""
+
+    def modify_law(self, law, base_names, ctx):
+        p = law.params
+        lugre = make_model("lugre", sigma0=max(1e3, 1e3 * ctx.sF / max(ctx.sv, 1e-9) * 1e-1),
+                           sigma1=0.0, sigma2=p.sigma2, Fc=p.Fc, Fs=p.Fs, vs=p.vs, alpha=p.alpha,
+                           b=p.b, shape=p.shape, Fc_neg=p.Fc_neg, Fs_neg=p.Fs_neg,
+                           vs_neg=p.vs_neg, sigma2_neg=p.sigma2_neg)
+        return [(lugre, list(base_names) + ["sigma0", "sigma1"])]
+
+
+CANDIDATES: dict[str, Candidate] = {
+    "acceleration": Acceleration("acceleration", "acceleration-dependent part / frictional lag "
+                                 "(seed 000)", "additive"),
+    "load": Load("load", "friction levels depend on the normal load (seed 004)",
+                 "multiplicative"),
+    "asymmetry": Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
+                           "additive"),
+    "stribeck_shape": StribeckShape("stribeck_shape", "Stribeck exponent / Lorentzian shape",
+                                    "modify_law"),
+    "presliding": Presliding("presliding", "bristle dynamics missing from a static map",
+                             "modify_law"),
+    "position": Position("position", "friction level varying along the stroke",
+                         "multiplicative"),
+    "inertia": Inertia("inertia", "mass error in the inverse dynamics", "additive"),
+    "delay": Delay("delay", "time shift between force and motion channels", "shift"),
+    "drift": Drift("drift", "friction level changing over time (e.g. warming)",
+                   "multiplicative"),
+}

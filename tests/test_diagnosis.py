@@ -1,0 +1,80 @@
+"""Diagnosis: withheld effects are named, clean data gets 'none', an effect outside the
+library gets 'unexplained', and the real EMPS data points at its documented asymmetry."""
+import json
+
+import numpy as np
+import pytest
+
+from diagnosis import EFFECT_NAMES, diagnose
+from diagnosis.benchmark import make_case
+from frictionlab.cli import main
+
+
+@pytest.mark.parametrize("effect", ["asymmetry", "inertia", "drift", "delay"])
+def test_withheld_effect_is_named(effect):
+    rep = diagnose(make_case(effect, 1.0, 0.02, n=8000, seed=11), "lugre")
+    assert rep["verdict"]["cause"] == effect
+    top = rep["effects"][0]
+    assert top["name"] == effect and top["gap_closed"] > 0.2
+    assert top["validation_after"] < top["validation_before"]
+
+
+def test_clean_data_gets_none_and_outside_effect_unexplained():
+    assert diagnose(make_case("clean", 1.0, 0.02, n=8000, seed=5), "lugre")["verdict"]["cause"] \
+        == "none"
+    assert diagnose(make_case("outside", 1.0, 0.02, n=8000, seed=5), "lugre")["verdict"]["cause"] \
+        == "unexplained"
+
+
+def test_report_follows_the_contract():
+    rep = diagnose(make_case("asymmetry", 1.0, 0.02, n=6000, seed=2), "lugre")
+    d = json.loads(rep.to_json())
+    assert set(d["baseline"]) >= {"model", "metric", "fit", "validation"}
+    assert d["baseline"]["metric"] == "nrmse"
+    shares = [w["share"] for w in d["where"]]
+    assert shares == sorted(shares, reverse=True) and abs(sum(shares) - 1) < 1e-9
+    gaps = [e["gap_closed"] for e in d["effects"][1:]]
+    assert gaps == sorted(gaps, reverse=True)
+    for e in d["effects"]:
+        assert e["name"] in EFFECT_NAMES
+        assert e["gap_closed"] == pytest.approx(
+            (e["validation_before"] - e["validation_after"]) / e["validation_before"])
+    assert d["verdict"]["cause"] in set(EFFECT_NAMES) | {"none", "unexplained"}
+
+
+def test_emps_points_at_direction_asymmetry(real_data):
+    from identification.real_data import load_emps
+    rep = diagnose(load_emps("estimation"), "lugre", validation=load_emps("validation"))
+    assert rep["verdict"]["cause"] == "asymmetry"
+    assert rep["effects"][0]["gap_closed"] > 0.15
+    # the fitted asymmetry has the worn screw's sign: more viscous friction for v < 0
+    ex = rep["effect_details"]["asymmetry"]["extras"]
+    assert ex["dsigma2_neg"] < 0 or ex["dF_neg"] > 0
+
+
+@pytest.mark.xfail(reason="load sensitivity is not identifiable from the 1-bar record alone "
+                          "(issue 6 stays open)", strict=False)
+def test_pneumatic_points_at_load(real_data):
+    from identification.real_data import load_pneumatic
+    rep = diagnose(load_pneumatic("O-ring", 1), "lugre",
+                   validation=[load_pneumatic("O-ring", 5), load_pneumatic("O-ring", 7)])
+    assert rep["verdict"]["cause"] == "load"
+
+
+def test_cli_writes_json_and_html(tmp_path):
+    data = make_case("inertia", 1.0, 0.02, n=5000, seed=4)
+    p = tmp_path / "run.csv"
+    data.to_csv(p)
+    assert main(["diagnose", str(p), "--model", "lugre", "--json", str(tmp_path / "d.json"),
+                 "--html", str(tmp_path / "d.html"), "--quiet"]) == 0
+    d = json.loads((tmp_path / "d.json").read_text())
+    assert d["verdict"]["cause"] == "inertia"
+    assert "data:image/png;base64" in (tmp_path / "d.html").read_text()
+
+
+def test_bad_input(tmp_path):
+    with pytest.raises(ValueError, match="unknown candidate"):
+        diagnose(make_case("clean", n=3000), "lugre", candidates=["friction_of_the_gods"])
+    bad = tmp_path / "bad.csv"
+    bad.write_text("t,x,F\n0,0,0\n0.001,nan,1\n0.002,0,1\n")
+    assert main(["diagnose", str(bad), "--model", "lugre"]) == 2

@@ -132,6 +132,9 @@ def bare_loop(fmus, connections, order, n, h, settle=True):
         if ins[name]:
             s.setReal([vr[v] for v, _ in ins[name]], [vals[src] for _, src in ins[name]])
 
+    for name in order:  # no output read before its inputs are set (blocks sample t0)
+        for o in sl[name][2]:
+            vals[f"{name}.{o}"] = 0.0
     for name in order:  # in order after initialization, as the master does
         if ins[name]:
             write(name)

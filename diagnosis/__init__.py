@@ -5,8 +5,8 @@ far it shrinks once that effect is added, measured on held-out data.
 >>> report = diagnose("fit.csv", "lugre", validation="heldout.csv")   # doctest: +SKIP
 >>> report["verdict"]                                                  # doctest: +SKIP
 """
-from .core import BASE_NAMES, DiagnosisReport, diagnose, noise_floor
+from .core import BASE_NAMES, DiagnosisReport, diagnose, diagnose_trajectory, noise_floor
 from .effects import CANDIDATES, EFFECT_NAMES
 
-__all__ = ["diagnose", "DiagnosisReport", "CANDIDATES", "EFFECT_NAMES", "noise_floor",
+__all__ = ["diagnose", "diagnose_trajectory", "DiagnosisReport", "CANDIDATES", "EFFECT_NAMES", "noise_floor",
            "BASE_NAMES"]

@@ -315,3 +315,15 @@ def _concat(sets) -> Dataset:
     t = np.arange(t.size) * sets[0].dt
     return Dataset(t=t, x=cat("x"), v=cat("v"), a=cat("a"), F=cat("F"), load=load,
                    name="+".join(s.name for s in sets))
+
+
+def diagnose_trajectory(measured, plant, model="lugre", **kwargs):
+    """Trajectory-level diagnosis (plant co-simulation against measured positions).
+
+    Not implemented yet: the candidate effects would be added to the friction FMU and the
+    plant re-simulated through :mod:`fmus.master`. Use :func:`diagnose` on friction-force
+    data (friction from inverse dynamics) meanwhile.
+    """
+    raise NotImplementedError("trajectory-level diagnosis (plant co-simulation vs measured "
+                              "positions) is not implemented yet; diagnose friction-force data "
+                              "with diagnosis.diagnose")

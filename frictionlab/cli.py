@@ -33,6 +33,8 @@ def build_parser() -> argparse.ArgumentParser:
     d = sub.add_parser("demo", help="the main job end to end on built-in data")
     d.add_argument("--out", default="frictionlab-demo", help="output folder (default ./frictionlab-demo)")
     d.add_argument("--quick", action="store_true", help="smaller problems (for smoke tests)")
+    d.add_argument("--full", action="store_true", help="full-length FMU co-simulation proofs "
+                   "(about 15 min on 2 cores; the default proofs use short horizons)")
     d.add_argument("--only", default=None, help="comma-separated stages to run "
                    "(friction,plants,fmus,identification,diagnosis)")
 
@@ -60,7 +62,7 @@ def build_parser() -> argparse.ArgumentParser:
 def _dispatch(args) -> int:
     if args.command == "demo":
         from .demo import run_demo
-        run_demo(args.out, quick=args.quick,
+        run_demo(args.out, quick=args.quick, full=args.full,
                  only=args.only.split(",") if args.only else None)
         return 0
     if args.command == "build-fmus":

@@ -18,7 +18,12 @@ __all__ = ["run_demo", "STAGES"]
 STAGES = ("friction", "plants", "fmus", "identification", "diagnosis")
 
 
-def run_demo(out: str = "frictionlab-demo", *, quick: bool = False, only=None) -> dict:
+#: stages whose full-length run is opt-in (``--full``): the co-simulation proofs take ~15 min
+LONG_STAGES = ("fmus",)
+
+
+def run_demo(out: str = "frictionlab-demo", *, quick: bool = False, full: bool = False,
+             only=None) -> dict:
     """Run the demo stages and write ``<out>/summary.json``.
 
     Parameters
@@ -27,6 +32,8 @@ def run_demo(out: str = "frictionlab-demo", *, quick: bool = False, only=None) -
         Output folder (created).
     quick : bool
         Smaller problems, for smoke tests.
+    full : bool
+        Run the long stages (:data:`LONG_STAGES`) at full length too.
     only : list of str, optional
         Run only these stages.
     """
@@ -52,7 +59,9 @@ def run_demo(out: str = "frictionlab-demo", *, quick: bool = False, only=None) -
             continue
         t0 = time.monotonic()
         report(f"[demo {k}/{len(stages)}] {name} ...")
-        mod.run_stage(out, summary, quick=quick)
+        stage_quick = quick or (name in LONG_STAGES and not full)
+        summary.setdefault("stage_settings", {})[name] = "quick" if stage_quick else "full"
+        mod.run_stage(out, summary, quick=stage_quick)
         report(f"[demo {k}/{len(stages)}] {name} done in {time.monotonic() - t0:.1f} s")
         with open(path, "w") as fh:  # written after every stage: an interrupted demo keeps its results
             json.dump(summary, fh, indent=2, default=float)

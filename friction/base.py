@@ -136,6 +136,15 @@ class FrictionParams:
         return [i.name for i in cls.info()
                 if not isinstance(i.default, (str, bool))]
 
+    def resolved(self, name: str, direction: int) -> float:
+        """Value of ``name`` for direction +1 / -1: a direction-dependent law keeps the "-"
+        value in ``<name>_neg``; left ``None`` (or absent) it equals the "+" value."""
+        if direction < 0:
+            neg = getattr(self, name + "_neg", None)
+            if neg is not None:
+                return neg
+        return getattr(self, name)
+
     def as_dict(self) -> dict[str, Any]:
         return {f.name: getattr(self, f.name) for f in fields(self)}
 

@@ -65,14 +65,6 @@ class LuGreParams(FrictionParams):
         if self.shape not in SHAPES:
             raise ParameterError(f"shape = {self.shape!r}: must be one of {sorted(SHAPES)}")
 
-    def resolved(self, name: str, direction: int) -> float:
-        """Value of ``name`` for direction +1 / -1 (twins default to the + value)."""
-        if direction < 0:
-            neg = getattr(self, name + "_neg", None)
-            if neg is not None:
-                return neg
-        return getattr(self, name)
-
 
 # packed layout: index constants are used inside the kernels
 _LAYOUT = ("sigma0", "sigma1", "sigma2", "sigma2_neg", "Fc", "Fc_neg", "Fs", "Fs_neg",

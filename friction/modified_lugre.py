@@ -136,14 +136,6 @@ class ModifiedLuGreParams(FrictionParams):
             raise ParameterError(f"v2 = {self.v2!r} must be > v1 = {self.v1!r} [m/s] "
                                  f"(switch band of Gamma(v): Gamma ~ 1 below v1, ~ 0 above v2)")
 
-    def resolved(self, name: str, direction: int) -> float:
-        """Value of ``name`` for direction +1 / -1 (twins default to the + value)."""
-        if direction < 0:
-            neg = getattr(self, name + "_neg", None)
-            if neg is not None:
-                return neg
-        return getattr(self, name)
-
 
 # packed layout: the classic LuGre block first (so lugre._g_dir and its indices apply)
 _LAYOUT = _LUGRE_LAYOUT + ("f_a", "f_a_neg", "a_s", "a_s_neg", "v_c", "v_c_neg", "beta",

@@ -1,6 +1,7 @@
 """Diagnosis: withheld effects are named, clean data gets 'none', an effect outside the
 library gets 'unexplained', and the real EMPS data points at its documented asymmetry."""
 import json
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -52,13 +53,40 @@ def test_emps_points_at_direction_asymmetry(real_data):
     assert ex["dsigma2_neg"] < 0 or ex["dF_neg"] > 0
 
 
+@pytest.fixture(scope="module")
+def pneumatic_report(real_data):
+    from identification.real_data import load_pneumatic
+    return diagnose(load_pneumatic("O-ring", 1), "lugre",
+                    validation=[load_pneumatic("O-ring", 5), load_pneumatic("O-ring", 7)])
+
+
 @pytest.mark.xfail(reason="load sensitivity is not identifiable from the 1-bar record alone "
                           "(issue 6 stays open)", strict=False)
-def test_pneumatic_points_at_load(real_data):
-    from identification.real_data import load_pneumatic
-    rep = diagnose(load_pneumatic("O-ring", 1), "lugre",
-                   validation=[load_pneumatic("O-ring", 5), load_pneumatic("O-ring", 7)])
-    assert rep["verdict"]["cause"] == "load"
+def test_pneumatic_points_at_load(pneumatic_report):
+    assert pneumatic_report["verdict"]["cause"] == "load"
+
+
+def test_pneumatic_never_names_a_wrong_effect_and_flags_the_load_extrapolation(pneumatic_report):
+    # the 1-bar record spans 46-50 N of pressure load, the held-out records 243-347 N: the
+    # report must say the load is extrapolated rather than name some other effect
+    rep = pneumatic_report
+    assert rep["verdict"]["cause"] in ("load", "unexplained")
+    shift = rep["extrapolation"]["load"]
+    assert shift["outside_share"] > 0.99
+    assert 40 < shift["fit_range"][0] < shift["fit_range"][1] < 55
+    assert shift["validation_range"][0] > 200
+    if rep["verdict"]["cause"] == "unexplained":
+        assert "load" in rep["verdict"]["reason"] and "fit range" in rep["verdict"]["reason"]
+
+
+def test_extrapolation_flags_only_covariates_outside_the_fit_range():
+    from diagnosis.core import extrapolation
+    fit = make_case("load", 1.0, 0.02, n=4000, seed=3)
+    same = make_case("load", 1.0, 0.02, n=4000, seed=4)
+    assert extrapolation(fit, [same]) == {}
+    far = replace(same, load=same.load * 10.0 + 5 * np.ptp(fit.load))
+    out = extrapolation(fit, [far])
+    assert set(out) == {"load"} and out["load"]["outside_share"] > 0.9
 
 
 def test_cli_writes_json_and_html(tmp_path):

@@ -28,7 +28,7 @@ from numba import njit, prange
 
 from ._validation import ParameterError
 from .base import FrictionModel, FrictionParams, param
-from .shapes import SHAPES, stribeck_g, stribeck_g_np
+from .shapes import SHAPES, DirectionalStribeck, stribeck_g
 
 __all__ = ["LuGreParams", "LuGre", "bristle_update", "lugre_run"]
 
@@ -118,6 +118,13 @@ def _g_fast(v, Fc, Fs, ivs, alpha, shape, cut, s0, s0_fc):
 
 
 @njit(cache=True, inline="always")
+def side_constants(Fc, Fs, vs, s0):
+    """Loop constants of one direction for :func:`_g_fast`: (Fc, Fs, 1/vs, cut-off,
+    sigma0/Fc); hoisted out of the sample loops of every LuGre-family kernel."""
+    return Fc, Fs, 1.0 / vs, _cutoff(Fc, Fs), s0 / Fc
+
+
+@njit(cache=True, inline="always")
 def _em1(s):
     """e^{-s} - 1 for s >= 0: expm1 only where the plain exp would lose digits."""
     if s > 40.0:
@@ -142,12 +149,9 @@ def lugre_run(t, v, th, method, z0, F, Z):
     is0 = 1.0 / s0
     alpha = th[ALPHA]
     shape = th[SHAPE]
-    fcp, fsp, ivsp, s2p = th[FCP], th[FSP], 1.0 / th[VSP], th[S2P]
-    fcn, fsn, ivsn, s2n = th[FCN], th[FSN], 1.0 / th[VSN], th[S2N]
-    cutp = _cutoff(fcp, fsp)
-    cutn = _cutoff(fcn, fsn)
-    rp = s0 / fcp
-    rn = s0 / fcn
+    fcp, fsp, ivsp, cutp, rp = side_constants(th[FCP], th[FSP], th[VSP], s0)
+    fcn, fsn, ivsn, cutn, rn = side_constants(th[FCN], th[FSN], th[VSN], s0)
+    s2p, s2n = th[S2P], th[S2N]
     z = z0
     for k in range(n):
         vk = v[k]
@@ -193,7 +197,7 @@ def _population_kernel(t, v, a, load, x, Theta, method):
     return F
 
 
-class LuGre(FrictionModel):
+class LuGre(DirectionalStribeck, FrictionModel):
     """Classic LuGre law; see the module docstring for the equations.
 
     Examples
@@ -219,19 +223,6 @@ class LuGre(FrictionModel):
                         dtype=np.float64)
 
     # -- analytic pieces ----------------------------------------------------------------
-    def g(self, v) -> np.ndarray:
-        """Stribeck curve g(v) [N] (direction-dependent values applied)."""
-        v = np.asarray(v, dtype=float)
-        p = self.params
-        gp = stribeck_g_np(v, p.Fc, p.Fs, p.vs, p.alpha, p.shape)
-        gn = stribeck_g_np(v, p.resolved("Fc", -1), p.resolved("Fs", -1),
-                           p.resolved("vs", -1), p.alpha, p.shape)
-        return np.where(v >= 0, gp, gn)
-
-    def sigma2_of(self, v) -> np.ndarray:
-        p = self.params
-        return np.where(np.asarray(v) >= 0, p.sigma2, p.resolved("sigma2", -1))
-
     def steady_state(self, v, **inputs) -> np.ndarray:
         """Steady-state (Stribeck) force F_ss(v) = g(v) sgn(v) + sigma2 v + b [N]."""
         v = np.asarray(v, dtype=float)

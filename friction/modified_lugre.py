@@ -50,8 +50,8 @@ from ._validation import ParameterError
 from .base import FrictionModel, FrictionParams, param
 from .lugre import _LAYOUT as _LUGRE_LAYOUT
 from .lugre import ALPHA, B, FCN, FCP, FSN, FSP, S0, S1, S2N, S2P, SHAPE, VSN, VSP
-from .lugre import _cutoff, _em1, _g_fast
-from .shapes import SHAPES, stribeck_g_np
+from .lugre import _em1, _g_fast, side_constants
+from .shapes import SHAPES, DirectionalStribeck
 
 __all__ = ["ModifiedLuGreParams", "ModifiedLuGre", "GAMMA_FORMS", "FD_FORMS",
            "switch_gamma", "fd_steady"]
@@ -218,12 +218,9 @@ def mlugre_run(t, v, a, th, method, z0, q0, F, Z, Q):
     is0 = 1.0 / s0
     alpha = th[ALPHA]
     shape = th[SHAPE]
-    fcp, fsp, ivsp, s2p = th[FCP], th[FSP], 1.0 / th[VSP], th[S2P]
-    fcn, fsn, ivsn, s2n = th[FCN], th[FSN], 1.0 / th[VSN], th[S2N]
-    cutp = _cutoff(fcp, fsp)
-    cutn = _cutoff(fcn, fsn)
-    rp = s0 / fcp
-    rn = s0 / fcn
+    fcp, fsp, ivsp, cutp, rp = side_constants(th[FCP], th[FSP], th[VSP], s0)
+    fcn, fsn, ivsn, cutn, rn = side_constants(th[FCN], th[FSN], th[VSN], s0)
+    s2p, s2n = th[S2P], th[S2N]
     v1 = th[V1]
     v2 = th[V2]
     gform = th[GFORM]
@@ -312,7 +309,7 @@ def _population_kernel(t, v, a, load, x, Theta, method):
     return F
 
 
-class ModifiedLuGre(FrictionModel):
+class ModifiedLuGre(DirectionalStribeck, FrictionModel):
     """Modified LuGre of seed 000; see the module docstring for the equations.
 
     Inputs: velocity ``v`` and acceleration ``a=`` [m/s^2] (derived from v by
@@ -364,19 +361,6 @@ class ModifiedLuGre(FrictionModel):
     def _dir(self, name, v):
         p = self.params
         return np.where(np.asarray(v) >= 0, getattr(p, name), p.resolved(name, -1))
-
-    def g(self, v) -> np.ndarray:
-        """Stribeck curve g(v) [N] (direction-dependent values applied)."""
-        v = np.asarray(v, dtype=float)
-        p = self.params
-        gp = stribeck_g_np(v, p.Fc, p.Fs, p.vs, p.alpha, p.shape)
-        gn = stribeck_g_np(v, p.resolved("Fc", -1), p.resolved("Fs", -1),
-                           p.resolved("vs", -1), p.alpha, p.shape)
-        return np.where(v >= 0, gp, gn)
-
-    def sigma2_of(self, v) -> np.ndarray:
-        """Viscous coefficient [N.s/m] of the direction of ``v``."""
-        return self._dir("sigma2", v)
 
     def gamma_switch(self, v) -> np.ndarray:
         """Switch Gamma(v) in [0, 1] of Eq. (10) (``gamma_form``)."""

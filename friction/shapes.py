@@ -12,7 +12,7 @@ import math
 import numpy as np
 from numba import njit
 
-__all__ = ["SHAPES", "stribeck_g", "stribeck_g_np"]
+__all__ = ["SHAPES", "stribeck_g", "stribeck_g_np", "DirectionalStribeck"]
 
 SHAPES = {"gaussian": 0, "lorentzian": 1}
 
@@ -38,3 +38,24 @@ def stribeck_g_np(v, Fc, Fs, vs, alpha=2.0, shape="gaussian"):
     else:
         e = np.exp(-r ** alpha)
     return Fc + (Fs - Fc) * e
+
+
+class DirectionalStribeck:
+    """Mixin of the laws whose parameters carry a Stribeck curve (Fc, Fs, vs, alpha, shape),
+    a viscous coefficient sigma2 and their direction twins (``*_neg``, resolved by
+    :meth:`friction.base.FrictionParams.resolved`): the curve and the viscous coefficient
+    of the direction of each velocity sample."""
+
+    def g(self, v) -> np.ndarray:
+        """Stribeck curve g(v) [N] (direction-dependent values applied)."""
+        v = np.asarray(v, dtype=float)
+        p = self.params
+        gp = stribeck_g_np(v, p.Fc, p.Fs, p.vs, p.alpha, p.shape)
+        gn = stribeck_g_np(v, p.resolved("Fc", -1), p.resolved("Fs", -1),
+                           p.resolved("vs", -1), p.alpha, p.shape)
+        return np.where(v >= 0, gp, gn)
+
+    def sigma2_of(self, v) -> np.ndarray:
+        """Viscous coefficient [N.s/m] of the direction of ``v``."""
+        p = self.params
+        return np.where(np.asarray(v) >= 0, p.sigma2, p.resolved("sigma2", -1))

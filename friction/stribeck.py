@@ -22,8 +22,8 @@ from numba import njit, prange
 
 from ._validation import ParameterError
 from .base import FrictionModel, FrictionParams, param
-from .lugre import _cutoff, _g_fast
-from .shapes import SHAPES, stribeck_g, stribeck_g_np
+from .lugre import _g_fast, side_constants
+from .shapes import SHAPES, DirectionalStribeck, stribeck_g
 
 __all__ = ["StribeckParams", "StaticStribeck", "stribeck_force", "stribeck_run"]
 
@@ -81,10 +81,9 @@ def stribeck_run(v, th, F):
     alpha = th[ALPHA]
     shape = th[SHAPE]
     b = th[B]
-    fcp, fsp, ivsp, s2p = th[FCP], th[FSP], 1.0 / th[VSP], th[S2P]
-    fcn, fsn, ivsn, s2n = th[FCN], th[FSN], 1.0 / th[VSN], th[S2N]
-    cutp = _cutoff(fcp, fsp)
-    cutn = _cutoff(fcn, fsn)
+    fcp, fsp, ivsp, cutp, _ = side_constants(th[FCP], th[FSP], th[VSP], 1.0)
+    fcn, fsn, ivsn, cutn, _ = side_constants(th[FCN], th[FSN], th[VSN], 1.0)
+    s2p, s2n = th[S2P], th[S2N]
     for k in range(v.size):
         vk = v[k]
         if vk > 0.0:
@@ -113,7 +112,7 @@ def _population_kernel(t, v, a, load, x, Theta, method):
     return F
 
 
-class StaticStribeck(FrictionModel):
+class StaticStribeck(DirectionalStribeck, FrictionModel):
     """Static Stribeck map (no state); see the module docstring for the equations.
 
     Examples
@@ -136,20 +135,6 @@ class StaticStribeck(FrictionModel):
         return np.array([p.sigma2, p.resolved("sigma2", -1), p.Fc, p.resolved("Fc", -1),
                          p.Fs, p.resolved("Fs", -1), p.vs, p.resolved("vs", -1), p.alpha,
                          p.b, SHAPES[p.shape]], dtype=np.float64)
-
-    def g(self, v) -> np.ndarray:
-        """Stribeck curve g(v) [N] (direction-dependent values applied)."""
-        v = np.asarray(v, dtype=float)
-        p = self.params
-        gp = stribeck_g_np(v, p.Fc, p.Fs, p.vs, p.alpha, p.shape)
-        gn = stribeck_g_np(v, p.resolved("Fc", -1), p.resolved("Fs", -1),
-                           p.resolved("vs", -1), p.alpha, p.shape)
-        return np.where(v >= 0, gp, gn)
-
-    def sigma2_of(self, v) -> np.ndarray:
-        """Viscous coefficient [N.s/m] of the direction of ``v``."""
-        p = self.params
-        return np.where(np.asarray(v) >= 0, p.sigma2, p.resolved("sigma2", -1))
 
     def steady_state(self, v, **inputs) -> np.ndarray:
         """F(v) = g(v) sgn(v) + sigma2 v + b [N] (the map itself)."""

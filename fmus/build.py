@@ -12,9 +12,14 @@ the ``plants`` package provides them, the plant and controller FMUs. Each FMU
 * passes ``fmpy.validation.validate_fmu`` with zero problems (checked after each build).
 
 Error statuses: the pythonfmu 0.7 binary maps an exception raised by the slave to
-``fmi2Fatal`` and a refused step to ``fmi2Discard``, and has no ``fmi2Error`` path. Our slaves
-therefore never raise on bad input: the value is rejected with an error-level log message
-naming it and the next ``fmi2DoStep`` returns ``fmi2Discard`` (see :mod:`fmus.runtime`).
+``fmi2Fatal`` and a refused step to ``fmi2Discard``, and has no ``fmi2Error`` path. So each
+FMU's ``binaries/linux64/<modelIdentifier>.so`` is our status shim
+(:mod:`fmus.status_shim`, compiled once with the system C compiler and cached), with
+pythonfmu's library next to it as ``<modelIdentifier>_pythonfmu.so``: a call during which
+the slave logged an error returns ``fmi2Error``. Our slaves never raise on bad input; they
+reject the value with an error-level message naming it (see :mod:`fmus.runtime`). Without a
+C compiler the build warns and ships pythonfmu's binary as is; bad input then gives
+``fmi2Discard`` at the next ``fmi2DoStep``. ``binaries/win64`` is pythonfmu's, untouched.
 """
 from __future__ import annotations
 
@@ -29,7 +34,7 @@ from typing import Callable
 
 from frictionlab.progress import report
 
-from . import runtime
+from . import runtime, status_shim
 from .modeldescription import model_description_xml
 from .vendor import vendor_package
 
@@ -138,13 +143,25 @@ def _forget_modules(prefixes) -> None:
             del sys.modules[key]
 
 
-def _replace_member(fmu: pathlib.Path, member: str, data: bytes) -> None:
+def _rewrite(fmu: pathlib.Path, replace: dict, rename: dict) -> None:
+    """Rewrite the FMU archive: members in ``replace`` get new bytes (added if absent),
+    members in ``rename`` (old -> new name) move."""
     buf = io.BytesIO()
     with zipfile.ZipFile(fmu) as zin, zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as zout:
         for item in zin.infolist():
-            if item.filename != member:
-                zout.writestr(item, zin.read(item.filename))
-        zout.writestr(member, data)
+            if item.filename in replace and item.filename not in rename:
+                continue
+            data = zin.read(item.filename)
+            if item.filename in rename:
+                item = zipfile.ZipInfo(rename[item.filename], item.date_time)
+                item.compress_type = zipfile.ZIP_DEFLATED
+                item.external_attr = 0o755 << 16
+            zout.writestr(item, data)
+        for member, data in replace.items():
+            info = zipfile.ZipInfo(member, (2020, 1, 1, 0, 0, 0))
+            info.compress_type = zipfile.ZIP_DEFLATED
+            info.external_attr = (0o755 if member.endswith(".so") else 0o644) << 16
+            zout.writestr(info, data)
     fmu.write_bytes(buf.getvalue())
 
 
@@ -180,7 +197,14 @@ def build_fmu(recipe: FmuRecipe, out: str | os.PathLike) -> pathlib.Path:
                                 guid=guid, description=recipe.description,
                                 default_experiment=recipe.default_experiment,
                                 log_categories=runtime.SlaveBase.log_categories)
-    _replace_member(dest, "modelDescription.xml", xml)
+    replace, rename = {"modelDescription.xml": xml}, {}
+    shim = status_shim.shim_or_warn()
+    if shim is not None:
+        lib = f"binaries/{status_shim.PLATFORM}/{recipe.model_identifier}.so"
+        rename[lib] = f"binaries/{status_shim.PLATFORM}/" \
+                      f"{status_shim.inner_name(recipe.model_identifier)}"
+        replace[lib] = shim.read_bytes()
+    _rewrite(dest, replace, rename)
     return dest
 
 

@@ -21,18 +21,26 @@ The variable list of a slave (:func:`law_variables`, :func:`mass_variables`, ...
 source for both the runtime and the ``modelDescription.xml`` written by ``fmus.build``: the
 value reference of a variable is its index in that list.
 
-Bad input: a NaN/inf on any input or parameter, or a parameter outside its bounds (or an
-inadmissible combination), is never stored: it is logged at error level naming the variable
-and its bound, and the next ``fmi2DoStep`` is refused with ``fmi2Discard`` and the message
-again, until a valid value is set. (pythonfmu 0.7 maps exceptions raised by a slave to
-``fmi2Fatal``, which makes every instance unusable and may drop the message; it has no
-``fmi2Error`` path.) A step that produces a non-finite output is refused the same way.
+Bad input: a NaN/inf on any input or parameter, or a parameter outside its bounds, is never
+stored: ``set_real`` logs it at error level naming the variable and its bound and keeps the
+previous value, so ``fmi2SetReal`` returns ``fmi2Error`` and the instance keeps working. The
+status comes from the FMU's status shim (``fmus/shim``, in front of pythonfmu's binary on
+linux64): a call during which the slave logged an error returns ``fmi2Error``. The slaves never
+raise, because pythonfmu 0.7 turns an exception into ``fmi2Fatal`` and destroys the instance.
+An inadmissible parameter combination (found when the model is built), a failed output
+evaluation or a step that would produce a non-finite output is logged at error level by the
+call that finds it, and every later ``fmi2DoStep`` is refused (``do_step`` returns False) with
+the message again; these give ``fmi2Error`` too. Without the shim (win64, or an FMU built
+without a C compiler) the statuses are pythonfmu's: the call that logs answers ``fmi2OK``, so
+a rejected value also refuses the next ``fmi2DoStep``, with ``fmi2Discard``.
 """
 from __future__ import annotations
 
 import dataclasses
 import importlib
 import math
+import os
+import sys
 
 import numpy as np
 from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability
@@ -41,6 +49,7 @@ from pythonfmu.variables import Boolean, Integer, Real, String
 
 __all__ = ["Var", "law_variables", "mass_variables", "plant_variables", "block_variables",
            "SlaveBase", "LawSlave", "MassSlave", "StepperSlave", "BlockSlave", "INPUT_INFO",
+           "behind_status_shim",
            "BLOCKS"]
 
 #: unit and description of the kinematic inputs a law may need
@@ -264,6 +273,19 @@ def plant_variables(plant_cls, probe: bool = False) -> list[Var]:
 
 # -- slaves ---------------------------------------------------------------------------------
 
+#: file name suffix of pythonfmu's library behind the status shim (fmus.status_shim)
+_INNER_SUFFIX = "_pythonfmu.so"
+
+
+def behind_status_shim(resources, model_identifier: str) -> bool:
+    """True when this FMU runs its linux64 binary and that binary is the status shim (which
+    turns error-level log messages into ``fmi2Error``)."""
+    if not sys.platform.startswith("linux") or not resources:
+        return False
+    return os.path.isfile(os.path.join(resources, os.pardir, "binaries", "linux64",
+                                       model_identifier + _INNER_SUFFIX))
+
+
 _CAUS = {"parameter": Fmi2Causality.parameter, "input": Fmi2Causality.input,
          "output": Fmi2Causality.output}
 _TYPES = {"Real": Real, "Integer": Integer, "Boolean": Boolean, "String": String}
@@ -301,7 +323,12 @@ class SlaveBase(Fmi2Slave):
                 nested=False)
         self.params_dirty = True
         self.outputs_dirty = True
+        #: failures that refuse every step until fixed: "parameters" (model cannot be
+        #: built), "outputs" (evaluation failed), "step" (a step failed; until reset)
+        self.failed: dict[str, str] = {}
+        #: without the status shim only: rejected values, refusing the next step
         self.pending: dict[str, str] = {}
+        self.status_shim = behind_status_shim(self.resources, self.model_identifier)
         self.time = 0.0
 
     # subclasses ---------------------------------------------------------------------------
@@ -321,15 +348,23 @@ class SlaveBase(Fmi2Slave):
 
     # helpers ------------------------------------------------------------------------------
     def reject(self, key: str, message: str) -> None:
-        """Log an error naming the culprit and refuse the next step until it is fixed.
-
-        pythonfmu's runtime turns a raised exception into ``fmi2Fatal`` (all instances
-        unusable) and may lose the message, so a bad value is not stored, the error is
-        logged at once, and ``fmi2DoStep`` answers ``fmi2Discard`` with the message again.
+        """Log a rejected value at error level (the call returns ``fmi2Error`` behind the
+        status shim); without the shim the next step is refused as well (``fmi2Discard``).
         """
         msg = f"{self.instance_name}: {message}"
-        self.pending[key] = msg
         self.log(msg, Fmi2Status.error)
+        if not self.status_shim:
+            self.pending[key] = msg
+
+    def fail(self, key: str, message: str) -> None:
+        """Record a failure that refuses every step until cleared (see ``failed``); the
+        FMI call that found it reports it with :meth:`report`."""
+        self.failed[key] = f"{self.instance_name}: {message}"
+
+    def report(self, what: str) -> None:
+        """Log every recorded failure at error level, saying what it prevents."""
+        for msg in self.failed.values():
+            self.log(f"{msg} ({what})", Fmi2Status.error)
 
     def param_values(self) -> dict:
         out = {}
@@ -347,12 +382,12 @@ class SlaveBase(Fmi2Slave):
             try:
                 self.rebuild(initial)
             except Exception as exc:  # noqa: BLE001 - ParameterError names the parameter
-                self.reject("parameters", f"invalid parameters: {type(exc).__name__}: {exc}")
+                self.fail("parameters", f"invalid parameters: {type(exc).__name__}: {exc}")
                 return False
-            self.pending.pop("parameters", None)
+            self.failed.pop("parameters", None)
             self.params_dirty = False
             self.outputs_dirty = True
-        return "parameters" not in self.pending
+        return "parameters" not in self.failed
 
     def _update_outputs(self) -> bool:
         if not self._ensure_model():
@@ -360,9 +395,9 @@ class SlaveBase(Fmi2Slave):
         try:
             self.compute_outputs()
         except Exception as exc:  # noqa: BLE001
-            self.reject("outputs", f"{type(exc).__name__}: {exc}")
+            self.fail("outputs", f"output evaluation failed: {type(exc).__name__}: {exc}")
             return False
-        self.pending.pop("outputs", None)
+        self.failed.pop("outputs", None)
         self.outputs_dirty = False
         return True
 
@@ -372,29 +407,35 @@ class SlaveBase(Fmi2Slave):
 
     def exit_initialization_mode(self):
         self._ensure_model(initial=True)
+        if self.failed:
+            self.report("initialization")
 
     def do_step(self, current_time, step_size):
-        if self.pending or not self._ensure_model():
+        if self.failed or self.pending or not self._ensure_model():
+            what = f"step at t = {current_time:g} refused"
+            self.report(what)
             for msg in self.pending.values():
-                self.log(f"{msg} (step at t = {current_time:g} refused)", Fmi2Status.error)
+                self.log(f"{msg} ({what})", Fmi2Status.error)
             return False
         try:
             done = self.advance(current_time, step_size)
         except Exception as exc:  # noqa: BLE001 - never let an exception become fmi2Fatal
-            self.reject("step", f"step [{current_time:g}, +{step_size:g}] failed: {exc}")
+            self.fail("step", f"step [{current_time:g}, +{step_size:g}] failed: "
+                              f"{type(exc).__name__}: {exc}")
+            self.report("the instance refuses further steps")
             return False
         self.time = current_time + step_size
         if done:  # advance() already set the outputs for the held inputs
             self.outputs_dirty = False
-        else:
-            self.outputs_dirty = True
-            if not self._update_outputs():
-                return False
+        elif not self._update_outputs():
+            self.report(f"step to t = {self.time:g}")
+            return False
         values = self.values
         for i in self.output_idx:
             if not math.isfinite(values[i]):
-                self.reject("step", f"output {self.variables[i].name} = {values[i]!r} "
-                                    f"is not finite after the step to t = {self.time:g}")
+                self.fail("step", f"output {self.variables[i].name} = {values[i]!r} is not "
+                                  f"finite after the step to t = {self.time:g}")
+                self.report("the instance refuses further steps")
                 return False
         return True
 
@@ -402,18 +443,19 @@ class SlaveBase(Fmi2Slave):
         v = self.variables[vr]
         role = self.roles[vr]
         if role == "output":
-            self.reject(v.name, f"{v.name} is an output and cannot be set")
+            self.reject(v.name, f"{v.name} is an output and cannot be set; {value!r} ignored")
             return
         if v.type == "Real":
             value = float(value)
             if not math.isfinite(value):
                 self.reject(v.name, f"{role} {v.name} = {value!r} is not finite "
-                                    f"({v.description}); value rejected")
+                                    f"({v.description}); value rejected, {v.name} keeps "
+                                    f"{self.values[vr]!r}")
                 return
             if role == "parameter" and not v.admissible(value):
                 self.reject(v.name, f"parameter {v.name} = {value!r} is out of bounds: must be "
-                                    f"{v.bound_text()} [{v.unit}] ({v.description}); "
-                                    f"value rejected")
+                                    f"{v.bound_text()} [{v.unit}] ({v.description}); value "
+                                    f"rejected, {v.name} keeps {self.values[vr]!r}")
                 return
         self.pending.pop(v.name, None)
         self.values[vr] = value
@@ -432,6 +474,8 @@ class SlaveBase(Fmi2Slave):
     def get_real(self, vrs):
         if self.outputs_dirty:
             self._update_outputs()
+        if self.failed:  # the values may be stale or non-finite: say so (fmi2Error)
+            self.report("values read by fmi2GetReal are not valid")
         values = self.values
         return [values[vr] for vr in vrs]
 
@@ -710,7 +754,7 @@ class BlockSlave(SlaveBase):
         # outputs read during initialization may have run the sample at t0 before the
         # inputs were connected: start from a fresh block so t0 samples the final inputs
         self.params_dirty = True
-        self._ensure_model(initial=True)
+        super().exit_initialization_mode()
 
     def rebuild(self, initial):
         if not initial and getattr(self, "stepped", False):

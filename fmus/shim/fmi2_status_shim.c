@@ -1,0 +1,373 @@
+/*
+ * fmi2_status_shim.c - FMI 2.0 co-simulation status shim for pythonfmu FMUs (frictionlab).
+ *
+ * Why: the pythonfmu 0.7 binary returns fmi2OK whenever the Python slave returns normally,
+ * fmi2Discard when do_step returns False, and fmi2Fatal (destroying the Python instance) when
+ * the slave raises. A slave therefore cannot answer fmi2Error, the status FMI 2.0 asks for on
+ * a rejected value. This library sits in front of it:
+ *
+ *   binaries/linux64/<modelIdentifier>.so            <- this shim (what the importer loads)
+ *   binaries/linux64/<modelIdentifier>_pythonfmu.so  <- pythonfmu's libpythonfmu-export.so
+ *
+ * The shim dlopens the inner library next to itself (RTLD_LOCAL, so any number of FMUs load
+ * into one process), forwards every FMI 2.0 co-simulation function, and gives the inner
+ * instance its own logger. That logger forwards each message unchanged to the importer's
+ * logger (with the importer's componentEnvironment) and records the worst status logged
+ * during the current call; each forwarded call returns max(inner status, worst logged
+ * status). A slave that logs at error level and returns normally thus makes the call return
+ * fmi2Error.
+ *
+ * Logging: pythonfmu 0.7 drops every message unless logging is on, so the inner instance
+ * always runs with logging on (all categories) and the shim applies the importer's
+ * loggingOn / categories itself. Messages with status fmi2Error or fmi2Fatal are always
+ * forwarded: they explain the status the call returns.
+ *
+ * Build: cc -shared -fPIC -O2 -I<dir of fmi2Functions.h> fmi2_status_shim.c -o <id>.so -ldl
+ */
+#define _GNU_SOURCE
+#include <dlfcn.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi2Functions.h"
+
+#define INNER_SUFFIX "_pythonfmu.so"
+#define MAX_CATEGORIES 32
+#define CATEGORY_LEN 64
+
+/* -- the inner (pythonfmu) library ---------------------------------------------------- */
+
+typedef struct {
+    fmi2SetDebugLoggingTYPE *SetDebugLogging;
+    fmi2InstantiateTYPE *Instantiate;
+    fmi2FreeInstanceTYPE *FreeInstance;
+    fmi2SetupExperimentTYPE *SetupExperiment;
+    fmi2EnterInitializationModeTYPE *EnterInitializationMode;
+    fmi2ExitInitializationModeTYPE *ExitInitializationMode;
+    fmi2TerminateTYPE *Terminate;
+    fmi2ResetTYPE *Reset;
+    fmi2GetRealTYPE *GetReal;
+    fmi2GetIntegerTYPE *GetInteger;
+    fmi2GetBooleanTYPE *GetBoolean;
+    fmi2GetStringTYPE *GetString;
+    fmi2SetRealTYPE *SetReal;
+    fmi2SetIntegerTYPE *SetInteger;
+    fmi2SetBooleanTYPE *SetBoolean;
+    fmi2SetStringTYPE *SetString;
+    fmi2GetFMUstateTYPE *GetFMUstate;
+    fmi2SetFMUstateTYPE *SetFMUstate;
+    fmi2FreeFMUstateTYPE *FreeFMUstate;
+    fmi2SerializedFMUstateSizeTYPE *SerializedFMUstateSize;
+    fmi2SerializeFMUstateTYPE *SerializeFMUstate;
+    fmi2DeSerializeFMUstateTYPE *DeSerializeFMUstate;
+    fmi2GetDirectionalDerivativeTYPE *GetDirectionalDerivative;
+    fmi2SetRealInputDerivativesTYPE *SetRealInputDerivatives;
+    fmi2GetRealOutputDerivativesTYPE *GetRealOutputDerivatives;
+    fmi2DoStepTYPE *DoStep;
+    fmi2CancelStepTYPE *CancelStep;
+    fmi2GetStatusTYPE *GetStatus;
+    fmi2GetRealStatusTYPE *GetRealStatus;
+    fmi2GetIntegerStatusTYPE *GetIntegerStatus;
+    fmi2GetBooleanStatusTYPE *GetBooleanStatus;
+    fmi2GetStringStatusTYPE *GetStringStatus;
+} Inner;
+
+static Inner inner;
+static void *inner_handle = NULL;
+static char inner_error[5120] = "";
+static pthread_once_t inner_once = PTHREAD_ONCE_INIT;
+
+/* the message goes out as a printf format without arguments (as pythonfmu's do) */
+static void no_percent(char *text) {
+    for (; *text; text++)
+        if (*text == '%')
+            *text = '?';
+}
+
+static void *sym(const char *name) {
+    void *p = dlsym(inner_handle, name);
+    if (p == NULL && inner_error[0] == '\0')
+        snprintf(inner_error, sizeof inner_error, "fmi2 status shim: %s missing in the inner "
+                 "library: %s", name, dlerror());
+    return p;
+}
+
+/* Load <own path without .so>_pythonfmu.so once per process. */
+static void load_inner(void) {
+    Dl_info info;
+    char path[4096];
+    size_t n;
+    if (!dladdr((void *)&load_inner, &info) || info.dli_fname == NULL) {
+        snprintf(inner_error, sizeof inner_error, "fmi2 status shim: dladdr failed");
+        return;
+    }
+    n = strlen(info.dli_fname);
+    if (n < 3 || strcmp(info.dli_fname + n - 3, ".so") != 0 ||
+        n - 3 + sizeof INNER_SUFFIX > sizeof path) {
+        snprintf(inner_error, sizeof inner_error, "fmi2 status shim: unexpected library "
+                 "path %s", info.dli_fname);
+        return;
+    }
+    memcpy(path, info.dli_fname, n - 3);
+    memcpy(path + n - 3, INNER_SUFFIX, sizeof INNER_SUFFIX);
+    /* RTLD_NOW | RTLD_LOCAL: what ctypes and most importers use for an FMU binary */
+    inner_handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (inner_handle == NULL) {
+        snprintf(inner_error, sizeof inner_error, "fmi2 status shim: cannot load %s: %s",
+                 path, dlerror());
+        return;
+    }
+#define LOAD(f) inner.f = (fmi2##f##TYPE *)sym("fmi2" #f)
+    LOAD(SetDebugLogging); LOAD(Instantiate); LOAD(FreeInstance); LOAD(SetupExperiment);
+    LOAD(EnterInitializationMode); LOAD(ExitInitializationMode); LOAD(Terminate); LOAD(Reset);
+    LOAD(GetReal); LOAD(GetInteger); LOAD(GetBoolean); LOAD(GetString);
+    LOAD(SetReal); LOAD(SetInteger); LOAD(SetBoolean); LOAD(SetString);
+    LOAD(GetFMUstate); LOAD(SetFMUstate); LOAD(FreeFMUstate); LOAD(SerializedFMUstateSize);
+    LOAD(SerializeFMUstate); LOAD(DeSerializeFMUstate); LOAD(GetDirectionalDerivative);
+    LOAD(SetRealInputDerivatives); LOAD(GetRealOutputDerivatives); LOAD(DoStep);
+    LOAD(CancelStep); LOAD(GetStatus); LOAD(GetRealStatus); LOAD(GetIntegerStatus);
+    LOAD(GetBooleanStatus); LOAD(GetStringStatus);
+#undef LOAD
+}
+
+static void load_inner_once(void) {
+    load_inner();
+    no_percent(inner_error);
+}
+
+__attribute__((destructor)) static void unload_inner(void) {
+    /* the importer unloads this library: unload the inner one with it, as it would have */
+    if (inner_handle != NULL)
+        dlclose(inner_handle);
+    inner_handle = NULL;
+}
+
+/* -- per-instance record ---------------------------------------------------------------- */
+
+typedef struct {
+    fmi2Component inner;                 /* the pythonfmu instance */
+    fmi2CallbackFunctions user;          /* the importer's callbacks (copy) */
+    fmi2CallbackFunctions own;           /* what the inner instance gets (kept alive here) */
+    int worst;                           /* worst status logged during the current call */
+    int logging_on;                      /* importer's debug-logging switch */
+    size_t n_categories;                 /* 0: all categories */
+    char categories[MAX_CATEGORIES][CATEGORY_LEN];
+} Shim;
+
+static int category_enabled(const Shim *s, fmi2String category) {
+    size_t i;
+    if (s->n_categories == 0)
+        return 1;
+    if (category == NULL)
+        return 0;
+    for (i = 0; i < s->n_categories; i++)
+        if (strncmp(s->categories[i], category, CATEGORY_LEN) == 0)
+            return 1;
+    return 0;
+}
+
+/* The inner instance's logger: forward the message unchanged (pythonfmu passes it as the
+ * format with no arguments) and remember the worst status of the current call. */
+static void shim_logger(fmi2ComponentEnvironment env, fmi2String instanceName,
+                        fmi2Status status, fmi2String category, fmi2String message, ...) {
+    Shim *s = (Shim *)env;
+    if (s == NULL)
+        return;
+    if ((int)status > s->worst)
+        s->worst = (int)status;
+    if (s->user.logger == NULL)
+        return;
+    if (status >= fmi2Error || (s->logging_on && category_enabled(s, category)))
+        s->user.logger(s->user.componentEnvironment, instanceName, status, category, message);
+}
+
+static void set_user_logging(Shim *s, fmi2Boolean loggingOn, size_t n, const fmi2String c[]) {
+    size_t i;
+    s->logging_on = loggingOn ? 1 : 0;
+    s->n_categories = 0;
+    if (n > MAX_CATEGORIES || c == NULL)
+        return;                          /* too many to track: treat as all categories */
+    for (i = 0; i < n; i++) {
+        if (c[i] == NULL)
+            continue;
+        strncpy(s->categories[s->n_categories], c[i], CATEGORY_LEN - 1);
+        s->categories[s->n_categories][CATEGORY_LEN - 1] = '\0';
+        s->n_categories++;
+    }
+}
+
+static fmi2Status combine(Shim *s, fmi2Status st) {
+    return (int)st >= s->worst ? st : (fmi2Status)s->worst;
+}
+
+#define SHIM(c) ((Shim *)(c))
+/* forward a call returning fmi2Status; reset the worst logged status first */
+#define FORWARD(f, c, ...)                                   \
+    do {                                                     \
+        Shim *s_ = SHIM(c);                                  \
+        fmi2Status st_;                                      \
+        if (s_ == NULL || inner.f == NULL) return fmi2Error; \
+        s_->worst = fmi2OK;                                  \
+        st_ = inner.f(s_->inner, __VA_ARGS__);               \
+        return combine(s_, st_);                             \
+    } while (0)
+#define FORWARD0(f, c)                                       \
+    do {                                                     \
+        Shim *s_ = SHIM(c);                                  \
+        fmi2Status st_;                                      \
+        if (s_ == NULL || inner.f == NULL) return fmi2Error; \
+        s_->worst = fmi2OK;                                  \
+        st_ = inner.f(s_->inner);                            \
+        return combine(s_, st_);                             \
+    } while (0)
+
+/* -- FMI 2.0 functions ------------------------------------------------------------------ */
+
+const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
+
+const char *fmi2GetVersion(void) { return fmi2Version; }
+
+fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
+                              fmi2String fmuResourceLocation,
+                              const fmi2CallbackFunctions *functions, fmi2Boolean visible,
+                              fmi2Boolean loggingOn) {
+    Shim *s;
+    pthread_once(&inner_once, load_inner_once);
+    if (functions == NULL)
+        return NULL;
+    if (inner_handle == NULL || inner_error[0] != '\0') {
+        if (functions->logger != NULL)
+            functions->logger(functions->componentEnvironment, instanceName, fmi2Fatal,
+                              "logStatusFatal", inner_error);
+        return NULL;
+    }
+    s = (Shim *)calloc(1, sizeof(Shim));
+    if (s == NULL)
+        return NULL;
+    s->user = *functions;
+    s->own = *functions;
+    s->own.logger = shim_logger;
+    s->own.componentEnvironment = s;
+    set_user_logging(s, loggingOn, 0, NULL);
+    s->inner = inner.Instantiate(instanceName, fmuType, fmuGUID, fmuResourceLocation, &s->own,
+                                 visible, fmi2True);
+    if (s->inner == NULL) {
+        free(s);
+        return NULL;
+    }
+    return (fmi2Component)s;
+}
+
+void fmi2FreeInstance(fmi2Component c) {
+    Shim *s = SHIM(c);
+    if (s == NULL)
+        return;
+    if (inner.FreeInstance != NULL)
+        inner.FreeInstance(s->inner);
+    free(s);
+}
+
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
+                               const fmi2String categories[]) {
+    Shim *s = SHIM(c);
+    if (s == NULL)
+        return fmi2Error;
+    set_user_logging(s, loggingOn, nCategories, categories);
+    return fmi2OK;  /* the inner instance keeps logging everything to the shim */
+}
+
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined,
+                               fmi2Real tolerance, fmi2Real startTime,
+                               fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
+    FORWARD(SetupExperiment, c, toleranceDefined, tolerance, startTime, stopTimeDefined,
+            stopTime);
+}
+
+fmi2Status fmi2EnterInitializationMode(fmi2Component c) { FORWARD0(EnterInitializationMode, c); }
+fmi2Status fmi2ExitInitializationMode(fmi2Component c) { FORWARD0(ExitInitializationMode, c); }
+fmi2Status fmi2Terminate(fmi2Component c) { FORWARD0(Terminate, c); }
+fmi2Status fmi2Reset(fmi2Component c) { FORWARD0(Reset, c); }
+
+fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                       fmi2Real value[]) { FORWARD(GetReal, c, vr, nvr, value); }
+fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          fmi2Integer value[]) { FORWARD(GetInteger, c, vr, nvr, value); }
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          fmi2Boolean value[]) { FORWARD(GetBoolean, c, vr, nvr, value); }
+fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         fmi2String value[]) { FORWARD(GetString, c, vr, nvr, value); }
+
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                       const fmi2Real value[]) { FORWARD(SetReal, c, vr, nvr, value); }
+fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          const fmi2Integer value[]) { FORWARD(SetInteger, c, vr, nvr, value); }
+fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          const fmi2Boolean value[]) { FORWARD(SetBoolean, c, vr, nvr, value); }
+fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                         const fmi2String value[]) { FORWARD(SetString, c, vr, nvr, value); }
+
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) {
+    FORWARD(GetFMUstate, c, FMUstate);
+}
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate) {
+    FORWARD(SetFMUstate, c, FMUstate);
+}
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate) {
+    FORWARD(FreeFMUstate, c, FMUstate);
+}
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t *size) {
+    FORWARD(SerializedFMUstateSize, c, FMUstate, size);
+}
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate,
+                                 fmi2Byte serializedState[], size_t size) {
+    FORWARD(SerializeFMUstate, c, FMUstate, serializedState, size);
+}
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[],
+                                   size_t size, fmi2FMUstate *FMUstate) {
+    FORWARD(DeSerializeFMUstate, c, serializedState, size, FMUstate);
+}
+
+fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[],
+                                        size_t nUnknown, const fmi2ValueReference vKnown_ref[],
+                                        size_t nKnown, const fmi2Real dvKnown[],
+                                        fmi2Real dvUnknown[]) {
+    FORWARD(GetDirectionalDerivative, c, vUnknown_ref, nUnknown, vKnown_ref, nKnown, dvKnown,
+            dvUnknown);
+}
+
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[],
+                                       size_t nvr, const fmi2Integer order[],
+                                       const fmi2Real value[]) {
+    FORWARD(SetRealInputDerivatives, c, vr, nvr, order, value);
+}
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[],
+                                        size_t nvr, const fmi2Integer order[],
+                                        fmi2Real value[]) {
+    FORWARD(GetRealOutputDerivatives, c, vr, nvr, order, value);
+}
+
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
+                      fmi2Real communicationStepSize,
+                      fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
+    FORWARD(DoStep, c, currentCommunicationPoint, communicationStepSize,
+            noSetFMUStatePriorToCurrentPoint);
+}
+fmi2Status fmi2CancelStep(fmi2Component c) { FORWARD0(CancelStep, c); }
+
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
+    FORWARD(GetStatus, c, s, value);
+}
+fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
+    FORWARD(GetRealStatus, c, s, value);
+}
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
+    FORWARD(GetIntegerStatus, c, s, value);
+}
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
+    FORWARD(GetBooleanStatus, c, s, value);
+}
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {
+    FORWARD(GetStringStatus, c, s, value);
+}

@@ -1,0 +1,336 @@
+"""FMI error statuses on bad input: the status shim in front of pythonfmu's binary.
+
+NaN/inf on an input or an out-of-bounds parameter must give ``fmi2Error`` with a log message
+naming the variable (and its bound), never a crash or a silent NaN; the rejected value is not
+stored, so the instance keeps working exactly as if the bad call had not happened.
+"""
+from __future__ import annotations
+
+import math
+import shutil
+import zipfile
+
+import numpy as np
+import pytest
+
+fmpy = pytest.importorskip("fmpy")
+pytest.importorskip("pythonfmu")
+
+from fmpy.fmi1 import FMICallException  # noqa: E402
+from fmpy.fmi2 import fmi2Error, fmi2OK  # noqa: E402
+
+from fmus import status_shim  # noqa: E402
+from fmus.build import build_fmu, catalogue, validate  # noqa: E402
+from fmus.master import FMUError, Master  # noqa: E402
+
+try:
+    status_shim.shim_library()
+    SHIM_REASON = None
+except status_shim.ShimUnavailable as exc:  # pragma: no cover - no C compiler here
+    SHIM_REASON = str(exc)
+needs_shim = pytest.mark.skipif(SHIM_REASON is not None, reason=f"no status shim: {SHIM_REASON}")
+
+NAN, INF = float("nan"), float("inf")
+
+
+@pytest.fixture(scope="module")
+def fmu_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("fmus_status")
+    cat = catalogue()
+    for name in ("lugre", "mass", "damping_rig"):
+        build_fmu(cat[name], out)
+    return out
+
+
+class Slave:
+    """fmpy ``FMU2Slave`` with the log messages captured as (status, message)."""
+
+    def __init__(self, path, name="inst", logging_on=True):
+        from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, \
+            fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE, calloc, free
+        self.md = fmpy.read_model_description(str(path))
+        self.dir = fmpy.extract(str(path))
+        self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
+        self.messages = []
+
+        def logger(env, inst, status, cat, msg):
+            self.messages.append((status, msg.decode()))
+        cb = fmi2CallbackFunctions()
+        cb.logger = fmi2CallbackLoggerTYPE(logger)
+        cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+        cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+        self._cb = (cb, logger)
+        self.s = FMU2Slave(guid=self.md.guid, unzipDirectory=self.dir,
+                           modelIdentifier=self.md.coSimulation.modelIdentifier,
+                           instanceName=name)
+        self.s.instantiate(callbacks=cb, loggingOn=logging_on)
+        self.s.setupExperiment(startTime=0.0)
+
+    def set(self, name, value):
+        """fmi2SetReal of one variable; returns the FMI status (fmpy raises above warning)."""
+        try:
+            self.s.setReal([self.vr[name]], [value])
+        except FMICallException as exc:
+            return exc.status
+        return fmi2OK
+
+    def step(self, t, h):
+        try:
+            self.s.doStep(t, h)
+        except FMICallException as exc:
+            return exc.status
+        return fmi2OK
+
+    def get(self, name):
+        return self.s.getReal([self.vr[name]])[0]
+
+    def init(self):
+        self.s.enterInitializationMode()
+        self.s.exitInitializationMode()
+
+    def errors(self):
+        return [m for st, m in self.messages if st >= fmi2Error]
+
+    def close(self):
+        try:
+            self.s.terminate()
+            self.s.fmi2FreeInstance(self.s.component)
+        finally:
+            shutil.rmtree(self.dir, ignore_errors=True)
+
+
+def test_linux64_binary_is_the_shim_in_front_of_pythonfmu(fmu_dir):
+    import pythonfmu
+    import pathlib
+    res = pathlib.Path(pythonfmu.__file__).parent / "resources" / "binaries"
+    for name in ("lugre", "mass", "damping_rig"):
+        path = fmu_dir / f"{name}.fmu"
+        mid = f"fl_{name}"
+        with zipfile.ZipFile(path) as z:
+            names = set(z.namelist())
+            if SHIM_REASON is None:
+                assert z.read(f"binaries/linux64/{mid}.so") == \
+                    status_shim.shim_library().read_bytes()
+                assert z.read(f"binaries/linux64/{mid}_pythonfmu.so") == \
+                    (res / "linux64" / "libpythonfmu-export.so").read_bytes()
+            # win64 stays pythonfmu's binary, untouched
+            assert z.read(f"binaries/win64/{mid}.dll") == \
+                (res / "win64" / "pythonfmu-export.dll").read_bytes()
+            assert not any(n.startswith("binaries/win64/") and n != f"binaries/win64/{mid}.dll"
+                           for n in names)
+        assert validate(path) == [], name
+
+
+def _lugre_run(path, n=40, bad=None, at=20, logging_on=True):
+    """Drive v(t) through the LuGre FMU; ``bad`` = (variable, value) set once at step ``at``.
+    Returns (F samples, statuses of the bad call, messages)."""
+    s = Slave(path, "fr", logging_on)
+    status = None
+    try:
+        s.init()
+        F = []
+        for k in range(n):
+            v = 2e-3 * math.sin(2 * math.pi * 10 * k * 1e-4) + 5e-4
+            assert s.set("v", v) == fmi2OK
+            if bad is not None and k == at:
+                before = s.get("F")
+                status = s.set(*bad)
+                assert s.get("F") == before  # the rejected value changed nothing
+            F.append(s.get("F"))
+            assert s.step(k * 1e-4, 1e-4) == fmi2OK
+        F.append(s.get("F"))
+        return np.array(F), status, s.messages
+    finally:
+        s.close()
+
+
+@needs_shim
+@pytest.mark.parametrize("bad", [NAN, INF, -INF])
+def test_non_finite_input_gives_fmi2_error_naming_it_and_the_run_goes_on(fmu_dir, bad):
+    path = fmu_dir / "lugre.fmu"
+    ref, _, ref_msgs = _lugre_run(path)
+    F, status, msgs = _lugre_run(path, bad=("v", bad))
+    assert status == fmi2Error
+    errors = [m for st, m in msgs if st >= fmi2Error]
+    assert len(errors) == 1, msgs
+    assert "input v" in errors[0] and "not finite" in errors[0] and repr(bad) in errors[0]
+    assert "fr" in errors[0]  # the instance
+    # the old value was kept: every later step is OK and the run equals the clean one
+    assert np.all(np.isfinite(F))
+    np.testing.assert_array_equal(F, ref)
+    assert not [m for st, m in ref_msgs if st >= fmi2Error]
+
+
+@needs_shim
+@pytest.mark.parametrize("name, value, text", [("sigma0", -5.0, "> 0"),
+                                               ("Fc", NAN, "not finite"),
+                                               ("alpha", 11.0, "<= 10")])
+def test_out_of_bounds_parameter_gives_fmi2_error_naming_it_and_its_bound(fmu_dir, name,
+                                                                          value, text):
+    path = fmu_dir / "lugre.fmu"
+    s = Slave(path, "fr")
+    try:
+        start = s.get(name)
+        assert s.set(name, value) == fmi2Error
+        errors = s.errors()
+        assert len(errors) == 1 and name in errors[0] and text in errors[0], s.messages
+        assert s.get(name) == start  # rejected: the previous (default) value stays
+        s.init()
+        assert s.set("v", 1e-3) == fmi2OK
+        for k in range(20):
+            assert s.step(k * 1e-4, 1e-4) == fmi2OK
+        F = s.get("F")
+    finally:
+        s.close()
+    clean = Slave(path, "fr")  # the same run without the bad call
+    try:
+        clean.init()
+        clean.set("v", 1e-3)
+        for k in range(20):
+            clean.step(k * 1e-4, 1e-4)
+        assert F == clean.get("F")
+    finally:
+        clean.close()
+
+
+@needs_shim
+def test_tunable_parameter_during_the_run_rejected_without_losing_the_state(fmu_dir):
+    path = fmu_dir / "lugre.fmu"
+    ref, _, _ = _lugre_run(path)
+    F, status, msgs = _lugre_run(path, bad=("sigma0", -1.0))
+    assert status == fmi2Error
+    assert any("sigma0" in m and "> 0" in m for st, m in msgs if st >= fmi2Error), msgs
+    np.testing.assert_array_equal(F, ref)
+
+
+@needs_shim
+def test_error_messages_arrive_with_logging_off(fmu_dir):
+    # an error explains the status of the call: forwarded even when debug logging is off
+    F, status, msgs = _lugre_run(fmu_dir / "lugre.fmu", bad=("v", NAN), logging_on=False)
+    assert status == fmi2Error
+    assert [st for st, m in msgs] == [fmi2Error] and "input v" in msgs[0][1]
+
+
+@needs_shim
+def test_plant_fmu_non_finite_input_and_bad_parameter(fmu_dir):
+    path = fmu_dir / "damping_rig.fmu"
+
+    def run(bad_input=False, bad_param=False):
+        s = Slave(path, "rig")
+        try:
+            if bad_param:
+                assert s.set("m_c", -1.0) == fmi2Error
+                assert any("m_c" in m and "> 0" in m for m in s.errors()), s.messages
+            s.init()
+            x = []
+            for k in range(30):
+                assert s.set("F_friction", 5.0 * math.sin(k * 0.3)) == fmi2OK
+                if bad_input and k == 15:
+                    assert s.set("F_friction", NAN) == fmi2Error
+                    assert any("F_friction" in m and "not finite" in m
+                               for m in s.errors()), s.messages
+                assert s.step(k * 1e-4, 1e-4) == fmi2OK
+                x.append(s.get("x"))
+            return np.array(x), len(s.errors())
+        finally:
+            s.close()
+
+    ref, n_ref = run()
+    assert n_ref == 0 and np.ptp(ref) > 0
+    for kw in ({"bad_input": True}, {"bad_param": True}):
+        x, n_err = run(**kw)
+        assert n_err == 1
+        np.testing.assert_array_equal(x, ref)
+
+
+@needs_shim
+def test_inadmissible_combination_is_an_error_at_initialization_and_refuses_steps(fmu_dir):
+    s = Slave(fmu_dir / "lugre.fmu", "fr")
+    try:
+        s.s.setString([s.vr["shape"]], ["bogus"])  # a string the law does not know
+        with pytest.raises(FMICallException) as exc:
+            s.init()
+        assert exc.value.status == fmi2Error
+        assert any("shape" in m and "bogus" in m for m in s.errors()), s.messages
+        assert s.step(0.0, 1e-4) == fmi2Error  # no model: every step refused, loudly
+        assert "refused" in s.errors()[-1]
+    finally:
+        s.close()
+
+
+@needs_shim
+def test_non_finite_output_makes_the_step_an_error(fmu_dir):
+    s = Slave(fmu_dir / "mass.fmu", "mass")
+    try:
+        # a = u0 / m = 1e307 m/s2, 1 s steps: x = a t^2 / 2 overflows after a few steps
+        for k, v in dict(m=1e-300, u0=1e7, u_amp=0.0).items():
+            assert s.set(k, v) == fmi2OK
+        s.init()
+        statuses = [s.step(float(k), 1.0) for k in range(20)]
+        bad = statuses.index(fmi2Error)  # the overflow: error, not discard
+        assert bad >= 3
+        assert set(statuses[:bad]) == {fmi2OK} and set(statuses[bad:]) == {fmi2Error}
+        assert any("not finite" in m for m in s.errors())
+        with pytest.raises(FMICallException) as exc:  # no silent NaN on read either
+            s.get("x")
+        assert exc.value.status == fmi2Error
+    finally:
+        s.close()
+
+
+@needs_shim
+def test_master_raises_fmu_error_naming_instance_call_and_time(fmu_dir):
+    fmus = {"mass": fmu_dir / "mass.fmu", "friction": fmu_dir / "lugre.fmu"}
+    conns = [("mass.v", "friction.v"), ("friction.F", "mass.F_friction")]
+    with Master(fmus, conns, parameters={"friction": {"sigma0": -1.0}}) as m:
+        with pytest.raises(FMUError) as exc:
+            m.simulate(stop_time=0.51, step_size=1e-3, start_time=0.5)
+    e = exc.value
+    assert (e.instance, e.call, e.status) == ("friction", "fmi2SetReal(sigma0)", fmi2Error)
+    assert e.time == pytest.approx(0.5)
+    assert "sigma0" in str(e) and "> 0" in str(e) and "t = 0.5" in str(e)
+    with Master(fmus, conns, start_values={"mass": {"F_ext": NAN}}) as m:
+        with pytest.raises(FMUError) as exc:
+            m.simulate(stop_time=0.01, step_size=1e-3)
+    assert exc.value.instance == "mass" and exc.value.call == "fmi2SetReal(F_ext)"
+    assert "F_ext" in str(exc.value) and "not finite" in str(exc.value)
+    with Master(fmus, conns, parameters={"mass": {"m": 1e-300, "u0": 0.0, "u_amp": 1e-10}}) as m:
+        with pytest.raises(FMUError) as exc:
+            m.simulate(stop_time=1.0, step_size=1e-3)
+    e = exc.value
+    assert (e.instance, e.call, e.status) == ("mass", "fmi2DoStep", fmi2Error)
+    assert 0.0 < e.time < 1.0 and f"t = {e.time:.9g}" in str(e) and "not finite" in str(e)
+
+
+def test_without_a_compiler_the_build_warns_and_bad_input_gives_discard(tmp_path,
+                                                                        monkeypatch):
+    def no_compiler():
+        raise status_shim.ShimUnavailable("no C compiler found (test)")
+    monkeypatch.setattr(status_shim, "_compiler", no_compiler)
+    monkeypatch.setenv("FRICTIONLAB_CACHE", str(tmp_path / "cache"))
+    with pytest.warns(RuntimeWarning, match="fmi2Discard"):
+        path = build_fmu(catalogue()["lugre"], tmp_path)
+    assert validate(path) == []
+    with zipfile.ZipFile(path) as z:
+        assert "binaries/linux64/fl_lugre_pythonfmu.so" not in z.namelist()
+    s = Slave(path, "fr")
+    try:
+        s.init()
+        assert s.set("v", NAN) == fmi2OK  # pythonfmu's own binary: no error status
+        assert any("input v" in m for m in s.errors())
+        assert s.step(0.0, 1e-4) == 2  # fmi2Discard: the step is refused instead
+        assert s.set("v", 1e-3) == fmi2OK
+        assert s.step(0.0, 1e-4) == fmi2OK
+        assert math.isfinite(s.get("F"))
+    finally:
+        s.close()
+
+
+@pytest.mark.skipif(SHIM_REASON is not None, reason=f"no status shim: {SHIM_REASON}")
+def test_shim_is_compiled_once_per_source_and_cached(tmp_path, monkeypatch):
+    monkeypatch.setenv("FRICTIONLAB_CACHE", str(tmp_path))
+    lib = status_shim.shim_library()
+    assert lib.parent.parent == tmp_path and lib.is_file()
+    mtime = lib.stat().st_mtime_ns
+    assert status_shim.shim_library() == lib and lib.stat().st_mtime_ns == mtime
+    assert list(lib.parent.iterdir()) == [lib]  # no leftover temporary files

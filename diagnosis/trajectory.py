@@ -1,0 +1,1100 @@
+"""Trajectory-level diagnosis: the candidate effect is put into the plant's friction and the
+plant is re-simulated against measured positions.
+
+The friction-force level (:func:`diagnosis.diagnose`) needs friction recovered by inverse
+dynamics. Many machines only give a trajectory: the XML-350 stage's tracking error, the
+valve's lift. Here every candidate of :mod:`diagnosis.effects` becomes a change of the
+*simulated plant*:
+
+==================  ========================================================================
+candidate           how it enters the plant model
+==================  ========================================================================
+``asymmetry``       the law's own direction twins ``Fc_neg, Fs_neg, sigma2_neg`` and offset
+                    ``b`` (LuGre family)
+``stribeck_shape``  free exponent ``alpha`` (Gaussian) or the other shape
+                    (:meth:`diagnosis.effects.StribeckShape.modify_law`)
+``presliding``      a static map replaced by LuGre (same hook as the force level)
+``acceleration``    :class:`EffectLaw`: ``+ f_a tanh(a/a_s) exp(-|v|/v_c)``
+``position``        :class:`EffectLaw`: ``x (1 + Legendre series of x)``
+``drift``           :class:`EffectLaw`: ``x (1 + k_drift (t - t0) / T)``, absolute time
+``load``            :class:`EffectLaw`: ``x (load / L0)^gamma_L`` (plants with a load)
+``inertia``         the plant's moving mass ``M -> M + dm`` (a mass error of the model)
+``delay``           a time shift between the measured and the simulated position channel
+==================  ========================================================================
+
+The :class:`EffectLaw` terms are the formulas of :mod:`diagnosis.effects` evaluated inside
+the plant's friction law at every integration substep (numba kernel wrapped around the base
+law's kernel), so the plant's closed loop reacts to them.
+
+Procedure (mirrors :func:`diagnosis.diagnose`)
+----------------------------------------------
+1. Base fit: the base law's parameters that the trajectory can see (screened by their
+   sensitivity, or ``fit_names``) are fitted by ``scipy.optimize.least_squares`` on the
+   position residual of the fit record, each evaluation one plant simulation.
+2. Held-out score: NRMSE of the position on the held-out record(s), normalised by the
+   standard deviation of the measured *tracking error* (reference - measured position; the
+   reference is the plant's own command, identical in model and machine), so the score is
+   the NRMSE of the tracking error the model predicts.
+3. Each candidate: base parameters and the effect's parameters re-identified jointly on the
+   fit record (warm start: the base fit; bounded number of plant simulations), scored on
+   the held-out record(s); greedy stacking, noise floor and verdict as the force level
+   (constants :data:`diagnosis.core.MIN_EXCESS_CLOSED`, ``TIE``, ``NOISE_RATIO``).
+
+Engines
+-------
+``engine="plant"`` (default) runs :meth:`plants.base.Plant.simulate` (``method="fast"``,
+the plant's compiled kernel when it has one); ``engine="fmu"`` runs the plant FMU (external
+friction) and the friction-law FMU through :class:`fmus.master.Master`, connected as
+:func:`fmus.plant_fmus.plant_connections`. Both solve the same equations - the plant's
+states with Heun's method and the law's stable bristle update - and differ only by the
+coupling of the co-simulation (the friction force held over a communication step; it
+shrinks with ``fmu_step``). The FMU engine supports the candidates that are parameters of
+the friction FMU or of the plant FMU (``asymmetry``, ``stribeck_shape``, ``presliding``,
+``inertia``) and the output shift ``delay``; the others need :class:`EffectLaw` inside the
+plant and raise ``NotImplementedError`` there.
+"""
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+from numba import njit
+from scipy.optimize import least_squares
+
+from friction import FrictionModel, make_model
+from friction.dataset import Dataset
+
+from .core import MIN_EXCESS_CLOSED, NOISE_RATIO, TIE, BASE_NAMES, DiagnosisReport, noise_floor
+from .effects import CANDIDATES, EFFECT_NAMES, Context, Extra, make_context
+from .regions import band_splits, frequency_split, regime_split
+
+__all__ = ["TrajectoryRecord", "record_from_result", "EffectLaw", "simulate_record",
+           "diagnose_trajectory", "FORCE_EFFECTS", "FMU_EFFECTS", "REFERENCE_OUTPUTS",
+           "MASS_PARAMETERS", "TrajectoryModel"]
+
+#: candidates evaluated inside the friction law by :class:`EffectLaw`
+FORCE_EFFECTS = ("acceleration", "position", "drift", "load")
+#: candidates the FMU engine can express (friction-FMU / plant-FMU parameters, output shift)
+FMU_EFFECTS = ("asymmetry", "stribeck_shape", "presliding", "inertia", "delay")
+#: outputs holding a plant's own position command (the tracking error's reference)
+REFERENCE_OUTPUTS = ("x_d", "S_ref", "x_ref")
+#: plant parameters that are the moving mass (``inertia`` candidate), in order of preference
+MASS_PARAMETERS = ("M", "m", "mass")
+#: direction twins the ``asymmetry`` candidate frees (with the offset ``b``)
+ASYMMETRY_NAMES = ("b", "Fc_neg", "Fs_neg", "sigma2_neg")
+
+
+# -- measured records ---------------------------------------------------------------------
+@dataclass
+class TrajectoryRecord:
+    """One measured run of a plant: time, measured position and the experiment behind it.
+
+    Attributes
+    ----------
+    t : ndarray
+        Sample times [s], strictly increasing, from the start of the experiment (the plant
+        simulation starts at ``t = 0`` at rest).
+    y : ndarray
+        Measured output [m] (the plant's ``signal``, by default its main output, e.g. the
+        XML-350 stage position or the valve lift).
+    options : dict
+        Experiment options of :meth:`plants.base.Plant.simulate` that reproduce the run
+        (trajectory, distance, controller, ...).
+    name : str
+    signal : str, optional
+        Plant output compared with ``y`` (default: the plant's ``main_output``).
+    t_start : float
+        Absolute time of the record's start [s] (only the ``drift`` candidate uses it: a
+        friction level that changes over the session).
+    """
+    t: np.ndarray
+    y: np.ndarray
+    options: dict = field(default_factory=dict)
+    name: str = "trajectory"
+    signal: str | None = None
+    t_start: float = 0.0
+
+    def __post_init__(self):
+        self.t = np.asarray(self.t, dtype=float).ravel()
+        self.y = np.asarray(self.y, dtype=float).ravel()
+        if self.t.size != self.y.size:
+            raise ValueError(f"record {self.name!r}: t has {self.t.size} samples but y has "
+                             f"{self.y.size}")
+        if self.t.size < 10:
+            raise ValueError(f"record {self.name!r}: need at least 10 samples, got "
+                             f"{self.t.size}")
+        for key, arr in (("t", self.t), ("y", self.y)):
+            bad = np.flatnonzero(~np.isfinite(arr))
+            if bad.size:
+                raise ValueError(f"record {self.name!r}: {key} is not finite at sample "
+                                 f"{bad[0]} ({key}[{bad[0]}] = {arr[bad[0]]!r})")
+        d = np.diff(self.t)
+        if np.any(d <= 0):
+            k = int(np.flatnonzero(d <= 0)[0])
+            raise ValueError(f"record {self.name!r}: t must be strictly increasing; "
+                             f"t[{k + 1}] = {self.t[k + 1]!r} <= t[{k}] = {self.t[k]!r}")
+        if self.t[0] < 0:
+            raise ValueError(f"record {self.name!r}: t starts at {self.t[0]!r} < 0; times "
+                             f"count from the experiment's start [s]")
+        if np.max(np.abs(self.y)) > 10.0:
+            raise ValueError(f"record {self.name!r}: |y| reaches {np.max(np.abs(self.y)):.4g}"
+                             f" - positions are in m (a value in mm or um needs scaling)")
+        self.options = dict(self.options)
+
+    @property
+    def dt(self) -> float:
+        return float(np.median(np.diff(self.t)))
+
+
+def record_from_result(result, options: dict | None = None, *, signal: str = "x",
+                       noise: float = 0.0, seed: int = 0, name: str = "trajectory",
+                       t_start: float = 0.0) -> TrajectoryRecord:
+    """A :class:`TrajectoryRecord` from a plant result array (synthetic measurements).
+
+    Parameters
+    ----------
+    result : structured ndarray
+        Output of :meth:`plants.base.Plant.simulate` (``time`` first).
+    options : dict, optional
+        The experiment options that produced it.
+    signal : str
+        Output taken as the measurement (``"x"``, or ``"x_meas"`` for the quantised encoder).
+    noise : float
+        Standard deviation of white measurement noise added [m].
+    seed : int
+        Seed of the noise.
+    """
+    y = np.array(result[signal], dtype=float)
+    if noise > 0:
+        y = y + np.random.default_rng(seed).normal(0.0, noise, y.size)
+    return TrajectoryRecord(result["time"], y, dict(options or {}), name=name, signal=None,
+                            t_start=t_start)
+
+
+# -- friction law + force effects -----------------------------------------------------------
+#: packed layout of the effect parameters after the base law's theta
+_EFF = ("use_acc", "f_a", "a_s", "v_c", "use_pos", "x_lo", "x_hi", "c_x1", "c_x2", "c_x3",
+        "c_x4", "use_drift", "k_drift", "t0", "T", "use_load", "L0", "gamma_L")
+_E = {n: i for i, n in enumerate(_EFF)}
+
+
+@njit(cache=True)
+def _effect_force(F, v, a, x, load, t, e):
+    """Base force ``F`` [N] with the force effects of the packed vector ``e`` (stage order of
+    :mod:`diagnosis.composite`: multiplicative, then additive)."""
+    if e[15] > 0.5:  # load: levels scale with the normal load
+        r = load / e[16]
+        if r < 1e-3:
+            r = 1e-3
+        F = F * r ** e[17]
+    if e[11] > 0.5:  # drift: relative change per fit duration
+        F = F * (1.0 + e[12] * (t - e[13]) / e[14])
+    if e[4] > 0.5:  # position: Legendre series along the fit stroke
+        span = e[6] - e[5]
+        if span < 1e-12:
+            span = 1e-12
+        xi = 2.0 * (x - e[5]) / span - 1.0
+        xi = min(1.0, max(-1.0, xi))
+        x2 = xi * xi
+        p = (e[7] * xi + e[8] * 0.5 * (3.0 * x2 - 1.0) + e[9] * 0.5 * (5.0 * x2 - 3.0) * xi
+             + e[10] * (35.0 * x2 * x2 - 30.0 * x2 + 3.0) / 8.0)
+        F = F * (1.0 + p)
+    if e[0] > 0.5:  # acceleration: grows with |a|, fades with |v|
+        F = F + e[1] * math.tanh(a / e[2]) * math.exp(-abs(v) / e[3])
+    return F
+
+
+@functools.lru_cache(maxsize=None)
+def _effect_kernel(base_kernel, nb: int, ns: int):
+    """Numba kernel of base law + force effects; the extra last state is absolute time."""
+
+    @njit
+    def kern(t, v, a, load, x, theta, method, state0):
+        th = theta[:nb].copy()
+        s0 = state0[:ns].copy()
+        F0, S0 = base_kernel(t, v, a, load, x, th, method, s0)
+        n = t.size
+        F = np.empty(n)
+        S = np.empty((n, ns + 1))
+        e = theta[nb:]
+        tau0 = state0[ns]
+        has_a, has_x, has_l = a.size == n, x.size == n, load.size == n
+        for i in range(n):
+            for j in range(ns):
+                S[i, j] = S0[i, j]
+            ti = tau0 + (t[i] - t[0])
+            S[i, ns] = ti
+            F[i] = _effect_force(F0[i], v[i], a[i] if has_a else 0.0, x[i] if has_x else 0.0,
+                                 load[i] if has_l else 1.0, ti, e)
+        return F, S
+
+    return kern
+
+
+def _pack_effects(effects: dict, ctx: Context) -> np.ndarray:
+    e = np.zeros(len(_EFF))
+    e[_E["a_s"]] = e[_E["v_c"]] = e[_E["T"]] = e[_E["L0"]] = 1.0
+    e[_E["x_hi"]] = 1.0
+    for name, p in effects.items():
+        if name == "acceleration":
+            e[_E["use_acc"]] = 1.0
+            for k in ("f_a", "a_s", "v_c"):
+                e[_E[k]] = p[k]
+        elif name == "position":
+            e[_E["use_pos"]] = 1.0
+            e[_E["x_lo"]], e[_E["x_hi"]] = ctx.x_lo, ctx.x_hi
+            for k in range(1, 5):
+                e[_E[f"c_x{k}"]] = p.get(f"c_x{k}", 0.0)
+        elif name == "drift":
+            e[_E["use_drift"]] = 1.0
+            e[_E["k_drift"]] = p["k_drift"]
+            e[_E["t0"]], e[_E["T"]] = ctx.t0, max(ctx.T, 1e-12)
+        elif name == "load":
+            if ctx.L0 is None or not ctx.L0 > 0:
+                raise ValueError("the load effect needs a positive mean load L0 in the context")
+            e[_E["use_load"]] = 1.0
+            e[_E["L0"]], e[_E["gamma_L"]] = ctx.L0, p["gamma_L"]
+        else:
+            raise ValueError(f"{name!r} is not a force effect; choose from {FORCE_EFFECTS}")
+    return e
+
+
+class EffectLaw(FrictionModel):
+    """A friction law with candidate force effects, usable wherever a law is (plants,
+    :class:`plants.base.FrictionComponent`, ``simulate``).
+
+    Parameters
+    ----------
+    base : FrictionModel
+        The base law (its kernel runs unchanged).
+    effects : dict
+        Effect name (:data:`FORCE_EFFECTS`) -> its parameters (the ``Extra`` names of
+        :mod:`diagnosis.effects`, physical units: ``f_a`` [N], ``a_s`` [m/s^2], ``v_c``
+        [m/s], ``c_x1..c_x4`` [-], ``k_drift`` [-], ``gamma_L`` [-]).
+    ctx : Context
+        Scales of the fit record (stroke ``x_lo, x_hi`` [m], start ``t0`` and duration ``T``
+        [s], mean load ``L0`` [N]) that the effect formulas refer to.
+    time0 : float
+        Absolute time at the start of a run [s] (initial value of the time state).
+
+    Notes
+    -----
+    The force is exactly ``Candidate.apply`` of :mod:`diagnosis.effects` applied to the base
+    law's force, sample by sample; the state is the base law's plus the absolute time
+    (``drift`` needs it: a plant's friction stepper only sees step lengths).
+    """
+
+    def __init__(self, base: FrictionModel, effects: dict, ctx: Context, time0: float = 0.0):
+        if isinstance(base, EffectLaw):
+            raise TypeError("EffectLaw wraps a plain friction law, not another EffectLaw")
+        self.base = base
+        self.effects = {k: dict(v) for k, v in effects.items()}
+        self.ctx = ctx
+        self.time0 = float(time0)
+        self.name = base.name + "".join(f"+{k}" for k in self.effects)
+        self.Params = base.Params
+        self.params = base.params
+        self.state_names = tuple(base.state_names) + ("t_abs",)
+        needs = set(base.extra_inputs)
+        if "acceleration" in self.effects:
+            needs.add("a")
+        if "position" in self.effects:
+            needs.add("x")
+        if "load" in self.effects:
+            needs.add("load")
+        self.extra_inputs = tuple(n for n in ("a", "load", "x") if n in needs)
+        self._e = _pack_effects(self.effects, ctx)
+        self.theta = np.concatenate([np.asarray(base.theta, float), self._e])
+        self._kernel = _effect_kernel(type(base)._kernel, int(base.theta.size),
+                                      len(base.state_names))
+
+    def __repr__(self) -> str:
+        return f"EffectLaw({self.base!r}, {self.effects!r})"
+
+    def initial_state(self) -> np.ndarray:
+        return np.concatenate([self.base.initial_state(), [self.time0]])
+
+    def with_time0(self, time0: float) -> "EffectLaw":
+        return EffectLaw(self.base, self.effects, self.ctx, time0)
+
+    def with_values(self, **values) -> "EffectLaw":
+        return EffectLaw(self.base.with_values(**values), self.effects, self.ctx, self.time0)
+
+    def _split(self, inputs):
+        return {k: v for k, v in inputs.items() if k in self.base.extra_inputs}
+
+    def force(self, state, v, **inputs) -> float:
+        ns = len(self.base.state_names)
+        F = self.base.force(np.asarray(state[:ns], float), v, **self._split(inputs))
+        ld = inputs.get("load")
+        return float(_effect_force(float(F), float(v), float(inputs.get("a", 0.0) or 0.0),
+                                   float(inputs.get("x", 0.0) or 0.0),
+                                   1.0 if ld is None else float(ld), float(state[ns]), self._e))
+
+    def derivatives(self, state, v, **inputs) -> np.ndarray:
+        ns = len(self.base.state_names)
+        ds = self.base.derivatives(np.asarray(state[:ns], float), v, **self._split(inputs))
+        return np.concatenate([np.atleast_1d(ds), [1.0]])
+
+    def steady_state(self, v, **inputs) -> np.ndarray:
+        raise NotImplementedError("EffectLaw has no steady state of its own (the effects "
+                                  "depend on acceleration, position or time)")
+
+    def z_max(self) -> float:
+        zm = getattr(self.base, "z_max", None)
+        return zm() if zm else 1e-5
+
+
+# -- simulation engines ---------------------------------------------------------------------
+def _reference_output(plant) -> str | None:
+    names = plant.all_output_names
+    return next((r for r in REFERENCE_OUTPUTS if r in names), None)
+
+
+def _options_for(plant, record_options: dict) -> dict:
+    """Experiment options of one run; a friction feedforward keeps the nominal law the real
+    controller uses (not the candidate being tested)."""
+    opts = dict(record_options)
+    if "compensator" in plant.options and opts.get("compensation",
+                                                  plant.opts.get("compensation", False)):
+        if opts.get("compensator", plant.opts.get("compensator")) is None:
+            opts["compensator"] = plant.friction if plant.friction is not None \
+                else plant.default_friction()
+    return opts
+
+
+class _PlantEngine:
+    """In-process plant simulation (``Plant.simulate(method="fast")``)."""
+    name = "plant"
+
+    def __init__(self, plant):
+        self.plant = plant
+
+    def run(self, law, plant_params: dict, options: dict, stop: float, signals):
+        p = self.plant.with_params(**plant_params) if plant_params else self.plant._copy()
+        p.friction = law
+        res = p.simulate(stop, method="fast", **_options_for(self.plant, options))
+        return res["time"], {s: np.asarray(res[s], float) for s in signals}
+
+
+class _FMUEngine:
+    """Plant FMU (external friction) + friction-law FMU through :class:`fmus.master.Master`."""
+    name = "fmu"
+
+    def __init__(self, plant, fmu_dir=None, step: float | None = None):
+        from fmus.plant_fmus import coupling_step
+        self.plant = plant
+        self.fmu_dir = fmu_dir
+        self.step = float(step) if step else coupling_step(type(plant)) / 4.0
+        self.masters = {}
+
+    def _master(self, law_name, signals):
+        import os
+        from fmus.master import Master
+        from fmus.plant_fmus import plant_connections
+        key = (law_name, tuple(signals))
+        if key in self.masters:
+            return self.masters[key]
+        import friction
+        fmu_dir = self.fmu_dir
+        if fmu_dir is None or not os.path.isfile(os.path.join(fmu_dir, f"{law_name}.fmu")):
+            from fmus.testing import built_fmus
+            fmu_dir = self.fmu_dir = str(built_fmus(tuple(sorted({self.plant.name, law_name,
+                                                                  "lugre"}))))
+        cls = type(self.plant)
+        fmus = {"plant": os.path.join(fmu_dir, f"{cls.name}.fmu"),
+                "friction": os.path.join(fmu_dir, f"{law_name}.fmu")}
+        m = Master(fmus, plant_connections(cls, friction.MODELS[law_name]),
+                   record=[f"plant.{s}" for s in signals])
+        self.masters[key] = m
+        return m
+
+    def run(self, law, plant_params: dict, options: dict, stop: float, signals):
+        if isinstance(law, EffectLaw):
+            raise NotImplementedError(
+                f"engine='fmu': the effects {sorted(law.effects)} are not parameters of the "
+                f"{law.base.name} friction FMU (they live in EffectLaw inside the plant); use "
+                f"engine='plant' for them")
+        bad = {k: type(v).__name__ for k, v in options.items()
+               if v is not None and not isinstance(v, (bool, int, float, str))}
+        if bad:
+            raise NotImplementedError(f"engine='fmu': experiment option(s) {bad} are not "
+                                      f"scalars; the plant FMU exposes only scalar options")
+        m = self._master(law.name, signals)
+        pvals = {n: getattr(self.plant.params, n) for n in self.plant.parameter_names}
+        pvals.update(plant_params)
+        opts = {k: v for k, v in options.items() if v is not None}
+        lvals = {f.name: getattr(law.params, f.name) for f in dataclasses.fields(law.params)
+                 if getattr(law.params, f.name) is not None}
+        m.parameters = {"plant": {**pvals, **opts}, "friction": lvals}
+        n = int(math.ceil(stop / self.step - 1e-9))
+        res = m.simulate(start_time=0.0, stop_time=n * self.step, step_size=self.step)
+        return res["time"], {s: np.asarray(res[f"plant.{s}"], float) for s in signals}
+
+    def close(self):
+        for m in self.masters.values():
+            m.close()
+        self.masters.clear()
+
+
+def _make_engine(engine, plant, fmu_dir=None, fmu_step=None):
+    if engine == "plant":
+        return _PlantEngine(plant)
+    if engine == "fmu":
+        return _FMUEngine(plant, fmu_dir, fmu_step)
+    raise ValueError(f"engine must be 'plant' or 'fmu', got {engine!r}")
+
+
+def simulate_record(plant, law: FrictionModel, record: TrajectoryRecord, *,
+                    engine: str = "plant", plant_params: dict | None = None,
+                    delay: float = 0.0, fmu_dir=None, fmu_step: float | None = None
+                    ) -> np.ndarray:
+    """Simulated output of ``plant`` with friction ``law`` at the record's samples [m].
+
+    Parameters
+    ----------
+    plant : Plant
+    law : FrictionModel
+        Friction law inside the plant (an :class:`EffectLaw` for force effects).
+    record : TrajectoryRecord
+    engine : {"plant", "fmu"}
+        In-process plant or plant FMU + friction FMU (see the module docstring).
+    plant_params : dict, optional
+        Plant parameters changed for this run (e.g. the mass).
+    delay : float
+        Measured channel lagging the simulation by ``delay`` [s].
+    """
+    eng = _make_engine(engine, plant, fmu_dir, fmu_step)
+    try:
+        return TrajectoryModel(plant, eng)._output(law, plant_params or {}, record,
+                                                   record.t[-1], delay)[0]
+    finally:
+        if hasattr(eng, "close"):
+            eng.close()
+
+
+# -- model setups: base + candidate effects ---------------------------------------------------
+@dataclass
+class _P:
+    """One free coordinate: where it goes, its box and scaling."""
+    name: str
+    target: str      # law | extra | mass | delay
+    lo: float
+    hi: float
+    log: bool
+    x0: float
+    effect: str = ""
+
+    def to_phys(self, u):
+        if self.log:
+            return float(math.exp(math.log(self.lo) + u * (math.log(self.hi) - math.log(self.lo))))
+        return float(self.lo + u * (self.hi - self.lo))
+
+    def to_unit(self, x):
+        if self.log:
+            return (math.log(x) - math.log(self.lo)) / (math.log(self.hi) - math.log(self.lo))
+        return (x - self.lo) / (self.hi - self.lo)
+
+
+def _law_coordinate(law, name, ctx, spread):
+    info = {i.name: i for i in law.Params.info()}[name]
+    x0 = getattr(law.params, name)
+    if x0 is None:
+        x0 = getattr(law.params, name[:-4]) if name.endswith("_neg") else info.default
+    x0 = float(x0)
+    if name == "b" or info.lower < 0 or x0 <= 0:
+        half = max(abs(x0), 0.5 * ctx.sF)
+        lo, hi, log = x0 - half, x0 + half, False
+        if math.isfinite(info.lower):
+            lo = max(lo, info.lower + (1e-9 if info.lower_open else 0.0))
+        if math.isfinite(info.upper):
+            hi = min(hi, info.upper)
+    else:
+        lo, hi, log = x0 / spread, x0 * spread, True
+        if math.isfinite(info.lower):
+            lo = max(lo, info.lower * (1 + 1e-9) + (1e-300 if info.lower_open else 0.0))
+        if math.isfinite(info.upper):
+            hi = min(hi, info.upper)
+    if not hi > lo:
+        hi = lo * (1 + 1e-6) + 1e-12
+    return _P(name, "law", lo, hi, log, min(max(x0, lo), hi))
+
+
+@dataclass
+class _Setup:
+    """A model configuration: law (with its free names), force effects, mass, delay."""
+    law: FrictionModel
+    coords: list
+    effects: tuple = ()
+    mass_name: str | None = None
+    mass0: float = 0.0
+
+    def unit0(self) -> np.ndarray:
+        return np.array([np.clip(c.to_unit(c.x0), 0.0, 1.0) for c in self.coords])
+
+    def values(self, u) -> dict:
+        return {c.name: c.to_phys(ui) for c, ui in zip(self.coords, u)}
+
+    def build(self, u, ctx):
+        vals = self.values(u)
+        law_vals = {c.name: vals[c.name] for c in self.coords if c.target == "law"}
+        law = self.law.with_values(**law_vals) if law_vals else self.law
+        force = {}
+        for c in self.coords:
+            if c.target == "extra":
+                force.setdefault(c.effect, {})[c.name] = vals[c.name]
+        if force:
+            law = EffectLaw(law, force, ctx)
+        pp = {}
+        if self.mass_name is not None:
+            pp[self.mass_name] = self.mass0 + vals.get("dm", 0.0)
+        return law, pp, vals.get("delay", 0.0), vals
+
+    def describe(self, u, ctx) -> dict:
+        law, pp, delay, vals = self.build(u, ctx)
+        base = law.base if isinstance(law, EffectLaw) else law
+        out = {"law": base.name, "effects": list(self.effects),
+               "params": {c.name: vals[c.name] for c in self.coords},
+               "shape": getattr(base.params, "shape", None)}
+        if pp:
+            out["plant_params"] = pp
+        return out
+
+
+class TrajectoryModel:
+    """Simulates configurations of one plant on records (engine, counters, caches)."""
+
+    def __init__(self, plant, engine, progress=None):
+        self.plant = plant
+        self.engine = engine
+        self.sims = 0
+        self.sim_seconds = 0.0
+        self.progress = progress
+        self.signal_default = plant.main_output
+        self.ref_name = _reference_output(plant)
+
+    def _output(self, law, plant_params, record, stop, delay=0.0):
+        sig = record.signal or self.signal_default
+        signals = [sig] + ([self.ref_name] if self.ref_name else [])
+        if isinstance(law, EffectLaw) and record.t_start != law.time0:
+            law = law.with_time0(record.t_start)
+        t0 = time.perf_counter()
+        ts, out = self.engine.run(law, plant_params, record.options, stop, signals)
+        self.sim_seconds += time.perf_counter() - t0
+        self.sims += 1
+        if self.progress is not None:
+            self.progress(1, f"{law.name} on {record.name}")
+        y = out[sig]
+        if not np.all(np.isfinite(y)):
+            raise FloatingPointError(f"simulation of {record.name} with {law.name} diverged")
+        # a lagging measurement channel sees the simulated output delay seconds late
+        y_at = np.interp(record.t - delay, ts, y)
+        ref = np.interp(record.t, ts, out[self.ref_name]) if self.ref_name else None
+        return y_at, ref
+
+
+@dataclass
+class _Case:
+    """A record with the window that is scored and the stop time that is simulated."""
+    record: TrajectoryRecord
+    mask: np.ndarray
+    stop: float
+    sd: float = 1.0
+    ref: np.ndarray | None = None
+
+
+class _Budget(Exception):
+    pass
+
+
+def _solve(fun, u0, *, max_sims: int, h: float = 0.03, refresh: int = 3):
+    """Bounded least squares in the unit cube: scipy's TRF with a Jacobian from forward
+    differences, refreshed every ``refresh`` iterations and Broyden-updated in between (one
+    plant simulation per iteration instead of one per parameter). Stops after ``max_sims``
+    evaluations of ``fun`` and returns the best point seen: ``(u, r, n_evals)``."""
+    u0 = np.asarray(u0, float)
+    best = {"c": math.inf, "u": u0.copy(), "r": None}
+    count = [0]
+    memo = {}
+
+    def f(u):
+        key = u.tobytes()
+        if key in memo:
+            return memo[key]
+        if count[0] >= max_sims:
+            raise _Budget
+        count[0] += 1
+        r = fun(u)
+        c = float(r @ r)
+        if c < best["c"]:
+            best.update(c=c, u=u.copy(), r=r.copy())
+        if len(memo) > 64:
+            memo.clear()
+        memo[key] = r
+        return r
+
+    state = {"J": None, "u": None, "r": None, "calls": 0}
+
+    def jac(u):
+        r = f(u)
+        st = state
+        if st["J"] is None or st["calls"] % refresh == 0:
+            J = np.empty((r.size, u.size))
+            for j in range(u.size):
+                du = h if u[j] + h <= 1.0 else -h
+                up = u.copy()
+                up[j] += du
+                J[:, j] = (f(up) - r) / du
+        else:
+            J = st["J"]
+            s = u - st["u"]
+            ss = float(s @ s)
+            if ss > 0:
+                J = J + np.outer((r - st["r"]) - J @ s, s) / ss
+        st.update(J=J, u=u.copy(), r=r, calls=st["calls"] + 1)
+        return J
+
+    if u0.size == 0:
+        f(u0)
+        return best["u"], best["r"], count[0]
+    try:
+        least_squares(f, u0, jac=jac, bounds=(0.0, 1.0), method="trf", x_scale=1.0,
+                      xtol=1e-4, ftol=1e-4, gtol=1e-8, max_nfev=10 * max_sims)
+    except _Budget:
+        pass
+    if best["r"] is None:  # budget smaller than one evaluation
+        best["r"] = fun(u0)
+    return best["u"], best["r"], count[0]
+
+
+# -- the diagnosis ----------------------------------------------------------------------------
+def _start_law(model, plant) -> FrictionModel:
+    """The base law, warm-started from the plant's own friction where the names agree."""
+    if isinstance(model, FrictionModel):
+        return model
+    own = plant.friction if plant.friction is not None else plant.default_friction()
+    if own.name == model:
+        return own
+    law = make_model(model)
+    shared = {}
+    fields_ = {f.name for f in dataclasses.fields(law.params)}
+    for f in dataclasses.fields(own.params):
+        if f.name in fields_ and getattr(own.params, f.name) is not None:
+            shared[f.name] = getattr(own.params, f.name)
+    try:
+        return law.with_values(**shared)
+    except (ValueError, TypeError):
+        return law
+
+
+def _pseudo_dataset(ts, out, name) -> Dataset:
+    """Kinematics of a simulated run as a :class:`Dataset` (candidate boxes, regions)."""
+    t = ts
+    x, v = out["x"], out["v"]
+    a = out["a"] if "a" in out else np.gradient(v, t)
+    F = out["F"] if "F" in out else np.zeros_like(t)
+    load = next((out[k] for k in ("load", "F_sigma", "F_N") if k in out), None)
+    return Dataset(t=t, x=x, v=v, a=a, F=F, load=load, name=name)
+
+
+def _kinematics(plant, law, record):
+    """x, v, a, F (and load) of the base model on a record, on the record's samples."""
+    p = plant._copy()
+    p.friction = law
+    res = p.simulate(record.t[-1], method="fast", **_options_for(plant, record.options))
+    names = res.dtype.names
+    keys = [k for k in ("x", "v", "a", "F", "load", "F_sigma", "F_N") if k in names]
+    out = {k: np.interp(record.t, res["time"], res[k]) for k in keys}
+    return _pseudo_dataset(record.t, out, record.name)
+
+
+def diagnose_trajectory(measured, plant, model="lugre", validation=None, candidates=None, *,
+                        engine: str = "plant", fit_names=None, fit_fraction: float = 0.7,
+                        max_sims: int = 24, max_sims_base: int = 60, spread: float = 3.0,
+                        greedy: bool = True, fmu_dir=None, fmu_step: float | None = None,
+                        progress=None) -> DiagnosisReport:
+    """Locate and name the sim-to-real gap of a plant model from measured trajectories.
+
+    Parameters
+    ----------
+    measured : TrajectoryRecord
+        The fit record (measured position [m] and the experiment options behind it).
+    plant : Plant or str
+        The plant model (instance, or registry name of :data:`plants.PLANTS`); its own
+        friction law is replaced by the base law and the candidates. With a friction
+        feedforward (XML-350 ``compensation=True``) the controller keeps the plant's own
+        law as its compensator, as the real controller does.
+    model : str or FrictionModel
+        Base law (registry name: started from the plant's own law when the names agree, or
+        from the plant law's shared values; or an instance whose values start the fit).
+    validation : TrajectoryRecord or list, optional
+        Held-out records (another amplitude, frequency or move). Default: the last
+        ``1 - fit_fraction`` of ``measured`` (the model runs through the whole record).
+    candidates : list of str, optional
+        Effect names (default all of :data:`diagnosis.effects.EFFECT_NAMES`). With the FMU
+        engine, a candidate it cannot express raises ``NotImplementedError`` when named
+        here, and is listed under ``skipped`` when the default list is used.
+    engine : {"plant", "fmu"}
+        In-process plant simulation (default, fast) or plant FMU + friction FMU through
+        :class:`fmus.master.Master` (same equations; see the module docstring).
+    fit_names : list of str, optional
+        Base parameters re-fitted on the trajectory. Default: those of
+        :data:`diagnosis.core.BASE_NAMES` whose +10 % change moves the fit record's
+        residual by at least a fifth of the most visible one (at most four).
+    max_sims : int
+        Plant simulations per candidate fit (the budget that keeps the diagnosis
+        practical); ``max_sims_base`` for the base fit.
+    spread : float
+        Base parameters are searched within ``[x / spread, x * spread]`` of their start.
+    greedy : bool
+        Stack further effects on the best one while each closes a further 3 % of the gap.
+    fmu_dir : path, optional
+        Folder with the built FMUs (engine ``"fmu"``; default: built once into a temporary
+        folder). ``fmu_step`` [s]: communication step (default a quarter of
+        :func:`fmus.plant_fmus.coupling_step`).
+    progress : callable, bool or None
+        ``callable(message)`` for stage lines; ``True``: lines on stderr. Simulation counts
+        go to a :class:`frictionlab.progress.Progress` when progress is on.
+
+    Returns
+    -------
+    DiagnosisReport
+        The contract's ``baseline`` (metric: NRMSE of the tracking error on the position
+        signal), ``where``, ``effects``, ``verdict``, plus ``level: "trajectory"``,
+        ``plant``, ``engine``, ``signal``, ``noise_floor``, ``greedy``, ``where_bands``,
+        ``where_frequency``, ``effect_details``, ``base``, ``skipped``, ``timing``
+        (``seconds``, ``simulations``).
+    """
+    import plants as _plants
+    from frictionlab.progress import Progress, report as _report
+
+    t_start = time.perf_counter()
+    if isinstance(plant, str):
+        plant = _plants.make_plant(plant)
+    if plant.external_friction:
+        raise ValueError("plant must carry its friction law (external_friction=False)")
+    if not isinstance(measured, TrajectoryRecord):
+        raise TypeError(f"measured must be a TrajectoryRecord, got {type(measured).__name__}")
+    if callable(progress):
+        say = progress
+    elif progress:
+        say = _report
+    else:
+        def say(msg):
+            return None
+    counter = Progress(label="diagnose-trajectory", interval=2.0, enabled=bool(progress))
+    explicit = candidates is not None
+    names = list(candidates) if explicit else list(EFFECT_NAMES)
+    unknown = [n for n in names if n not in CANDIDATES]
+    if unknown:
+        raise ValueError(f"unknown candidate effect(s) {unknown}; choose from "
+                         f"{list(EFFECT_NAMES)}")
+    if not 0.2 <= fit_fraction < 1.0:
+        raise ValueError(f"fit_fraction = {fit_fraction!r} is out of bounds: must be in "
+                         f"[0.2, 1)")
+    eng = _make_engine(engine, plant, fmu_dir, fmu_step)
+    tm = TrajectoryModel(plant, eng, counter)
+    law0 = _start_law(model, plant)
+
+    # -- cases: fit window and held-out windows
+    if validation is None:
+        rec = measured
+        t_split = rec.t[0] + fit_fraction * (rec.t[-1] - rec.t[0])
+        fit_case = _Case(rec, rec.t <= t_split, float(rec.t[rec.t <= t_split][-1]))
+        val_cases = [_Case(rec, rec.t > t_split, float(rec.t[-1]))]
+    else:
+        vals = validation if isinstance(validation, (list, tuple)) else [validation]
+        for v in vals:
+            if not isinstance(v, TrajectoryRecord):
+                raise TypeError(f"validation records must be TrajectoryRecord, got "
+                                f"{type(v).__name__}")
+        fit_case = _Case(measured, np.ones(measured.t.size, bool), float(measured.t[-1]))
+        val_cases = [_Case(v, np.ones(v.t.size, bool), float(v.t[-1])) for v in vals]
+
+    # normalisation: std of the measured tracking error (reference from the plant's command)
+    say(f"[diagnose-trajectory] {plant.name}: base {law0.name}, engine {engine}")
+    for c in [fit_case] + val_cases:
+        _, ref = tm._output(law0, {}, c.record, c.stop)
+        c.ref = ref
+        y = c.record.y[c.mask]
+        e = (ref[c.mask] - y) if ref is not None else y
+        c.sd = float(np.std(e)) or 1.0
+
+    fit_data = _kinematics(plant, law0, fit_case.record)
+    sel = fit_case.mask
+    ctx = make_context(Dataset(t=fit_data.t[sel], x=fit_data.x[sel], v=fit_data.v[sel],
+                               a=fit_data.a[sel], F=fit_data.F[sel],
+                               load=None if fit_data.load is None else fit_data.load[sel]))
+    ctx.t0 = float(fit_case.record.t_start + fit_data.t[sel][0])
+
+    def residual(setup, u, case):
+        law, pp, delay, _ = setup.build(u, ctx)
+        y, _ = tm._output(law, pp, case.record, case.stop, delay)
+        r = (case.record.y - y)[case.mask] / case.sd
+        return r
+
+    def score(setup, u) -> tuple[float, list]:
+        rs = []
+        for c in val_cases:
+            law, pp, delay, _ = setup.build(u, ctx)
+            y, _ = tm._output(law, pp, c.record, c.stop, delay)
+            rs.append((c.record.y - y)[c.mask])
+        num = np.concatenate(rs)
+        den = np.concatenate([((c.ref[c.mask] - c.record.y[c.mask]) if c.ref is not None
+                               else c.record.y[c.mask]) for c in val_cases])
+        return float(np.sqrt(np.mean(num ** 2)) / (np.std(den) or 1.0)), rs
+
+    def fit(setup, u0, budget):
+        u, r, n = _solve(lambda u: residual(setup, u, fit_case), u0, max_sims=budget)
+        return u, float(np.sqrt(np.mean(r ** 2))), n
+
+    # -- 1. base fit: the parameters the trajectory sees
+    base_all = BASE_NAMES.get(law0.name) or [n for n in law0.free_names()
+                                             if not n.endswith("_neg") and n not in ("alpha", "b")]
+    if fit_names is None:
+        say("[diagnose-trajectory] screening base parameters")
+        full = _Setup(law0, [_law_coordinate(law0, n, ctx, spread) for n in base_all])
+        u_ref = full.unit0()
+        r0 = residual(full, u_ref, fit_case)
+        sens = {}
+        for j, c in enumerate(full.coords):
+            u = u_ref.copy()
+            u[j] = np.clip(c.to_unit(c.x0 * 1.1) if c.log else c.to_unit(c.x0 + 0.1 * (c.hi - c.lo)),
+                           0.0, 1.0)
+            sens[c.name] = float(np.sqrt(np.mean((residual(full, u, fit_case) - r0) ** 2)))
+        top = max(sens.values()) or 1.0
+        fit_names = sorted([n for n in base_all if sens[n] >= 0.2 * top],
+                           key=lambda n: -sens[n])[:4]
+    else:
+        sens = None
+        bad = [n for n in fit_names if n not in law0.Params.numeric_names()]
+        if bad:
+            raise ValueError(f"fit_names {bad} are not parameters of {law0.name}")
+    fit_names = list(fit_names)
+    say(f"[diagnose-trajectory] base fit of {fit_names}")
+    base_setup = _Setup(law0, [_law_coordinate(law0, n, ctx, spread) for n in fit_names])
+    u_base, base_fit, _ = fit(base_setup, base_setup.unit0(), max_sims_base)
+    base_law, _, _, base_vals = base_setup.build(u_base, ctx)
+    before, r_val = score(base_setup, u_base)
+
+    # -- 2. where (held-out residual by regime, band, frequency)
+    val_data = [_kinematics(plant, base_law, c.record) for c in val_cases]
+    parts = []
+    for c, d, r in zip(val_cases, val_data, r_val):
+        m = c.mask
+        e = (c.ref[m] - c.record.y[m]) if c.ref is not None else c.record.y[m]
+        parts.append((Dataset(t=d.t[m], x=d.x[m], v=d.v[m], a=d.a[m], F=e, name=d.name), r))
+    if len(parts) == 1:
+        val_cat, r_cat = parts[0]
+    else:
+        cat = lambda k: np.concatenate([getattr(p[0], k) for p in parts])
+        n_all = sum(p[0].t.size for p in parts)
+        val_cat = Dataset(t=np.arange(n_all) * measured.dt, x=cat("x"), v=cat("v"), a=cat("a"), F=cat("F"), name="held-out")
+        r_cat = np.concatenate([p[1] for p in parts])
+    floor = float(np.mean([noise_floor(d, r) * np.std(d.F) for d, r in parts])
+                  / (np.std(np.concatenate([d.F for d, _ in parts])) or 1.0))
+    where = regime_split(val_cat, r_cat)
+    bands = band_splits(val_cat, r_cat)
+    freq = frequency_split(parts[0][0], parts[0][1])
+
+    # -- 3. which: each candidate re-identified on the fit record, scored held out
+    mass_name = next((n for n in MASS_PARAMETERS if n in plant.parameter_names), None)
+
+    def setups_for(effs, law, base_coords_vals):
+        """Model setups (variants) with the effects ``effs`` on top of ``law``."""
+        variants = [(law, list(fit_names))]
+        for name in effs:
+            cand = CANDIDATES[name]
+            if cand.stage == "modify_law":
+                new = []
+                for lw, nm in variants:
+                    for lv, nv in cand.modify_law(lw, nm, ctx):
+                        if getattr(lv.params, "shape", None) == "lorentzian" and "alpha" in nv:
+                            lv = lv.with_values(shape="gaussian")
+                        new.append((lv, [n for n in nv if n in lv.Params.numeric_names()]))
+                variants = new
+        out = []
+        for lw, nm in variants:
+            coords = [_law_coordinate(lw, n, ctx, spread) for n in dict.fromkeys(nm)]
+            extra_mass = None
+            for name in effs:
+                if name == "asymmetry":
+                    if not all(hasattr(lw.params, n) for n in ASYMMETRY_NAMES):
+                        raise _NotApplicable(f"{lw.name} has no direction twins")
+                    for n in ASYMMETRY_NAMES:
+                        if all(c.name != n for c in coords):
+                            coords.append(_law_coordinate(lw, n, ctx, spread))
+                elif name in FORCE_EFFECTS:
+                    for ex in CANDIDATES[name].extras(ctx):
+                        coords.append(_P(ex.name, "extra", ex.lo, ex.hi, False, ex.x0, name))
+                elif name == "inertia":
+                    if mass_name is None:
+                        raise _NotApplicable(f"plant {plant.name} has no mass parameter "
+                                             f"{MASS_PARAMETERS}")
+                    M0 = float(getattr(plant.params, mass_name))
+                    coords.append(_P("dm", "mass", -0.5 * M0, 0.5 * M0, False, 0.0, name))
+                    extra_mass = (mass_name, M0)
+                elif name == "delay":
+                    d = 25 * min(fit_case.record.dt, *(c.record.dt for c in val_cases))
+                    coords.append(_P("delay", "delay", -d, d, False, 0.0, name))
+            for c in coords:  # warm start from the fitted base (and earlier effects)
+                if c.name in base_coords_vals:
+                    c.x0 = float(np.clip(base_coords_vals[c.name], c.lo, c.hi))
+            s = _Setup(lw, coords, tuple(effs))
+            if extra_mass:
+                s.mass_name, s.mass0 = extra_mass
+            out.append(s)
+        return out
+
+    def applicable(name) -> tuple[bool, str]:
+        cand = CANDIDATES[name]
+        ok, why = cand.applicable(base_law, fit_data, ctx)
+        if not ok:
+            return ok, why
+        if name == "load" and fit_data.load is None:
+            return False, f"plant {plant.name} gives the friction no load"
+        if name == "position" and not ctx.x_hi - ctx.x_lo > 0:
+            return False, "the fit record does not move"
+        if engine == "fmu" and name not in FMU_EFFECTS:
+            return False, ("engine='fmu': the friction FMU has no parameters for this effect "
+                           "(it needs EffectLaw inside the plant; use engine='plant')")
+        return True, ""
+
+    def fit_effects(effs, law, start_vals, budget):
+        best = None
+        for s in setups_for(effs, law, start_vals):
+            u0 = s.unit0()
+            if "delay" in effs:  # a time shift is non-convex: coarse grid first
+                j = next(i for i, c in enumerate(s.coords) if c.name == "delay")
+                costs = []
+                grid = np.linspace(0.0, 1.0, 11)
+                for g in grid:
+                    u = u0.copy()
+                    u[j] = g
+                    r = residual(s, u, fit_case)
+                    costs.append(float(r @ r))
+                u0[j] = grid[int(np.argmin(costs))]
+            u, cost, _ = fit(s, u0, budget)
+            if best is None or cost < best[2]:
+                best = (s, u, cost)
+        return best
+
+    effects, skipped, fitted = [], {}, {}
+    base_start = {c.name: v for c, v in zip(base_setup.coords,
+                                            [c.to_phys(x) for c, x in zip(base_setup.coords,
+                                                                           u_base)])}
+    for k, name in enumerate(names, 1):
+        ok, why = applicable(name)
+        if not ok:
+            if explicit and engine == "fmu" and why.startswith("engine='fmu'"):
+                raise NotImplementedError(f"candidate {name!r}: {why}")
+            skipped[name] = why
+            continue
+        say(f"[diagnose-trajectory] candidate {k}/{len(names)}: {name}")
+        try:
+            s, u, cost = fit_effects([name], base_law, base_start, max_sims)
+        except _NotApplicable as exc:
+            skipped[name] = str(exc)
+            continue
+        after, _ = score(s, u)
+        fitted[name] = (s, u)
+        n_par = sum(1 for c in s.coords if c.name not in fit_names)
+        effects.append({"name": name, "validation_before": before, "validation_after": after,
+                        "gap_closed": (before - after) / before if before > 0 else 0.0,
+                        "excess_closed": (before - after) / max(before - floor, 1e-12),
+                        "n_params": n_par, "fit_before": base_fit, "fit_after": cost,
+                        "fitted": s.describe(u, ctx)})
+    effects.sort(key=lambda e: -e["gap_closed"])
+    if effects:  # near-ties go to the simpler effect
+        top = effects[0]["excess_closed"]
+        tied = [e for e in effects if e["excess_closed"] >= top - TIE]
+        simplest = min(tied, key=lambda e: e["n_params"])
+        effects.remove(simplest)
+        effects.insert(0, simplest)
+
+    # -- 4. greedy stacking
+    sequence = []
+    final_val = before
+    if greedy and effects and effects[0]["excess_closed"] >= MIN_EXCESS_CLOSED:
+        used = [effects[0]["name"]]
+        cur_val = effects[0]["validation_after"]
+        s_cur, u_cur = fitted[used[0]]
+        sequence.append({"add": used[0], "validation": cur_val})
+        for e in effects[1:3]:
+            if e["gap_closed"] < 0.05:
+                continue
+            if CANDIDATES[e["name"]].stage == "modify_law" and any(
+                    CANDIDATES[n].stage == "modify_law" for n in used):
+                continue
+            say(f"[diagnose-trajectory] greedy: {' + '.join(used)} + {e['name']}")
+            start = s_cur.values(u_cur)
+            try:
+                s2, u2, _ = fit_effects(used + [e["name"]], s_cur.law, start, max_sims)
+            except _NotApplicable:
+                continue
+            v2, _ = score(s2, u2)
+            if v2 < cur_val * 0.97:  # keep only effects that close a further 3 %
+                used.append(e["name"])
+                s_cur, u_cur, cur_val = s2, u2, v2
+                sequence.append({"add": e["name"], "validation": v2})
+        final_val = cur_val
+
+    # -- 5. verdict (the force level's rules)
+    noise_like = before <= NOISE_RATIO * floor or before < 1e-9
+    if noise_like:
+        verdict = {"cause": "none", "gap_closed": 0.0,
+                   "reason": f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x "
+                             f"the noise floor {floor:.3g}"}
+    elif not effects or effects[0]["excess_closed"] < MIN_EXCESS_CLOSED:
+        verdict = {"cause": "unexplained",
+                   "gap_closed": effects[0]["gap_closed"] if effects else 0.0,
+                   "reason": "no candidate closes half of the held-out gap above the noise "
+                             "floor"}
+    else:
+        top = effects[0]
+        verdict = {"cause": top["name"], "gap_closed": top["gap_closed"],
+                   "excess_closed": top["excess_closed"]}
+        if len(effects) > 1 and effects[1]["excess_closed"] >= top["excess_closed"] - 0.1:
+            verdict["runner_up"] = effects[1]["name"]
+    gap = max(before - floor, 1e-12)
+    if hasattr(eng, "close"):
+        eng.close()
+    report = DiagnosisReport(
+        level="trajectory",
+        baseline={"model": law0.name, "metric": "nrmse", "fit": base_fit, "validation": before,
+                  "signal": fit_case.record.signal or plant.main_output,
+                  "normalised_by": ("std of the measured tracking error "
+                                    f"({tm.ref_name} - {plant.main_output})"
+                                    if tm.ref_name else "std of the measured signal")},
+        where=where,
+        effects=[{k: e[k] for k in ("name", "validation_before", "validation_after",
+                                     "gap_closed", "excess_closed")} for e in effects],
+        verdict=verdict,
+        plant=plant.name,
+        engine=engine,
+        where_bands=bands[:12],
+        where_frequency=freq,
+        greedy={"sequence": sequence, "validation_final": final_val,
+                "unexplained_nrmse": max(final_val - floor, 0.0),
+                "unexplained_share_of_gap": max(final_val - floor, 0.0) / gap},
+        noise_floor=floor,
+        effect_details={e["name"]: e["fitted"] for e in effects},
+        base={"law": base_law.name, "fit_names": fit_names, "params": base_vals,
+              "sensitivity": sens},
+        skipped=skipped,
+        timing={"seconds": time.perf_counter() - t_start, "simulations": tm.sims,
+                "simulation_seconds": tm.sim_seconds,
+                "fit_samples": int(fit_case.mask.sum()),
+                "validation_samples": int(sum(c.mask.sum() for c in val_cases))},
+    )
+    report._models = {"base": (base_setup, u_base), **fitted}  # for plots; not serialised
+    report._data = {"fit": fit_case, "validation": val_cases, "ctx": ctx, "model": tm}
+    return report
+
+
+class _NotApplicable(Exception):
+    pass

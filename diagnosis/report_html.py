@@ -18,6 +18,38 @@ def _png(fig) -> str:
     return base64.b64encode(buf.getvalue()).decode()
 
 
+def _binned_median(s, r, bins: int = 25):
+    """Median of the residual in equal-count bins of a signal: the structure a scatter of
+    thousands of points hides."""
+    s = np.asarray(s, float)
+    order = np.argsort(s, kind="stable")
+    chunks = [c for c in np.array_split(order, bins) if c.size]
+    return (np.array([np.median(s[c]) for c in chunks]),
+            np.array([np.median(r[c]) for c in chunks]))
+
+
+def _table(header, rows) -> str:
+    head = "".join(f"<th>{html.escape(h)}</th>" for h in header)
+    body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in rows)
+    return f"<table><tr>{head}</tr>{body}</table>"
+
+
+def _effect_parameters(report, name) -> list[tuple[str, str, str]]:
+    """(parameter, fitted value, unit) of a candidate's own parameters."""
+    from .effects import CANDIDATES
+    comp = report._models.get(name)
+    if comp is None or name not in CANDIDATES:
+        return []
+    units = {e.name: e.unit for e in CANDIDATES[name].extras(comp.ctx)}
+    rows = [(k, f"{v:.4g}", units.get(k, "")) for k, v in comp.extras.items()]
+    base = set(report.get("base", {}).get("params", {}))
+    law_units = {i.name: i.unit for i in comp.law.params.info()}
+    for n in comp.base_names:  # parameters the candidate adds to the law itself
+        if n not in base:
+            rows.append((n, f"{float(getattr(comp.law.params, n)):.4g}", law_units.get(n, "")))
+    return rows
+
+
 def figures(report) -> dict[str, str]:
     """Base64 PNGs: residual vs signals, loops before/after, ranked candidates."""
     import matplotlib
@@ -41,8 +73,11 @@ def figures(report) -> dict[str, str]:
     fig, axes = plt.subplots(1, len(sig), figsize=(3.6 * len(sig), 3.2), sharey=True)
     for ax, (lab, s) in zip(axes, sig):
         ax.plot(s, r, ".", ms=1.5, alpha=0.4)
+        c, m = _binned_median(s, r)
+        ax.plot(c, m, "-", color="C3", lw=1.5, label="binned median")
         ax.set_xlabel(lab)
         ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=8)
     axes[0].set_ylabel("held-out residual F_meas - F_model [N]")
     fig.suptitle(f"residual of the base {report['baseline']['model']} on held-out data")
     fig.tight_layout()
@@ -91,6 +126,39 @@ def write_html(report, path) -> None:
     where = "".join(f"<tr><td>{html.escape(w['label'])}</td><td>{100 * w['share']:.1f} %</td>"
                     f"<td>{w['nrmse']:.3g}</td></tr>" for w in report["where"])
     img = lambda k: f'<img src="data:image/png;base64,{figs[k]}" style="max-width:100%">'
+    esc = lambda x: html.escape(str(x))
+    bands = _table(["band", "share of residual energy", "local NRMSE", "share of samples"],
+                   [(esc(w["label"]), f"{100 * w['share']:.1f} %", f"{w['nrmse']:.3g}",
+                     f"{100 * w.get('fraction_of_samples', float('nan')):.0f} %")
+                    for w in report.get("where_bands", [])[:8]])
+    freq = _table(["residual frequency band", "share of residual energy"],
+                  [(esc(w["label"]), f"{100 * w['share']:.1f} %")
+                   for w in report.get("where_frequency", [])])
+    named = v["cause"] if v["cause"] in report._models else (
+        report["effects"][0]["name"] if report["effects"] else None)
+    params = _effect_parameters(report, named) if named else []
+    params_html = (f"<h3>Fitted parameters of <code>{esc(named)}</code></h3>"
+                   + _table(["parameter", "value", "unit"],
+                            [(esc(a), b_, esc(c)) for a, b_, c in params])) if params else ""
+    g = report.get("greedy", {})
+    seq = _table(["step", "effect added", "held-out NRMSE"],
+                 [("0", "(base)", f"{b['validation']:.4g}")]
+                 + [(str(k), esc(e["add"]), f"{e['validation']:.4g}")
+                    for k, e in enumerate(g.get("sequence", []), 1)])
+    left = (f"<p>Left unexplained above the noise floor: NRMSE "
+            f"{g.get('unexplained_nrmse', float('nan')):.3g} "
+            f"({100 * g.get('unexplained_share_of_gap', float('nan')):.0f} % of the gap).</p>"
+            if g else "")
+    shift = "".join(
+        f"<li>held-out <code>{esc(k)}</code> {e['validation_range'][0]:.4g} to "
+        f"{e['validation_range'][1]:.4g} {esc(e['unit'])}, fit data {e['fit_range'][0]:.4g} "
+        f"to {e['fit_range'][1]:.4g} {esc(e['unit'])} "
+        f"({100 * e['outside_share']:.0f} % of the held-out samples outside)</li>"
+        for k, e in report.get("extrapolation", {}).items())
+    shift = f"<p>Extrapolation:</p><ul>{shift}</ul>" if shift else ""
+    skipped = "".join(f"<li><code>{esc(k)}</code>: {esc(w)}</li>"
+                      for k, w in report.get("skipped", {}).items())
+    skipped = f"<p>Candidates not tried:</p><ul>{skipped}</ul>" if skipped else ""
     doc = f"""<!doctype html><html><head><meta charset="utf-8">
 <title>frictionlab diagnosis</title>
 <style>body{{font-family:sans-serif;max-width:1200px;margin:2em auto}}
@@ -100,10 +168,15 @@ table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:3px 8px}}<
 {100 * v['gap_closed']:.1f} %). {html.escape(v.get('reason', ''))}</p>
 <p>Base model <code>{html.escape(b['model'])}</code>: fit NRMSE {b['fit']:.4g}, held-out NRMSE
 {b['validation']:.4g}, estimated noise floor {report['noise_floor']:.3g}.</p>
+{shift}
 <h2>Where the gap lies</h2><table><tr><th>region</th><th>share of residual energy</th>
 <th>local NRMSE</th></tr>{where}</table>{img('residuals')}
-<h2>Which effect</h2><table><tr><th>effect</th><th>held-out before</th><th>after</th>
-<th>gap closed</th></tr>{rows}</table>{img('candidates')}
+<h3>Bands of velocity, acceleration, position, load and time</h3>{bands}
+<h3>Frequency</h3>{freq}
+<h2>Which effect</h2><p>Each candidate is re-identified jointly with the base law on the
+fit data and scored on the held-out data.</p><table><tr><th>effect</th><th>held-out before</th><th>after</th>
+<th>gap closed</th></tr>{rows}</table>{img('candidates')}{params_html}{skipped}
+<h2>How far it shrinks</h2>{seq}{left}
 <h2>Friction before and after</h2>{img('loops')}
 </body></html>"""
     with open(path, "w") as fh:

@@ -97,7 +97,11 @@ def test_cli_writes_json_and_html(tmp_path):
                  "--html", str(tmp_path / "d.html"), "--quiet"]) == 0
     d = json.loads((tmp_path / "d.json").read_text())
     assert d["verdict"]["cause"] == "inertia"
-    assert "data:image/png;base64" in (tmp_path / "d.html").read_text()
+    page = (tmp_path / "d.html").read_text()
+    assert page.count("data:image/png;base64") >= 3
+    # the named effect's own fitted parameters with units, and the shrink sequence
+    assert "Fitted parameters of <code>inertia</code>" in page and "<td>dm</td>" in page
+    assert "<td>kg</td>" in page and "How far it shrinks" in page
 
 
 def test_bad_input(tmp_path):

@@ -364,12 +364,12 @@ def _concat(sets) -> Dataset:
 
 
 def diagnose_trajectory(measured, plant, model="lugre", **kwargs):
-    """Trajectory-level diagnosis (plant co-simulation against measured positions).
+    """Trajectory-level diagnosis: candidates put into the plant's friction, the plant
+    re-simulated against measured positions (XML-350 tracking error, valve lift).
 
-    Not implemented yet: the candidate effects would be added to the friction FMU and the
-    plant re-simulated through :mod:`fmus.master`. Use :func:`diagnose` on friction-force
-    data (friction from inverse dynamics) meanwhile.
+    Thin entry point of :func:`diagnosis.trajectory.diagnose_trajectory` (see there for the
+    parameters: ``validation``, ``candidates``, ``engine`` = ``"plant"`` or ``"fmu"``, ...).
+    The report is this module's contract JSON with ``"level": "trajectory"``.
     """
-    raise NotImplementedError("trajectory-level diagnosis (plant co-simulation vs measured "
-                              "positions) is not implemented yet; diagnose friction-force data "
-                              "with diagnosis.diagnose")
+    from .trajectory import diagnose_trajectory as _run
+    return _run(measured, plant, model, **kwargs)

@@ -13,6 +13,8 @@ Sources (cite them with any figure):
 * Franka joints: longshike/NNFM-A-Novel-Neural-Network-Modeling-Approach-for-Robot-Flexible-
   Joints-Friction @ a343d3a3.
 * Joint steady state: igricart/FrictionIdentification @ 449ef59d.
+* Rack and pinion: Mnich, Lodz University of Technology, KonradMnich/friction-identification
+  @ 8b477df1.
 """
 from __future__ import annotations
 
@@ -27,7 +29,7 @@ from friction.dataset import Dataset
 
 __all__ = ["real_data_dir", "load_emps", "emps_baseline", "EMPS_PUBLISHED", "load_pneumatic",
            "load_franka", "franka_paper_rms", "load_joint_steady_state", "SteadyStateMap",
-           "PNEUMATIC_AREA"]
+           "PNEUMATIC_AREA", "load_rack_pinion"]
 
 #: published inverse-dynamic-model baseline of the EMPS benchmark (README of emps/)
 EMPS_PUBLISHED = {"M": 95.1089, "Fv": 203.5034, "Fc": 20.3935, "OF": -3.1648}
@@ -303,3 +305,32 @@ def load_joint_steady_state() -> SteadyStateMap:
     F = np.asarray(raw["dx"], float).ravel()
     order = np.argsort(v, kind="stable")
     return SteadyStateMap(v=v[order], F=F[order], name="joint steady state")
+
+
+# ------------------------------------------------------------------------------ rack and pinion
+def load_rack_pinion() -> Dataset:
+    """One accelerating stroke of the rack-and-pinion rig (Lodz University of Technology).
+
+    ``sample_workspace_4.mat``: 807 samples at 1.5 kHz; position ``x`` [m], velocity ``v``
+    [m/s], acceleration ``a`` [m/s^2] (about 3 m/s^2 up to 0.62 m/s), drive force ``F`` [N]
+    and the friction force ``F_fric = F - m a`` [N] with the reduced mass m = 24.7 kg (the
+    source's inverse dynamics). ``F`` of the returned dataset is ``F_fric``. The source's
+    own 4-coefficient friction model, evaluated on its first 400 samples, is kept in
+    ``extra["F_model_source"]`` (NaN outside them) to compare an identified law against.
+    """
+    from scipy.io import loadmat
+    raw = loadmat(_file("rack_pinion", "sample_workspace_4.mat"))
+    g = {k: np.asarray(v, float).ravel() for k, v in raw.items() if not k.startswith("__")}
+    for key in ("t", "x", "v", "a", "F_fric", "F_model", "range", "reduced_mass"):
+        if key not in g:
+            raise ValueError(f"rack_pinion/sample_workspace_4.mat: variable {key!r} missing")
+    n = g["t"].size
+    source = np.full(n, np.nan)
+    idx = g["range"].astype(int) - 1  # MATLAB indices of the samples the model covers
+    if idx.min() < 0 or idx.max() >= n or idx.size != g["F_model"].size:
+        raise ValueError("rack_pinion: 'range' does not index the F_model samples")
+    source[idx] = g["F_model"]
+    return Dataset.from_arrays(g["t"], g["F_fric"], x=g["x"], v=g["v"], a=g["a"],
+                               name="rack and pinion stroke",
+                               extra={"F_model_source": source, "drive_force": g["F"],
+                                      "reduced_mass": np.full(n, g["reduced_mass"][0])})

@@ -3,7 +3,8 @@
 Goals of issue 5: the published EMPS baseline reproduced within 2 %; a LuGre-family model
 fitted on DATA_EMPS lowers the error on DATA_EMPS_PULSES against that baseline; on the Franka
 joints our LuGre's RMS is no worse than the source paper's LuGre RMS, case by case and speed
-by speed (``friction_model_comparison_all_results_filtered.csv``).
+by speed (``friction_model_comparison_all_results_filtered.csv``); on the rack-and-pinion
+stroke our fits are no worse than the source's own friction model.
 """
 import numpy as np
 import pytest
@@ -115,3 +116,19 @@ def test_joint_steady_state_map(real_data):
     r = identify(s.as_dataset(), "stribeck", algorithm="least_squares",
                  names=["Fc", "sigma2"], bounds={"Fc": (0.1, 5.0), "sigma2": (0.0, 5.0)})
     assert r.params["Fc"] == pytest.approx(2.0, rel=0.05)
+
+
+@pytest.mark.parametrize("law", ["stribeck", "lugre"])
+def test_rack_pinion_fit_no_worse_than_the_source_model(real_data, law):
+    from identification.real_data import load_rack_pinion
+    d = load_rack_pinion()
+    assert d.dt == pytest.approx(1 / 1500, rel=1e-3) and np.max(d.v) == pytest.approx(0.658, abs=1e-3)
+    # the source's inverse dynamics: F_fric = F - m a with m = 24.7 kg
+    np.testing.assert_allclose(d.F, d.extra["drive_force"] - 24.7 * d.a, atol=1e-9)
+    covered = ~np.isnan(d.extra["F_model_source"])
+    assert covered.sum() == 400
+    source = rmse(d.F[covered], d.extra["F_model_source"][covered])
+    assert source == pytest.approx(5.52, abs=0.01)
+    r = identify(d, law)
+    ours = rmse(d.F[covered], r.model.simulate(d.t, d.v)[covered])
+    assert ours <= source

@@ -142,6 +142,20 @@ def _franka(entry):
                                       unit="N m")
 
 
+def _rack_pinion(entry):
+    from friction.metrics import rmse
+    from . import identify
+    from .real_data import load_rack_pinion
+    d = load_rack_pinion()
+    covered = ~np.isnan(d.extra["F_model_source"])
+    res = {"rms_source_model": rmse(d.F[covered], d.extra["F_model_source"][covered]),
+           "unit": "N", "samples": int(covered.sum())}
+    for law in ("stribeck", "lugre"):
+        r = identify(d, law)
+        res[f"rms_{law}"] = rmse(d.F[covered], r.model.simulate(d.t, d.v)[covered])
+    entry["rack_pinion"] = res
+
+
 def run_stage(out, summary: dict, quick: bool = False) -> None:
     """Identification demo stage (see the module docstring)."""
     os.makedirs(out, exist_ok=True)
@@ -155,6 +169,10 @@ def run_stage(out, summary: dict, quick: bool = False) -> None:
         report(f"  identification: EMPS real data done ({time.monotonic() - t0:.1f} s)")
     except FileNotFoundError as exc:
         entry["emps"] = {"skipped": str(exc)}
+    try:
+        _rack_pinion(entry)
+    except FileNotFoundError as exc:
+        entry["rack_pinion"] = {"skipped": str(exc)}
     if not quick:
         figures.append(_convergence(out, entry))
         report(f"  identification: convergence comparison done ({time.monotonic() - t0:.1f} s)")

@@ -56,6 +56,16 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--load-column", default=None, help="column to use as load (e.g. pressure)")
     g.add_argument("--benchmark", action="store_true", help="run the built-in attribution benchmark")
     g.add_argument("--seed", type=int, default=0)
+    g.add_argument("--plant", default=None, help="trajectory level: plant model (e.g. xml350, "
+                   "valve); DATA are measured positions (columns t, x)")
+    g.add_argument("--experiment", action="append", default=None,
+                   help="trajectory level: experiment options KEY=VALUE,... of each DATA file "
+                   "(once for all, or once per file), e.g. trajectory=sine:5e-5:5,controller=pid;"
+                   " keys that are plant parameters (e.g. f_current=2000) set the plant model")
+    g.add_argument("--engine", default="plant", choices=("plant", "fmu"),
+                   help="trajectory level: in-process plant (default) or plant + friction FMUs")
+    g.add_argument("--candidates", default=None,
+                   help="trajectory level: comma-separated candidate effects (default all)")
     return ap
 
 

@@ -34,6 +34,8 @@ def run_diagnose_cli(args) -> int:
             with open(args.json_out, "w") as fh:
                 json.dump(res, fh, indent=2, default=float)
         return 0
+    if getattr(args, "plant", None):
+        return _run_trajectory(args, quiet)
     mapping = parse_mapping(args.mapping)
     if args.load_column:
         mapping["load"] = args.load_column
@@ -47,4 +49,45 @@ def run_diagnose_cli(args) -> int:
     if args.html_out:
         from .report_html import write_html
         write_html(rep, args.html_out)
+    return 0
+
+
+def _run_trajectory(args, quiet) -> int:
+    """Trajectory level: DATA are measured positions of ``--plant`` under ``--experiment``."""
+    import plants
+
+    from .trajectory import diagnose_trajectory, load_record, parse_experiment
+    if args.plant not in plants.PLANTS:
+        raise ValueError(f"unknown plant {args.plant!r}; choose from {sorted(plants.PLANTS)}")
+    specs = args.experiment or [None]
+    if len(specs) not in (1, len(args.data)):
+        raise ValueError(f"--experiment given {len(specs)} times for {len(args.data)} data "
+                         f"files: give it once (all files) or once per file")
+    specs = specs * len(args.data) if len(specs) == 1 else specs
+    cls = plants.PLANTS[args.plant]
+    pnames = set(cls.Params.numeric_names())
+    plant_params, options = {}, []
+    for spec in specs:
+        opts = parse_experiment(spec)
+        plant_params.update({k: v for k, v in opts.items() if k in pnames})
+        rest = {k: v for k, v in opts.items() if k not in pnames}
+        unknown = set(rest) - set(cls.options)
+        if unknown:
+            raise ValueError(f"--experiment: {sorted(unknown)} are neither options "
+                             f"{sorted(cls.options)} nor parameters of plant {args.plant!r}")
+        options.append(rest)
+    plant = plants.make_plant(args.plant, **plant_params)
+    mapping = parse_mapping(args.mapping)
+    scale = _scale(args.scale)
+    recs = [load_record(p, o, mapping=mapping, scale=scale) for p, o in zip(args.data, options)]
+    cands = [c.strip() for c in args.candidates.split(",")] if args.candidates else None
+    rep = diagnose_trajectory(recs[0], plant, args.model, validation=recs[1:] or None,
+                              candidates=cands, engine=args.engine,
+                              progress=None if quiet else say)
+    print(rep.summary())
+    if args.json_out:
+        rep.to_json(args.json_out)
+    if args.html_out:
+        from .trajectory import write_trajectory_html
+        write_trajectory_html(rep, args.html_out)
     return 0

@@ -72,7 +72,8 @@ from .core import MIN_EXCESS_CLOSED, NOISE_RATIO, TIE, BASE_NAMES, DiagnosisRepo
 from .effects import CANDIDATES, EFFECT_NAMES, Context, Extra, make_context
 from .regions import band_splits, frequency_split, regime_split
 
-__all__ = ["TrajectoryRecord", "record_from_result", "EffectLaw", "simulate_record",
+__all__ = ["TrajectoryRecord", "record_from_result", "load_record", "parse_experiment",
+           "EffectLaw", "simulate_record", "trajectory_figures", "write_trajectory_html",
            "diagnose_trajectory", "FORCE_EFFECTS", "FMU_EFFECTS", "REFERENCE_OUTPUTS",
            "MASS_PARAMETERS", "TrajectoryModel"]
 
@@ -173,6 +174,91 @@ def record_from_result(result, options: dict | None = None, *, signal: str = "x"
         y = y + np.random.default_rng(seed).normal(0.0, noise, y.size)
     return TrajectoryRecord(result["time"], y, dict(options or {}), name=name, signal=None,
                             t_start=t_start)
+
+
+def parse_experiment(text: str | None) -> dict:
+    """Experiment options from ``"KEY=VALUE,..."`` (CLI helper).
+
+    Values become bool (``true``/``false``), float, or str. ``trajectory=sine:A:f`` is the
+    position sine ``A (1 - cos 2 pi f t)`` [m, Hz] that starts at rest
+    (:class:`plants.sources.Sine`); ``trajectory=triangle:A:f`` a triangle wave.
+    """
+    out = {}
+    if not text:
+        return out
+    for item in text.split(","):
+        if "=" not in item:
+            raise ValueError(f"bad experiment item {item!r}: expected KEY=VALUE")
+        k, v = (x.strip() for x in item.split("=", 1))
+        if k == "trajectory":
+            from plants.sources import Sine, Triangle
+            kind, *nums = v.split(":")
+            try:
+                A, f = (float(x) for x in nums)
+            except ValueError:
+                raise ValueError(f"trajectory={v!r}: expected sine:AMPLITUDE:FREQUENCY or "
+                                 f"triangle:AMPLITUDE:FREQUENCY [m, Hz]") from None
+            if kind == "sine":
+                out[k] = Sine(A, f, offset=A, phase=-0.5 * math.pi)
+            elif kind == "triangle":
+                out[k] = Triangle(A, f)
+            else:
+                raise ValueError(f"trajectory kind {kind!r}: choose sine or triangle")
+        elif v.lower() in ("true", "false"):
+            out[k] = v.lower() == "true"
+        else:
+            try:
+                out[k] = float(v)
+            except ValueError:
+                out[k] = v
+    return out
+
+
+def load_record(path, options: dict | None = None, *, mapping: dict | None = None,
+                scale: dict | None = None, signal: str = "x") -> TrajectoryRecord:
+    """A measured trajectory from CSV (header row) or ``.mat``: columns ``t`` [s] and the
+    measured output ``x`` [m] (other names through ``mapping``, e.g. ``{"x": "pos"}``;
+    unit factors through ``scale``, e.g. ``{"x": 1e-6}`` for micrometres)."""
+    import csv
+    import os
+    path = os.fspath(path)
+    if not os.path.exists(path):
+        raise FileNotFoundError(f"no such data file: {path}")
+    mapping = dict(mapping or {})
+    unknown = set(mapping) - {"t", signal}
+    if unknown:
+        raise ValueError(f"mapping keys {sorted(unknown)}: a trajectory record has only "
+                         f"'t' and {signal!r}")
+    if path.lower().endswith(".mat"):
+        from scipy.io import loadmat
+        raw = loadmat(path)
+        cols = {k: np.asarray(v, dtype=float).ravel() for k, v in raw.items()
+                if not k.startswith("__") and np.asarray(v).dtype.kind in "fiu"}
+    else:
+        with open(path, newline="") as fh:
+            rows = [r for r in csv.reader(fh) if r and any(c.strip() for c in r)]
+        if len(rows) < 2:
+            raise ValueError(f"{path}: need a header row and data rows")
+        header = [h.strip() for h in rows[0]]
+        cols = {}
+        for j, h in enumerate(header):
+            vals = []
+            for lineno, r in enumerate(rows[1:], start=2):
+                try:
+                    vals.append(float(r[j]))
+                except (ValueError, IndexError):
+                    raise ValueError(f"{path}: line {lineno}, column {h!r}: not a number "
+                                     f"({r[j] if j < len(r) else 'missing'!r})") from None
+            cols[h] = np.array(vals)
+    picked = {}
+    for key in ("t", signal):
+        src = mapping.get(key, key)
+        if src not in cols:
+            raise ValueError(f"{path}: column {src!r} (for {key!r}) not found; available: "
+                             f"{sorted(cols)}")
+        picked[key] = cols[src] * float((scale or {}).get(key, 1.0))
+    return TrajectoryRecord(picked["t"], picked[signal], dict(options or {}),
+                            name=os.path.basename(path))
 
 
 # -- friction law + force effects -----------------------------------------------------------
@@ -796,6 +882,13 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     if not 0.2 <= fit_fraction < 1.0:
         raise ValueError(f"fit_fraction = {fit_fraction!r} is out of bounds: must be in "
                          f"[0.2, 1)")
+    if engine == "fmu" and explicit:
+        for n in names:
+            if n not in FMU_EFFECTS:
+                raise NotImplementedError(
+                    f"candidate {n!r}: engine='fmu' cannot express it - the friction FMU has "
+                    f"no parameters for it (it needs EffectLaw inside the plant); use "
+                    f"engine='plant'")
     eng = _make_engine(engine, plant, fmu_dir, fmu_step)
     tm = TrajectoryModel(plant, eng, counter)
     law0 = _start_law(model, plant)
@@ -895,8 +988,18 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         n_all = sum(p[0].t.size for p in parts)
         val_cat = Dataset(t=np.arange(n_all) * measured.dt, x=cat("x"), v=cat("v"), a=cat("a"), F=cat("F"), name="held-out")
         r_cat = np.concatenate([p[1] for p in parts])
-    floor = float(np.mean([noise_floor(d, r) * np.std(d.F) for d, r in parts])
+    white = float(np.mean([noise_floor(d, r) * np.std(d.F) for d, r in parts])
                   / (np.std(np.concatenate([d.F for d, _ in parts])) or 1.0))
+    # reproducibility floor: a closed loop with a quantised encoder (or any switching) does
+    # not repeat itself to the nanometre - a 1e-4 relative change of the base parameters
+    # re-rolls its quantisation sequence. What two such runs differ by, no smooth model can
+    # predict; it counts as noise next to the white measurement noise.
+    u_p = np.clip(u_base + 1e-4 * np.where(u_base < 0.5, 1.0, -1.0), 0.0, 1.0)
+    _, r_pert = score(base_setup, u_p)
+    den = np.std(np.concatenate([d.F for d, _ in parts])) or 1.0
+    repro = float(np.sqrt(np.mean(np.concatenate([a - b for a, b in zip(r_val, r_pert)]) ** 2))
+                  / den)
+    floor = float(np.hypot(white, repro))
     where = regime_split(val_cat, r_cat)
     bands = band_splits(val_cat, r_cat)
     freq = frequency_split(parts[0][0], parts[0][1])
@@ -990,24 +1093,24 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     for k, name in enumerate(names, 1):
         ok, why = applicable(name)
         if not ok:
-            if explicit and engine == "fmu" and why.startswith("engine='fmu'"):
-                raise NotImplementedError(f"candidate {name!r}: {why}")
             skipped[name] = why
             continue
         say(f"[diagnose-trajectory] candidate {k}/{len(names)}: {name}")
+        sims0, secs0 = tm.sims, tm.sim_seconds
         try:
             s, u, cost = fit_effects([name], base_law, base_start, max_sims)
         except _NotApplicable as exc:
             skipped[name] = str(exc)
             continue
         after, _ = score(s, u)
+        cost_sims = {"simulations": tm.sims - sims0, "seconds": tm.sim_seconds - secs0}
         fitted[name] = (s, u)
         n_par = sum(1 for c in s.coords if c.name not in fit_names)
         effects.append({"name": name, "validation_before": before, "validation_after": after,
                         "gap_closed": (before - after) / before if before > 0 else 0.0,
                         "excess_closed": (before - after) / max(before - floor, 1e-12),
                         "n_params": n_par, "fit_before": base_fit, "fit_after": cost,
-                        "fitted": s.describe(u, ctx)})
+                        "fitted": {**s.describe(u, ctx), **cost_sims}})
     effects.sort(key=lambda e: -e["gap_closed"])
     if effects:  # near-ties go to the simpler effect
         top = effects[0]["excess_closed"]
@@ -1082,6 +1185,7 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                 "unexplained_nrmse": max(final_val - floor, 0.0),
                 "unexplained_share_of_gap": max(final_val - floor, 0.0) / gap},
         noise_floor=floor,
+        noise_floor_parts={"white": white, "reproducibility": repro},
         effect_details={e["name"]: e["fitted"] for e in effects},
         base={"law": base_law.name, "fit_names": fit_names, "params": base_vals,
               "sensitivity": sens},
@@ -1092,9 +1196,116 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                 "validation_samples": int(sum(c.mask.sum() for c in val_cases))},
     )
     report._models = {"base": (base_setup, u_base), **fitted}  # for plots; not serialised
-    report._data = {"fit": fit_case, "validation": val_cases, "ctx": ctx, "model": tm}
+    report._data = {"fit": fit_case, "validation": val_cases, "ctx": ctx, "plant": plant,
+                    "val_data": val_data}
     return report
 
 
 class _NotApplicable(Exception):
     pass
+
+
+# -- report figures -----------------------------------------------------------------------------
+def _png(fig) -> str:
+    import base64
+    import io
+    import matplotlib.pyplot as plt
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=90)
+    plt.close(fig)
+    return base64.b64encode(buf.getvalue()).decode()
+
+
+def trajectory_figures(report) -> dict[str, str]:
+    """Base64 PNGs of a trajectory report: held-out tracking error measured / base / named
+    effect, the base residual against velocity, acceleration, position and time, and the
+    ranked candidates. Curves are re-simulated in-process (same equations as either engine).
+    """
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    d = report._data
+    plant, ctx = d["plant"], d["ctx"]
+    case, kin = d["validation"][0], d["val_data"][0]
+    tm = TrajectoryModel(plant, _PlantEngine(plant))
+    rec, m = case.record, case.mask
+
+    def curve(setup_u):
+        law, pp, delay, _ = setup_u[0].build(setup_u[1], ctx)
+        return tm._output(law, pp, rec, case.stop, delay)[0]
+
+    y_base = curve(report._models["base"])
+    cause = report["verdict"]["cause"]
+    best = report._models.get(cause) or (report._models.get(report["effects"][0]["name"])
+                                         if report["effects"] else None)
+    ref = case.ref if case.ref is not None else np.zeros_like(rec.y)
+    out = {}
+    fig, ax = plt.subplots(figsize=(11, 4))
+    ax.plot(rec.t[m], (ref - rec.y)[m], color="0.5", lw=1, label="measured")
+    ax.plot(rec.t[m], (ref - y_base)[m], lw=1, label="base model")
+    if best is not None:
+        ax.plot(rec.t[m], (ref - curve(best))[m], lw=1,
+                label=f"with {cause if cause in report._models else report['effects'][0]['name']}")
+    ax.set(xlabel="time [s]", ylabel="tracking error [m]",
+           title=f"held-out record {rec.name}: tracking error, re-simulated {plant.name}")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    out["tracking"] = _png(fig)
+
+    r = (rec.y - y_base)[m]
+    sig = [("velocity v [m/s]", kin.v[m]), ("acceleration a [m/s^2]", kin.a[m]),
+           ("position x [m]", kin.x[m]), ("time t [s]", kin.t[m])]
+    fig, axes = plt.subplots(1, len(sig), figsize=(3.6 * len(sig), 3.2), sharey=True)
+    for ax, (lab, sgl) in zip(axes, sig):
+        ax.plot(sgl, r, ".", ms=1.5, alpha=0.4)
+        ax.set_xlabel(lab)
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("held-out residual y_meas - y_model [m]")
+    fig.tight_layout()
+    out["residuals"] = _png(fig)
+
+    eff = report["effects"]
+    fig, ax = plt.subplots(figsize=(7, 0.45 * max(len(eff), 2) + 1))
+    names = [e["name"] for e in eff][::-1]
+    ax.barh(names, [100 * e["gap_closed"] for e in eff][::-1],
+            color=["C3" if n == cause else "C0" for n in names])
+    ax.axvline(0, color="k", lw=0.8)
+    ax.set_xlabel("held-out gap closed [%]")
+    ax.set_title("candidate effects in the re-simulated plant, ranked")
+    fig.tight_layout()
+    out["candidates"] = _png(fig)
+    return out
+
+
+def write_trajectory_html(report, path) -> None:
+    """Self-contained HTML report of a trajectory-level diagnosis."""
+    import html
+    figs = trajectory_figures(report)
+    b, v = report["baseline"], report["verdict"]
+    rows = "".join(
+        f"<tr><td>{html.escape(e['name'])}</td><td>{e['validation_before']:.4g}</td>"
+        f"<td>{e['validation_after']:.4g}</td><td>{100 * e['gap_closed']:.1f} %</td></tr>"
+        for e in report["effects"])
+    where = "".join(f"<tr><td>{html.escape(w['label'])}</td><td>{100 * w['share']:.1f} %</td>"
+                    f"<td>{w['nrmse']:.3g}</td></tr>" for w in report["where"])
+    img = lambda k: f'<img src="data:image/png;base64,{figs[k]}" style="max-width:100%">'
+    doc = f"""<!doctype html><html><head><meta charset="utf-8">
+<title>frictionlab trajectory diagnosis</title>
+<style>body{{font-family:sans-serif;max-width:1200px;margin:2em auto}}
+table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:3px 8px}}</style></head>
+<body><h1>Sim-to-real gap diagnosis, trajectory level ({html.escape(report['plant'])})</h1>
+<p><b>Verdict: {html.escape(str(v['cause']))}</b> (held-out gap closed
+{100 * v['gap_closed']:.1f} %). {html.escape(v.get('reason', ''))}</p>
+<p>Base model <code>{html.escape(b['model'])}</code> in the plant (engine
+{html.escape(report['engine'])}): fit NRMSE {b['fit']:.4g}, held-out NRMSE {b['validation']:.4g}
+({html.escape(b['normalised_by'])}), noise floor {report['noise_floor']:.3g}.</p>
+{img('tracking')}
+<h2>Where the gap lies</h2><table><tr><th>region</th><th>share of residual energy</th>
+<th>local NRMSE</th></tr>{where}</table>{img('residuals')}
+<h2>Which effect</h2><table><tr><th>effect</th><th>held-out before</th><th>after</th>
+<th>gap closed</th></tr>{rows}</table>{img('candidates')}
+</body></html>"""
+    with open(path, "w") as fh:
+        fh.write(doc)

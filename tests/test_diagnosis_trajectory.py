@@ -1,0 +1,265 @@
+"""Trajectory-level diagnosis: candidates put into the plant's friction, the plant
+re-simulated against measured positions (synthetic XML-350 measurements whose truth carries
+an effect the base model lacks, in a form that differs from the candidate's formula)."""
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+plants = pytest.importorskip("plants")
+
+from friction import make_model  # noqa: E402
+from friction.dataset import Dataset  # noqa: E402
+from diagnosis import diagnose_trajectory  # noqa: E402
+from diagnosis.effects import CANDIDATES, make_context  # noqa: E402
+from diagnosis.trajectory import (EffectLaw, TrajectoryRecord, parse_experiment,  # noqa: E402
+                                  record_from_result, simulate_record)
+from plants.sources import Sine  # noqa: E402
+from plants.xml350 import XML350, xml350_friction  # noqa: E402
+
+pytestmark = pytest.mark.skipif("xml350" not in plants.PLANTS, reason="XML-350 not available")
+
+LUGRE_KEYS = ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "b", "shape")
+#: identification configuration of the stage: linear PID, 2 kHz current loop, no feedforward
+LOOP = dict(compensation=False, controller="pid")
+NOISE = 3e-10  # encoder noise [m] on top of the 1 nm quantisation
+SUBSET = ["asymmetry", "acceleration", "inertia", "delay", "stribeck_shape"]
+
+
+def _sine(A, f):
+    return Sine(A, f, offset=A, phase=-0.5 * math.pi)  # starts at rest
+
+
+FIT = dict(trajectory=_sine(50e-6, 5.0), **LOOP)
+VAL = dict(trajectory=_sine(100e-6, 3.0), **LOOP)
+
+
+def _truth(kind):
+    """Truth friction of the 'real' stage. Forms differ from the candidates' formulas: the
+    asymmetry also has a direction-dependent Stribeck velocity (the candidate frees only the
+    levels, viscous slope and offset), the acceleration part is seed 000's frictional lag
+    (first-order state, 1 - exp shape) instead of the candidate's static tanh term."""
+    p = {k: getattr(xml350_friction().params, k) for k in LUGRE_KEYS}
+    if kind == "clean":
+        return xml350_friction()
+    if kind == "asymmetry":
+        return make_model("modified_lugre", **p, f_a=0.0, Fc_neg=0.80, Fs_neg=0.95,
+                          vs_neg=2e-5, sigma2_neg=12.0)
+    if kind == "acceleration":
+        return make_model("modified_lugre", **p, f_a=0.3, a_s=0.05, v_c=2e-3, tau=5e-3)
+    raise ValueError(kind)
+
+
+def _records(kind, T_fit=0.2, T_val=0.25):
+    stage = XML350(_truth(kind), f_current=2000.0)
+    rf = stage.simulate(T_fit, **FIT)
+    rv = stage.simulate(T_val, **VAL)
+    fit = record_from_result(rf, FIT, signal="x_meas", noise=NOISE, seed=1, name="fit")
+    val = record_from_result(rv, VAL, signal="x_meas", noise=NOISE, seed=2, name="held-out")
+    return fit, val, rv
+
+
+def _model():
+    # the model the user has: the paper's law with a 5 % wrong Coulomb level
+    return XML350(xml350_friction(Fc=1.0), f_current=2000.0)
+
+
+# -- the friction law with effects ---------------------------------------------------------------
+def _motion(n=3000, dt=1e-3):
+    t = np.arange(n) * dt
+    v = 2e-3 * np.sin(2 * np.pi * 1.3 * t) + 5e-4 * np.sin(2 * np.pi * 4.1 * t)
+    x = np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * dt)))
+    a = np.gradient(v, t)
+    return t, x, v, a
+
+
+@pytest.mark.parametrize("effects", [
+    {"acceleration": {"f_a": 0.3, "a_s": 0.02, "v_c": 1e-3}},
+    {"position": {"c_x1": 0.2, "c_x2": -0.1, "c_x3": 0.05, "c_x4": 0.1}},
+    {"drift": {"k_drift": 0.4}},
+    {"drift": {"k_drift": -0.3}, "acceleration": {"f_a": -0.2, "a_s": 0.05, "v_c": 5e-4}},
+])
+def test_effect_law_force_is_the_candidate_formula(effects):
+    t, x, v, a = _motion()
+    base = xml350_friction()
+    F0 = base.simulate(t, v)
+    data = Dataset(t=t, x=x, v=v, a=a, F=F0)
+    ctx = make_context(data)
+    law = EffectLaw(base, effects, ctx)
+    F = law.simulate(t, v, a=a, x=x)
+    expect = F0
+    for stage in ("multiplicative", "additive"):  # the stage order of diagnosis.composite
+        for name, p in effects.items():
+            if CANDIDATES[name].stage == stage:
+                expect = CANDIDATES[name].apply(expect, p, data, ctx)
+    assert np.max(np.abs(F - expect)) <= 1e-12 * np.max(np.abs(expect)) + 1e-14
+    assert np.max(np.abs(F - F0)) > 1e-3  # the effect is really there
+    # the scalar force of the reference integrator agrees with the kernel
+    F2, S = law.simulate(t, v, a=a, x=x, return_state=True)
+    k = 1234
+    assert law.force(S[k], v[k], a=a[k], x=x[k]) == pytest.approx(F2[k], rel=1e-9, abs=1e-12)
+    assert S[k, -1] == pytest.approx(t[k])  # the time state
+
+
+def test_neutral_effect_law_reproduces_the_plant():
+    """Effects at zero: the plant with EffectLaw (generic stepper) equals the plant with the
+    plain law (compiled XML-350 kernel) - the wrapper adds nothing but the effect."""
+    base = xml350_friction()
+    t, x, v, a = _motion(300)
+    ctx = make_context(Dataset(t=t, x=x, v=v, a=a, F=base.simulate(t, v)))
+    law = EffectLaw(base, {"acceleration": {"f_a": 0.0, "a_s": 0.05, "v_c": 1e-3},
+                           "drift": {"k_drift": 0.0}}, ctx)
+    opts = dict(trajectory=_sine(20e-6, 10.0), **LOOP)
+    ref = XML350(base, f_current=2000.0).simulate(0.05, **opts)
+    got = XML350(law, f_current=2000.0).simulate(0.05, **opts)
+    e = ref["x_d"] - ref["x"]
+    assert np.sqrt(np.mean((got["x"] - ref["x"]) ** 2)) <= 1e-9 * np.std(e) + 1e-18
+    # and a non-zero effect changes the closed-loop trajectory
+    law2 = EffectLaw(base, {"acceleration": {"f_a": 0.5, "a_s": 0.05, "v_c": 1e-3}}, ctx)
+    got2 = XML350(law2, f_current=2000.0).simulate(0.05, **opts)
+    assert np.sqrt(np.mean((got2["x"] - ref["x"]) ** 2)) > 0.05 * np.std(e)
+
+
+def test_bad_records_are_refused_with_a_clear_message():
+    t = np.arange(100) * 1e-4
+    y = np.zeros(100)
+    with pytest.raises(ValueError, match="not finite at sample 7"):
+        TrajectoryRecord(t, np.where(np.arange(100) == 7, np.nan, y))
+    with pytest.raises(ValueError, match="strictly increasing"):
+        TrajectoryRecord(t[::-1], y)
+    with pytest.raises(ValueError, match="y has 99"):
+        TrajectoryRecord(t, y[:99])
+    with pytest.raises(ValueError, match="in m"):
+        TrajectoryRecord(t, y + 100.0)  # mm given as m
+    fit, _, _ = _records("clean", 0.02, 0.02)
+    with pytest.raises(ValueError, match="unknown candidate"):
+        diagnose_trajectory(fit, _model(), candidates=["gremlins"])
+    with pytest.raises(ValueError, match="engine"):
+        diagnose_trajectory(fit, _model(), engine="quantum")
+    with pytest.raises(ValueError, match="sine:AMPLITUDE"):
+        parse_experiment("trajectory=sine:1e-4")
+
+
+# -- the diagnosis ------------------------------------------------------------------------------
+def _truth_closed(kind, val, rv, before):
+    """Fraction of the held-out gap the truth model itself closes (noise stays)."""
+    sd = np.std(rv["x_d"] - val.y)
+    after = np.sqrt(np.mean((val.y - rv["x"]) ** 2)) / sd
+    return (before - after) / before
+
+
+def test_asymmetry_is_named_and_the_gap_closed_matches_the_truth():
+    fit, val, rv = _records("asymmetry")
+    rep = diagnose_trajectory(fit, _model(), "lugre", validation=val, candidates=SUBSET)
+    assert rep["level"] == "trajectory" and rep["plant"] == "xml350"
+    assert rep["verdict"]["cause"] == "asymmetry", rep.summary()
+    top = rep["effects"][0]
+    assert top["name"] == "asymmetry"
+    assert top["excess_closed"] >= 0.7, rep.summary()
+    truth = _truth_closed("asymmetry", val, rv, rep["baseline"]["validation"])
+    assert abs(top["gap_closed"] - truth) <= 0.15, (top, truth)
+    # the fitted twins point the right way: lower levels for v < 0 (truth 0.80 vs 0.95)
+    p = rep["effect_details"]["asymmetry"]["params"]
+    assert p["Fc_neg"] < p["Fc"]
+    # contract shape
+    doc = json.loads(rep.to_json())
+    assert set(doc) >= {"baseline", "where", "effects", "verdict", "level"}
+    assert doc["baseline"]["metric"] == "nrmse"
+    shares = [w["share"] for w in doc["where"]]
+    assert shares == sorted(shares, reverse=True) and abs(sum(shares) - 1) < 1e-9
+    gaps = [e["gap_closed"] for e in doc["effects"][1:]]
+    assert gaps == sorted(gaps, reverse=True)
+    for e in doc["effects"]:
+        assert e["gap_closed"] == pytest.approx(
+            (e["validation_before"] - e["validation_after"]) / e["validation_before"])
+    assert rep["timing"]["simulations"] > 0
+
+
+def test_clean_truth_gives_none():
+    fit, val, _ = _records("clean")
+    rep = diagnose_trajectory(fit, _model(), "lugre", validation=val,
+                              candidates=["asymmetry", "inertia", "delay"])
+    assert rep["verdict"]["cause"] == "none", rep.summary()
+    # the wrong Coulomb level of the start model was fitted away on the trajectory
+    assert rep["base"]["params"]["Fc"] == pytest.approx(0.95, rel=0.03)
+
+
+@pytest.mark.slow
+def test_acceleration_is_named_with_every_candidate():
+    fit, val, rv = _records("acceleration", 0.2, 0.34)
+    rep = diagnose_trajectory(fit, _model(), "lugre", validation=val)
+    assert rep["verdict"]["cause"] == "acceleration", rep.summary()
+    assert rep["effects"][0]["excess_closed"] >= 0.7
+    truth = _truth_closed("acceleration", val, rv, rep["baseline"]["validation"])
+    assert abs(rep["effects"][0]["gap_closed"] - truth) <= 0.15
+    assert set(rep["skipped"]) == {"load", "presliding"}  # no load; LuGre has bristles
+
+
+@pytest.mark.slow
+def test_asymmetry_is_named_with_every_candidate():
+    fit, val, _ = _records("asymmetry", 0.2, 0.34)
+    rep = diagnose_trajectory(fit, _model(), "lugre", validation=val)
+    assert rep["verdict"]["cause"] == "asymmetry", rep.summary()
+
+
+# -- engines ------------------------------------------------------------------------------------
+def test_fmu_engine_agrees_with_the_in_process_plant():
+    """Same equations: the plant FMU + friction FMU loop reproduces the in-process plant for
+    a candidate expressed as friction-FMU parameters (direction twins and offset), far
+    closer than the candidate's own effect on the trajectory."""
+    pytest.importorskip("fmpy")
+    pytest.importorskip("pythonfmu")
+    opts = dict(distance=1e-4, compensation=False, controller="sdpid")
+    stage = XML350(xml350_friction(), f_current=2000.0)
+    rec = record_from_result(stage.simulate(0.03, **opts), opts, name="scurve")
+    cand = xml350_friction(Fc_neg=0.8, Fs_neg=0.9, b=0.05)
+    y_plant = simulate_record(stage, cand, rec)
+    y_fmu = simulate_record(stage, cand, rec, engine="fmu")
+    sd = np.std(stage.simulate(0.03, **opts)["x_d"] - rec.y)
+    engines = np.sqrt(np.mean((y_fmu - y_plant) ** 2)) / sd
+    effect = np.sqrt(np.mean((y_plant - rec.y) ** 2)) / sd
+    assert effect > 0.03
+    assert engines < 0.2 * effect, (engines, effect)
+
+
+def test_fmu_engine_refuses_what_the_friction_fmu_cannot_express():
+    fit, val, _ = _records("clean", 0.02, 0.02)
+    with pytest.raises(NotImplementedError, match="acceleration.*engine='plant'"):
+        diagnose_trajectory(fit, _model(), validation=val, candidates=["acceleration"],
+                            engine="fmu")
+    t, x, v, a = _motion(100)
+    ctx = make_context(Dataset(t=t, x=x, v=v, a=a, F=np.ones_like(t)))
+    law = EffectLaw(xml350_friction(), {"drift": {"k_drift": 0.1}}, ctx)
+    with pytest.raises(NotImplementedError, match="drift"):
+        simulate_record(_model(), law, fit, engine="fmu")
+
+
+# -- command line -------------------------------------------------------------------------------
+def test_cli_trajectory_level(tmp_path):
+    from frictionlab.cli import main
+    fit, val, _ = _records("asymmetry", 0.2, 0.25)
+    paths = []
+    for rec in (fit, val):
+        p = tmp_path / f"{rec.name}.csv"
+        np.savetxt(p, np.column_stack([rec.t, rec.y * 1e6]), delimiter=",", header="t,x_um",
+                   comments="")
+        paths.append(str(p))
+    out = tmp_path / "rep.json"
+    html = tmp_path / "rep.html"
+    rc = main(["diagnose", *paths, "--model", "lugre", "--plant", "xml350", "--quiet",
+               "--map", "x=x_um", "--scale", "x=1e-6",
+               "--experiment", "trajectory=sine:5e-5:5,controller=pid,compensation=false,"
+                               "f_current=2000",
+               "--experiment", "trajectory=sine:1e-4:3,controller=pid,compensation=false,"
+                               "f_current=2000",
+               "--candidates", "asymmetry,inertia", "--json", str(out), "--html", str(html)])
+    assert rc == 0
+    doc = json.loads(out.read_text())
+    assert doc["level"] == "trajectory" and doc["verdict"]["cause"] == "asymmetry"
+    assert html.read_text().count("data:image/png;base64") == 3
+    # bad input: one line, non-zero exit
+    assert main(["diagnose", paths[0], "--model", "lugre", "--plant", "xml350", "--quiet",
+                 "--map", "x=x_um", "--experiment", "warp=9"]) == 2

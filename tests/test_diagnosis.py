@@ -110,9 +110,3 @@ def test_bad_input(tmp_path):
     bad = tmp_path / "bad.csv"
     bad.write_text("t,x,F\n0,0,0\n0.001,nan,1\n0.002,0,1\n")
     assert main(["diagnose", str(bad), "--model", "lugre"]) == 2
-
-
-def test_trajectory_level_is_not_silently_faked():
-    from diagnosis import diagnose_trajectory
-    with pytest.raises(NotImplementedError, match="trajectory-level"):
-        diagnose_trajectory(None, "xml350")

@@ -191,6 +191,7 @@ def law_variables(model_cls, probe: bool = False) -> list[Var]:
         vs.append(Var(n, "input", "Real", 0.0, unit, f"{desc} [{unit}]"))
     deps = law_feedthrough(model_cls, inputs) if probe else tuple(inputs)
     vs.append(Var("F", "output", "Real", None, "N", "friction force [N]", depends=deps))
+    vs += coupling_variables(inputs)
     units = getattr(model_cls, "state_units", None)
     for j, s in enumerate(model_cls.state_names):
         unit = units[j] if units else ("m" if j == 0 else "N" if s.startswith("F") else "")
@@ -198,6 +199,79 @@ def law_variables(model_cls, probe: bool = False) -> list[Var]:
         vs.append(Var(s, "output", "Real", None, unit,
                       f"{desc}" + (f" [{unit}]" if unit else ""), depends=()))
     return vs
+
+
+#: outputs of a law FMU for the linearly implicit coupling (see :func:`law_linearisation`)
+COUPLING_OUTPUTS = ("dF_dx", "dF_dv")
+
+
+def coupling_variables(inputs) -> list[Var]:
+    """Parameter ``h_lin`` and outputs ``dF_dx``, ``dF_dv`` of a law FMU (the local
+    linearisation of the law over the coming step; computed from the current inputs, so
+    they depend directly on every input)."""
+    return [
+        Var("h_lin", "parameter", "Real", 0.0, "s",
+            "horizon of the coupling linearisation dF_dx, dF_dv, normally the communication "
+            "step [s] (0: not computed, the outputs stay 0) (>= 0)", 0.0),
+        Var("dF_dx", "output", "Real", None, "N/m",
+            "slope of F against the travel over the coming step (h_lin) [N/m]",
+            depends=tuple(inputs)),
+        Var("dF_dv", "output", "Real", None, "N.s/m",
+            "slope of F against the end velocity of the coming step (h_lin) [N.s/m]",
+            depends=tuple(inputs)),
+    ]
+
+
+def law_linearisation(kernel, theta, state, inputs: dict, h: float) -> tuple:
+    """Local linearisation ``(dF_dx, dF_dv)`` of a law over a step of length ``h`` [s].
+
+    The law's own step map (its kernel over ``[0, h]``: state update with the velocity at
+    both ends, force at the end) is differentiated by finite differences around the nominal
+    step (velocity ``v`` held, travel ``v h``, other inputs held): ``dF_dv`` shifts the end
+    velocity at equal travel, ``dF_dx`` the travel (both velocities shifted). A plant that
+    integrates its step with ``F(t) = F_k + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k)`` then
+    sees the law's stiffness (sticking: about ``sigma0`` and ``sigma1 + sigma2``; sliding: the
+    relaxed bristle and the viscous slope) inside its own integrator. Where the law is not
+    differentiable (``|v|`` at rest, a regime switch), the one-sided pair of smaller size is
+    taken (a jump is not a slope).
+
+    Parameters
+    ----------
+    kernel : callable
+        The law's ``_kernel(t, v, a, load, x, theta, method, state0)``.
+    theta, state : ndarray
+        Packed parameters and current state.
+    inputs : dict
+        Current inputs ``v`` and whichever of ``a``, ``load``, ``x`` the law takes.
+    h : float
+        Horizon [s] (> 0).
+    """
+    v = float(inputs["v"])
+    x = float(inputs.get("x", 0.0))
+    t2 = np.array([0.0, h])
+    empty = np.zeros(0)
+    a2 = np.full(2, float(inputs["a"])) if "a" in inputs else empty
+    l2 = np.full(2, float(inputs["load"])) if "load" in inputs else empty
+
+    def f_end(v0, v1, x1):
+        x2 = np.array([x, x1]) if "x" in inputs else empty
+        F, _ = kernel(t2, np.array([v0, v1]), a2, l2, x2, theta, 0, state)
+        return float(F[1])
+
+    dv = 1e-6 * abs(v) + 1e-9
+    F0 = f_end(v, v, x + v * h)
+    best = None
+    for d in (dv, -dv):
+        D = (f_end(v - d, v + d, x + v * h) - F0) / d            # end velocity, same travel
+        K = (f_end(v + d, v + d, x + (v + d) * h) - F0 - D * d) / (d * h)   # travel
+        size = abs(K) * h + abs(D)
+        if best is None or size < best[0]:
+            best = (size, K, D)
+    return best[1], best[2]
+
+
+__all__ += ["COUPLING_OUTPUTS", "coupling_variables", "law_linearisation",
+            "plant_coupling_inputs"]
 
 
 def mass_variables() -> list[Var]:
@@ -264,11 +338,32 @@ def plant_variables(plant_cls, probe: bool = False) -> list[Var]:
     for n in plant.all_input_names:
         unit, desc = signals.get(n, ("", n))
         vs.append(Var(n, "input", "Real", 0.0, unit, desc + (f" [{unit}]" if unit else "")))
+    vs += plant_coupling_inputs(plant)
     for n in plant.all_output_names:
         unit, desc = signals.get(n, ("", n))
         vs.append(Var(n, "output", "Real", None, unit, desc + (f" [{unit}]" if unit else ""),
                       depends=tuple(deps.get(n, ()))))
     return vs
+
+
+#: unit and description of a plant FMU's coupling inputs (``PlantStepper.coupling_names``)
+_COUPLING_INPUT_INFO = {
+    "dF_dx": ("N/m", "friction law's slope against the travel over the step (connect "
+                     "friction.dF_dx; 0: friction held over the step)"),
+    "dF_dv": ("N.s/m", "friction law's slope against the velocity over the step (connect "
+                       "friction.dF_dv; 0: friction held over the step)"),
+}
+
+
+def plant_coupling_inputs(plant) -> list[Var]:
+    """Inputs ``dF_dx``, ``dF_dv`` of a plant FMU in external-friction mode (the linearly
+    implicit coupling of ``PlantStepper``); none if its stepper does not take them."""
+    names = getattr(plant.stepper(), "coupling_names", ()) if plant.external_friction else ()
+    out = []
+    for n in names:
+        unit, desc = _COUPLING_INPUT_INFO[n]
+        out.append(Var(n, "input", "Real", 0.0, unit, f"{desc} [{unit}]"))
+    return out
 
 
 # -- slaves ---------------------------------------------------------------------------------
@@ -509,7 +604,9 @@ class LawSlave(SlaveBase):
 
     def rebuild(self, initial):
         cls = self.model_class()
-        model = cls(cls.Params(**self.param_values()))
+        values = self.param_values()
+        values.pop("h_lin", None)  # the coupling's, not the law's
+        model = cls(cls.Params(**values))
         self.model = model
         self.theta = np.ascontiguousarray(model.theta, dtype=np.float64)
         self.kernel = model._kernel
@@ -525,6 +622,18 @@ class LawSlave(SlaveBase):
         self.buf1 = {n: (np.zeros(1) if n in ins else empty) for n in ("v", "a", "load", "x")}
         self.buf2 = {n: (np.zeros(2) if n in ins else empty) for n in ("v", "a", "load", "x")}
         self.names = ins
+        self.lin_idx = [self.index[n] for n in COUPLING_OUTPUTS]
+        self.h_lin = float(self.values[self.index["h_lin"]])
+
+    def _linearise(self):
+        """Coupling outputs dF_dx, dF_dv at the current state and inputs (0 if h_lin = 0)."""
+        if self.h_lin > 0.0:
+            inputs = {n: self.values[i] for n, i in zip(self.names, self.in_idx)}
+            lin = law_linearisation(self.kernel, self.theta, self.state, inputs, self.h_lin)
+        else:
+            lin = (0.0, 0.0)
+        for i, val in zip(self.lin_idx, lin):
+            self.values[i] = float(val)
 
     def _fill(self, bufs):
         for n, i in zip(self.names, self.in_idx):
@@ -537,6 +646,7 @@ class LawSlave(SlaveBase):
         self.values[self.F_idx] = float(F[0])
         for j, i in enumerate(self.state_idx):
             self.values[i] = float(self.state[j])
+        self._linearise()
 
     def advance(self, t, h):
         if self.state.size == 0:
@@ -555,6 +665,7 @@ class LawSlave(SlaveBase):
         self.state = new
         # the kernel's force at the second sample: new state, same (held) inputs
         vals[self.F_idx] = float(F[1])
+        self._linearise()
         return True
 
 
@@ -639,7 +750,8 @@ class StepperSlave(SlaveBase):
         plant = cls(external_friction=True, **params)
         self.stepper = plant.stepper(**options)
         self.stepper.reset(self.time)
-        self.in_names = list(self.stepper.input_names)
+        self.in_names = list(self.stepper.input_names) + [
+            n for n in getattr(self.stepper, "coupling_names", ()) if n in self.index]
         self.out_names = list(self.stepper.output_names)
         self.in_idx = [self.index[n] for n in self.in_names]
         self.out_idx = [self.index[n] for n in self.out_names]

@@ -328,7 +328,7 @@ class Plant:
     def simulate(self, stop_time: float | None = None, *, method: str = "fast",
                  rtol: float = 1e-9, progress: Callable | None = None,
                  inputs: Callable[[float], dict] | None = None, substep: float | None = None,
-                 **experiment_options) -> np.ndarray:
+                 time_budget: float | None = None, **experiment_options) -> np.ndarray:
         """Simulate the default experiment (or a changed one).
 
         Parameters
@@ -338,7 +338,10 @@ class Plant:
         method : {"fast", "reference"}
             ``fast``: fixed-step stepper (Heun + the law's stable update).
             ``reference``: ``solve_ivp`` (Radau, tolerance ``rtol``) of plant + friction
-            states between sample instants, discrete values held.
+            states between sample instants, discrete values held. A law whose coefficients
+            jump at |v| = vc (``friction.reference.regime_split``) is integrated regime by
+            regime with the crossings located as events, and along the switching surface
+            as a Filippov sliding motion where both regimes push the velocity onto it.
         rtol : float
             Relative tolerance of the reference integrator.
         progress : callable, optional
@@ -348,6 +351,8 @@ class Plant:
             each output interval.
         substep : float, optional
             Internal step of the fast method [s] (default ``max_substep``).
+        time_budget : float, optional
+            Reference only: wall-clock budget [s]; ``TimeoutError`` once exceeded.
         **experiment_options
             ``start``/``step`` of :class:`Experiment`, and the plant's ``options``.
 
@@ -361,7 +366,7 @@ class Plant:
         if method == "fast":
             return plant._simulate_fast(exp, progress, inputs, substep)
         if method == "reference":
-            return plant._simulate_reference(exp, rtol, progress, inputs)
+            return plant._simulate_reference(exp, rtol, progress, inputs, time_budget)
         raise ValueError(f"method must be 'fast' or 'reference', got {method!r}")
 
     # -- helpers shared by both integrators ------------------------------------------------------
@@ -394,8 +399,13 @@ class Plant:
                 progress(min(100, times.size - i), f"t={tk:.4g} s")
         return structured({"time": times, **cols})
 
-    def _simulate_reference(self, exp: Experiment, rtol, progress, inputs) -> np.ndarray:
+    def _simulate_reference(self, exp: Experiment, rtol, progress, inputs,
+                            time_budget=None) -> np.ndarray:
+        import time as _time
+
         from scipy.integrate import solve_ivp  # reference only: FMUs must not need scipy
+
+        from friction.reference import regime_split
 
         if self.external_friction:
             raise ValueError("the reference integrator needs an internal friction law "
@@ -423,42 +433,147 @@ class Plant:
         scale = np.ones(ns) if self.state_scale is None else np.asarray(self.state_scale, float)
         zscale = np.full(nz, getattr(law, "z_max", lambda: 1e-5)())
         atol = rtol * np.concatenate((scale, zscale)) * 10.0
+        deadline = None if time_budget is None else _time.monotonic() + float(time_budget)
 
-        def friction_force(t, y, d, u, a_guess=0.0):
+        # a law with a coefficient jump at |v| = vc: one smooth law per regime ("low",
+        # "high"), and the Filippov sliding motion "slide" along |v| = vc
+        split = regime_split(law)
+        laws = {"smooth": law} if split is None else {"low": split.low, "high": split.high}
+
+        def friction_force(t, y, d, u, lw, a_guess=0.0):
             x, v, load = self.contact(t, y[:ns], d, u)
             kw = {}
-            if "x" in law.extra_inputs:
+            if "x" in lw.extra_inputs:
                 kw["x"] = x
-            if "load" in law.extra_inputs:
+            if "load" in lw.extra_inputs:
                 kw["load"] = load
-            if "a" in law.extra_inputs:
+            if "a" in lw.extra_inputs:
                 kw["a"] = a_guess
-            return law.force(y[ns:], v, **kw), v, kw
+            return lw.force(y[ns:], v, **kw), v, kw
 
-        def rhs_parts(t, y, d, u):
-            F, v, kw = friction_force(t, y, d, u)
+        def parts_of(t, y, d, u, lw):
+            F, v, kw = friction_force(t, y, d, u, lw)
             ds = self.derivatives(t, y[:ns], d, F, u)
-            if "a" in law.extra_inputs:  # acceleration-dependent law: fixed point on a
+            if "a" in lw.extra_inputs:  # acceleration-dependent law: fixed point on a
                 for _ in range(4):
                     a = self.contact_acceleration(t, y[:ns], ds, d, u)
-                    F, v, kw = friction_force(t, y, d, u, a)
+                    F, v, kw = friction_force(t, y, d, u, lw, a)
                     ds = self.derivatives(t, y[:ns], d, F, u)
-            dz = law.derivatives(y[ns:], v, **kw)
+            dz = lw.derivatives(y[ns:], v, **kw)
             return F, ds, dz
 
-        def rhs(t, y, d, u):
-            _, ds, dz = rhs_parts(t, y, d, u)
+        def sigma(t, y, d, u):
+            """Distance |v| - vc from the switching surface [m/s]."""
+            return abs(self.contact(t, y[:ns], d, u)[1]) - split.vc
+
+        def dsigma(t, y, d, u, ds):
+            """d|v|/dt under one regime's field [m/s^2]."""
+            v = self.contact(t, y[:ns], d, u)[1]
+            return math.copysign(1.0, v) * self.contact_acceleration(t, y[:ns], ds, d, u)
+
+        def sliding_parts(t, y, d, u):
+            Fl, dsl, dzl = parts_of(t, y, d, u, laws["low"])
+            Fh, dsh, dzh = parts_of(t, y, d, u, laws["high"])
+            gl, gh = dsigma(t, y, d, u, dsl), dsigma(t, y, d, u, dsh)
+            # Filippov: the convex combination of both fields tangent to the surface
+            al = min(1.0, max(0.0, gh / (gh - gl))) if gh != gl else 0.5
+            return (al * Fl + (1 - al) * Fh, al * dsl + (1 - al) * dsh,
+                    al * dzl + (1 - al) * dzh)
+
+        def rhs_parts(t, y, d, u, mode):
+            if deadline is not None and _time.monotonic() > deadline:
+                raise TimeoutError(f"{self.name}: reference integrator of {law.name} exceeded "
+                                   f"the time budget of {time_budget:g} s at t = {t:.6g} s")
+            if mode == "slide":
+                return sliding_parts(t, y, d, u)
+            return parts_of(t, y, d, u, laws[mode])
+
+        def rhs(t, y, d, u, mode):
+            _, ds, dz = rhs_parts(t, y, d, u, mode)
             return np.concatenate((ds, dz))
+
+        def classify(t, y, d, u, prev):
+            """Regime at (t, y): by the side of the surface, or on it by where the two
+            fields push (both towards it: sliding; otherwise the side they cross to)."""
+            if split is None:
+                return "smooth"
+            sg = sigma(t, y, d, u)
+            if prev == "slide" or abs(sg) <= 1e-9 * split.vc:
+                gl = dsigma(t, y, d, u, parts_of(t, y, d, u, laws["low"])[1])
+                gh = dsigma(t, y, d, u, parts_of(t, y, d, u, laws["high"])[1])
+                if gl > 0 and gh < 0:
+                    return "slide"
+                if gl > 0 and gh >= 0:
+                    return "high"
+                if gl <= 0 and gh < 0:
+                    return "low"
+                # repulsive surface (both fields point away): stay on the present side
+                return prev if prev in ("low", "high") else ("low" if sg < 0 else "high")
+            return "low" if sg < 0 else "high"
+
+        def segment(ta, tb, y, d, u, t_eval, mode):
+            """Integrate [ta, tb] with d, u held; returns ([(tk, yk, mode)], y(tb), mode)."""
+            out = []
+            t = ta
+            n_events = 0
+            t_ev = np.concatenate((t_eval, [tb])) if (
+                t_eval.size == 0 or abs(t_eval[-1] - tb) > eps) else t_eval
+            forced = None
+            while True:
+                mode = forced or classify(t, y, d, u, mode)
+                forced = None
+                events = []
+                if mode in ("low", "high"):
+                    def cross(tq, yq, *_):
+                        return sigma(tq, yq, d, u)
+                    cross.terminal = True
+                    cross.direction = 1.0 if mode == "low" else -1.0
+                    events = [cross]
+                elif mode == "slide":
+                    def leave_low(tq, yq, *_):  # the low side stops pushing up: leave down
+                        return dsigma(tq, yq, d, u, parts_of(tq, yq, d, u, laws["low"])[1])
+                    leave_low.terminal = True
+                    leave_low.direction = -1.0
+
+                    def leave_high(tq, yq, *_):  # the high side stops pushing down: leave up
+                        return dsigma(tq, yq, d, u, parts_of(tq, yq, d, u, laws["high"])[1])
+                    leave_high.terminal = True
+                    leave_high.direction = 1.0
+                    events = [leave_low, leave_high]
+                te = t_ev[t_ev > t + eps]
+                sol = solve_ivp(rhs, (t, tb), y, method="Radau", rtol=rtol, atol=atol,
+                                args=(d, u, mode), first_step=min(tb - t, 1e-7),
+                                t_eval=te, events=events or None)
+                if sol.status < 0:
+                    raise RuntimeError(f"{self.name}: reference integrator failed at "
+                                       f"t={t:.6g} s: {sol.message}")
+                for k, tk in enumerate(sol.t):
+                    if abs(tk - tb) > eps:
+                        out.append((tk, sol.y[:, k], mode))
+                if sol.status == 0:
+                    return out, sol.y[:, -1], mode
+                # an event: continue from it in the regime it leads to
+                j = next(i for i, ev in enumerate(sol.t_events) if ev.size)
+                t, y = float(sol.t_events[j][0]), sol.y_events[j][0]
+                if mode == "slide":
+                    forced = "low" if j == 0 else "high"
+                n_events += 1
+                if n_events > 10_000:
+                    raise RuntimeError(f"{self.name}: more than 10000 regime switches of "
+                                       f"{law.name} in [{ta:.6g}, {tb:.6g}] s (Zeno)")
+                if t >= tb - eps:
+                    return out, y, (forced or classify(t, y, d, u, mode))
 
         y = np.concatenate((np.asarray(self.initial_state(), float), law.initial_state()))
         d = np.asarray(self.initial_discrete(), float)
         u = self._u(inputs(exp.start) if inputs else None)
         cols = {n: np.empty(times.size) for n in self.all_output_names}
         ti = 0
+        mode = classify(exp.start, y, d, u, "low")
 
-        def record(t, y, d, u):
+        def record(t, y, d, u, mode):
             nonlocal ti
-            F, _, _ = rhs_parts(t, y, d, u)
+            F, _, _ = rhs_parts(t, y, d, u, mode)
             out = self.output(t, y[:ns], d, F, u)
             out["F"] = F
             for n in cols:
@@ -470,30 +585,20 @@ class Plant:
         if abs(times[0] - bps[0]) <= eps:  # the start instant
             if is_sample[0]:
                 d = np.asarray(self.discrete_update(bps[0], y[:ns], d, u), float)
-            record(bps[0], y, d, u)
+            record(bps[0], y, d, u, classify(bps[0], y, d, u, mode))
         for j in range(1, bps.size):
             ta, tb = bps[j - 1], bps[j]
             lo = np.searchsorted(times, ta + eps, side="left")
             hi = np.searchsorted(times, tb + eps, side="left")
-            t_eval = times[lo:hi]
-            sol = solve_ivp(rhs, (ta, tb), y, method="Radau", rtol=rtol, atol=atol,
-                            args=(d, u), first_step=min(tb - ta, 1e-7),
-                            t_eval=np.concatenate((t_eval, [tb])) if (
-                                t_eval.size == 0 or abs(t_eval[-1] - tb) > eps) else t_eval)
-            if not sol.success:
-                raise RuntimeError(f"{self.name}: reference integrator failed at "
-                                   f"t={ta:.6g} s: {sol.message}")
-            for k, tk in enumerate(t_eval):
-                if abs(tk - tb) <= eps:
-                    break
-                record(tk, sol.y[:, k], d, u)   # output inside the segment: d held
-            y = sol.y[:, -1]
+            inner, y, mode = segment(ta, tb, y, d, u, times[lo:hi], mode)
+            for tk, yk, mk in inner:
+                record(tk, yk, d, u, mk)   # output inside the segment: d held
             if is_sample[j]:
                 d = np.asarray(self.discrete_update(tb, y[:ns], d, u), float)
             if ti < times.size and abs(tb - times[ti]) <= eps:
                 if inputs is not None:
                     u = self._u(inputs(tb))
-                record(tb, y, d, u)
+                record(tb, y, d, u, classify(tb, y, d, u, mode))
         return structured({"time": times, **cols})
 
 
@@ -577,11 +682,26 @@ class PlantStepper:
     ``do_step(t, h)`` integrates ``[t, t+h]`` with internal substeps no longer than
     ``substep``; discrete updates run at every sample instant ``start + k / control_rate``
     reached on the way (including ``t+h`` itself). External inputs are held over the step.
+
+    Linearly implicit coupling (external friction only): the optional inputs
+    ``coupling_names`` = ``("dF_dx", "dF_dv")`` [N/m, N.s/m] are the friction law's local
+    linearisation over the coming step. The step then integrates with
+
+        F(t) = F_friction + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k)
+
+    where ``x_k, v_k`` is the contact motion at the start of the step, so the stiff part of
+    the contact (bristle spring, damping) is resolved inside the plant's own substeps instead
+    of being held over the communication step; the substep shrinks so that the explicit
+    integrator stays stable against that stiffness. Both default to 0 (force held).
     """
+
+    #: inputs of the linearly implicit coupling (external friction mode)
+    COUPLING_INPUTS = ("dF_dx", "dF_dv")
 
     def __init__(self, plant: Plant, *, substep: float | None = None, start: float = 0.0,
                  friction_method: str = "exact"):
         self.plant = plant
+        self.coupling_names = self.COUPLING_INPUTS if plant.external_friction else ()
         self.input_names = plant.all_input_names
         self.output_names = plant.all_output_names
         self.parameter_names = plant.parameter_names
@@ -605,6 +725,8 @@ class PlantStepper:
         self.u = p._u(None)
         self.z = None if self.fric is None else p.friction.initial_state().astype(float)
         self._a = 0.0
+        self._lin = [0.0, 0.0]  # dF_dx [N/m], dF_dv [N.s/m] of the coupling
+        self._lin_ref = None    # (F_k, x_k, v_k, substep) of the current step when linearised
         Ts = p._sample_period()
         self._Ts = Ts
         self._k = 0  # index of the next sample instant
@@ -614,9 +736,12 @@ class PlantStepper:
     def set_inputs(self, values: dict) -> None:
         """Set external inputs (held until changed); unknown names raise ``KeyError``."""
         for k, val in values.items():
+            if k in self.coupling_names:
+                self._lin[self.coupling_names.index(k)] = float(val)
+                continue
             if k not in self.u:
                 raise KeyError(f"{self.plant.name}: unknown input {k!r}; inputs are "
-                               f"{list(self.u)}")
+                               f"{list(self.u) + list(self.coupling_names)}")
             self.u[k] = float(val)
         if self.fric is None:
             self._F = self.u["F_friction"]
@@ -642,6 +767,11 @@ class PlantStepper:
         t_end = t + h
         tol = 1e-12 * max(1.0, abs(t_end))
         tc = self.time
+        self._lin_ref = None
+        if self.fric is None and (self._lin[0] != 0.0 or self._lin[1] != 0.0):
+            x_k, v_k, _ = self.plant.contact(tc, self.s, self.d, self.u)
+            self._lin_ref = (self.u["F_friction"], float(x_k), float(v_k),
+                             self._coupled_substep())
         while tc < t_end - tol:
             t_next = t_end
             if self._Ts is not None:
@@ -676,7 +806,54 @@ class PlantStepper:
         x, v, load = self.plant.contact(self.time, self.s, self.d, self.u)
         return self.fric.force(self.z, x, v, self._a, load)
 
+    def _coupled_substep(self) -> float:
+        """Largest stable substep [s] against the linearised friction (Heun: |h lambda| <= 1
+        on the damping, omega h <= 0.2 on the spring, a margin on the imaginary axis)."""
+        p, t, s, d, u = self.plant, self.time, self.s, self.d, self.u
+        F = self.u["F_friction"]
+        ds0 = p.derivatives(t, s, d, F, u)
+        dF = 1.0 + 1e-6 * abs(F)
+        ds1 = p.derivatives(t, s, d, F + dF, u)
+        # the contact's inverse mass: d(acceleration)/dF
+        w = abs(p.contact_acceleration(t, s, ds1, d, u)
+                - p.contact_acceleration(t, s, ds0, d, u)) / dF
+        K, D = abs(self._lin[0]), abs(self._lin[1])
+        h = self.substep
+        if w * D > 0:
+            h = min(h, 1.0 / (w * D))
+        if w * K > 0:
+            h = min(h, 0.2 / math.sqrt(w * K))
+        return h
+
+    def _coupled_force(self, t, s) -> float:
+        F_k, x_k, v_k, _ = self._lin_ref
+        x, v, _ = self.plant.contact(t, s, self.d, self.u)
+        return F_k + self._lin[0] * (x - x_k) + self._lin[1] * (v - v_k)
+
+    def _integrate_coupled(self, ta: float, tb: float) -> None:
+        """Heun substeps with the linearised friction evaluated at every stage."""
+        n = max(1, int(math.ceil((tb - ta) / self._lin_ref[3] - 1e-9)))
+        h = (tb - ta) / n
+        p, d, u = self.plant, self.d, self.u
+        s = self.s
+        F = self._coupled_force(ta, s)
+        for i in range(n):
+            t0 = ta + i * h
+            k1 = p.derivatives(t0, s, d, F, u)
+            s_pred = s + h * k1
+            k2 = p.derivatives(t0 + h, s_pred, d, self._coupled_force(t0 + h, s_pred), u)
+            s = s + 0.5 * h * (k1 + k2)
+            F = self._coupled_force(t0 + h, s)
+        if not (np.all(np.isfinite(s)) and math.isfinite(F)):
+            raise FloatingPointError(
+                f"{p.name}: the fast integrator diverged between t={ta:.6g} s and {tb:.6g} s "
+                f"(substep {h:.3g} s, coupling dF_dx = {self._lin[0]:g} N/m, dF_dv = "
+                f"{self._lin[1]:g} N.s/m)")
+        self.s, self._F = s, F
+
     def _integrate(self, ta: float, tb: float) -> None:
+        if self._lin_ref is not None:
+            return self._integrate_coupled(ta, tb)
         n = max(1, int(math.ceil((tb - ta) / self.substep - 1e-9)))
         h = (tb - ta) / n
         p = self.plant

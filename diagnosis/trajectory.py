@@ -442,14 +442,15 @@ def _reference_output(plant) -> str | None:
 
 
 def _options_for(plant, record_options: dict) -> dict:
-    """Experiment options of one run; a friction feedforward keeps the nominal law the real
-    controller uses (not the candidate being tested)."""
+    """Experiment options of one run. A friction feedforward is part of the controller that
+    ran on the machine, not of the friction model under test: unless the record names its
+    ``compensator``, it is the plant's default law (what the plant FMU uses too), never the
+    candidate being simulated."""
     opts = dict(record_options)
     if "compensator" in plant.options and opts.get("compensation",
                                                   plant.opts.get("compensation", False)):
         if opts.get("compensator", plant.opts.get("compensator")) is None:
-            opts["compensator"] = plant.friction if plant.friction is not None \
-                else plant.default_friction()
+            opts["compensator"] = plant.default_friction()
     return opts
 
 
@@ -812,8 +813,8 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     plant : Plant or str
         The plant model (instance, or registry name of :data:`plants.PLANTS`); its own
         friction law is replaced by the base law and the candidates. With a friction
-        feedforward (XML-350 ``compensation=True``) the controller keeps the plant's own
-        law as its compensator, as the real controller does.
+        feedforward (XML-350 ``compensation=True``) the controller's compensator is the
+        record's ``compensator`` option, else the plant's default law - never the candidate.
     model : str or FrictionModel
         Base law (registry name: started from the plant's own law when the names agree, or
         from the plant law's shared values; or an instance whose values start the fit).

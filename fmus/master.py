@@ -248,6 +248,10 @@ class Master:
         for di, dv, si, sv in self.connections:
             dst, src = self.instances[di], self.instances[si]
             self._gather[di].append((dst.inputs.index(dv), src, src.outputs.index(sv)))
+        for inst in self.instances.values():
+            inst.gather = self._gather[inst.name]
+        self._feedthrough = [self.instances[n] for n in self.order
+                             if self.instances[n].feedthrough]
         self._conn_src = [(self.instances[si].out_buf, self.instances[si].outputs.index(sv))
                           for _, _, si, sv in self.connections]
         self._columns = []
@@ -321,15 +325,28 @@ class Master:
                 "stop_time": max(stops) if stops else None,
                 "step_size": min(steps) if steps else None}
 
-    def _gather_set(self, inst, t):
-        """Copy connected source outputs into inst's input buffer and set them."""
+    def _gather_set(self, inst, t, only_changed=False):
+        """Copy connected source outputs into inst's input buffer and set them (one
+        fmi2SetReal for all inputs). ``only_changed``: skip the call when no input changed
+        since the last set; returns whether it was made."""
         buf = inst.in_buf
-        for slot, src, k in self._gather[inst.name]:
-            buf[slot] = src.out_buf[k]
+        if only_changed:
+            same = True
+            for slot, src, k in inst.gather:
+                value = src.out_buf[k]
+                if buf[slot] != value:
+                    buf[slot] = value
+                    same = False
+            if same:
+                return False
+        else:
+            for slot, src, k in inst.gather:
+                buf[slot] = src.out_buf[k]
         if inst.n_in:
             st = inst.f_set(inst.c, inst.in_vr, inst.n_in, buf)
             if st > 1:
                 self._check(inst, "fmi2SetReal", st, t)
+        return True
 
     def _get(self, inst, t):
         if inst.n_out:
@@ -341,19 +358,30 @@ class Master:
         return np.array([buf[k] for buf, k in self._conn_src])
 
     def _settle(self, t, passes):
-        """Propagate connected values through feedthrough outputs (fixed-point iteration)."""
-        ft = [self.instances[n] for n in self.order if self.instances[n].feedthrough]
+        """Propagate connected values through feedthrough outputs (fixed-point iteration).
+
+        An instance whose inputs did not change since they were last set is skipped (its
+        outputs cannot have changed); a pass in which nothing changed ends the iteration,
+        and the relative-tolerance test runs only when another pass may follow.
+        """
+        ft = self._feedthrough
         if not ft:
             return 0
-        prev = self._connected_values()
+        check = passes > 1
+        prev = self._connected_values() if check else None
         for it in range(1, passes + 1):
+            changed = False
             for inst in ft:
-                self._gather_set(inst, t)
-                self._get(inst, t)
-            cur = self._connected_values()
-            if np.all(np.abs(cur - prev) <= self.tolerance * (1.0 + np.abs(cur))):
+                if self._gather_set(inst, t, only_changed=True):
+                    self._get(inst, t)
+                    changed = True
+            if not changed:
                 return it
-            prev = cur
+            if check and it < passes:
+                cur = self._connected_values()
+                if np.all(np.abs(cur - prev) <= self.tolerance * (1.0 + np.abs(cur))):
+                    return it
+                prev = cur
         return passes
 
     # -- simulation -----------------------------------------------------------------------
@@ -419,22 +447,36 @@ class Master:
         gs = self.algorithm == "gauss-seidel"
         iters = self.iterations
         chunk = max(1, n // 100)
+        # per instance, everything a step touches, unpacked once (the loop below is the
+        # per-step overhead of the master: one fmi2SetReal, fmi2DoStep, fmi2GetReal each)
+        plan = [(inst, inst.c, [(slot, src.out_buf, j) for slot, src, j in inst.gather],
+                 inst.in_buf, inst.in_vr, inst.n_in, inst.f_set, inst.f_step,
+                 inst.out_buf, inst.out_vr, inst.n_out, inst.f_get) for inst in insts]
+        check = self._check
         for k in range(1, n + 1):
             t = t0 + (k - 1) * h
             if gs:
-                for inst in insts:
-                    self._gather_set(inst, t)
-                    st = inst.f_step(inst.c, t, h, 1)
+                for inst, c, gather, ibuf, ivr, nin, fset, fstep, obuf, ovr, nout, fget in plan:
+                    if nin:
+                        for slot, src, j in gather:
+                            ibuf[slot] = src[j]
+                        st = fset(c, ivr, nin, ibuf)
+                        if st > 1:
+                            check(inst, "fmi2SetReal", st, t)
+                    st = fstep(c, t, h, 1)
                     if st > 1:
-                        self._check(inst, "fmi2DoStep", st, t)
-                    self._get(inst, t + h)
+                        check(inst, "fmi2DoStep", st, t)
+                    if nout:
+                        st = fget(c, ovr, nout, obuf)
+                        if st > 1:
+                            check(inst, "fmi2GetReal", st, t + h)
             else:
                 for inst in insts:
                     self._gather_set(inst, t)
                 for inst in insts:
                     st = inst.f_step(inst.c, t, h, 1)
                     if st > 1:
-                        self._check(inst, "fmi2DoStep", st, t)
+                        check(inst, "fmi2DoStep", st, t)
                 for inst in insts:
                     self._get(inst, t + h)
             if iters:

@@ -405,6 +405,8 @@ class SlaveBase(Fmi2Slave):
         self.index = {v.name: i for i, v in enumerate(self.variables)}
         self.roles = [v.causality for v in self.variables]
         self.output_idx = [i for i, r in enumerate(self.roles) if r == "output"]
+        #: per value reference: a Real input (set_real's fast path)
+        self.fast_input = [v.causality == "input" and v.type == "Real" for v in self.variables]
         for i, v in enumerate(self.variables):
             var_cls = _TYPES[v.type]
             variability = (Fmi2Variability.tunable if v.causality == "parameter"
@@ -558,13 +560,28 @@ class SlaveBase(Fmi2Slave):
             self.params_dirty = True
         self.outputs_dirty = True
 
-    def set_real(self, vrs, values):
+    def set_values(self, vrs, values):
+        """Set any variables, each checked by ``_check_set``."""
         for vr, value in zip(vrs, values):
             self._check_set(vr, value)
 
-    set_integer = set_real
-    set_boolean = set_real
-    set_string = set_real
+    def set_real(self, vrs, values):
+        # fast path for finite Real inputs (every communication step); everything else,
+        # and every value while a refusal is pending, goes through _check_set
+        if self.pending:
+            self.set_values(vrs, values)
+            return
+        fast, vals = self.fast_input, self.values
+        for vr, value in zip(vrs, values):
+            if fast[vr] and value - value == 0.0:  # 0.0 exactly when value is finite
+                vals[vr] = value
+            else:
+                self._check_set(vr, value)
+        self.outputs_dirty = True
+
+    set_integer = set_values
+    set_boolean = set_values
+    set_string = set_values
 
     def get_real(self, vrs):
         if self.outputs_dirty:

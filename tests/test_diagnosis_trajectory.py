@@ -305,3 +305,24 @@ def test_fmu_engine_diagnosis_matches_the_plant_engine():
         reps["plant"]["verdict"]["gap_closed"], abs=0.05)
     assert reps["fmu"]["baseline"]["validation"] == pytest.approx(
         reps["plant"]["baseline"]["validation"], rel=0.05)
+
+
+# -- the valve (seed 000): lift tracking with a frictional lag the classic LuGre lacks -------------
+@pytest.mark.slow
+def test_valve_frictional_lag_is_named():
+    if "valve" not in plants.PLANTS:
+        pytest.skip("valve not available")
+    from plants.valve import ValveActuator, classic_lugre_twin, valve_friction
+    truth_law = valve_friction(v1=0.3, v2=0.5)  # seed 000 law, switch band above the speeds
+    truth = ValveActuator(truth_law)
+    fo, vo = dict(freq=10.0, magnitude=4e-3), dict(freq=7.0, magnitude=6e-3)
+    fit = record_from_result(truth.simulate(0.1, **fo), fo, signal="S_meas", noise=2e-8,
+                             seed=1, name="10Hz")
+    val = record_from_result(truth.simulate(0.143, **vo), vo, signal="S_meas", noise=2e-8,
+                             seed=2, name="7Hz")
+    model = ValveActuator(classic_lugre_twin(truth_law))  # same levels and twins, no F_d
+    rep = diagnose_trajectory(fit, model, "lugre", validation=val,
+                              candidates=["acceleration", "inertia", "asymmetry", "delay"])
+    assert rep["plant"] == "valve"
+    assert rep["verdict"]["cause"] == "acceleration", rep.summary()
+    assert rep["effects"][0]["excess_closed"] >= 0.7

@@ -1,0 +1,209 @@
+"""Plant + friction co-simulation at the data rate (linearly implicit coupling) and the
+reference integrator across the load law's regime switch.
+
+Fast tests run the coupling in-process (the same ``PlantStepper`` and
+``fmus.runtime.law_linearisation`` the FMUs run, without building FMUs); the FMU proofs are
+slow.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+plants = pytest.importorskip("plants")
+pytest.importorskip("pythonfmu")
+
+import friction  # noqa: E402
+from friction.metrics import nrmse  # noqa: E402
+from fmus.runtime import law_linearisation  # noqa: E402
+
+
+def _lin(law, state, h, **inputs):
+    return law_linearisation(law._kernel, np.ascontiguousarray(law.theta),
+                             np.asarray(state, float), inputs, h)
+
+
+def test_linearisation_is_the_bristle_spring_when_sticking_and_viscous_when_sliding():
+    law = friction.make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=40.0, Fc=1.0, Fs=1.5,
+                              vs=1e-3)
+    p = law.params
+    # at rest with a relaxed bristle: spring sigma0 on the travel, sigma1 + sigma2 on v
+    K, D = _lin(law, [0.0], 1e-6, v=0.0)
+    assert K == pytest.approx(p.sigma0, rel=1e-3)
+    assert D == pytest.approx(p.sigma1 + p.sigma2, rel=1e-3)
+    # steady sliding far above vs: no bristle memory left, the viscous slope sigma2
+    v = 0.05
+    z_ss = np.array([float(law.steady_state(np.array([v]))[0] - p.sigma2 * v) / p.sigma0])
+    K, D = _lin(law, z_ss, 1e-3, v=v)
+    assert D == pytest.approx(p.sigma2, rel=1e-2)
+    assert abs(K) * 1e-3 < 1e-3 * p.Fc  # a spring that would move F by < 0.1 % of Fc
+
+
+def test_linearisation_ignores_the_regime_jump_of_the_load_law():
+    from plants.forging_press import press_friction
+    law = press_friction()
+    vc, load = law.vc, 8e4
+    # just below vc under load: the finite difference must not straddle the jump
+    K, D = _lin(law, [1e-5], 1e-3, v=vc * (1 - 1e-7), load=load)
+    lo = _lin(law, [1e-5], 1e-3, v=0.9 * vc, load=load)
+    assert abs(D) < 10 * abs(lo[1]) + 1e7
+    assert math.isfinite(K) and abs(K) < 10 * law.params.sigma0
+
+
+class _LawStep:
+    """In-process stand-in of the law FMU: inputs held over the step (as LawSlave)."""
+
+    def __init__(self, law):
+        self.law, self.theta = law, np.ascontiguousarray(law.theta)
+        self.state = np.asarray(law.initial_state(), float).copy()
+        self.inp = {n: 0.0 for n in ["v"] + [n for n in ("a", "load", "x")
+                                             if n in law.extra_inputs]}
+
+    def _arr(self, n, k):
+        return np.full(k, self.inp[n]) if n in self.inp else np.zeros(0)
+
+    def force(self):
+        F, _ = self.law._kernel(np.zeros(1), *(self._arr(n, 1) for n in ("v", "a", "load", "x")),
+                                self.theta, 0, self.state)
+        return float(F[0])
+
+    def advance(self, h):
+        _, S = self.law._kernel(np.array([0.0, h]),
+                                *(self._arr(n, 2) for n in ("v", "a", "load", "x")),
+                                self.theta, 0, self.state)
+        self.state = S[1].copy()
+
+
+def _cosim(plant_cls, law, h, stop, linearised=True):
+    """Gauss-Seidel plant -> law loop as fmus.plant_fmus.plant_master runs it."""
+    from fmus.plant_fmus import plant_connections
+    st = plant_cls(external_friction=True).stepper()
+    L = _LawStep(law)
+    src = {b.split(".")[1]: a.split(".")[1]
+           for a, b in plant_connections(plant_cls, type(law), "hold")
+           if b.startswith("friction.")}
+    n = int(round(stop / h))
+    out = np.empty(n + 1)
+
+    def feed():
+        o = st.outputs()
+        L.inp.update({k: o[s] for k, s in src.items()})
+        return o[plant_cls.main_output]
+
+    out[0] = feed()
+    for k in range(1, n + 1):
+        F = L.force()
+        K, D = _lin(law, L.state, h, **L.inp) if linearised else (0.0, 0.0)
+        st.set_inputs({"F_friction": F, "dF_dx": K, "dF_dv": D})
+        st.do_step((k - 1) * h, h)
+        out[k] = feed()
+        L.advance(h)
+    return out
+
+
+def test_press_linearised_coupling_is_stable_where_holding_the_force_is_not():
+    # a 1e9 N/m bristle on 80 t: held over the 10 ms data period the force throws the beam
+    # through the workpiece; linearised, the stiff part is integrated by the plant itself
+    from fmus.plant_fmus import classic_lugre_for
+    from plants.forging_press import ForgingPress
+    law = classic_lugre_for(ForgingPress)   # the seed's levels, sigma0 clipped to 1e9 N/m
+    stop = 0.4
+    ref = ForgingPress(friction=law).simulate(stop, method="reference", time_budget=120)
+
+    def err(h, linearised=True):
+        return nrmse(ref["x"], _cosim(ForgingPress, law, h, stop, linearised)[::round(0.01 / h)])
+
+    e10, e5 = err(1e-2), err(5e-3)
+    assert e5 < e10 / 1.5, (e10, e5)      # about first order as the step halves
+    assert err(1e-3) <= 1e-3               # the controller rate meets the proof tolerance
+    try:
+        e_hold = err(1e-2, linearised=False)
+    except (ValueError, FloatingPointError):  # the workpiece is crushed / the step diverges
+        e_hold = math.inf
+    assert e_hold > 10 * e10, (e_hold, e10)
+
+
+def test_press_reference_slides_along_vc_where_the_load_law_jumps():
+    # under load the coefficients jump at vc: the beam sticks to |v| = vc (both regimes push
+    # it there) until the drive overcomes the high-regime friction; the reference follows
+    # that Filippov sliding motion instead of stalling in the chatter
+    from plants.forging_press import ForgingPress, press_friction
+    law = press_friction()
+    ref = ForgingPress(friction=law).simulate(0.3, method="reference", time_budget=120)
+    v = ref["v"]
+    on = np.abs(v - law.vc) <= 1e-9 * law.vc
+    assert on.sum() >= 2, v[10:25]
+    assert np.all(ref["load"][on] > 0)  # a jump only under load
+    # continuous friction across the sliding interval: Filippov force lies between regimes
+    assert np.all(np.abs(np.diff(ref["F"])) < 0.2 * np.ptp(ref["F"]))
+    # the fixed-step integrator chatters about vc with the same mean motion
+    fast = ForgingPress(friction=law).simulate(0.3)
+    assert nrmse(ref["x"], fast["x"]) < 2e-3
+
+
+def test_regime_split_gives_each_side_of_the_load_law():
+    from friction.reference import regime_split
+    from plants.forging_press import press_friction
+    law = press_friction()
+    sp = regime_split(law)
+    z = np.array([0.0])
+    for v in (0.5 * law.vc, 2.0 * law.vc, -3.0 * law.vc):
+        side = sp.low if abs(v) < law.vc else sp.high
+        assert side.force(z, v, load=5e4) == pytest.approx(law.force(z, v, load=5e4))
+    assert regime_split(friction.make_model("lugre")) is None
+
+
+# -- FMU proofs (slow) ---------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def proof_fmu_dir():
+    from fmus.testing import built_fmus
+    names = tuple(sorted(set(plants.PLANTS) | set(friction.MODELS)))
+    return built_fmus(names)
+
+
+#: plants whose proof meets 1e-3 at the data (or controller) rate with the linearised coupling
+AT_DATA_RATE = ("xml350", "valve", "forging_press")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("plant", AT_DATA_RATE)
+def test_plant_fmu_proof_at_the_data_rate(proof_fmu_dir, plant):
+    from fmus.plant_fmus import data_step, plant_laws, plant_proof
+    cls = plants.PLANTS[plant]
+    stop = min(float(cls.default_experiment.stop), 200.0 / cls.data_rate)
+    for law in plant_laws(cls).values():
+        r = plant_proof(proof_fmu_dir, plant, law, stop=stop, refinements=2, max_halvings=1,
+                        time_budget=300)
+        assert r["steps"][0] == pytest.approx(data_step(cls)), r
+        assert r["nrmse_first"] <= 1e-3, (plant, law.name, r)
+        assert r["errors"][1] < r["errors"][0], (plant, law.name, r)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("plant", ["damping_rig", "mre_isolator"])
+def test_reversal_plants_meet_the_tolerance_with_the_finer_step_fallback(proof_fmu_dir, plant):
+    from fmus.demo import FALLBACK_STEP
+    from fmus.plant_fmus import plant_laws, plant_proof
+    cls = plants.PLANTS[plant]
+    stop = min(float(cls.default_experiment.stop), 200.0 / cls.data_rate)
+    for law in plant_laws(cls).values():
+        r = plant_proof(proof_fmu_dir, plant, law, stop=stop, max_step=FALLBACK_STEP,
+                        refinements=1, max_halvings=0)
+        assert r["nrmse"] <= 1e-3, (plant, law.name, r)
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="the reversal of the sliding velocity within one "
+                   "data period (1 ms rig, 3.9 ms isolator) is not captured by a linearisation "
+                   "at the start of the step: NRMSE 1.2e-2 (rig), 3e-2..7e-2 (isolator)")
+@pytest.mark.parametrize("plant", ["damping_rig", "mre_isolator"])
+def test_reversal_plants_at_the_data_rate(proof_fmu_dir, plant):
+    from fmus.plant_fmus import plant_laws, plant_proof
+    cls = plants.PLANTS[plant]
+    stop = min(float(cls.default_experiment.stop), 200.0 / cls.data_rate)
+    for law in plant_laws(cls).values():
+        r = plant_proof(proof_fmu_dir, plant, law, stop=stop, refinements=1, max_halvings=0)
+        assert r["nrmse_first"] <= 1e-3, (plant, law.name, r)

@@ -866,6 +866,15 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         raise ValueError("plant must carry its friction law (external_friction=False)")
     if not isinstance(measured, TrajectoryRecord):
         raise TypeError(f"measured must be a TrajectoryRecord, got {type(measured).__name__}")
+    sig = measured.signal or plant.main_output
+    if sig not in plant.all_output_names:
+        raise ValueError(f"plant {plant.name} has no output {sig!r}; outputs: "
+                         f"{list(plant.all_output_names)}")
+    unit = (getattr(plant, "signals", {}) or {}).get(sig, ("m",))[0]
+    if unit != "m":
+        raise ValueError(f"plant {plant.name}: the compared output {sig!r} is in {unit!r}, not "
+                         f"a position; a force measurement is diagnosed at the friction-force "
+                         f"level (diagnosis.diagnose)")
     if callable(progress):
         say = progress
     elif progress:

@@ -326,3 +326,24 @@ def test_valve_frictional_lag_is_named():
     assert rep["plant"] == "valve"
     assert rep["verdict"]["cause"] == "acceleration", rep.summary()
     assert rep["effects"][0]["excess_closed"] >= 0.7
+
+
+def test_chronological_hold_out_of_one_record():
+    """No validation record: fitted on the first 70 %, scored on the rest, which the model
+    predicts by running through the whole record."""
+    stage = XML350(_truth("asymmetry"), f_current=2000.0)
+    rec = record_from_result(stage.simulate(0.34, **VAL), VAL, signal="x_meas", noise=NOISE,
+                             seed=3, name="one record")
+    rep = diagnose_trajectory(rec, _model(), "lugre",
+                              candidates=["asymmetry", "inertia", "delay"])
+    assert rep["timing"]["fit_samples"] + rep["timing"]["validation_samples"] == rec.t.size
+    assert rep["verdict"]["cause"] == "asymmetry", rep.summary()
+
+
+def test_force_output_plants_are_sent_to_the_force_level():
+    if "damping_rig" not in plants.PLANTS:
+        pytest.skip("damping rig not available")
+    rig = plants.make_plant("damping_rig")
+    t = np.arange(200) * 1e-3
+    with pytest.raises(ValueError, match="friction-force"):
+        diagnose_trajectory(TrajectoryRecord(t, np.zeros_like(t)), rig)

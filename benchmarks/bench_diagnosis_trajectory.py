@@ -8,7 +8,10 @@ what the truth itself closes, the number of plant simulations, and the wall time
 to one plant simulation of the fit record measured in the same run (compiled kernel and
 generic stepper), plus the FMU engine's cost per simulation.
 
-    python benchmarks/bench_diagnosis_trajectory.py [--quick]
+    python benchmarks/bench_diagnosis_trajectory.py [--quick] [--sweep]
+
+``--sweep`` adds the attribution sweep: truths clean / asymmetry / acceleration / mass error
+at two strengths and two noise seeds, every candidate, reporting top-1 accuracy.
 """
 import math
 import sys
@@ -29,15 +32,40 @@ def sine(A, f):
     return Sine(A, f, offset=A, phase=-0.5 * math.pi)
 
 
-def truth(kind):
+def truth(kind, s=1.0):
+    """Truth friction; forms differ from the candidates' formulas (direction-dependent
+    Stribeck velocity too; a first-order frictional lag instead of a static tanh term)."""
     p = {k: getattr(xml350_friction().params, k)
          for k in ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "b", "shape")}
-    if kind == "clean":
+    if kind in ("clean", "inertia"):
         return xml350_friction()
     if kind == "asymmetry":
-        return make_model("modified_lugre", **p, f_a=0.0, Fc_neg=0.80, Fs_neg=0.95,
-                          vs_neg=2e-5, sigma2_neg=12.0)
-    return make_model("modified_lugre", **p, f_a=0.3, a_s=0.05, v_c=2e-3, tau=5e-3)
+        return make_model("modified_lugre", **p, f_a=0.0, Fc_neg=0.95 - 0.15 * s,
+                          Fs_neg=1.1 - 0.15 * s, vs_neg=1e-5 * (1 + s),
+                          sigma2_neg=15.62 - 3.6 * s)
+    return make_model("modified_lugre", **p, f_a=0.3 * s, a_s=0.05, v_c=2e-3, tau=5e-3)
+
+
+def sweep(fit_opts, val_opts, model):
+    rows = []
+    for kind in ("clean", "asymmetry", "acceleration", "inertia"):
+        for s in ((1.0,) if kind == "clean" else (0.5, 1.0)):
+            for seed in (1, 2):
+                M = 11.8 * (1 + 0.1 * s) if kind == "inertia" else 11.8
+                stage = XML350(truth(kind, s), f_current=2000.0, M=M)
+                fit = record_from_result(stage.simulate(0.2, **fit_opts), fit_opts,
+                                         signal="x_meas", noise=3e-10, seed=seed)
+                val = record_from_result(stage.simulate(0.34, **val_opts), val_opts,
+                                         signal="x_meas", noise=3e-10, seed=seed + 10)
+                t0 = time.perf_counter()
+                rep = diagnose_trajectory(fit, model, "lugre", validation=val)
+                want = "none" if kind == "clean" else kind
+                got = rep["verdict"]["cause"]
+                rows.append(got == want)
+                print(f"  {kind:12s} strength {s:.1f} seed {seed}: {got:14s} "
+                      f"{'ok' if got == want else 'WRONG'}  ({time.perf_counter() - t0:.0f} s)",
+                      flush=True)
+    print(f"sweep: top-1 (none on clean) {100 * np.mean(rows):.0f} % of {len(rows)} cases")
 
 
 def main(quick=False):
@@ -90,6 +118,9 @@ def main(quick=False):
     t_plant = time.perf_counter() - t0
     print(f"\nFMU engine, 30 ms S-curve: {t_fmu:.3f} s per simulation = "
           f"{t_fmu / t_plant:.0f} x the in-process plant ({t_plant * 1e3:.1f} ms)")
+    if "--sweep" in sys.argv:
+        print("\nattribution sweep (every candidate, default settings):")
+        sweep(fit_opts, val_opts, model)
 
 
 if __name__ == "__main__":

@@ -69,7 +69,7 @@ from friction import FrictionModel, make_model
 from friction.dataset import Dataset
 
 from .core import MIN_EXCESS_CLOSED, NOISE_RATIO, TIE, BASE_NAMES, DiagnosisReport, noise_floor
-from .effects import CANDIDATES, EFFECT_NAMES, Context, Extra, make_context
+from .effects import CANDIDATES, EFFECT_NAMES, Context, make_context
 from .regions import band_splits, frequency_split, regime_split
 
 __all__ = ["TrajectoryRecord", "record_from_result", "load_record", "parse_experiment",
@@ -966,8 +966,8 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         sens = {}
         for j, c in enumerate(full.coords):
             u = u_ref.copy()
-            u[j] = np.clip(c.to_unit(c.x0 * 1.1) if c.log else c.to_unit(c.x0 + 0.1 * (c.hi - c.lo)),
-                           0.0, 1.0)
+            step = c.to_unit(c.x0 * 1.1) if c.log else c.to_unit(c.x0 + 0.1 * (c.hi - c.lo))
+            u[j] = np.clip(step, 0.0, 1.0)
             sens[c.name] = float(np.sqrt(np.mean((residual(full, u, fit_case) - r0) ** 2)))
         top = max(sens.values()) or 1.0
         fit_names = sorted([n for n in base_all if sens[n] >= 0.2 * top],
@@ -996,7 +996,8 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     else:
         cat = lambda k: np.concatenate([getattr(p[0], k) for p in parts])
         n_all = sum(p[0].t.size for p in parts)
-        val_cat = Dataset(t=np.arange(n_all) * measured.dt, x=cat("x"), v=cat("v"), a=cat("a"), F=cat("F"), name="held-out")
+        val_cat = Dataset(t=np.arange(n_all) * measured.dt, x=cat("x"), v=cat("v"),
+                          a=cat("a"), F=cat("F"), name="held-out")
         r_cat = np.concatenate([p[1] for p in parts])
     white = float(np.mean([noise_floor(d, r) * np.std(d.F) for d, r in parts])
                   / (np.std(np.concatenate([d.F for d, _ in parts])) or 1.0))

@@ -180,8 +180,13 @@ def test_asymmetry_is_named_and_the_gap_closed_matches_the_truth():
 
 def test_clean_truth_gives_none():
     fit, val, _ = _records("clean")
-    rep = diagnose_trajectory(fit, _model(), "lugre", validation=val,
+    stage = XML350(_truth("clean"), f_current=2000.0)
+    opts = dict(trajectory=_sine(30e-6, 8.0), **LOOP)
+    val2 = record_from_result(stage.simulate(0.15, **opts), opts, signal="x_meas",
+                              noise=NOISE, seed=4, name="held-out 2")
+    rep = diagnose_trajectory(fit, _model(), "lugre", validation=[val, val2],
                               candidates=["asymmetry", "inertia", "delay"])
+    assert rep["timing"]["validation_samples"] == val.t.size + val2.t.size
     assert rep["verdict"]["cause"] == "none", rep.summary()
     # the wrong Coulomb level of the start model was fitted away on the trajectory
     assert rep["base"]["params"]["Fc"] == pytest.approx(0.95, rel=0.03)

@@ -241,7 +241,11 @@ class Master:
             elif v.causality not in ("input", "output"):
                 raise ValueError(f"record {ref!r}: only outputs and inputs can be recorded "
                                  f"(this is a {v.causality})")
+        # read only what is connected or recorded (one fmi2GetReal of just those per step)
+        needed = {(si, sv) for _, _, si, sv in self.connections}
+        needed |= {tuple(Connection.split(ref)) for ref in self.record}
         for inst in self.instances.values():
+            inst.outputs = [o for o in inst.outputs if (inst.name, o) in needed]
             inst.finalize_buffers()
         # per destination instance: list of (input slot, source out_np, source slot)
         self._gather = {n: [] for n in self.instances}

@@ -508,7 +508,7 @@ class SlaveBase(Fmi2Slave):
             self.report("initialization")
 
     def do_step(self, current_time, step_size):
-        if self.failed or self.pending or not self._ensure_model():
+        if self.failed or self.pending or (self.params_dirty and not self._ensure_model()):
             what = f"step at t = {current_time:g} refused"
             self.report(what)
             for msg in self.pending.values():
@@ -639,6 +639,11 @@ class LawSlave(SlaveBase):
         self.buf1 = {n: (np.zeros(1) if n in ins else empty) for n in ("v", "a", "load", "x")}
         self.buf2 = {n: (np.zeros(2) if n in ins else empty) for n in ("v", "a", "load", "x")}
         self.names = ins
+        # per step: (buffer, value index) pairs to fill and the kernel's leading arguments
+        self.fill1 = [(self.buf1[n], i) for n, i in zip(ins, self.in_idx)]
+        self.fill2 = [(self.buf2[n], i) for n, i in zip(ins, self.in_idx)]
+        self.args1 = (self.t1,) + tuple(self.buf1[n] for n in ("v", "a", "load", "x"))
+        self.args2 = (self.t2,) + tuple(self.buf2[n] for n in ("v", "a", "load", "x"))
         self.lin_idx = [self.index[n] for n in COUPLING_OUTPUTS]
         self.h_lin = float(self.values[self.index["h_lin"]])
 
@@ -652,36 +657,36 @@ class LawSlave(SlaveBase):
         for i, val in zip(self.lin_idx, lin):
             self.values[i] = float(val)
 
-    def _fill(self, bufs):
-        for n, i in zip(self.names, self.in_idx):
-            bufs[n][:] = self.values[i]
+    def _fill(self, pairs):
+        vals = self.values
+        for buf, i in pairs:
+            buf.fill(vals[i])
 
     def compute_outputs(self):
-        b = self.buf1
-        self._fill(b)
-        F, _ = self.kernel(self.t1, b["v"], b["a"], b["load"], b["x"], self.theta, 0, self.state)
-        self.values[self.F_idx] = float(F[0])
-        for j, i in enumerate(self.state_idx):
-            self.values[i] = float(self.state[j])
+        self._fill(self.fill1)
+        F, _ = self.kernel(*self.args1, self.theta, 0, self.state)
+        vals = self.values
+        vals[self.F_idx] = F.item(0)
+        for i, z in zip(self.state_idx, self.state.tolist()):
+            vals[i] = z
         self._linearise()
 
     def advance(self, t, h):
         if self.state.size == 0:
             return False  # a static map: nothing to integrate
-        b = self.buf2
-        self._fill(b)
+        self._fill(self.fill2)
         self.t2[1] = h
-        F, S = self.kernel(self.t2, b["v"], b["a"], b["load"], b["x"], self.theta, 0, self.state)
-        new = S[1].copy()
-        vals = self.values
-        for j, i in enumerate(self.state_idx):
-            zj = float(new[j])
-            if not math.isfinite(zj):
+        F, S = self.kernel(*self.args2, self.theta, 0, self.state)
+        new = S[1].tolist()
+        for j, zj in enumerate(new):
+            if zj - zj != 0.0:  # inf or NaN: the state is kept as it was
                 raise ValueError(f"state {self.model.state_names[j]} = {zj!r} became non-finite")
+        vals, state = self.values, self.state
+        for j, (i, zj) in enumerate(zip(self.state_idx, new)):
             vals[i] = zj
-        self.state = new
+            state[j] = zj  # in place: no array per step
         # the kernel's force at the second sample: new state, same (held) inputs
-        vals[self.F_idx] = float(F[1])
+        vals[self.F_idx] = F.item(1)
         self._linearise()
         return True
 
@@ -704,31 +709,37 @@ class MassSlave(SlaveBase):
         if not p["m"] > 0:
             raise ValueError(f"m = {p['m']!r} is out of bounds: must be > 0 [kg]")
         self.p = p
+        # per step: plain attributes and value slots instead of dict look-ups
+        self.m, self.u0, self.u_amp = p["m"], p["u0"], p["u_amp"]
+        self.w = 2.0 * math.pi * p["u_freq"]
+        ix = self.index
+        self.slots = (ix["x"], ix["v"], ix["a"], ix["F_ext"], ix["F_friction"])
         if initial or not hasattr(self, "x"):
             self.x, self.v = float(p["x0"]), float(p["v0"])
 
     def drive(self, t):
-        p = self.p
-        return p["u0"] + p["u_amp"] * math.sin(2.0 * math.pi * p["u_freq"] * t)
+        return self.u0 + self.u_amp * math.sin(self.w * t)
 
     def compute_outputs(self):
-        vals, ix = self.values, self.index
-        vals[ix["x"]] = self.x
-        vals[ix["v"]] = self.v
-        vals[ix["a"]] = (self.drive(self.time) + vals[ix["F_ext"]] - vals[ix["F_friction"]]) / self.p["m"]
+        vals = self.values
+        i_x, i_v, i_a, i_ext, i_fr = self.slots
+        vals[i_x] = self.x
+        vals[i_v] = self.v
+        vals[i_a] = (self.drive(self.time) + vals[i_ext] - vals[i_fr]) / self.m
 
     def advance(self, t, h):
-        p, vals, ix = self.p, self.values, self.index
-        held = p["u0"] + vals[ix["F_ext"]] - vals[ix["F_friction"]]
-        w = 2.0 * math.pi * p["u_freq"]
+        vals = self.values
+        _, _, _, i_ext, i_fr = self.slots
+        held = self.u0 + vals[i_ext] - vals[i_fr]
+        w = self.w
         if w > 0.0:
             c0, c1 = math.cos(w * t), math.cos(w * (t + h))
             s0, s1 = math.sin(w * t), math.sin(w * (t + h))
-            i1 = p["u_amp"] * (c0 - c1) / w                           # int sin
-            i2 = p["u_amp"] * (h * c0 / w - (s1 - s0) / (w * w))       # double integral
+            i1 = self.u_amp * (c0 - c1) / w                           # int sin
+            i2 = self.u_amp * (h * c0 / w - (s1 - s0) / (w * w))       # double integral
         else:
             i1 = i2 = 0.0
-        m = p["m"]
+        m = self.m
         self.x = self.x + self.v * h + (0.5 * held * h * h + i2) / m
         self.v = self.v + (held * h + i1) / m
         self.time = t + h

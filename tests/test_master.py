@@ -28,7 +28,8 @@ def test_result_is_a_structured_array_with_time_first(fmu_dir):
     with Master(_loop(fmu_dir), mass_connections("lugre")) as m:
         res = m.simulate(stop_time=0.01, step_size=1e-3)
     assert res.dtype.names[0] == "time"
-    assert set(res.dtype.names[1:]) == {"mass.x", "mass.v", "mass.a", "friction.F", "friction.z"}
+    assert set(res.dtype.names[1:]) == {"mass.x", "mass.v", "mass.a", "friction.F", "friction.z",
+                                        "friction.dF_dx", "friction.dF_dv"}
     np.testing.assert_allclose(res["time"], 1e-3 * np.arange(11), atol=1e-15)
 
 

@@ -109,15 +109,18 @@ def main(quick=False):
     # FMU engine: one simulation of a 30 ms S-curve move, against the in-process plant
     opts = dict(distance=1e-4, compensation=False, controller="sdpid")
     rec = record_from_result(model.simulate(0.03, **opts), opts, name="scurve")
-    simulate_record(model, xml350_friction(), rec, engine="fmu")  # build + warm up
-    t0 = time.perf_counter()
-    simulate_record(model, xml350_friction(), rec, engine="fmu")
-    t_fmu = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    simulate_record(model, xml350_friction(), rec)
-    t_plant = time.perf_counter() - t0
-    print(f"\nFMU engine, 30 ms S-curve: {t_fmu:.3f} s per simulation = "
-          f"{t_fmu / t_plant:.0f} x the in-process plant ({t_plant * 1e3:.1f} ms)")
+    try:
+        simulate_record(model, xml350_friction(), rec, engine="fmu")  # build + warm up
+        t0 = time.perf_counter()
+        simulate_record(model, xml350_friction(), rec, engine="fmu")
+        t_fmu = time.perf_counter() - t0
+        t0 = time.perf_counter()
+        simulate_record(model, xml350_friction(), rec)
+        t_plant = time.perf_counter() - t0
+        print(f"\nFMU engine, 30 ms S-curve: {t_fmu:.3f} s per simulation = "
+              f"{t_fmu / t_plant:.0f} x the in-process plant ({t_plant * 1e3:.1f} ms)")
+    except Exception as exc:  # noqa: BLE001 - report and go on with the sweep
+        print(f"\nFMU engine not measured: {type(exc).__name__}: {exc}")
     if "--sweep" in sys.argv:
         print("\nattribution sweep (every candidate, default settings):")
         sweep(fit_opts, val_opts, model)

@@ -321,6 +321,11 @@ def _effect_kernel(base_kernel, nb: int, ns: int):
     return kern
 
 
+#: parameters whose zero makes a force effect vanish
+_LEVELS = {"acceleration": ("f_a",), "position": ("c_x1", "c_x2", "c_x3", "c_x4"),
+           "drift": ("k_drift",), "load": ("gamma_L",)}
+
+
 def _pack_effects(effects: dict, ctx: Context) -> np.ndarray:
     e = np.zeros(len(_EFF))
     e[_E["a_s"]] = e[_E["v_c"]] = e[_E["T"]] = e[_E["L0"]] = 1.0
@@ -634,6 +639,10 @@ class _Setup:
         for c in self.coords:
             if c.target == "extra":
                 force.setdefault(c.effect, {})[c.name] = vals[c.name]
+        # an effect at its neutral value is no effect: the plain law keeps the plant's
+        # compiled kernel (same equations; the finite-difference columns of the effect's
+        # shape parameters at zero level then cost no generic-stepper run)
+        force = {k: p for k, p in force.items() if any(p[n] != 0.0 for n in _LEVELS[k])}
         if force:
             law = EffectLaw(law, force, ctx)
         pp = {}

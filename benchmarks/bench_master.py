@@ -25,7 +25,7 @@ import time
 import numpy as np
 
 
-def bare_fmpy(fmu_dir, n, h):
+def bare_fmpy(fmu_dir, n, h, counts=None):
     from fmpy import extract, read_model_description
     from fmpy.fmi2 import FMU2Slave
     out = {}
@@ -45,6 +45,9 @@ def bare_fmpy(fmu_dir, n, h):
     fs, fv, _ = slaves["friction"]
     F = fs.getReal([fv["F"]])[0]
     x = np.empty(n)
+    if counts is not None:
+        _count_methods([ms, fs], counts, {"setReal": "fmi2SetReal", "doStep": "fmi2DoStep",
+                                          "getReal": "fmi2GetReal"})
     t0 = time.perf_counter()
     for k in range(n):
         t = k * h
@@ -56,6 +59,9 @@ def bare_fmpy(fmu_dir, n, h):
         F = fs.getReal([fv["F"]])[0]
         x[k] = xv[0]
     el = time.perf_counter() - t0
+    if counts is not None:
+        for key in counts:
+            counts[key] /= n
     for s, _, d in slaves.values():
         s.terminate()
         s.fmi2FreeInstance(s.component)
@@ -99,8 +105,12 @@ def numba_inprocess(n, h):
     return (time.perf_counter() - t0) / n * 1e6
 
 
-def bare_loop(fmus, connections, order, n, h, settle=True):
-    """The same Gauss-Seidel scheme written the usual fmpy way (list-based calls)."""
+def bare_loop(fmus, connections, order, n, h, settle=True, counts=None):
+    """The same Gauss-Seidel scheme written the usual fmpy way (list-based calls).
+
+    ``counts`` (a dict): filled with the FMI calls per communication step instead of timing
+    (the methods are wrapped by counters, so the time returned is not meaningful).
+    """
     from fmpy import extract, read_model_description
     from fmpy.fmi2 import FMU2Slave
     sl = {}
@@ -144,6 +154,10 @@ def bare_loop(fmus, connections, order, n, h, settle=True):
             if ins[name]:
                 write(name)
                 read(name)
+    if counts is not None:
+        _count_methods([v[0] for v in sl.values()], counts,
+                       {"setReal": "fmi2SetReal", "doStep": "fmi2DoStep",
+                        "getReal": "fmi2GetReal"})
     t0 = time.perf_counter()
     for k in range(n):
         t = k * h
@@ -157,11 +171,48 @@ def bare_loop(fmus, connections, order, n, h, settle=True):
                     write(name)
                     read(name)
     el = time.perf_counter() - t0
+    if counts is not None:
+        for key in counts:
+            counts[key] /= n
     for s, _, _, d in sl.values():
         s.terminate()
         s.fmi2FreeInstance(s.component)
         shutil.rmtree(d, ignore_errors=True)
     return el / n * 1e6, vals
+
+
+def _count_methods(objs, counts, names):
+    """Replace ``obj.<name>`` by a wrapper adding 1 to ``counts[label]`` per call."""
+    for obj in objs:
+        for attr, label in names.items():
+            counts.setdefault(label, 0)
+            fn = getattr(obj, attr)
+
+            def wrapped(*args, _fn=fn, _label=label):
+                counts[_label] += 1
+                return _fn(*args)
+            setattr(obj, attr, wrapped)
+
+
+def master_calls_per_step(m, h, n=200):
+    """FMI calls per communication step of an open Master (difference of two counted runs,
+    so initialization calls drop out); the instances' function pointers are restored."""
+    saved = {k: (i.f_set, i.f_step, i.f_get) for k, i in m.instances.items()}
+    totals = []
+    try:
+        for steps in (n, 2 * n):
+            counts = {}
+            _count_methods(m.instances.values(), counts, {"f_set": "fmi2SetReal",
+                                                          "f_step": "fmi2DoStep",
+                                                          "f_get": "fmi2GetReal"})
+            m.simulate(stop_time=steps * h, step_size=h, progress=False)
+            totals.append(counts)
+            for k, i in m.instances.items():
+                i.f_set, i.f_step, i.f_get = saved[k]
+    finally:
+        for k, i in m.instances.items():
+            i.f_set, i.f_step, i.f_get = saved[k]
+    return {key: (totals[1][key] - totals[0][key]) / n for key in totals[0]}
 
 
 def xml350_bench(n, repeats):
@@ -187,8 +238,17 @@ def xml350_bench(n, repeats):
             t0 = time.perf_counter()
             plant.simulate(n * h, method="fast")
             us_n = min(us_n, (time.perf_counter() - t0) / n * 1e6)
+        calls_m = master_calls_per_step(m, h)
+    calls_b = {}
+    bare_loop(fmus, XML350_CONNECTIONS, XML350_ORDER, 200, h, counts=calls_b)
     same = abs(vals["mechanics.x"] - res["mechanics.x"][-1])
+    print("FMI calls per communication step (set/step/get): "
+          f"master {_calls(calls_m)}, bare fmpy {_calls(calls_b)}")
     return "XML-350 loop from 5 part FMUs (10 kHz)", us_m, us_b, us_n, same
+
+
+def _calls(c):
+    return "/".join(f"{c.get(k, 0):.2f}" for k in ("fmi2SetReal", "fmi2DoStep", "fmi2GetReal"))
 
 
 def main(argv=None):
@@ -221,6 +281,11 @@ def main(argv=None):
             ub, bare = bare_fmpy(fmu_dir, n, h)
             us_bare = min(us_bare, ub)
             us_numba = min(us_numba, numba_inprocess(n, h))
+        calls_m = master_calls_per_step(m, h)
+    calls_b = {}
+    bare_fmpy(fmu_dir, 200, h, counts=calls_b)
+    print("FMI calls per communication step (set/step/get): "
+          f"master {_calls(calls_m)}, bare fmpy {_calls(calls_b)}")
     same = float(np.max(np.abs(bare["x"] - res["mass.x"][1:])))
     _print("mass + LuGre loop", n, h, us_master, us_bare, us_numba, same)
 

@@ -75,6 +75,17 @@ class Connection:
         return inst, var
 
 
+def _raw_function(dll, name):
+    """``name`` from the loaded FMU library as a ctypes function returning fmi2Status, with
+    no argtypes (callers pass ctypes objects: c_void_p, arrays, c_size_t, c_double, c_int)."""
+    fn = dll._FuncPtr((name, dll))
+    fn.restype = ctypes.c_int
+    return fn
+
+
+_TRUE = ctypes.c_int(1)
+
+
 class _Instance:
     """One FMU instance with its prebuilt buffers."""
 
@@ -85,13 +96,16 @@ class _Instance:
         self.slave = FMU2Slave(guid=md.guid, unzipDirectory=unzipdir,
                                modelIdentifier=md.coSimulation.modelIdentifier,
                                instanceName=name)
-        # loggingOn: the pythonfmu runtime forwards error messages only when logging is on
+        # loggingOn: warnings too (our FMUs' status shim forwards errors in any case)
         self.slave.instantiate(callbacks=callbacks, loggingOn=True)
-        f = self.slave._functions
         self.c = self.slave.component
-        self.f_set = f["fmi2SetReal"]
-        self.f_get = f["fmi2GetReal"]
-        self.f_step = f["fmi2DoStep"]
+        # the per-step calls through our own function pointers without argtypes, given
+        # ready ctypes objects: no per-call argument conversion (fmpy's pointers convert
+        # every argument through argtypes)
+        self.cv = ctypes.c_void_p(self.c)
+        self.f_set = _raw_function(self.slave.dll, "fmi2SetReal")
+        self.f_get = _raw_function(self.slave.dll, "fmi2GetReal")
+        self.f_step = _raw_function(self.slave.dll, "fmi2DoStep")
         self.inputs: list[str] = []
         self.outputs: list[str] = [v.name for v in md.modelVariables if v.causality == "output"]
         deps = {}
@@ -111,6 +125,7 @@ class _Instance:
     def finalize_buffers(self):
         n_in, n_out = len(self.inputs), len(self.outputs)
         self.n_in, self.n_out = n_in, n_out
+        self.n_in_c, self.n_out_c = ctypes.c_size_t(n_in), ctypes.c_size_t(n_out)
         self.in_vr = (ctypes.c_uint * max(n_in, 1))(*[self.vars[n].valueReference for n in self.inputs])
         self.out_vr = (ctypes.c_uint * max(n_out, 1))(*[self.vars[n].valueReference for n in self.outputs])
         self.in_buf = (ctypes.c_double * max(n_in, 1))()
@@ -347,14 +362,14 @@ class Master:
             for slot, src, k in inst.gather:
                 buf[slot] = src.out_buf[k]
         if inst.n_in:
-            st = inst.f_set(inst.c, inst.in_vr, inst.n_in, buf)
+            st = inst.f_set(inst.cv, inst.in_vr, inst.n_in_c, buf)
             if st > 1:
                 self._check(inst, "fmi2SetReal", st, t)
         return True
 
     def _get(self, inst, t):
         if inst.n_out:
-            st = inst.f_get(inst.c, inst.out_vr, inst.n_out, inst.out_buf)
+            st = inst.f_get(inst.cv, inst.out_vr, inst.n_out_c, inst.out_buf)
             if st > 1:
                 self._check(inst, "fmi2GetReal", st, t)
 
@@ -453,9 +468,11 @@ class Master:
         chunk = max(1, n // 100)
         # per instance, everything a step touches, unpacked once (the loop below is the
         # per-step overhead of the master: one fmi2SetReal, fmi2DoStep, fmi2GetReal each)
-        plan = [(inst, inst.c, [(slot, src.out_buf, j) for slot, src, j in inst.gather],
-                 inst.in_buf, inst.in_vr, inst.n_in, inst.f_set, inst.f_step,
-                 inst.out_buf, inst.out_vr, inst.n_out, inst.f_get) for inst in insts]
+        plan = [(inst, inst.cv, [(slot, src.out_buf, j) for slot, src, j in inst.gather],
+                 inst.in_buf, inst.in_vr, inst.n_in and inst.n_in_c, inst.f_set, inst.f_step,
+                 inst.out_buf, inst.out_vr, inst.n_out and inst.n_out_c, inst.f_get)
+                for inst in insts]
+        hc, c_double = ctypes.c_double(h), ctypes.c_double
         check = self._check
         for k in range(1, n + 1):
             t = t0 + (k - 1) * h
@@ -467,7 +484,7 @@ class Master:
                         st = fset(c, ivr, nin, ibuf)
                         if st > 1:
                             check(inst, "fmi2SetReal", st, t)
-                    st = fstep(c, t, h, 1)
+                    st = fstep(c, c_double(t), hc, _TRUE)
                     if st > 1:
                         check(inst, "fmi2DoStep", st, t)
                     if nout:
@@ -478,7 +495,7 @@ class Master:
                 for inst in insts:
                     self._gather_set(inst, t)
                 for inst in insts:
-                    st = inst.f_step(inst.c, t, h, 1)
+                    st = inst.f_step(inst.cv, c_double(t), hc, _TRUE)
                     if st > 1:
                         check(inst, "fmi2DoStep", st, t)
                 for inst in insts:

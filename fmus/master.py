@@ -22,11 +22,14 @@ stepping) until the connected values change by less than ``tolerance`` (relative
 Initialization propagates connected values through feedthrough chains in
 initialization mode.
 
-Per-step overhead is kept low: value references and ctypes buffers are built once, the FMI
-functions are called through fmpy's loaded ctypes function pointers (no per-call array
-building), and results go into a preallocated array. Any FMU call returning fmi2Discard or
-worse raises :class:`FMUError` naming the instance, the call, the time and the FMU's last
-log messages.
+Per-step overhead is kept low: value references and ctypes buffers are built once; per
+communication step each instance gets one ``fmi2SetReal`` (all its connected inputs), one
+``fmi2DoStep`` and one ``fmi2GetReal`` (only the outputs that are connected or recorded),
+called through ctypes pointers without argtypes on ready ctypes arguments (no per-call
+conversion or array building); the fixed-point pass re-sets only instances whose inputs
+changed; results go into a preallocated array. Any FMU call returning fmi2Discard or worse
+(our FMUs answer fmi2Error for bad input, see :mod:`fmus.status_shim`) raises
+:class:`FMUError` naming the instance, the call, the time and the FMU's last log messages.
 """
 from __future__ import annotations
 

@@ -85,6 +85,9 @@ FMU_EFFECTS = ("asymmetry", "stribeck_shape", "presliding", "inertia", "delay")
 REFERENCE_OUTPUTS = ("x_d", "S_ref", "x_ref")
 #: plant parameters that are the moving mass (``inertia`` candidate), in order of preference
 MASS_PARAMETERS = ("M", "m", "mass")
+#: candidates whose held-out NRMSE is within this fraction of the noise floor of the best
+#: one are tied with it (the simpler one is named), besides the force level's ``TIE``
+TIE_FLOOR = 0.05
 #: direction twins the ``asymmetry`` candidate frees (with the offset ``b``)
 ASYMMETRY_NAMES = ("b", "Fc_neg", "Fs_neg", "sigma2_neg")
 
@@ -1134,7 +1137,11 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     effects.sort(key=lambda e: -e["gap_closed"])
     if effects:  # near-ties go to the simpler effect
         top = effects[0]["excess_closed"]
-        tied = [e for e in effects if e["excess_closed"] >= top - TIE]
+        top_after = effects[0]["validation_after"]
+        # held-out scores closer than a twentieth of the noise floor are a tie too: with a
+        # gap barely above the floor, excess fractions differ by noise alone
+        tied = [e for e in effects if e["excess_closed"] >= top - TIE
+                or e["validation_after"] <= top_after + TIE_FLOOR * floor]
         simplest = min(tied, key=lambda e: e["n_params"])
         effects.remove(simplest)
         effects.insert(0, simplest)

@@ -24,12 +24,10 @@ C compiler the build warns and ships pythonfmu's binary as is; bad input then gi
 from __future__ import annotations
 
 import dataclasses
-import io
 import os
 import pathlib
 import sys
 import tempfile
-import zipfile
 from typing import Callable
 
 from frictionlab.progress import report
@@ -143,28 +141,6 @@ def _forget_modules(prefixes) -> None:
             del sys.modules[key]
 
 
-def _rewrite(fmu: pathlib.Path, replace: dict, rename: dict) -> None:
-    """Rewrite the FMU archive: members in ``replace`` get new bytes (added if absent),
-    members in ``rename`` (old -> new name) move."""
-    buf = io.BytesIO()
-    with zipfile.ZipFile(fmu) as zin, zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as zout:
-        for item in zin.infolist():
-            if item.filename in replace and item.filename not in rename:
-                continue
-            data = zin.read(item.filename)
-            if item.filename in rename:
-                item = zipfile.ZipInfo(rename[item.filename], item.date_time)
-                item.compress_type = zipfile.ZIP_DEFLATED
-                item.external_attr = 0o755 << 16
-            zout.writestr(item, data)
-        for member, data in replace.items():
-            info = zipfile.ZipInfo(member, (2020, 1, 1, 0, 0, 0))
-            info.compress_type = zipfile.ZIP_DEFLATED
-            info.external_attr = (0o755 if member.endswith(".so") else 0o644) << 16
-            zout.writestr(info, data)
-    fmu.write_bytes(buf.getvalue())
-
-
 def build_fmu(recipe: FmuRecipe, out: str | os.PathLike) -> pathlib.Path:
     """Build one FMU into folder ``out``; returns the ``.fmu`` path."""
     from pythonfmu.builder import FmuBuilder
@@ -200,11 +176,10 @@ def build_fmu(recipe: FmuRecipe, out: str | os.PathLike) -> pathlib.Path:
     replace, rename = {"modelDescription.xml": xml}, {}
     shim = status_shim.shim_or_warn()
     if shim is not None:
-        lib = f"binaries/{status_shim.PLATFORM}/{recipe.model_identifier}.so"
-        rename[lib] = f"binaries/{status_shim.PLATFORM}/" \
-                      f"{status_shim.inner_name(recipe.model_identifier)}"
-        replace[lib] = shim.read_bytes()
-    _rewrite(dest, replace, rename)
+        shim_rename, shim_replace = status_shim.shim_members(recipe.model_identifier, shim)
+        rename.update(shim_rename)
+        replace.update(shim_replace)
+    status_shim.rewrite_fmu(dest, replace, rename)
     return dest
 
 

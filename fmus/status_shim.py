@@ -16,6 +16,7 @@ hash of source, headers and compiler under ``$FRICTIONLAB_CACHE`` (default
 from __future__ import annotations
 
 import hashlib
+import io
 import os
 import pathlib
 import platform
@@ -26,9 +27,11 @@ import sys
 import sysconfig
 import tempfile
 import warnings
+import zipfile
 
 __all__ = ["SOURCE", "INNER_SUFFIX", "PLATFORM", "shim_library", "inner_name",
-           "fmi2_header_dir", "ShimUnavailable", "shim_or_warn"]
+           "fmi2_header_dir", "ShimUnavailable", "shim_or_warn", "shim_members", "rewrite_fmu",
+           "install"]
 
 SOURCE = pathlib.Path(__file__).resolve().parent / "shim" / "fmi2_status_shim.c"
 #: file name suffix of pythonfmu's library behind the shim (must match the C source)
@@ -129,3 +132,57 @@ def shim_or_warn() -> pathlib.Path | None:
                       f"as is, so bad input is refused at the next fmi2DoStep with "
                       f"fmi2Discard instead of fmi2Error", RuntimeWarning, stacklevel=2)
         return None
+
+
+def shim_members(model_identifier: str, shim: pathlib.Path) -> tuple[dict, dict]:
+    """Archive changes that put ``shim`` in front of pythonfmu's linux64 library:
+    ``(rename, replace)`` for :func:`rewrite_fmu`."""
+    lib = f"binaries/{PLATFORM}/{model_identifier}.so"
+    return ({lib: f"binaries/{PLATFORM}/{inner_name(model_identifier)}"},
+            {lib: pathlib.Path(shim).read_bytes()})
+
+
+def rewrite_fmu(fmu: pathlib.Path, replace: dict, rename: dict) -> None:
+    """Rewrite the FMU archive: members in ``replace`` get new bytes (added if absent),
+    members in ``rename`` (old -> new name) move."""
+    buf = io.BytesIO()
+    with zipfile.ZipFile(fmu) as zin, zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as zout:
+        for item in zin.infolist():
+            if item.filename in replace and item.filename not in rename:
+                continue
+            data = zin.read(item.filename)
+            if item.filename in rename:
+                item = zipfile.ZipInfo(rename[item.filename], item.date_time)
+                item.compress_type = zipfile.ZIP_DEFLATED
+                item.external_attr = 0o755 << 16
+            zout.writestr(item, data)
+        for member, data in replace.items():
+            info = zipfile.ZipInfo(member, (2020, 1, 1, 0, 0, 0))
+            info.compress_type = zipfile.ZIP_DEFLATED
+            info.external_attr = (0o755 if member.endswith(".so") else 0o644) << 16
+            zout.writestr(info, data)
+    fmu.write_bytes(buf.getvalue())
+
+
+def install(fmu) -> pathlib.Path:
+    """Put the status shim into an existing pythonfmu FMU (in place); returns its path.
+
+    Raises
+    ------
+    ShimUnavailable
+        The shim cannot be built here.
+    ValueError
+        The FMU has no linux64 library ``<modelIdentifier>.so`` or already has the shim.
+    """
+    from fmpy import read_model_description
+    fmu = pathlib.Path(fmu)
+    mid = read_model_description(str(fmu), validate=False).coSimulation.modelIdentifier
+    with zipfile.ZipFile(fmu) as z:
+        names = set(z.namelist())
+    if f"binaries/{PLATFORM}/{inner_name(mid)}" in names:
+        raise ValueError(f"{fmu.name} already has the status shim")
+    if f"binaries/{PLATFORM}/{mid}.so" not in names:
+        raise ValueError(f"{fmu.name} has no binaries/{PLATFORM}/{mid}.so")
+    rename, replace = shim_members(mid, shim_library())
+    rewrite_fmu(fmu, replace, rename)
+    return fmu

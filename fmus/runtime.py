@@ -26,7 +26,8 @@ stored: ``set_real`` logs it at error level naming the variable and its bound an
 previous value, so ``fmi2SetReal`` returns ``fmi2Error`` and the instance keeps working. The
 status comes from the FMU's status shim (``fmus/shim``, in front of pythonfmu's binary on
 linux64): a call during which the slave logged an error returns ``fmi2Error``. The slaves never
-raise, because pythonfmu 0.7 turns an exception into ``fmi2Fatal`` and destroys the instance.
+raise, because pythonfmu 0.7 turns an exception into ``fmi2Fatal`` and destroys the instance
+(and leaves the embedding interpreter corrupt: a later garbage collection segfaults).
 An inadmissible parameter combination (found when the model is built), a failed output
 evaluation or a step that would produce a non-finite output is logged at error level by the
 call that finds it, and every later ``fmi2DoStep`` is refused (``do_step`` returns False) with
@@ -560,10 +561,21 @@ class SlaveBase(Fmi2Slave):
             self.params_dirty = True
         self.outputs_dirty = True
 
+    # An exception escaping to pythonfmu 0.7 gives fmi2Fatal and leaves the embedding
+    # interpreter corrupt (a later garbage collection segfaults), so even an invalid value
+    # reference is caught here and logged as an error (fmi2Error behind the status shim).
+    def _bad_call(self, call, vrs, exc):
+        self.log(f"{self.instance_name}: {call} with value references {list(vrs)} failed "
+                 f"(valid: 0..{len(self.variables) - 1}): {type(exc).__name__}: {exc}",
+                 Fmi2Status.error)
+
     def set_values(self, vrs, values):
         """Set any variables, each checked by ``_check_set``."""
-        for vr, value in zip(vrs, values):
-            self._check_set(vr, value)
+        try:
+            for vr, value in zip(vrs, values):
+                self._check_set(vr, value)
+        except (IndexError, TypeError, ValueError) as exc:
+            self._bad_call("set", vrs, exc)
 
     def set_real(self, vrs, values):
         # fast path for finite Real inputs (every communication step); everything else,
@@ -572,11 +584,14 @@ class SlaveBase(Fmi2Slave):
             self.set_values(vrs, values)
             return
         fast, vals = self.fast_input, self.values
-        for vr, value in zip(vrs, values):
-            if fast[vr] and value - value == 0.0:  # 0.0 exactly when value is finite
-                vals[vr] = value
-            else:
-                self._check_set(vr, value)
+        try:
+            for vr, value in zip(vrs, values):
+                if fast[vr] and value - value == 0.0:  # 0.0 exactly when value is finite
+                    vals[vr] = value
+                else:
+                    self._check_set(vr, value)
+        except (IndexError, TypeError, ValueError) as exc:
+            self._bad_call("fmi2SetReal", vrs, exc)
         self.outputs_dirty = True
 
     set_integer = set_values
@@ -589,16 +604,27 @@ class SlaveBase(Fmi2Slave):
         if self.failed:  # the values may be stale or non-finite: say so (fmi2Error)
             self.report("values read by fmi2GetReal are not valid")
         values = self.values
-        return [values[vr] for vr in vrs]
+        try:
+            return [float(values[vr]) for vr in vrs]
+        except (IndexError, TypeError, ValueError) as exc:
+            self._bad_call("fmi2GetReal", vrs, exc)
+            return [math.nan] * len(vrs)
+
+    def _get_as(self, call, kind, vrs, bad):
+        try:
+            return [kind(self.values[vr]) for vr in vrs]
+        except (IndexError, TypeError, ValueError) as exc:
+            self._bad_call(call, vrs, exc)
+            return [bad] * len(vrs)
 
     def get_integer(self, vrs):
-        return [int(self.values[vr]) for vr in vrs]
+        return self._get_as("fmi2GetInteger", int, vrs, 0)
 
     def get_boolean(self, vrs):
-        return [bool(self.values[vr]) for vr in vrs]
+        return self._get_as("fmi2GetBoolean", bool, vrs, False)
 
     def get_string(self, vrs):
-        return [str(self.values[vr]) for vr in vrs]
+        return self._get_as("fmi2GetString", str, vrs, "")
 
 
 class LawSlave(SlaveBase):

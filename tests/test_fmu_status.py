@@ -279,6 +279,27 @@ def test_non_finite_output_makes_the_step_an_error(fmu_dir):
 
 
 @needs_shim
+def test_invalid_value_reference_is_an_error_not_a_crash(fmu_dir):
+    import ctypes
+    import gc
+    s = Slave(fmu_dir / "lugre.fmu", "fr")
+    try:
+        s.init()
+        f, c = s.s._functions, s.s.component
+        bad = (ctypes.c_uint * 2)(s.vr["F"], 9999)
+        out = (ctypes.c_double * 2)()
+        assert f["fmi2GetReal"](c, bad, 2, out) == fmi2Error
+        assert math.isnan(out[1])
+        assert f["fmi2SetReal"](c, bad, 2, (ctypes.c_double * 2)(1.0, 2.0)) == fmi2Error
+        assert any("9999" in m and "value references" in m for m in s.errors()), s.messages
+        assert s.set("v", 1e-3) == fmi2OK and s.step(0.0, 1e-4) == fmi2OK
+        assert math.isfinite(s.get("F"))
+    finally:
+        s.close()
+    gc.collect()  # pythonfmu after an exception would leave the interpreter corrupt here
+
+
+@needs_shim
 def test_master_raises_fmu_error_naming_instance_call_and_time(fmu_dir):
     fmus = {"mass": fmu_dir / "mass.fmu", "friction": fmu_dir / "lugre.fmu"}
     conns = [("mass.v", "friction.v"), ("friction.F", "mass.F_friction")]

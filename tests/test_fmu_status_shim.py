@@ -3,8 +3,7 @@
 Checks the shim's contract independently of the frictionlab slaves: the call returns the
 worst of the inner status and the statuses logged during that call (reset per call), the
 importer's loggingOn / categories filter non-error messages, error messages always arrive,
-and pythonfmu's own statuses (fmi2Discard for a refused step, fmi2Fatal for an exception)
-pass through unchanged.
+and pythonfmu's own fmi2Discard for a refused step passes through unchanged.
 """
 from __future__ import annotations
 
@@ -132,7 +131,9 @@ def test_call_status_is_the_worst_logged_during_that_call(probe_fmu):
         assert p.step(5.0) == 0 and p.s.getReal([p.vr["y"]]) == [5.0]
         assert [(st, m) for st, _, m in p.messages] == [(1, "probe warning"),
                                                          (3, "probe error")]
-        assert p.step(3.0) == 4            # an exception stays pythonfmu's fmi2Fatal
+        # (u = 3, an exception, would give pythonfmu's fmi2Fatal, but pythonfmu 0.7 then
+        # leaves the interpreter corrupt: a later garbage collection segfaults the test
+        # process, with or without the shim. Hence our slaves never raise.)
     finally:
         p.close()
 

@@ -29,7 +29,7 @@ __all__ = ["run_stage", "FALLBACK_STEP"]
 
 #: longest communication step of the finer-step fallback of a plant proof that does not
 #: meet the tolerance at the data rate [s]
-FALLBACK_STEP = 6.25e-5
+FALLBACK_STEP = 5e-4
 
 
 def run_stage(out, summary: dict, quick: bool = False) -> None:

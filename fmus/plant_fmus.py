@@ -7,7 +7,8 @@ load the law needs). A friction-law FMU closes the loop::
 
     plant.v -> friction.v, plant.a -> friction.a, plant.x -> friction.x,
     plant.<load> -> friction.load, friction.F -> plant.F_friction
-    friction.dF_dx -> plant.dF_dx, friction.dF_dv -> plant.dF_dv     (coupling "linearised")
+    friction.dF_dx -> plant.dF_dx, friction.dF_dv -> plant.dF_dv,
+    friction.dF_dt -> plant.dF_dt                                       (coupling "linearised")
 
 Coupling. Holding the friction force over a communication step (``"hold"``) destabilises a
 stiff contact (a press bristle of 2e10 N/m on 80 t rings at 500 rad/s) unless the step is far
@@ -16,6 +17,10 @@ FMU also outputs its local linearisation over the coming step (``dF_dx`` [N/m], 
 [N.s/m]; parameter ``h_lin`` = the communication step) and the plant FMU integrates its step
 with ``F(t) = F_k + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k)``, so the stiff part of the
 contact is resolved inside the plant's own substeps (``plants.base.PlantStepper``).
+A third output ``dF_dt`` [N/s] carries what the slopes miss along the motion extrapolated
+from the law's last two input samples (the velocity reversing inside a step), and with
+Gauss-Seidel (plant first) the law advances its state with its inputs at both ends of the
+step (parameter ``inputs_at_step_end``) instead of holding the end values.
 
 :func:`plant_proof` runs that loop with our master at the plant's data rate (the controller
 rate when it is faster) and compares the main output with
@@ -203,9 +208,11 @@ def plant_master(fmu_dir, plant_name: str, law, *, algorithm: str = "gauss-seide
                  step: float | None = None):
     """An open :class:`fmus.master.Master` of ``<plant>.fmu`` + ``<law>.fmu``.
 
-    ``coupling``: ``"linearised"`` (the law's ``dF_dx``, ``dF_dv`` drive the plant; the law's
-    ``h_lin`` is set to ``step``, default :func:`data_step`; change
-    ``master.parameters["friction"]["h_lin"]`` when running at another step) or ``"hold"``.
+    ``coupling``: ``"linearised"`` (the law's ``dF_dx``, ``dF_dv``, ``dF_dt`` drive the
+    plant; the law's ``h_lin`` is set to ``step``, default :func:`data_step`; change
+    ``master.parameters["friction"]["h_lin"]`` when running at another step; with
+    Gauss-Seidel the law advances its state with the inputs at both ends of the step) or
+    ``"hold"``.
     """
     import plants
     from .master import Master
@@ -216,6 +223,8 @@ def plant_master(fmu_dir, plant_name: str, law, *, algorithm: str = "gauss-seide
     params = _law_params(law)
     if coupling == "linearised":
         params["h_lin"] = float(step if step is not None else data_step(cls))
+        # Gauss-Seidel, plant first: the law's inputs at its step are those at the end
+        params["inputs_at_step_end"] = algorithm == "gauss-seidel"
     return Master(fmus, plant_connections(cls, type(law), coupling), algorithm=algorithm,
                   parameters={"friction": params}, iterations=iterations,
                   record=record or [f"plant.{main}", "friction.F"])

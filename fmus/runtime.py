@@ -203,38 +203,56 @@ def law_variables(model_cls, probe: bool = False) -> list[Var]:
 
 
 #: outputs of a law FMU for the linearly implicit coupling (see :func:`law_linearisation`)
-COUPLING_OUTPUTS = ("dF_dx", "dF_dv")
+COUPLING_OUTPUTS = ("dF_dx", "dF_dv", "dF_dt", "d2F_dt2")
 
 
 def coupling_variables(inputs) -> list[Var]:
-    """Parameter ``h_lin`` and outputs ``dF_dx``, ``dF_dv`` of a law FMU (the local
-    linearisation of the law over the coming step; computed from the current inputs, so
-    they depend directly on every input)."""
+    """Parameters ``h_lin``, ``inputs_at_step_end`` and outputs ``dF_dx``, ``dF_dv``,
+    ``dF_dt``, ``d2F_dt2`` of a law FMU: the local linearisation of the law over the coming
+    step (computed from the current inputs, so they depend directly on every input)."""
     return [
         Var("h_lin", "parameter", "Real", 0.0, "s",
-            "horizon of the coupling linearisation dF_dx, dF_dv, normally the communication "
-            "step [s] (0: not computed, the outputs stay 0) (>= 0)", 0.0),
+            "horizon of the coupling linearisation dF_dx, dF_dv, dF_dt, normally the "
+            "communication step [s] (0: not computed, the outputs stay 0) (>= 0)", 0.0),
+        Var("inputs_at_step_end", "parameter", "Boolean", False, "",
+            "the inputs set before fmi2DoStep are the values at the end of the step "
+            "(Gauss-Seidel after the plant): the state advances with the inputs at both "
+            "ends (first-order hold) instead of holding them"),
         Var("dF_dx", "output", "Real", None, "N/m",
             "slope of F against the travel over the coming step (h_lin) [N/m]",
             depends=tuple(inputs)),
         Var("dF_dv", "output", "Real", None, "N.s/m",
             "slope of F against the end velocity of the coming step (h_lin) [N.s/m]",
             depends=tuple(inputs)),
+        Var("dF_dt", "output", "Real", None, "N/s",
+            "rate of F over the coming step (h_lin) along the motion extrapolated from the "
+            "last two input samples, beyond dF_dx and dF_dv [N/s]",
+            depends=tuple(inputs)),
+        Var("d2F_dt2", "output", "Real", None, "N/s2",
+            "curvature of that rate over the coming step (h_lin) [N/s2]",
+            depends=tuple(inputs)),
     ]
 
 
-def law_linearisation(kernel, theta, state, inputs: dict, h: float) -> tuple:
-    """Local linearisation ``(dF_dx, dF_dv)`` of a law over a step of length ``h`` [s].
+def law_linearisation(kernel, theta, state, inputs: dict, h: float,
+                      dv_dt: float | None = None) -> tuple:
+    """Local linearisation ``(dF_dx, dF_dv[, dF_dt, d2F_dt2])`` of a law over a step ``h`` [s].
 
     The law's own step map (its kernel over ``[0, h]``: state update with the velocity at
     both ends, force at the end) is differentiated by finite differences around the nominal
     step (velocity ``v`` held, travel ``v h``, other inputs held): ``dF_dv`` shifts the end
     velocity at equal travel, ``dF_dx`` the travel (both velocities shifted). A plant that
-    integrates its step with ``F(t) = F_k + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k)`` then
-    sees the law's stiffness (sticking: about ``sigma0`` and ``sigma1 + sigma2``; sliding: the
-    relaxed bristle and the viscous slope) inside its own integrator. Where the law is not
-    differentiable (``|v|`` at rest, a regime switch), the one-sided pair of smaller size is
-    taken (a jump is not a slope).
+    integrates its step with ``F(t) = F_k + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k)
+    + dF_dt (t - t_k)`` then sees the law's stiffness (sticking: about ``sigma0`` and
+    ``sigma1 + sigma2``; sliding: the relaxed bristle and the viscous slope) inside its own
+    integrator. Where the law is not differentiable (``|v|`` at rest, a regime switch), the
+    one-sided pair of smaller size is taken (a jump is not a slope).
+
+    With ``dv_dt`` [m/s^2] (the motion's expected acceleration) the residual ``R(t)`` of
+    the slopes along the extrapolated motion ``v(t) = v + dv_dt t`` is returned too: the
+    step map gives the force at ``h/2`` and ``h``, ``R = F - F_0 - dF_dx dx - dF_dv dv``
+    (``F_0``: the force now) there, and ``R(t) = dF_dt t + d2F_dt2 t^2 / 2`` through both
+    points carries what the slopes miss, e.g. the velocity reversing inside the step.
 
     Parameters
     ----------
@@ -246,6 +264,8 @@ def law_linearisation(kernel, theta, state, inputs: dict, h: float) -> tuple:
         Current inputs ``v`` and whichever of ``a``, ``load``, ``x`` the law takes.
     h : float
         Horizon [s] (> 0).
+    dv_dt : float, optional
+        Expected acceleration over the step [m/s^2].
     """
     v = float(inputs["v"])
     x = float(inputs.get("x", 0.0))
@@ -268,7 +288,25 @@ def law_linearisation(kernel, theta, state, inputs: dict, h: float) -> tuple:
         size = abs(K) * h + abs(D)
         if best is None or size < best[0]:
             best = (size, K, D)
-    return best[1], best[2]
+    K, D = best[1], best[2]
+    if dv_dt is None:
+        return K, D
+    one = np.zeros(1)
+    F_now, _ = kernel(one, np.array([v]), a2[:1], l2[:1],
+                      np.array([x]) if "x" in inputs else empty, theta, 0, state)
+    F_now = float(F_now[0])
+
+    def residual(tau):
+        v1 = v + dv_dt * tau
+        travel = 0.5 * (v + v1) * tau
+        t2[1] = tau
+        F1 = f_end(v, v1, x + travel)
+        return F1 - F_now - K * travel - D * (v1 - v)
+
+    r_mid, r_end = residual(0.5 * h), residual(h)
+    t2[1] = h
+    curv = 4.0 * (r_end - 2.0 * r_mid) / (h * h)       # R'' (R quadratic through 0, mid, end)
+    return K, D, (r_end - 0.5 * curv * h * h) / h, curv
 
 
 __all__ += ["COUPLING_OUTPUTS", "coupling_variables", "law_linearisation",
@@ -353,6 +391,10 @@ _COUPLING_INPUT_INFO = {
                      "friction.dF_dx; 0: friction held over the step)"),
     "dF_dv": ("N.s/m", "friction law's slope against the velocity over the step (connect "
                        "friction.dF_dv; 0: friction held over the step)"),
+    "dF_dt": ("N/s", "friction law's rate over the step beyond the slopes (connect "
+                     "friction.dF_dt; 0: none)"),
+    "d2F_dt2": ("N/s2", "friction law's curvature of that rate over the step (connect "
+                        "friction.d2F_dt2; 0: none)"),
 }
 
 
@@ -630,10 +672,14 @@ class SlaveBase(Fmi2Slave):
 class LawSlave(SlaveBase):
     """FMU of one friction law (``law`` = registry name in ``<friction_package>.MODELS``).
 
-    Inputs are held constant over a communication step (zero-order hold); the state is
-    advanced by the law's own stable kernel (exact exponential bristle update), so any step
-    size is stable. ``F`` is evaluated from the current state and the current inputs (direct
-    feedthrough), as the law's ``simulate`` does at a sample.
+    Inputs are held constant over a communication step (zero-order hold; with the
+    parameter ``inputs_at_step_end`` the step runs from the previous inputs to the current
+    ones, first-order hold); the state is advanced by the law's own stable kernel (exact
+    exponential bristle update), so any step size is stable. ``F`` is evaluated from the
+    current state and the current inputs (direct feedthrough), as the law's ``simulate``
+    does at a sample. With ``h_lin > 0`` the outputs ``dF_dx, dF_dv, dF_dt, d2F_dt2`` give
+    the law's linearisation over the coming step (:func:`law_linearisation`) for a plant
+    that integrates the stiff contact itself (``plants.base.PlantStepper``).
     """
     law = "lugre"
     friction_package = "friction"
@@ -648,7 +694,8 @@ class LawSlave(SlaveBase):
     def rebuild(self, initial):
         cls = self.model_class()
         values = self.param_values()
-        values.pop("h_lin", None)  # the coupling's, not the law's
+        for name in ("h_lin", "inputs_at_step_end"):  # the coupling's, not the law's
+            values.pop(name, None)
         model = cls(cls.Params(**values))
         self.model = model
         self.theta = np.ascontiguousarray(model.theta, dtype=np.float64)
@@ -672,14 +719,24 @@ class LawSlave(SlaveBase):
         self.args2 = (self.t2,) + tuple(self.buf2[n] for n in ("v", "a", "load", "x"))
         self.lin_idx = [self.index[n] for n in COUPLING_OUTPUTS]
         self.h_lin = float(self.values[self.index["h_lin"]])
+        self.foh = bool(self.values[self.index["inputs_at_step_end"]])
+        if initial or not hasattr(self, "last_in"):
+            self.last_in = None    # inputs at the last communication point
+            self.slope_v = 0.0     # dv/dt of the last two input samples [m/s^2]
+            self.stepped = False
+
+    def _inputs(self) -> list:
+        vals = self.values
+        return [vals[i] for i in self.in_idx]
 
     def _linearise(self):
-        """Coupling outputs dF_dx, dF_dv at the current state and inputs (0 if h_lin = 0)."""
+        """Coupling outputs at the current state and inputs (0 if h_lin = 0)."""
         if self.h_lin > 0.0:
-            inputs = {n: self.values[i] for n, i in zip(self.names, self.in_idx)}
-            lin = law_linearisation(self.kernel, self.theta, self.state, inputs, self.h_lin)
+            inputs = dict(zip(self.names, self._inputs()))
+            lin = law_linearisation(self.kernel, self.theta, self.state, inputs, self.h_lin,
+                                    self.slope_v)
         else:
-            lin = (0.0, 0.0)
+            lin = (0.0, 0.0, 0.0, 0.0)
         for i, val in zip(self.lin_idx, lin):
             self.values[i] = float(val)
 
@@ -695,12 +752,23 @@ class LawSlave(SlaveBase):
         vals[self.F_idx] = F.item(0)
         for i, z in zip(self.state_idx, self.state.tolist()):
             vals[i] = z
+        if not self.stepped:
+            self.last_in = self._inputs()  # the start of the first step
         self._linearise()
 
     def advance(self, t, h):
         if self.state.size == 0:
             return False  # a static map: nothing to integrate
         self._fill(self.fill2)
+        if self.h_lin > 0.0 or self.foh:
+            now = self._inputs()
+            if self.last_in is not None:
+                self.slope_v = (now[0] - self.last_in[0]) / h
+                if self.foh:  # first-order hold: the step starts at the last inputs
+                    for n, v0 in zip(self.names, self.last_in):
+                        self.buf2[n][0] = v0
+            self.last_in = now
+        self.stepped = True
         self.t2[1] = h
         F, S = self.kernel(*self.args2, self.theta, 0, self.state)
         new = S[1].tolist()
@@ -711,7 +779,7 @@ class LawSlave(SlaveBase):
         for j, (i, zj) in enumerate(zip(self.state_idx, new)):
             vals[i] = zj
             state[j] = zj  # in place: no array per step
-        # the kernel's force at the second sample: new state, same (held) inputs
+        # the kernel's force at the second sample: new state, inputs at the step's end
         vals[self.F_idx] = F.item(1)
         self._linearise()
         return True

@@ -684,19 +684,21 @@ class PlantStepper:
     reached on the way (including ``t+h`` itself). External inputs are held over the step.
 
     Linearly implicit coupling (external friction only): the optional inputs
-    ``coupling_names`` = ``("dF_dx", "dF_dv")`` [N/m, N.s/m] are the friction law's local
-    linearisation over the coming step. The step then integrates with
+    ``coupling_names`` = ``("dF_dx", "dF_dv", "dF_dt", "d2F_dt2")`` [N/m, N.s/m, N/s,
+    N/s^2] are the friction law's local linearisation over the coming step. The step then
+    integrates with
 
         F(t) = F_friction + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k)
+               + dF_dt (t - t_k) + d2F_dt2 (t - t_k)^2 / 2
 
     where ``x_k, v_k`` is the contact motion at the start of the step, so the stiff part of
     the contact (bristle spring, damping) is resolved inside the plant's own substeps instead
     of being held over the communication step; the substep shrinks so that the explicit
-    integrator stays stable against that stiffness. Both default to 0 (force held).
+    integrator stays stable against that stiffness. All default to 0 (force held).
     """
 
     #: inputs of the linearly implicit coupling (external friction mode)
-    COUPLING_INPUTS = ("dF_dx", "dF_dv")
+    COUPLING_INPUTS = ("dF_dx", "dF_dv", "dF_dt", "d2F_dt2")
 
     def __init__(self, plant: Plant, *, substep: float | None = None, start: float = 0.0,
                  friction_method: str = "exact"):
@@ -725,7 +727,8 @@ class PlantStepper:
         self.u = p._u(None)
         self.z = None if self.fric is None else p.friction.initial_state().astype(float)
         self._a = 0.0
-        self._lin = [0.0, 0.0]  # dF_dx [N/m], dF_dv [N.s/m] of the coupling
+        # coupling: dF_dx [N/m], dF_dv [N.s/m], dF_dt [N/s], d2F_dt2 [N/s^2]
+        self._lin = [0.0, 0.0, 0.0, 0.0]
         self._lin_ref = None    # (F_k, x_k, v_k, substep) of the current step when linearised
         Ts = p._sample_period()
         self._Ts = Ts
@@ -768,10 +771,10 @@ class PlantStepper:
         tol = 1e-12 * max(1.0, abs(t_end))
         tc = self.time
         self._lin_ref = None
-        if self.fric is None and (self._lin[0] != 0.0 or self._lin[1] != 0.0):
+        if self.fric is None and any(c != 0.0 for c in self._lin):
             x_k, v_k, _ = self.plant.contact(tc, self.s, self.d, self.u)
             self._lin_ref = (self.u["F_friction"], float(x_k), float(v_k),
-                             self._coupled_substep())
+                             self._coupled_substep(), tc)
         while tc < t_end - tol:
             t_next = t_end
             if self._Ts is not None:
@@ -826,9 +829,11 @@ class PlantStepper:
         return h
 
     def _coupled_force(self, t, s) -> float:
-        F_k, x_k, v_k, _ = self._lin_ref
+        F_k, x_k, v_k, _, t_k = self._lin_ref
         x, v, _ = self.plant.contact(t, s, self.d, self.u)
-        return F_k + self._lin[0] * (x - x_k) + self._lin[1] * (v - v_k)
+        K, D, r, c = self._lin
+        tau = t - t_k
+        return F_k + K * (x - x_k) + D * (v - v_k) + (r + 0.5 * c * tau) * tau
 
     def _integrate_coupled(self, ta: float, tb: float) -> None:
         """Heun substeps with the linearised friction evaluated at every stage."""

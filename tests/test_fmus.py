@@ -77,9 +77,10 @@ def test_model_structure_lists_true_dependencies(fmu_dir):
         init = {u.variable.name for u in md.initialUnknowns}
         return out, init
     out, init = deps("lugre")
-    # dF_dx, dF_dv: the law's linearisation for the linearly implicit plant coupling
-    assert out == {"F": ["v"], "z": [], "dF_dx": ["v"], "dF_dv": ["v"]}
-    assert init == {"F", "z", "dF_dx", "dF_dv"}
+    # dF_dx, dF_dv, dF_dt, d2F_dt2: the law's linearisation for the plant coupling
+    assert out == {"F": ["v"], "z": [], "dF_dx": ["v"], "dF_dv": ["v"], "dF_dt": ["v"],
+                   "d2F_dt2": ["v"]}
+    assert init == {"F", "z", "dF_dx", "dF_dv", "dF_dt", "d2F_dt2"}
     # tau > 0: F_d is a state, so F does not depend on the acceleration input (no false loop)
     assert deps("modified_lugre")[0]["F"] == ["v"]
     assert deps("load_lugre")[0]["F"] == ["load", "v"]

@@ -1,0 +1,185 @@
+"""The withheld-effect benchmark on the plant library: cases, attribution, localisation and
+shrink scoring (diagnosis.benchmark)."""
+import numpy as np
+import pytest
+
+from diagnosis import diagnose
+from diagnosis.benchmark import (EFFECT_SIZE, PLANT_NAMES, make_case, make_plant_case,
+                                 localise, plant_kinematics, run_benchmark, truth_shrink)
+from friction.metrics import nrmse
+
+
+def _diagnose(case):
+    return diagnose(case.data, case.base)
+
+
+# -- the cases --------------------------------------------------------------------------------
+@pytest.mark.parametrize("plant,rate", [("xml350", 1000.0), ("mre_isolator", 256.0),
+                                        ("valve", 20000.0)])
+def test_plant_kinematics_at_the_plant_rate(plant, rate):
+    kin = plant_kinematics(plant, quick=True)
+    assert 1.0 / kin.dt == pytest.approx(rate, rel=1e-6)
+    assert np.all(np.diff(kin.t) > 0)
+    # both directions of motion, so direction effects are observable
+    assert np.mean(kin.v > 0) > 0.2 and np.mean(kin.v < 0) > 0.2
+    assert np.all(np.isfinite(kin.load)) and np.ptp(kin.load) > 0
+
+
+def test_clean_truth_is_the_base_law_and_effect_size_is_calibrated():
+    clean = make_plant_case("xml350", "clean", noise=0.0, quick=True)
+    F = clean.base.simulate(clean.data.t, clean.data.v)
+    assert nrmse(F, clean.truth) < 1e-12          # the base can represent the clean truth
+    for eff, s in (("position", 1.0), ("drift", 0.5), ("acceleration", 1.0)):
+        c = make_plant_case("xml350", eff, strength=s, noise=0.0, quick=True)
+        assert c.effect_rms == pytest.approx(s * EFFECT_SIZE, rel=0.06)
+
+
+def test_bad_plant_or_effect_named():
+    with pytest.raises(ValueError, match="nowhere"):
+        make_plant_case("nowhere", "clean")
+    with pytest.raises(ValueError, match="stribeck_shape"):
+        make_plant_case("mre_isolator", "stribeck_shape")
+    with pytest.raises(ValueError, match="wobble"):
+        make_plant_case("xml350", "wobble", quick=True)
+
+
+# -- attribution on plant data ----------------------------------------------------------------
+@pytest.mark.parametrize("plant,effect", [("xml350", "load"), ("xml350", "inertia"),
+                                          ("mre_isolator", "asymmetry"),
+                                          ("mre_isolator", "drift")])
+def test_plant_case_gets_the_right_name(plant, effect):
+    rep = _diagnose(make_plant_case(plant, effect, 1.0, 0.02, seed=5, quick=True))
+    assert rep["verdict"]["cause"] == effect
+
+
+@pytest.mark.parametrize("plant", ["xml350", "mre_isolator"])
+def test_clean_plant_case_gets_no_attribution(plant):
+    rep = _diagnose(make_plant_case(plant, "clean", 1.0, 0.02, seed=6, quick=True))
+    assert rep["verdict"]["cause"] == "none"
+
+
+def test_out_of_library_ripple_is_not_given_a_name():
+    rep = _diagnose(make_plant_case("mre_isolator", "outside", 1.0, 0.02, seed=7, quick=True))
+    assert rep["verdict"]["cause"] == "unexplained"
+
+
+# -- localisation scoring ----------------------------------------------------------------------
+def _regimes(shares):
+    """A report's disjoint regime list from {(pre, acc, dir): (share, samples)}."""
+    return [{"label": f"{p}, {a}, {d}", "share": s, "samples": n, "nrmse": 0.0,
+             "fraction_of_samples": 0.0} for (p, a, d), (s, n) in shares.items()]
+
+
+def test_localise_where_picks_direction_when_one_direction_holds_the_energy():
+    # 85 % of the residual energy on v<0, which holds about half of the samples
+    where = _regimes({("sliding", "accelerating", "v>0"): (0.05, 240),
+                      ("sliding", "decelerating", "v>0"): (0.05, 240),
+                      ("sliding", "accelerating", "v<0"): (0.41, 240),
+                      ("sliding", "decelerating", "v<0"): (0.39, 240),
+                      ("pre-sliding", "accelerating", "v>0"): (0.05, 10),
+                      ("pre-sliding", "accelerating", "v<0"): (0.05, 30)})
+    bands = [{"signal": "t", "label": f"t band {k}", "share": s, "fraction_of_samples": 0.25}
+             for k, s in enumerate((0.3, 0.25, 0.25, 0.2))]
+    loc = localise({"where": where, "where_bands": bands})
+    assert loc["family"] == "direction" and loc["label"] == "v<0"
+    assert loc["lift"] == pytest.approx(0.85 / 0.51, rel=1e-9)  # 510 of 1000 samples
+    # the pre-sliding regime (40 of 1000 samples) is below the 5 % floor: not a candidate
+    assert all(f != "pre-sliding" or lab != "pre-sliding" for f, lab, _ in loc["ranking"])
+
+
+def test_localise_evidence_points_asymmetry_at_direction():
+    rep = _diagnose(make_plant_case("xml350", "asymmetry", 1.0, 0.02, seed=8, quick=True))
+    assert rep["verdict"]["cause"] == "asymmetry"
+    assert localise(rep, method="evidence")["family"] == "direction"
+
+
+def test_localise_where_finds_the_position_defect_band():
+    c = make_plant_case("damping_rig", "position", 1.0, 0.01, seed=9, quick=True)
+    rep = _diagnose(c)
+    loc = localise(rep)
+    assert loc["family"] == "x"
+    # the bump sits at 70 % of the stroke (RMS width 8 % of it): the top band must overlap
+    # its central +-2 widths (band edges are printed to 3 digits)
+    lo, hi = [float(s) for s in loc["label"].split("[")[1].split("]")[0].split(",")]
+    kin = plant_kinematics("damping_rig", True)
+    span = kin.scales["x_hi"] - kin.scales["x_lo"]
+    xc = kin.scales["x_lo"] + 0.7 * span
+    assert lo <= xc + 0.16 * span and hi >= xc - 0.16 * span
+
+
+# -- shrink scoring ----------------------------------------------------------------------------
+def test_truth_shrink_known_answer():
+    # truth known exactly: white noise of RMS sigma on top of it; a report whose base fit
+    # misses by 2 sigma on the held-out part must give a truth shrink of 1/2
+    rng = np.random.default_rng(0)
+    n, k = 10000, 7000
+    t = np.arange(n) * 1e-3
+    truth = np.sin(2 * np.pi * 1.3 * t)
+    sigma = 0.05
+    F = truth + sigma * rng.standard_normal(n)
+    from friction.dataset import Dataset
+    data = Dataset.from_arrays(t, F, v=np.cos(2 * np.pi * 1.3 * t), check_units=False)
+    val_truth = nrmse(F[k:], truth[k:])
+    assert val_truth == pytest.approx(sigma / np.std(F[k:]), rel=0.05)
+    report = {"timing": {"fit_samples": k, "validation_samples": n - k},
+              "baseline": {"validation": 2 * val_truth}, "verdict": {"gap_closed": 0.3}}
+    sh = truth_shrink(data, truth, report)
+    assert sh["truth"] == pytest.approx(0.5, abs=1e-12)
+    assert sh["error"] == pytest.approx(0.3 - 0.5, abs=1e-12)
+    bad = dict(report, timing={"fit_samples": k, "validation_samples": 10})
+    with pytest.raises(ValueError, match="chronological"):
+        truth_shrink(data, truth, bad)
+
+
+def test_reported_shrink_close_to_truth_on_a_plant_case():
+    c = make_plant_case("xml350", "inertia", 1.0, 0.02, seed=10, quick=True)
+    rep = _diagnose(c)
+    sh = truth_shrink(c.data, c.truth, rep)
+    # a mass error is the inertia candidate's own form up to the acceleration filter
+    assert rep["verdict"]["cause"] == "inertia"
+    assert 0.6 < sh["truth"] < 1.0
+    assert abs(sh["error"]) < 0.1
+
+
+# -- run_benchmark -----------------------------------------------------------------------------
+def test_run_benchmark_generic_keeps_its_api():
+    res = run_benchmark(effects=("clean",), strengths=(1.0,), noises=(0.02,))
+    assert set(res) >= {"rows", "top1_accuracy", "clean_false_attributions",
+                        "outside_named_wrongly", "overall", "per_plant"}
+    assert res["rows"][0]["plant"] == "generic" and res["clean_false_attributions"] == 0
+    data, F0 = make_case("clean", 1.0, 0.0, n=2000, return_truth=True)
+    assert np.array_equal(data.F, F0)
+
+
+def test_run_benchmark_per_plant_scores_rows():
+    lines = []
+    res = run_benchmark(effects=("asymmetry", "clean"), strengths=(1.0,), noises=(0.02,),
+                        plants=["mre_isolator"], quick=True, progress=lines.append)
+    assert len(res["rows"]) == 2 and len(lines) == 2
+    f = res["per_plant"]["mre_isolator"]
+    assert f["cases"] == 2 and f["clean_cases"] == 1
+    assert f["time_ratio"] > 0 and f["base_identification_seconds"] > 0
+    row = next(r for r in res["rows"] if r["effect"] == "asymmetry")
+    assert row["shrink_error"] == pytest.approx(row["gap_closed"] - row["truth_shrink"])
+    assert row["loc_correct"] in (True, False) and row["detectable"] in (True, False)
+
+
+@pytest.mark.slow
+def test_benchmark_every_plant_quick():
+    res = run_benchmark(strengths=(1.0,), noises=(0.02,), plants="all", quick=True, workers=2)
+    assert {r["plant"] for r in res["rows"]} == set(PLANT_NAMES)
+    # the goals that hold on every plant: clean data gets no name, the ripple outside the
+    # library is never given a library name
+    assert res["clean_false_attributions"] == 0
+    assert all(r["verdict"] == "unexplained" for r in res["rows"] if r["effect"] == "outside")
+    for plant, f in res["per_plant"].items():
+        assert f["shrink_abs_error_mean"] < 0.5, plant
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(reason="top-1 goal of 95 % not met on the plants: see the benchmark's "
+                          "misses (isolator load/position, press load/asymmetry/acceleration)",
+                   strict=False)
+def test_benchmark_top1_goal_on_every_plant():
+    res = run_benchmark(strengths=(1.0,), noises=(0.02,), plants="all", quick=True, workers=2)
+    assert res["top1_accuracy"] >= 0.95

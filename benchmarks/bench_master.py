@@ -259,7 +259,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--steps", type=int, default=5000)
     ap.add_argument("--loop", choices=("xml350", "mass"), default="xml350")
-    ap.add_argument("--repeats", type=int, default=3,
+    ap.add_argument("--repeats", type=int, default=7,
                     help="alternate the runs this often and keep each one's best (shared CPU)")
     args = ap.parse_args(argv)
     if args.loop == "xml350":

@@ -487,6 +487,12 @@ class SlaveBase(Fmi2Slave):
         raise NotImplementedError
 
     # helpers ------------------------------------------------------------------------------
+    def log(self, msg, status=Fmi2Status.ok, category=None, debug=None):
+        # pythonfmu hands the message to the FMI logger as a printf format without
+        # arguments: a literal '%' (e.g. "about 2 %" in a description) is doubled, or a
+        # formatting logger (fmpy's default one uses vsnprintf) reads past its arguments
+        super().log(msg.replace("%", "%%"), status, category)
+
     def reject(self, key: str, message: str) -> None:
         """Log a rejected value at error level (the call returns ``fmi2Error`` behind the
         status shim); without the shim the next step is refused as well (``fmi2Discard``).

@@ -244,6 +244,30 @@ def test_plant_fmu_non_finite_input_and_bad_parameter(fmu_dir):
 
 
 @needs_shim
+def test_percent_in_a_message_is_safe_for_a_formatting_logger(fmu_dir, capfd):
+    # c_s's description says "about 2 %"; fmpy's default logger formats the message with
+    # vsnprintf (it is a printf format), so the slave doubles the '%'
+    from fmpy.fmi2 import FMU2Slave
+    path = fmu_dir / "damping_rig.fmu"
+    md = fmpy.read_model_description(str(path))
+    d = fmpy.extract(str(path))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    s = FMU2Slave(guid=md.guid, unzipDirectory=d, modelIdentifier=md.coSimulation.modelIdentifier,
+                  instanceName="rig")
+    try:
+        s.instantiate()  # fmpy's default callbacks: the formatting logger proxy
+        with pytest.raises(FMICallException) as exc:
+            s.setReal([vr["c_s"]], [-1.0])
+        assert exc.value.status == fmi2Error
+        out = capfd.readouterr()
+        text = out.out + out.err
+        assert "c_s" in text and "about 2 %)" in text and "%%" not in text, text
+    finally:
+        s.fmi2FreeInstance(s.component)
+        shutil.rmtree(d, ignore_errors=True)
+
+
+@needs_shim
 def test_inadmissible_combination_is_an_error_at_initialization_and_refuses_steps(fmu_dir):
     s = Slave(fmu_dir / "lugre.fmu", "fr")
     try:

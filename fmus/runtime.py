@@ -235,13 +235,14 @@ def coupling_variables(inputs) -> list[Var]:
 
 
 def law_linearisation(kernel, theta, state, inputs: dict, h: float,
-                      dv_dt: float | None = None) -> tuple:
+                      dv_dt: float | None = None, d2v_dt2: float = 0.0) -> tuple:
     """Local linearisation ``(dF_dx, dF_dv[, dF_dt, d2F_dt2])`` of a law over a step ``h`` [s].
 
     The law's own step map (its kernel over ``[0, h]``: state update with the velocity at
     both ends, force at the end) is differentiated by finite differences around the nominal
-    step (velocity ``v`` held, travel ``v h``, other inputs held): ``dF_dv`` shifts the end
-    velocity at equal travel, ``dF_dx`` the travel (both velocities shifted). A plant that
+    step (velocity ``v`` held, or ``v -> v + dv_dt h`` when ``dv_dt`` is given; other inputs
+    held): ``dF_dv`` shifts the end velocity at equal travel, ``dF_dx`` the travel (both
+    velocities shifted). A plant that
     integrates its step with ``F(t) = F_k + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k)
     + dF_dt (t - t_k)`` then sees the law's stiffness (sticking: about ``sigma0`` and
     ``sigma1 + sigma2``; sliding: the relaxed bristle and the viscous slope) inside its own
@@ -279,12 +280,15 @@ def law_linearisation(kernel, theta, state, inputs: dict, h: float,
         F, _ = kernel(t2, np.array([v0, v1]), a2, l2, x2, theta, 0, state)
         return float(F[1])
 
-    dv = 1e-6 * abs(v) + 1e-9
-    F0 = f_end(v, v, x + v * h)
+    # nominal step: velocity v -> v1 (held, or along the extrapolated motion)
+    v1 = v if dv_dt is None else v + (dv_dt + 0.5 * d2v_dt2 * h) * h
+    trav = 0.5 * (v + v1) * h
+    dv = 1e-6 * max(abs(v), abs(v1)) + 1e-9
+    F0 = f_end(v, v1, x + trav)
     best = None
     for d in (dv, -dv):
-        D = (f_end(v - d, v + d, x + v * h) - F0) / d            # end velocity, same travel
-        K = (f_end(v + d, v + d, x + (v + d) * h) - F0 - D * d) / (d * h)   # travel
+        D = (f_end(v - d, v1 + d, x + trav) - F0) / d          # end velocity, same travel
+        K = (f_end(v + d, v1 + d, x + trav + d * h) - F0 - D * d) / (d * h)   # travel
         size = abs(K) * h + abs(D)
         if best is None or size < best[0]:
             best = (size, K, D)
@@ -297,11 +301,10 @@ def law_linearisation(kernel, theta, state, inputs: dict, h: float,
     F_now = float(F_now[0])
 
     def residual(tau):
-        v1 = v + dv_dt * tau
-        travel = 0.5 * (v + v1) * tau
+        vt = v + (dv_dt + 0.5 * d2v_dt2 * tau) * tau
+        travel = 0.5 * (v + vt) * tau
         t2[1] = tau
-        F1 = f_end(v, v1, x + travel)
-        return F1 - F_now - K * travel - D * (v1 - v)
+        return f_end(v, vt, x + travel) - F_now - K * travel - D * (vt - v)
 
     r_mid, r_end = residual(0.5 * h), residual(h)
     t2[1] = h
@@ -728,7 +731,9 @@ class LawSlave(SlaveBase):
         self.foh = bool(self.values[self.index["inputs_at_step_end"]])
         if initial or not hasattr(self, "last_in"):
             self.last_in = None    # inputs at the last communication point
-            self.slope_v = 0.0     # dv/dt of the last two input samples [m/s^2]
+            self.slope_v = 0.0     # dv/dt at the last input sample [m/s^2]
+            self.curv_v = 0.0      # d2v/dt2 of the last three input samples [m/s^3]
+            self.dv_last = None    # last backward difference of v [m/s]
             self.stepped = False
 
     def _inputs(self) -> list:
@@ -740,7 +745,7 @@ class LawSlave(SlaveBase):
         if self.h_lin > 0.0:
             inputs = dict(zip(self.names, self._inputs()))
             lin = law_linearisation(self.kernel, self.theta, self.state, inputs, self.h_lin,
-                                    self.slope_v)
+                                    self.slope_v, self.curv_v)
         else:
             lin = (0.0, 0.0, 0.0, 0.0)
         for i, val in zip(self.lin_idx, lin):
@@ -769,7 +774,12 @@ class LawSlave(SlaveBase):
         if self.h_lin > 0.0 or self.foh:
             now = self._inputs()
             if self.last_in is not None:
-                self.slope_v = (now[0] - self.last_in[0]) / h
+                # Newton backward polynomial through the last three samples of v
+                d1 = now[0] - self.last_in[0]
+                d2 = 0.0 if self.dv_last is None else d1 - self.dv_last
+                self.slope_v = (d1 + 0.5 * d2) / h
+                self.curv_v = d2 / (h * h)
+                self.dv_last = d1
                 if self.foh:  # first-order hold: the step starts at the last inputs
                     for n, v0 in zip(self.names, self.last_in):
                         self.buf2[n][0] = v0

@@ -12,10 +12,12 @@ import sys
 __all__ = ["main", "build_parser"]
 
 
-def _add_data_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("data", nargs="+", help="measurement file(s): CSV (t,x,v,a,F[,load]) or .mat; "
-                   "the first is fitted, the others held out")
-    p.add_argument("--model", required=True, help="friction law (registry name, e.g. lugre)")
+def _add_data_options(p: argparse.ArgumentParser, optional: bool = False) -> None:
+    # optional: the command has a mode without data (diagnose --benchmark); checked in _dispatch
+    p.add_argument("data", nargs="*" if optional else "+", help="measurement file(s): CSV "
+                   "(t,x,v,a,F[,load]) or .mat; the first is fitted, the others held out")
+    p.add_argument("--model", required=not optional,
+                   help="friction law (registry name, e.g. lugre)")
     p.add_argument("--map", dest="mapping", default=None,
                    help="column mapping NAME=COLUMN,... e.g. t=time,x=qm,F=force")
     p.add_argument("--scale", default=None,
@@ -51,10 +53,12 @@ def build_parser() -> argparse.ArgumentParser:
     i.add_argument("--max-evals", type=int, default=None, help="evaluation budget")
 
     g = sub.add_parser("diagnose", help="locate and name the sim-to-real gap of a model")
-    _add_data_options(g)
+    _add_data_options(g, optional=True)
     g.add_argument("--html", dest="html_out", default=None, help="write an HTML report here")
     g.add_argument("--load-column", default=None, help="column to use as load (e.g. pressure)")
     g.add_argument("--benchmark", action="store_true", help="run the built-in attribution benchmark")
+    g.add_argument("--plants", default=None, help="with --benchmark: run it on these plants "
+                   "(comma-separated names, or 'all'); default: the generic mass-like cases")
     g.add_argument("--seed", type=int, default=0)
     g.add_argument("--plant", default=None, help="trajectory level: plant model (e.g. xml350, "
                    "valve); DATA are measured positions (columns t, x)")
@@ -83,6 +87,11 @@ def _dispatch(args) -> int:
         from identification.cli import run_identify_cli
         return run_identify_cli(args) or 0
     if args.command == "diagnose":
+        if args.benchmark and args.plants:
+            from diagnosis.benchmark import run_benchmark_cli
+            return run_benchmark_cli(args)
+        if not args.benchmark and (not args.data or not args.model):
+            raise ValueError("diagnose needs DATA and --model (or --benchmark)")
         from diagnosis.cli import run_diagnose_cli
         return run_diagnose_cli(args) or 0
     raise ValueError(f"unknown command {args.command!r}")

@@ -79,7 +79,7 @@ from .core import diagnose
 __all__ = ["make_case", "run_benchmark", "CASES", "BASE", "expected", "PLANT_NAMES",
            "PLANT_CASES", "EXPECTED_FAMILIES", "PlantKinematics", "BenchCase",
            "plant_kinematics", "make_plant_case", "applicable", "localise", "truth_shrink",
-           "summarise"]
+           "summarise", "format_summary", "run_benchmark_cli"]
 
 BASE = dict(sigma0=2e4, sigma1=150.0, sigma2=8.0, Fc=2.0, Fs=2.8, vs=5e-3)
 CASES = ("acceleration", "load", "asymmetry", "stribeck_shape", "position", "inertia",
@@ -462,8 +462,9 @@ def _truth(kin: PlantKinematics, effect: str, s: float) -> np.ndarray:
             L0 = float(np.mean(L))
             # levels change by 0.4 s x the relative load change (s <= 2.4: Fc0 stays > 0)
             k = 0.4 * min(s, 2.4) / L0
-            tru = make_model("load_lugre", sigma0=p.sigma0, sigma1=p.sigma1, Fc0=p.Fc * (1 - k * L0),
-                             Fs0=p.Fs * (1 - k * L0), vs=p.vs, sigma20=p.sigma2 * (1 - k * L0),
+            tru = make_model("load_lugre", sigma0=p.sigma0, sigma1=p.sigma1,
+                             Fc0=p.Fc * (1 - k * L0), Fs0=p.Fs * (1 - k * L0), vs=p.vs,
+                             sigma20=p.sigma2 * (1 - k * L0),
                              k1_low=k * p.Fc, k2_low=k * p.Fs, k3_low=k * p.sigma2,
                              k1_high=k * p.Fc, k2_high=k * p.Fs, k3_high=k * p.sigma2)
             return tru.simulate(t, v, load=L)
@@ -812,10 +813,12 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
 
     def done(row, k):
         rows.append(row)
+        lc = row["loc_correct"]
+        lc = "-" if lc is None else "ok" if lc else "miss"
         say(f"[benchmark {k}/{len(jobs)}] {row['plant']} {row['effect']} s={row['strength']} "
             f"noise={row['noise']}: {row['verdict']} "
             f"({'ok' if row['correct'] else 'WRONG, expected ' + row['expected']}); where "
-            f"{row['loc_family']} ({'ok' if row['loc_correct'] else '-' if row['loc_correct'] is None else 'miss'}); "
+            f"{row['loc_family']} ({lc}); "
             f"shrink {row['gap_closed']:.2f} vs truth {row['truth_shrink']:.2f}; "
             f"{row['seconds']:.1f} s")
 
@@ -888,3 +891,76 @@ def summarise(rows) -> dict:
             "clean_false_attributions": overall["clean_false_attributions"],
             "outside_named_wrongly": overall["outside_named_wrongly"],
             "overall": overall, "per_plant": per_plant, "per_effect": per_effect}
+
+
+# -- text output -------------------------------------------------------------------------------
+def _pct(x):
+    # percentage, or a dash where a figure does not apply
+    return "   -" if x is None else f"{100 * x:5.1f}"
+
+
+def _num(x, fmt=".3f"):
+    return "-" if x is None else format(x, fmt)
+
+
+def format_summary(res, title: str = "withheld-effect benchmark") -> str:
+    """The benchmark figures as a text table: per plant, overall, per effect, misses."""
+    out = []
+    out.append(f"\n== {title} ==")
+    out.append(f"{'plant':14s} {'cases':>5s} {'top-1 %':>7s} {'detect.%':>8s} {'clean':>6s} "
+               f"{'outside':>7s} {'loc %':>6s} {'evid %':>6s} {'shrink |err| mean/max':>22s} "
+               f"{'s/case':>7s} {'x base id':>9s}")
+    rows = list(res["per_plant"].items()) + [("OVERALL", res["overall"])]
+    for name, f in rows:
+        out.append(f"{name:14s} {f['cases']:5d} {_pct(f['top1_accuracy']):>7s} "
+                   f"{_pct(f['top1_accuracy_detectable']):>8s} "
+                   f"{f['clean_false_attributions']:>3d}/{f['clean_cases']:<2d} "
+                   f"{f['outside_named_wrongly']:>4d}/{f['outside_cases']:<2d} "
+                   f"{_pct(f['localisation_accuracy']):>6s} "
+                   f"{_pct(f['localisation_evidence_accuracy']):>6s} "
+                   f"{_num(f['shrink_abs_error_mean']):>11s}/"
+                   f"{_num(f['shrink_abs_error_max']):<10s} "
+                   f"{f['seconds_per_case']:7.2f} "
+                   f"{_num(f['time_ratio'], '.1f'):>9s}")
+    out.append("  clean: cases with an attribution / clean cases; outside: named / out-of-library "
+               "cases; x base id: seconds per case / one base identification of that plant's clean "
+               "case, timed in the same worker")
+    out.append(f"\n{'effect':15s} {'top-1':>9s} {'where':>9s} {'evidence':>9s} {'undetect.':>9s}  "
+               f"named instead")
+    for eff, e in res["per_effect"].items():
+        na = eff in ("clean", "outside")
+        loc = "-" if na else f"{e['loc_correct']}/{e['cases']}"
+        lev = "-" if na else f"{e['loc_evidence_correct']}/{e['cases']}"
+        named = ", ".join(f"{k} x{v}" for k, v in sorted(e["named"].items(), key=lambda kv: -kv[1]))
+        out.append(f"{eff:15s} {e['correct']:4d}/{e['cases']:<4d} {loc:>9s} {lev:>9s} "
+                   f"{e['undetectable']:9d}  {named}")
+    wrong = [r for r in res["rows"] if not r["correct"]]
+    if wrong:
+        out.append("\nmisses (plant, effect, strength, noise -> verdict; truth shrink; "
+                   "candidate ranking):")
+        for r in wrong:
+            und = "(undetectable)" if r["detectable"] is False else ""
+            out.append(f"  {r['plant']:13s} {r['effect']:14s} s={r['strength']:<4g} "
+                       f"noise={r['noise']:<5g} -> {r['verdict']:13s} truth shrink "
+                       f"{r['truth_shrink']:5.2f} {und}"
+                       f" ranking {r['ranking']}")
+    return "\n".join(out)
+
+
+def run_benchmark_cli(args) -> int:
+    """``frictionlab diagnose --benchmark --plants LIST|all``: the per-plant benchmark at one
+    strength (1) and noise level (0.02 x std(F)); ``benchmarks/bench_diagnosis.py`` runs the
+    full grid."""
+    from frictionlab.progress import report as say
+    plants = None if args.plants in (None, "", "generic") else (
+        "all" if args.plants == "all" else args.plants.split(","))
+    quiet = getattr(args, "quiet", False)
+    res = run_benchmark(plants=plants, seed=getattr(args, "seed", 0), strengths=(1.0,),
+                        noises=(0.02,), progress=None if quiet else say)
+    print(format_summary(res))
+    if getattr(args, "json_out", None):
+        import json
+        with open(args.json_out, "w") as fh:
+            json.dump({k: res[k] for k in ("overall", "per_plant", "per_effect", "rows")}, fh,
+                      indent=1, default=float)
+    return 0

@@ -598,6 +598,7 @@ class _P:
     log: bool
     x0: float
     effect: str = ""
+    wide: bool = False
 
     def to_phys(self, u):
         if self.log:
@@ -632,6 +633,18 @@ def _law_coordinate(law, name, ctx, spread):
     if not hi > lo:
         hi = lo * (1 + 1e-6) + 1e-12
     return _P(name, "law", lo, hi, log, min(max(x0, lo), hi))
+
+
+def _wide_coordinate(law, name, data):
+    """A parameter a candidate adds without a fitted start (``alpha``; ``sigma0, sigma1`` of
+    ``presliding``): the identification's default box for the data, not a spread."""
+    from identification.space import default_bounds
+    info = {i.name: i for i in law.Params.info()}[name]
+    lo, hi = default_bounds(law, [name], data=data)[name]
+    log = bool(info.log) and lo > 0
+    x0 = getattr(law.params, name)
+    x0 = float(info.default if x0 is None else x0)
+    return _P(name, "law", lo, hi, log, min(max(x0, lo), hi), wide=True)
 
 
 @dataclass
@@ -914,6 +927,16 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         ``plant``, ``engine``, ``signal``, ``noise_floor``, ``greedy``, ``where_bands``,
         ``where_frequency``, ``effect_details``, ``base``, ``skipped``, ``timing``
         (``seconds``, ``simulations``).
+
+    Examples
+    --------
+    >>> from plants.xml350 import XML350                                  # doctest: +SKIP
+    >>> from diagnosis.trajectory import TrajectoryRecord, diagnose_trajectory
+    >>> opts = dict(distance=1e-4, compensation=True)      # the move that was measured
+    >>> fit = TrajectoryRecord(t, x_measured, opts, name="100um")         # doctest: +SKIP
+    >>> rep = diagnose_trajectory(fit, XML350(), "lugre", validation=held_out)  # doctest: +SKIP
+    >>> rep["verdict"]["cause"], rep["level"]                             # doctest: +SKIP
+    ('inertia', 'trajectory')
     """
     import plants as _plants
     from frictionlab.progress import Progress, report as _report
@@ -1092,7 +1115,9 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                 variants = new
         out = []
         for lw, nm in variants:
-            coords = [_law_coordinate(lw, n, ctx, spread) for n in dict.fromkeys(nm)]
+            coords = [_law_coordinate(lw, n, ctx, spread) if n in base_coords_vals
+                      or n in fit_names or n in ASYMMETRY_NAMES
+                      else _wide_coordinate(lw, n, fit_data) for n in dict.fromkeys(nm)]
             extra_mass = None
             for name in effs:
                 if name == "asymmetry":
@@ -1141,16 +1166,18 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         best = None
         for s in setups_for(effs, law, start_vals):
             u0 = s.unit0()
-            if "delay" in effs:  # a time shift is non-convex: coarse grid first
-                j = next(i for i, c in enumerate(s.coords) if c.name == "delay")
-                costs = []
-                grid = np.linspace(0.0, 1.0, 11)
-                for g in grid:
-                    u = u0.copy()
-                    u[j] = g
-                    r = residual(s, u, fit_case)
-                    costs.append(float(r @ r))
-                u0[j] = grid[int(np.argmin(costs))]
+            # non-convex coordinates get a coarse grid first: a time shift, and decades-wide
+            # parameters a candidate adds without a fitted start (bristle stiffness)
+            for j, c in enumerate(s.coords):
+                if c.name == "delay" or (c.wide and c.log):
+                    costs = []
+                    grid = np.linspace(0.0, 1.0, 11 if c.name == "delay" else 7)
+                    for g in grid:
+                        u = u0.copy()
+                        u[j] = g
+                        r = residual(s, u, fit_case)
+                        costs.append(float(r @ r))
+                    u0[j] = grid[int(np.argmin(costs))]
             u, cost, _ = fit(s, u0, budget)
             if best is None or cost < best[2]:
                 best = (s, u, cost)

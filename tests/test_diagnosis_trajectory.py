@@ -352,3 +352,16 @@ def test_force_output_plants_are_sent_to_the_force_level():
     t = np.arange(200) * 1e-3
     with pytest.raises(ValueError, match="friction-force"):
         diagnose_trajectory(TrajectoryRecord(t, np.zeros_like(t)), rig)
+
+
+def test_static_map_base_gets_its_missing_bristles_back():
+    """A static Stribeck map in the closed loop: ``presliding`` (LuGre bristles) is named and
+    the re-identified bristle stiffness is the stage's (11.02e6 N/m, seed 003 Table I)."""
+    fit, val = _scurve_records()
+    model = XML350(xml350_friction(), M=12.8)  # the mass is right this time
+    rep = diagnose_trajectory(fit, model, "stribeck", validation=val,
+                              candidates=["presliding", "inertia"])
+    assert rep["verdict"]["cause"] == "presliding", rep.summary()
+    assert rep["effects"][0]["gap_closed"] > 0.8
+    p = rep["effect_details"]["presliding"]["params"]
+    assert p["sigma0"] == pytest.approx(11.02e6, rel=0.2)

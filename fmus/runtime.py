@@ -203,7 +203,7 @@ def law_variables(model_cls, probe: bool = False) -> list[Var]:
 
 
 #: outputs of a law FMU for the linearly implicit coupling (see :func:`law_linearisation`)
-COUPLING_OUTPUTS = ("dF_dx", "dF_dv", "dF_dt", "d2F_dt2")
+COUPLING_OUTPUTS = ("dF_dx", "dF_dv", "dF_dt", "d2F_dt2", "t_kink", "dF_dt_kink")
 
 
 def coupling_variables(inputs) -> list[Var]:
@@ -230,6 +230,12 @@ def coupling_variables(inputs) -> list[Var]:
             depends=tuple(inputs)),
         Var("d2F_dt2", "output", "Real", None, "N/s2",
             "curvature of that rate over the coming step (h_lin) [N/s2]",
+            depends=tuple(inputs)),
+        Var("t_kink", "output", "Real", None, "s",
+            "time into the coming step at which the extrapolated velocity reverses (0: no "
+            "reversal) [s]", depends=tuple(inputs)),
+        Var("dF_dt_kink", "output", "Real", None, "N/s",
+            "change of dF_dt at t_kink (the force's kink where |v| turns) [N/s]",
             depends=tuple(inputs)),
     ]
 
@@ -300,16 +306,45 @@ def law_linearisation(kernel, theta, state, inputs: dict, h: float,
                       np.array([x]) if "x" in inputs else empty, theta, 0, state)
     F_now = float(F_now[0])
 
+    def v_at(tau):
+        return v + (dv_dt + 0.5 * d2v_dt2 * tau) * tau
+
     def residual(tau):
-        vt = v + (dv_dt + 0.5 * d2v_dt2 * tau) * tau
+        vt = v_at(tau)
         travel = 0.5 * (v + vt) * tau
         t2[1] = tau
         return f_end(v, vt, x + travel) - F_now - K * travel - D * (vt - v)
 
+    t_kink = _reversal_time(v, dv_dt, d2v_dt2, h)
+    if t_kink is not None:
+        # the velocity reverses inside the step: |v| kinks the force there, so the
+        # residual is piecewise linear through 0, t_kink and h
+        r_k, r_end = residual(t_kink), residual(h)
+        t2[1] = h
+        s1 = r_k / t_kink
+        s2 = (r_end - r_k) / (h - t_kink)
+        return K, D, s1, 0.0, t_kink, s2 - s1
     r_mid, r_end = residual(0.5 * h), residual(h)
     t2[1] = h
     curv = 4.0 * (r_end - 2.0 * r_mid) / (h * h)       # R'' (R quadratic through 0, mid, end)
-    return K, D, (r_end - 0.5 * curv * h * h) / h, curv
+    return K, D, (r_end - 0.5 * curv * h * h) / h, curv, 0.0, 0.0
+
+
+def _reversal_time(v, a, b, h):
+    """First time in (0.02 h, 0.98 h) at which v + a t + b t^2 / 2 changes sign, or None."""
+    if v == 0.0:
+        return None
+    roots = []
+    if b == 0.0:
+        if a != 0.0:
+            roots.append(-v / a)
+    else:
+        disc = a * a - 2.0 * b * v
+        if disc >= 0.0:
+            q = math.sqrt(disc)
+            roots += [(-a - q) / b, (-a + q) / b]
+    inside = [t for t in roots if 0.02 * h < t < 0.98 * h]
+    return min(inside) if inside else None
 
 
 __all__ += ["COUPLING_OUTPUTS", "coupling_variables", "law_linearisation",
@@ -398,6 +433,10 @@ _COUPLING_INPUT_INFO = {
                      "friction.dF_dt; 0: none)"),
     "d2F_dt2": ("N/s2", "friction law's curvature of that rate over the step (connect "
                         "friction.d2F_dt2; 0: none)"),
+    "t_kink": ("s", "time into the step at which the friction law's extrapolated velocity "
+                    "reverses (connect friction.t_kink)"),
+    "dF_dt_kink": ("N/s", "friction law's change of rate at t_kink (connect "
+                          "friction.dF_dt_kink; 0: none)"),
 }
 
 
@@ -747,7 +786,7 @@ class LawSlave(SlaveBase):
             lin = law_linearisation(self.kernel, self.theta, self.state, inputs, self.h_lin,
                                     self.slope_v, self.curv_v)
         else:
-            lin = (0.0, 0.0, 0.0, 0.0)
+            lin = (0.0,) * len(COUPLING_OUTPUTS)
         for i, val in zip(self.lin_idx, lin):
             self.values[i] = float(val)
 

@@ -684,12 +684,13 @@ class PlantStepper:
     reached on the way (including ``t+h`` itself). External inputs are held over the step.
 
     Linearly implicit coupling (external friction only): the optional inputs
-    ``coupling_names`` = ``("dF_dx", "dF_dv", "dF_dt", "d2F_dt2")`` [N/m, N.s/m, N/s,
-    N/s^2] are the friction law's local linearisation over the coming step. The step then
-    integrates with
+    ``coupling_names`` = ``("dF_dx", "dF_dv", "dF_dt", "d2F_dt2", "t_kink", "dF_dt_kink")``
+    [N/m, N.s/m, N/s, N/s^2, s, N/s] are the friction law's local linearisation over the
+    coming step. The step then integrates with
 
         F(t) = F_friction + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k)
                + dF_dt (t - t_k) + d2F_dt2 (t - t_k)^2 / 2
+               + dF_dt_kink max(0, t - t_k - t_kink)
 
     where ``x_k, v_k`` is the contact motion at the start of the step, so the stiff part of
     the contact (bristle spring, damping) is resolved inside the plant's own substeps instead
@@ -698,7 +699,7 @@ class PlantStepper:
     """
 
     #: inputs of the linearly implicit coupling (external friction mode)
-    COUPLING_INPUTS = ("dF_dx", "dF_dv", "dF_dt", "d2F_dt2")
+    COUPLING_INPUTS = ("dF_dx", "dF_dv", "dF_dt", "d2F_dt2", "t_kink", "dF_dt_kink")
 
     def __init__(self, plant: Plant, *, substep: float | None = None, start: float = 0.0,
                  friction_method: str = "exact"):
@@ -727,8 +728,9 @@ class PlantStepper:
         self.u = p._u(None)
         self.z = None if self.fric is None else p.friction.initial_state().astype(float)
         self._a = 0.0
-        # coupling: dF_dx [N/m], dF_dv [N.s/m], dF_dt [N/s], d2F_dt2 [N/s^2]
-        self._lin = [0.0, 0.0, 0.0, 0.0]
+        # coupling: dF_dx [N/m], dF_dv [N.s/m], dF_dt [N/s], d2F_dt2 [N/s^2], t_kink [s],
+        # dF_dt_kink [N/s]
+        self._lin = [0.0] * 6
         self._lin_ref = None    # (F_k, x_k, v_k, substep) of the current step when linearised
         Ts = p._sample_period()
         self._Ts = Ts
@@ -831,9 +833,12 @@ class PlantStepper:
     def _coupled_force(self, t, s) -> float:
         F_k, x_k, v_k, _, t_k = self._lin_ref
         x, v, _ = self.plant.contact(t, s, self.d, self.u)
-        K, D, r, c = self._lin
+        K, D, r, c, t_kink, r_kink = self._lin
         tau = t - t_k
-        return F_k + K * (x - x_k) + D * (v - v_k) + (r + 0.5 * c * tau) * tau
+        F = F_k + K * (x - x_k) + D * (v - v_k) + (r + 0.5 * c * tau) * tau
+        if r_kink != 0.0 and tau > t_kink:
+            F += r_kink * (tau - t_kink)
+        return F
 
     def _integrate_coupled(self, ta: float, tb: float) -> None:
         """Heun substeps with the linearised friction evaluated at every stage."""

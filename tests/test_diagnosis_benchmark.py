@@ -183,3 +183,11 @@ def test_benchmark_every_plant_quick():
 def test_benchmark_top1_goal_on_every_plant():
     res = run_benchmark(strengths=(1.0,), noises=(0.02,), plants="all", quick=True, workers=2)
     assert res["top1_accuracy"] >= 0.95
+
+
+def test_cli_benchmark_needs_no_data_and_takes_plants():
+    from frictionlab.cli import build_parser, main
+    args = build_parser().parse_args(["diagnose", "--benchmark", "--plants", "xml350,valve"])
+    assert args.benchmark and args.plants == "xml350,valve" and args.data == []
+    # without --benchmark the data and the model are still required
+    assert main(["diagnose", "--model", "lugre"]) != 0

@@ -918,9 +918,12 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     DiagnosisReport
         The contract's ``baseline`` (metric: NRMSE of the tracking error on the position
         signal), ``where``, ``effects``, ``verdict``, plus ``level: "trajectory"``,
-        ``plant``, ``engine``, ``signal``, ``noise_floor``, ``greedy``, ``where_bands``,
-        ``where_frequency``, ``effect_details``, ``base``, ``skipped``, ``timing``
-        (``seconds``, ``simulations``).
+        ``plant``, ``engine``, ``noise_floor`` (and its ``noise_floor_parts``: white,
+        reproducibility), ``greedy``, ``where_bands``, ``where_frequency``,
+        ``effect_details`` (fitted values, simulations and seconds per candidate), ``base``
+        (fitted names and values, screening sensitivities), ``skipped``, ``timing``
+        (``seconds``, ``simulations``). ``verdict`` may carry ``runner_up`` and
+        ``tied_with`` (candidates the held-out data cannot tell from the named one).
 
     Examples
     --------

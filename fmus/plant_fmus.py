@@ -7,20 +7,29 @@ load the law needs). A friction-law FMU closes the loop::
 
     plant.v -> friction.v, plant.a -> friction.a, plant.x -> friction.x,
     plant.<load> -> friction.load, friction.F -> plant.F_friction
-    friction.dF_dx -> plant.dF_dx, friction.dF_dv -> plant.dF_dv,
-    friction.dF_dt -> plant.dF_dt                                       (coupling "linearised")
+    friction.<c> -> plant.<c> for c in runtime.COUPLING_OUTPUTS          (coupling "linearised")
 
 Coupling. Holding the friction force over a communication step (``"hold"``) destabilises a
-stiff contact (a press bristle of 2e10 N/m on 80 t rings at 500 rad/s) unless the step is far
-below the data period. The default ``"linearised"`` coupling is linearly implicit: the law
-FMU also outputs its local linearisation over the coming step (``dF_dx`` [N/m], ``dF_dv``
-[N.s/m]; parameter ``h_lin`` = the communication step) and the plant FMU integrates its step
-with ``F(t) = F_k + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k)``, so the stiff part of the
-contact is resolved inside the plant's own substeps (``plants.base.PlantStepper``).
-A third output ``dF_dt`` [N/s] carries what the slopes miss along the motion extrapolated
-from the law's last two input samples (the velocity reversing inside a step), and with
-Gauss-Seidel (plant first) the law advances its state with its inputs at both ends of the
-step (parameter ``inputs_at_step_end``) instead of holding the end values.
+stiff contact (the press bristle on 80 t at the 100 Hz data rate) or, where the friction
+reverses within a data period, rings a stiff, lightly damped sensor mode (the rig's 1.1 kHz
+force sensors, the isolator's 225 Hz load cell), unless the step is far below the data
+period. The default ``"linearised"`` coupling is linearly implicit: the law FMU also outputs
+its local linearisation over the coming step (``runtime.law_linearisation``; parameter
+``h_lin`` = the communication step):
+
+* ``dF_dx`` [N/m], ``dF_dv`` [N.s/m]: slopes of its step map against the travel and the end
+  velocity (sticking: the bristle spring and damping; sliding: the viscous slope), taken
+  around the motion extrapolated from its last three input samples;
+* ``dF_dt`` [N/s], ``d2F_dt2`` [N/s^2]: what those slopes miss along that motion, quadratic
+  in time through the middle and the end of the step;
+* ``t_kink`` [s], ``dF_dt_kink`` [N/s]: where the extrapolated velocity reverses inside the
+  step, the residual is piecewise linear instead, with this change of slope there (|v|).
+
+The plant FMU integrates its step with
+``F(t) = F_k + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k) + R(t - t_k)`` (``R`` the residual
+above), so the stiff part of the contact is resolved inside the plant's own substeps
+(``plants.base.PlantStepper``). With Gauss-Seidel (plant first) the law advances its state
+with its inputs at both ends of the step (parameter ``inputs_at_step_end``).
 
 :func:`plant_proof` runs that loop with our master at the plant's data rate (the controller
 rate when it is faster) and compares the main output with

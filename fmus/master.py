@@ -33,6 +33,7 @@ changed; results go into a preallocated array. Any FMU call returning fmi2Discar
 """
 from __future__ import annotations
 
+import array
 import ctypes
 import math
 import os
@@ -454,15 +455,11 @@ class Master:
         self._settle(t0, max(self.iterations, len(insts)))
 
         cols = self._columns
-        out = np.empty((n + 1, len(cols)))
-        srcs = [(c[0].out_np if c[1] == "out" else c[0].in_np, c[2]) for c in cols]
-
-        def record(k):
-            row = out[k]
-            for j, (arr, slot) in enumerate(srcs):
-                row[j] = arr[slot]
-
-        record(0)
+        # recorded values go straight from the ctypes buffers into a flat array of doubles
+        srcs = [(c[0].out_buf if c[1] == "out" else c[0].in_buf, c[2]) for c in cols]
+        flat = array.array("d")
+        keep = flat.extend
+        keep([buf[slot] for buf, slot in srcs])
         show = progress if progress is not None else n > 20000
         prog = progress if callable(progress) else \
             Progress(total=n, label="cosim", enabled=bool(show))
@@ -505,9 +502,10 @@ class Master:
                     self._get(inst, t + h)
             if iters:
                 self._settle(t + h, iters)
-            record(k)
+            keep([buf[slot] for buf, slot in srcs])
             if k % chunk == 0:
                 prog(chunk)
+        out = np.frombuffer(flat, dtype=np.float64).reshape(n + 1, len(cols))
         time = t0 + h * np.arange(n + 1)
         dtype = [("time", np.float64)] + [(c, np.float64) for c in self.record]
         res = np.empty(n + 1, dtype=dtype)

@@ -269,7 +269,8 @@ def coupling_step(plant_cls, max_step: float | None = None) -> float:
 def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
                 stop: float | None = None, rtol: float = 1e-9, tol: float = 1e-3,
                 max_halvings: int = 4, time_budget: float | None = None,
-                coupling: str = "linearised", max_step: float | None = None) -> dict:
+                coupling: str = "linearised", max_step: float | None = None,
+                coarser: bool = False) -> dict:
     """NRMSE of the co-simulated main output against the plant's reference integrator.
 
     The loop communicates at ``h0`` = :func:`coupling_step` (the data rate unless
@@ -279,7 +280,9 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
     until the NRMSE is at most ``tol``. Below the data period the plant's internal substep
     (<= the communication step) shrinks too, so the coupling error is not masked by a fixed
     integrator error. ``time_budget`` [s] stops a reference integration that crawls with
-    ``TimeoutError``.
+    ``TimeoutError``. ``coarser=True`` also runs the steps between ``h0`` and the data
+    period that divide it (a plant whose controller samples faster than its data: the press
+    at 1 kHz, data at 100 Hz), for an observed order above the integrator's error floor.
 
     Returns
     -------
@@ -287,7 +290,8 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
         ``nrmse`` and ``step``: the first communication step meeting ``tol`` (else the
         finest); ``nrmse_first`` at ``h0``; ``meets_tol_first``; ``steps``, ``errors``,
         ``order`` (least-squares slope of log error over log step), ``data_step``,
-        ``stop``, ``law``, ``coupling``.
+        ``stop``, ``law``, ``coupling``; with ``coarser``: ``coarse_steps``,
+        ``coarse_errors`` (from the data period down to ``h0``) and ``coarse_order``.
     """
     import plants
     from friction.metrics import nrmse
@@ -322,6 +326,24 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
             steps.append(hk)
             if k + 1 >= refinements and min(errors) <= tol:
                 break
+        coarse = {}
+        if coarser and per > 1:
+            cs = [hd / q for q in range(1, per) if per % q == 0]   # data period ... > h0
+            ce = []
+            for hc in cs:
+                if coupling == "linearised":
+                    m.parameters["friction"]["h_lin"] = hc
+                try:
+                    res = m.simulate(stop_time=n * hd, step_size=hc)
+                    stride = int(round(hd / hc))
+                    ce.append(float(nrmse(ref[main], res[f"plant.{main}"][::stride])))
+                except FMUError:
+                    ce.append(math.inf)
+            cs, ce = cs + [steps[0]], ce + [errors[0]]
+            fin = [j for j, e in enumerate(ce) if math.isfinite(e)]
+            coarse = {"coarse_steps": cs, "coarse_errors": ce,
+                      "coarse_order": (observed_order([cs[j] for j in fin], [ce[j] for j in fin])
+                                       if len(fin) > 1 else float("nan"))}
     ok = [i for i, e in enumerate(errors) if e <= tol]
     i = ok[0] if ok else len(errors) - 1
     fin = [j for j, e in enumerate(errors) if math.isfinite(e)]
@@ -329,4 +351,4 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
             "meets_tol_first": bool(errors[0] <= tol), "steps": steps, "errors": errors,
             "order": (observed_order([steps[j] for j in fin], [errors[j] for j in fin])
                       if len(fin) > 1 else float("nan")),
-            "law": law.name, "data_step": hd, "stop": n * hd, "coupling": coupling}
+            "law": law.name, "data_step": hd, "stop": n * hd, "coupling": coupling, **coarse}

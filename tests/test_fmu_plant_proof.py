@@ -208,10 +208,13 @@ def test_plant_fmu_proof_at_the_data_rate(proof_fmu_dir, plant):
     stop = min(float(cls.default_experiment.stop), 200.0 / cls.data_rate)
     for law in plant_laws(cls).values():
         r = plant_proof(proof_fmu_dir, plant, law, stop=stop, refinements=2, max_halvings=1,
-                        time_budget=300)
+                        time_budget=300, coarser=True)
         assert r["steps"][0] == pytest.approx(data_step(cls)), r
         assert r["nrmse_first"] <= 1e-3, (plant, law.name, r)
-        assert r["errors"][1] < r["errors"][0], (plant, law.name, r)
+        if "coarse_order" in r:   # the press: 10, 5, 2, 1 ms (its data period down)
+            assert r["coarse_order"] >= 1.0, (plant, law.name, r)
+        elif r["errors"][0] > 1e-5:   # below: the integrators' floor, not the coupling
+            assert r["errors"][1] < r["errors"][0], (plant, law.name, r)
 
 
 @pytest.mark.slow

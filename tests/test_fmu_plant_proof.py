@@ -187,6 +187,23 @@ def test_regime_split_gives_each_side_of_the_load_law():
     assert regime_split(friction.make_model("lugre")) is None
 
 
+def test_press_pairing_and_reference_use_the_same_load_law():
+    # friction/load_lugre.py reads Table 3 per kN; the press reads it per MN
+    # (plants.forging_press.press_friction): the proof's reference and the parameters the
+    # master gives the load_lugre FMU must both be the press's reading
+    from fmus.plant_fmus import _law_params, plant_laws
+    from plants.forging_press import ForgingPress, press_friction
+    law = plant_laws(ForgingPress)["load_lugre"]
+    assert law.params == press_friction().params == ForgingPress().friction.params
+    fmu_params = _law_params(law)
+    assert fmu_params["k1_high"] == pytest.approx(103.95e-3)   # per MN
+    assert fmu_params["k3_high"] == pytest.approx(319.91)
+    assert friction.make_model("load_lugre").params.k1_high == pytest.approx(103.95)  # per kN
+    # every numeric parameter of the law reaches the FMU (vc unset: derived the same way)
+    names = {n for n in law.Params.numeric_names() if getattr(law.params, n) is not None}
+    assert names == set(fmu_params)
+
+
 # -- FMU proofs (slow) ---------------------------------------------------------------------
 
 @pytest.fixture(scope="module")

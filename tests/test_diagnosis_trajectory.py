@@ -76,6 +76,40 @@ def _motion(n=3000, dt=1e-3):
     return t, x, v, a
 
 
+def test_load_effect_is_the_candidate_formula():
+    t, x, v, a = _motion()
+    load = 100.0 + 40.0 * np.sin(2 * np.pi * 0.3 * t)
+    base = xml350_friction()
+    F0 = base.simulate(t, v)
+    data = Dataset(t=t, x=x, v=v, a=a, F=F0, load=load)
+    ctx = make_context(data)
+    law = EffectLaw(base, {"load": {"gamma_L": 0.7}}, ctx)
+    assert law.extra_inputs == ("load",)
+    expect = CANDIDATES["load"].apply(F0, {"gamma_L": 0.7}, data, ctx)
+    assert np.allclose(law.simulate(t, v, load=load), expect, rtol=1e-12, atol=1e-14)
+
+
+def test_drift_runs_on_absolute_time():
+    """The time state starts at the record's absolute start: a friction level that drifts
+    over the session is extrapolated to a record taken later."""
+    t, x, v, a = _motion(500)
+    base = xml350_friction()
+    F0 = base.simulate(t, v)
+    ctx = make_context(Dataset(t=t, x=x, v=v, a=a, F=F0))
+    law = EffectLaw(base, {"drift": {"k_drift": 0.5}}, ctx, time0=2.0)
+    expect = F0 * (1 + 0.5 * (2.0 + t - ctx.t0) / ctx.T)
+    assert np.allclose(law.simulate(t, v), expect, rtol=1e-12, atol=1e-14)
+    # in the plant: the same run recorded 0.5 s into the session is predicted differently
+    opts = dict(distance=1e-4, compensation=False, controller="sdpid")
+    stage = XML350(base, f_current=2000.0)
+    r = stage.simulate(0.03, **opts)
+    early = record_from_result(r, opts, t_start=0.0)
+    late = record_from_result(r, opts, t_start=0.5)
+    law0 = EffectLaw(base, {"drift": {"k_drift": 0.5}}, ctx)
+    y0, y1 = simulate_record(stage, law0, early), simulate_record(stage, law0, late)
+    assert np.sqrt(np.mean((y1 - y0) ** 2)) > 0.05 * np.std(r["x_d"] - r["x"])
+
+
 @pytest.mark.parametrize("effects", [
     {"acceleration": {"f_a": 0.3, "a_s": 0.02, "v_c": 1e-3}},
     {"position": {"c_x1": 0.2, "c_x2": -0.1, "c_x3": 0.05, "c_x4": 0.1}},

@@ -399,3 +399,21 @@ def test_static_map_base_gets_its_missing_bristles_back():
     assert rep["effects"][0]["gap_closed"] > 0.8
     p = rep["effect_details"]["presliding"]["params"]
     assert p["sigma0"] == pytest.approx(11.02e6, rel=0.2)
+
+
+# -- a gap outside the library: the stage's current loop is slower than the model's ---------------
+@pytest.mark.parametrize("candidates", [
+    ["asymmetry", "inertia", "delay", "stribeck_shape"],
+    pytest.param(None, marks=pytest.mark.slow),
+])
+def test_actuator_lag_outside_the_library_is_unexplained(candidates):
+    """The real current loop has 1 kHz bandwidth, the model 2 kHz: a structured gap that no
+    friction candidate (nor mass, nor a channel delay) closes -> ``unexplained``."""
+    truth = XML350(xml350_friction(), f_current=1000.0)
+    fit = record_from_result(truth.simulate(0.2, **FIT), FIT, signal="x_meas", noise=NOISE,
+                             seed=1)
+    val = record_from_result(truth.simulate(0.25, **VAL), VAL, signal="x_meas", noise=NOISE,
+                             seed=2)
+    rep = diagnose_trajectory(fit, _model(), validation=val, candidates=candidates)
+    assert rep["baseline"]["validation"] > 1.5 * rep["noise_floor"]  # a real gap
+    assert rep["verdict"]["cause"] == "unexplained", rep.summary()

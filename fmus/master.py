@@ -139,10 +139,11 @@ class _Instance:
             start = self.vars[name].start
             self.in_np[j] = float(start) if start not in (None, "") else 0.0
         self.out_np = np.ctypeslib.as_array(self.out_buf)[:n_out]
-        # feedthrough: some connected input reaches an output directly
+        # feedthrough: some connected input reaches an output the master reads directly
+        # (an output missing from ModelStructure or without dependencies counts as such)
         conn = set(self.inputs)
-        self.feedthrough = any(d is None or conn.intersection(d) for d in self.deps.values()) \
-            if n_in else False
+        self.feedthrough = any(self.deps.get(o) is None or conn.intersection(self.deps[o])
+                               for o in self.outputs) if n_in else False
 
 
 class Master:

@@ -201,21 +201,21 @@ def _count_methods(objs, counts, names):
 def master_calls_per_step(m, h, n=200):
     """FMI calls per communication step of an open Master (difference of two counted runs,
     so initialization calls drop out); the instances' function pointers are restored."""
-    saved = {k: (i.f_set, i.f_step, i.f_get) for k, i in m.instances.items()}
+    saved = {k: (i.raw_set, i.raw_step, i.raw_get) for k, i in m.instances.items()}
     totals = []
     try:
         for steps in (n, 2 * n):
             counts = {}
-            _count_methods(m.instances.values(), counts, {"f_set": "fmi2SetReal",
-                                                          "f_step": "fmi2DoStep",
-                                                          "f_get": "fmi2GetReal"})
+            _count_methods(m.instances.values(), counts, {"raw_set": "fmi2SetReal",
+                                                          "raw_step": "fmi2DoStep",
+                                                          "raw_get": "fmi2GetReal"})
             m.simulate(stop_time=steps * h, step_size=h, progress=False)
             totals.append(counts)
             for k, i in m.instances.items():
-                i.f_set, i.f_step, i.f_get = saved[k]
+                i.raw_set, i.raw_step, i.raw_get = saved[k]
     finally:
         for k, i in m.instances.items():
-            i.f_set, i.f_step, i.f_get = saved[k]
+            i.raw_set, i.raw_step, i.raw_get = saved[k]
     return {key: (totals[1][key] - totals[0][key]) / n for key in totals[0]}
 
 

@@ -103,13 +103,16 @@ class _Instance:
         # loggingOn: warnings too (our FMUs' status shim forwards errors in any case)
         self.slave.instantiate(callbacks=callbacks, loggingOn=True)
         self.c = self.slave.component
-        # the per-step calls through our own function pointers without argtypes, given
-        # ready ctypes objects: no per-call argument conversion (fmpy's pointers convert
-        # every argument through argtypes)
+        # fmpy's function pointers (argtypes set: plain Python arguments), kept for callers
+        # that drive an instance themselves (e.g. identification.cosim)
+        f = self.slave._functions
+        self.f_set, self.f_get, self.f_step = f["fmi2SetReal"], f["fmi2GetReal"], f["fmi2DoStep"]
+        # the master's per-step calls: own pointers without argtypes, given ready ctypes
+        # objects (c_void_p, arrays, c_size_t, c_double, c_int): no per-call conversion
         self.cv = ctypes.c_void_p(self.c)
-        self.f_set = _raw_function(self.slave.dll, "fmi2SetReal")
-        self.f_get = _raw_function(self.slave.dll, "fmi2GetReal")
-        self.f_step = _raw_function(self.slave.dll, "fmi2DoStep")
+        self.raw_set = _raw_function(self.slave.dll, "fmi2SetReal")
+        self.raw_get = _raw_function(self.slave.dll, "fmi2GetReal")
+        self.raw_step = _raw_function(self.slave.dll, "fmi2DoStep")
         self.inputs: list[str] = []
         self.outputs: list[str] = [v.name for v in md.modelVariables if v.causality == "output"]
         deps = {}
@@ -367,14 +370,14 @@ class Master:
             for slot, src, k in inst.gather:
                 buf[slot] = src.out_buf[k]
         if inst.n_in:
-            st = inst.f_set(inst.cv, inst.in_vr, inst.n_in_c, buf)
+            st = inst.raw_set(inst.cv, inst.in_vr, inst.n_in_c, buf)
             if st > 1:
                 self._check(inst, "fmi2SetReal", st, t)
         return True
 
     def _get(self, inst, t):
         if inst.n_out:
-            st = inst.f_get(inst.cv, inst.out_vr, inst.n_out_c, inst.out_buf)
+            st = inst.raw_get(inst.cv, inst.out_vr, inst.n_out_c, inst.out_buf)
             if st > 1:
                 self._check(inst, "fmi2GetReal", st, t)
 
@@ -470,8 +473,9 @@ class Master:
         # per instance, everything a step touches, unpacked once (the loop below is the
         # per-step overhead of the master: one fmi2SetReal, fmi2DoStep, fmi2GetReal each)
         plan = [(inst, inst.cv, [(slot, src.out_buf, j) for slot, src, j in inst.gather],
-                 inst.in_buf, inst.in_vr, inst.n_in and inst.n_in_c, inst.f_set, inst.f_step,
-                 inst.out_buf, inst.out_vr, inst.n_out and inst.n_out_c, inst.f_get)
+                 inst.in_buf, inst.in_vr, inst.n_in and inst.n_in_c, inst.raw_set,
+                 inst.raw_step, inst.out_buf, inst.out_vr, inst.n_out and inst.n_out_c,
+                 inst.raw_get)
                 for inst in insts]
         hc, c_double = ctypes.c_double(h), ctypes.c_double
         check = self._check
@@ -496,7 +500,7 @@ class Master:
                 for inst in insts:
                     self._gather_set(inst, t)
                 for inst in insts:
-                    st = inst.f_step(inst.cv, c_double(t), hc, _TRUE)
+                    st = inst.raw_step(inst.cv, c_double(t), hc, _TRUE)
                     if st > 1:
                         check(inst, "fmi2DoStep", st, t)
                 for inst in insts:

@@ -47,7 +47,9 @@ asymmetry           direction twins Fc_neg, Fs_neg, sigma2_neg (isolator: hyster
                     scaled on v < 0)
 stribeck_shape      LuGre whose Stribeck curve has an extra exponential low-speed tail (neither
                     Gaussian-alpha nor Lorentzian); not applicable to the isolator
-position            a local defect: friction raised by a Gaussian bump along the stroke
+position            a local defect: friction raised by a Gaussian bump along the stroke,
+                    centred where fit and held-out parts both pass (not on the press,
+                    whose one-way stroke never revisits a position)
 inertia             mass error times the *filtered* acceleration of the inverse dynamics
 delay               force channel delayed (cubic-spline fractional shift, at most
                     :data:`MAX_DELAY_SAMPLES`) then through a half-sample first-order lag
@@ -411,6 +413,23 @@ def _lag(t, u, tau):
     return y
 
 
+#: share of the record :func:`diagnosis.diagnose` fits on by default (the rest is held out)
+FIT_FRACTION = 0.7
+
+
+def _bump_centre(kin: PlantKinematics, min_overlap: float = 0.2):
+    """Centre [m] of the ``position`` defect: the median held-out position among those the
+    fit part also visits, so the defect is seen in both parts; ``None`` if fewer than
+    ``min_overlap`` of the held-out samples lie within the fit part's range (a one-way
+    stroke, e.g. the press: nothing to learn the defect from)."""
+    m = int(round(FIT_FRACTION * kin.x.size))
+    xf, xh = kin.x[:m], kin.x[m:]
+    inside = (xh >= xf.min()) & (xh <= xf.max())
+    if inside.mean() < min_overlap:
+        return None
+    return float(np.median(xh[inside]))
+
+
 def _base_parts(kin: PlantKinematics):
     """(F_base, F_friction_part): the force of the base law and the part effects act on."""
     law, t, v, x = kin.base, kin.t, kin.v, kin.x
@@ -499,7 +518,10 @@ def _truth(kin: PlantKinematics, effect: str, s: float) -> np.ndarray:
         return _lugre_table_g(t, v, g(v), gm, p.sigma0, p.sigma1, p.sigma2)
     if effect == "position":
         span = sc["x_hi"] - sc["x_lo"] or 1.0
-        xc = sc["x_lo"] + 0.7 * span
+        xc = _bump_centre(kin)
+        if xc is None:
+            raise ValueError(f"position: the held-out part of the {kin.plant} record never "
+                             f"revisits the positions of its fit part")
         bump = np.exp(-0.5 * ((x - xc) / (0.08 * span)) ** 2)
         return F + Ff * 0.6 * s * bump
     if effect == "inertia":
@@ -537,9 +559,15 @@ class BenchCase:
     info: dict = field(default_factory=dict)
 
 
-def applicable(plant: str, effect: str) -> bool:
-    """Whether a per-plant case exists (the isolator's mre_lugre has no Stribeck curve)."""
-    return not (plant == "mre_isolator" and effect == "stribeck_shape")
+def applicable(plant: str, effect: str, quick: bool = False) -> bool:
+    """Whether a per-plant case exists: the isolator's mre_lugre has no Stribeck curve, and a
+    ``position`` defect needs a record whose held-out part revisits the fit part's
+    positions (not the press's one-way stroke, see :func:`_bump_centre`)."""
+    if plant == "mre_isolator" and effect == "stribeck_shape":
+        return False
+    if effect == "position":
+        return _bump_centre(plant_kinematics(plant, quick)) is not None
+    return True
 
 
 def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float = 0.02,
@@ -563,9 +591,9 @@ def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float
     quick : bool
         Use the short protocol of :func:`plant_kinematics`.
     """
-    if not applicable(plant, effect):
-        raise ValueError(f"{effect!r} does not apply to {plant!r} (its base law has no "
-                         f"Stribeck curve)")
+    if plant in _PLANT_RUNS and effect in PLANT_CASES and not applicable(plant, effect, quick):
+        raise ValueError(f"{effect!r} does not apply to {plant!r} (no Stribeck curve in its "
+                         f"base law, or no position revisited by its held-out part)")
     kin = plant_kinematics(plant, quick)
     Fb = _base_parts(kin)[0]
     sdb = float(np.std(Fb)) or 1.0
@@ -803,10 +831,13 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
     if plants == "all":
         plants = PLANT_NAMES
     plist = [None] if plants is None else list(plants)
+    for plant in plist:  # simulate each plant once here; workers get the kinematics
+        if plant is not None:
+            plant_kinematics(plant, quick)
     jobs = []
     for plant in plist:
         for eff in effects:
-            if plant is not None and not applicable(plant, eff):
+            if plant is not None and not applicable(plant, eff, quick):
                 continue
             reps = clean_repeats if eff == "clean" else 1
             for s in strengths:
@@ -814,9 +845,6 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
                     for r in range(reps):
                         jobs.append((plant, eff, s, nz, seed + len(jobs) + 1, quick, seed))
     say = progress or (lambda msg: None)
-    for plant in plist:  # simulate each plant once here; workers get the kinematics
-        if plant is not None:
-            plant_kinematics(plant, quick)
     rows = []
 
     def done(row, k):

@@ -4,8 +4,9 @@ import numpy as np
 import pytest
 
 from diagnosis import diagnose
-from diagnosis.benchmark import (EFFECT_SIZE, PLANT_NAMES, make_case, make_plant_case,
-                                 localise, plant_kinematics, run_benchmark, truth_shrink)
+from diagnosis.benchmark import (EFFECT_SIZE, PLANT_NAMES, _bump_centre, make_case,
+                                 make_plant_case, localise, plant_kinematics, run_benchmark,
+                                 truth_shrink)
 from friction.metrics import nrmse
 
 
@@ -98,12 +99,12 @@ def test_localise_where_finds_the_position_defect_band():
     rep = _diagnose(c)
     loc = localise(rep)
     assert loc["family"] == "x"
-    # the bump sits at 70 % of the stroke (RMS width 8 % of it): the top band must overlap
-    # its central +-2 widths (band edges are printed to 3 digits)
+    # the bump (RMS width 8 % of the stroke) sits where fit and held-out parts both pass:
+    # the top band must overlap its central +-2 widths (band edges printed to 3 digits)
     lo, hi = [float(s) for s in loc["label"].split("[")[1].split("]")[0].split(",")]
     kin = plant_kinematics("damping_rig", True)
     span = kin.scales["x_hi"] - kin.scales["x_lo"]
-    xc = kin.scales["x_lo"] + 0.7 * span
+    xc = _bump_centre(kin)
     assert lo <= xc + 0.16 * span and hi >= xc - 0.16 * span
 
 
@@ -168,6 +169,9 @@ def test_run_benchmark_per_plant_scores_rows():
 def test_benchmark_every_plant_quick():
     res = run_benchmark(strengths=(1.0,), noises=(0.02,), plants="all", quick=True, workers=2)
     assert {r["plant"] for r in res["rows"]} == set(PLANT_NAMES)
+    # the press's one-way stroke never revisits a position: no position case there
+    assert not any(r["plant"] == "forging_press" and r["effect"] == "position"
+                   for r in res["rows"])
     # the goals that hold on every plant: clean data gets no name, the ripple outside the
     # library is never given a library name
     assert res["clean_false_attributions"] == 0

@@ -110,6 +110,9 @@ def run_stage(out, summary: dict, quick: bool = False) -> None:
             summary["xml350_from_parts"] = {"error": f"{type(exc).__name__}: {exc}"}
     summary["cosim_vs_reference"] = {
         name: {law: ({"nrmse": r["nrmse_first"], "step": r["steps"][0],
+                      "step_is": ("controller period (faster than the data)"
+                                  if r["steps"][0] < r["data_step"] * (1 - 1e-9)
+                                  else "data period"),
                       "data_step": r["data_step"], "order": r["order"],
                       "coupling": r["coupling"], "meets_tol_at_data_rate": r["meets_tol_first"],
                       **({"coarse_steps": r["coarse_steps"], "coarse_errors": r["coarse_errors"],

@@ -10,8 +10,10 @@ generic stepper), plus the FMU engine's cost per simulation.
 
     python benchmarks/bench_diagnosis_trajectory.py [--quick] [--sweep]
 
-``--sweep`` adds the attribution sweep: truths clean / asymmetry / acceleration / mass error
-at two strengths and two noise seeds, every candidate, reporting top-1 accuracy.
+``--sweep`` adds the attribution sweep: truths clean / asymmetry / acceleration / mass error /
+encoder lag at two strengths and two noise seeds, plus a gap outside the library (a current
+loop twice as slow as the model's, must be ``unexplained``), every candidate; reports top-1
+accuracy.
 """
 import math
 import sys
@@ -37,7 +39,7 @@ def truth(kind, s=1.0):
     Stribeck velocity too; a first-order frictional lag instead of a static tanh term)."""
     p = {k: getattr(xml350_friction().params, k)
          for k in ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "b", "shape")}
-    if kind in ("clean", "inertia"):
+    if kind in ("clean", "inertia", "delay", "outside"):
         return xml350_friction()
     if kind == "asymmetry":
         return make_model("modified_lugre", **p, f_a=0.0, Fc_neg=0.95 - 0.15 * s,
@@ -48,18 +50,26 @@ def truth(kind, s=1.0):
 
 def sweep(fit_opts, val_opts, model):
     rows = []
-    for kind in ("clean", "asymmetry", "acceleration", "inertia"):
-        for s in ((1.0,) if kind == "clean" else (0.5, 1.0)):
+    for kind in ("clean", "asymmetry", "acceleration", "inertia", "delay", "outside"):
+        for s in ((1.0,) if kind in ("clean", "outside") else (0.5, 1.0)):
             for seed in (1, 2):
                 M = 11.8 * (1 + 0.1 * s) if kind == "inertia" else 11.8
-                stage = XML350(truth(kind, s), f_current=2000.0, M=M)
+                # outside the library: the real current loop is twice as slow as the model's
+                fc = 1000.0 if kind == "outside" else 2000.0
+                stage = XML350(truth(kind, s), f_current=fc, M=M)
                 fit = record_from_result(stage.simulate(0.2, **fit_opts), fit_opts,
                                          signal="x_meas", noise=3e-10, seed=seed)
                 val = record_from_result(stage.simulate(0.34, **val_opts), val_opts,
                                          signal="x_meas", noise=3e-10, seed=seed + 10)
+                if kind == "delay":  # encoder read through a first-order lag, not a shift
+                    from scipy.signal import lfilter
+                    for rec in (fit, val):
+                        tau = 2e-5 * s
+                        al = rec.dt / (tau + rec.dt)
+                        rec.y = lfilter([al], [1.0, al - 1.0], rec.y - rec.y[0]) + rec.y[0]
                 t0 = time.perf_counter()
                 rep = diagnose_trajectory(fit, model, "lugre", validation=val)
-                want = "none" if kind == "clean" else kind
+                want = {"clean": "none", "outside": "unexplained"}.get(kind, kind)
                 got = rep["verdict"]["cause"]
                 tied = rep["verdict"].get("tied_with", [])
                 rows.append((got == want, want in tied))
@@ -68,7 +78,8 @@ def sweep(fit_opts, val_opts, model):
                 print(f"  {kind:12s} strength {s:.1f} seed {seed}: {got:14s} {note} "
                       f"{tied if tied else ''} ({time.perf_counter() - t0:.0f} s)", flush=True)
     ok = np.array(rows)
-    print(f"sweep: top-1 (none on clean) {100 * ok[:, 0].mean():.0f} % of {len(rows)} cases; "
+    print(f"sweep: top-1 (none on clean, unexplained outside) {100 * ok[:, 0].mean():.0f} % of "
+          f"{len(rows)} cases; "
           f"wrong names with the truth reported as tied: {int((~ok[:, 0] & ok[:, 1]).sum())}; "
           f"wrong names without: {int((~ok[:, 0] & ~ok[:, 1]).sum())}")
 

@@ -55,6 +55,10 @@ Cost (``benchmarks/bench_diagnosis_trajectory.py``, XML-350, 0.2 s fit + 0.34 s 
 at 10 kHz, every candidate): about 100-150 plant simulations, 20-45 s on a shared 2-core
 machine; the law-parameter candidates run on the plant's compiled kernel (milliseconds per
 simulation), the :class:`EffectLaw` ones on the generic stepper (about 0.5 s each).
+Attribution (``--sweep``: clean, asymmetry, frictional lag, mass error, encoder lag at two
+strengths and two noise seeds, a slower current loop outside the library): 19 of 20 right;
+the miss, a half-strength frictional lag, is named ``inertia`` with ``acceleration`` listed
+in ``tied_with``.
 
 Engines
 -------

@@ -138,9 +138,10 @@ def xml350_loop_master(fmu_dir, *, friction_params: dict | None = None, record=N
                                     "friction.F"])
 
 
-def plant_connections(plant_cls, law_cls, coupling: str = "linearised") -> list[tuple[str, str]]:
+def plant_connections(plant_cls, law_cls, coupling: str = "hold") -> list[tuple[str, str]]:
     """Connections plant <-> friction law for the law's inputs (and, for the
-    ``"linearised"`` coupling, the law's ``dF_dx``, ``dF_dv`` into the plant)."""
+    ``"linearised"`` coupling, the law's coupling outputs into the plant; that needs the
+    law's ``h_lin`` set, as :func:`plant_master` does)."""
     if coupling not in COUPLINGS:
         raise ValueError(f"coupling must be one of {COUPLINGS}, got {coupling!r}")
     outs = plant_cls(external_friction=True).all_output_names
@@ -253,12 +254,12 @@ def data_step(plant_cls) -> float:
     return h
 
 
-def coupling_step(plant_cls, max_step: float | None = None) -> float:
-    """Communication step of the plant + friction loop [s].
+def coupling_step(plant_cls, max_step: float | None = MAX_COUPLING_STEP) -> float:
+    """Communication step of a plant + friction loop with the force held over a step [s].
 
-    :func:`data_step`, or (``max_step`` given, the finer-step fallback) that period divided by
-    the smallest integer that brings it to ``max_step`` or below, so results fall on the data
-    samples.
+    :func:`data_step` divided by the smallest integer that brings it to ``max_step`` or
+    below, so results fall on the data samples (``max_step=None``: :func:`data_step`
+    itself, what the linearised coupling of :func:`plant_proof` uses).
     """
     h = data_step(plant_cls)
     if max_step is None:
@@ -273,8 +274,8 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
                 coarser: bool = False) -> dict:
     """NRMSE of the co-simulated main output against the plant's reference integrator.
 
-    The loop communicates at ``h0`` = :func:`coupling_step` (the data rate unless
-    ``max_step`` asks for the finer-step fallback) and at ``h0 / 2**k``; results are
+    The loop communicates at ``h0`` = :func:`data_step` (or, with ``max_step`` for the
+    finer-step fallback, :func:`coupling_step`) and at ``h0 / 2**k``; results are
     compared with the reference at the plant's data rate. At least ``refinements`` steps
     are run (for the observed order); halving continues (at most ``max_halvings`` times)
     until the NRMSE is at most ``tol``. Below the data period the plant's internal substep
@@ -300,7 +301,7 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
     cls = plants.PLANTS[plant_name]
     plant = cls(friction=law)
     hd = 1.0 / cls.data_rate
-    h = coupling_step(cls, max_step)
+    h = data_step(cls) if max_step is None else coupling_step(cls, max_step)
     per = int(round(hd / h))  # communication steps per data sample
     if abs(per * h - hd) > 1e-9 * hd:
         raise ValueError(f"{plant_name}: communication step {h!r} does not divide the data "

@@ -26,9 +26,10 @@ MASS_SCENARIOS = {
     "lugre": dict(m=1.0, u0=0.0, u_amp=2.0, u_freq=1.0, v0=0.0, stop=1.0),
     "stribeck": dict(m=1.0, u0=3.0, u_amp=1.0, u_freq=1.0, v0=0.05, stop=1.0),
     "modified_lugre": dict(m=1.0, u0=0.0, u_amp=12.0, u_freq=1.0, v0=0.0, stop=1.0),
-    # load 0: under load the law's coefficients jump at vc (two regimes, seed 004 Table 3)
-    # and the stiff reference integrator cannot cross that discontinuity; the load input
-    # itself is checked against the law's own simulate() in the tests
+    # load 0: under load the law's coefficients jump at vc (two regimes, seed 004 Table 3);
+    # friction.reference.simulate_mass does not split the regimes (the plants' reference
+    # does: the press proof covers the jump); the load input itself is checked against the
+    # law's own simulate() in the tests
     "load_lugre": dict(m=1e5, u0=0.0, u_amp=8e5, u_freq=0.5, v0=0.0, load=0.0, stop=1.0),
     # the isolator's spring k0 x sits inside the law FMU, so the mass-spring loop itself is
     # coupled through the one-step hold: it needs a finer step than the others for 1e-3

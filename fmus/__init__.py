@@ -3,6 +3,7 @@
 Modules: :mod:`fmus.build` (``build_all``, the catalogue), :mod:`fmus.runtime` (the slave
 classes that travel inside the FMUs), :mod:`fmus.modeldescription` (complete
 ``modelDescription.xml``), :mod:`fmus.vendor` (unique package names inside FMUs),
+:mod:`fmus.status_shim` (the C shim in front of pythonfmu's binary: fmi2Error on bad input),
 :mod:`fmus.master` (the co-simulation master), :mod:`fmus.proof` and :mod:`fmus.plant_fmus`
 (co-simulation against the reference integrators), :mod:`fmus.external` (libcosim and
 container-FMU runs), :mod:`fmus.demo` (the demo stage).
@@ -12,4 +13,4 @@ container-FMU runs), :mod:`fmus.demo` (the demo stage).
 >>> from fmus.master import Master, Connection  # doctest: +SKIP
 """
 __all__ = ["build", "master", "runtime", "modeldescription", "vendor", "proof", "plant_fmus",
-           "external", "testing"]
+           "external", "testing", "status_shim"]

@@ -773,6 +773,7 @@ class LawSlave(SlaveBase):
         self.args1 = (self.t1,) + tuple(self.buf1[n] for n in ("v", "a", "load", "x"))
         self.args2 = (self.t2,) + tuple(self.buf2[n] for n in ("v", "a", "load", "x"))
         self.lin_idx = [self.index[n] for n in COUPLING_OUTPUTS]
+        self.lin_zeroed = False  # h_lin = 0: the coupling outputs are written once
         self.h_lin = float(self.values[self.index["h_lin"]])
         self.foh = bool(self.values[self.index["inputs_at_step_end"]])
         if initial or not hasattr(self, "last_in"):
@@ -792,8 +793,11 @@ class LawSlave(SlaveBase):
             inputs = dict(zip(self.names, self._inputs()))
             lin = law_linearisation(self.kernel, self.theta, self.state, inputs, self.h_lin,
                                     self.slope_v, self.curv_v)
+        elif self.lin_zeroed:
+            return  # constant zeros, already written (per-step cost of the plain loops)
         else:
             lin = (0.0,) * len(COUPLING_OUTPUTS)
+            self.lin_zeroed = True
         for i, val in zip(self.lin_idx, lin):
             self.values[i] = float(val)
 

@@ -16,7 +16,7 @@ import os
 import numpy as np
 
 __all__ = ["MASS_SCENARIOS", "mass_scenario", "mass_connections", "mass_cosim",
-           "mass_reference", "mass_proof", "observed_order"]
+           "mass_reference", "mass_loop_plant", "mass_proof", "observed_order"]
 
 #: per-law mass loop: mass [kg], drive u0 + u_amp sin(2 pi u_freq t) [N, Hz], initial
 #: velocity [m/s], constant load [N] (load-dependent laws), horizon [s]; chosen so that the
@@ -26,11 +26,10 @@ MASS_SCENARIOS = {
     "lugre": dict(m=1.0, u0=0.0, u_amp=2.0, u_freq=1.0, v0=0.0, stop=1.0),
     "stribeck": dict(m=1.0, u0=3.0, u_amp=1.0, u_freq=1.0, v0=0.05, stop=1.0),
     "modified_lugre": dict(m=1.0, u0=0.0, u_amp=12.0, u_freq=1.0, v0=0.0, stop=1.0),
-    # load 0: under load the law's coefficients jump at vc (two regimes, seed 004 Table 3);
-    # friction.reference.simulate_mass does not split the regimes (the plants' reference
-    # does: the press proof covers the jump); the load input itself is checked against the
-    # law's own simulate() in the tests
-    "load_lugre": dict(m=1e5, u0=0.0, u_amp=8e5, u_freq=0.5, v0=0.0, load=0.0, stop=1.0),
+    # under load the coefficients jump at vc (two regimes, seed 004 Table 3): the mass
+    # slides along |v| = vc for a while (Filippov; mass_reference uses the plants' hybrid
+    # reference)
+    "load_lugre": dict(m=1e5, u0=0.0, u_amp=8e5, u_freq=0.5, v0=0.0, load=500.0, stop=1.0),
     # the isolator's spring k0 x sits inside the law FMU, so the mass-spring loop itself is
     # coupled through the one-step hold: it needs a finer step than the others for 1e-3
     "mre_lugre": dict(m=100.0, u0=0.0, u_amp=200.0, u_freq=2.0, v0=0.0, stop=1.0, step=5e-5),
@@ -91,15 +90,65 @@ def mass_master(fmu_dir, law: str, *, algorithm: str = "gauss-seidel",
 
 
 def mass_reference(law: str, t, scenario: dict | None = None, rtol: float = 1e-10) -> dict:
-    """Monolithic reference of the same loop (:func:`friction.reference.simulate_mass`)."""
+    """Monolithic reference of the same loop (:func:`friction.reference.simulate_mass`).
+
+    A law whose coefficients jump at |v| = vc (``friction.reference.regime_split``) goes
+    through the plants' hybrid reference instead (:func:`mass_loop_plant`: regime held per
+    segment, crossings located, Filippov sliding along |v| = vc); ``t`` must then be the
+    uniform grid ``0, h, 2h, ...``. Returns a dict with ``x``, ``v``, ``F``.
+    """
     import friction
-    from friction.reference import simulate_mass
+    from friction.reference import regime_split, simulate_mass
     sc = scenario or mass_scenario(law)
+    model = friction.make_model(law)
+    if regime_split(model) is not None:
+        t = np.asarray(t, float)
+        h = float(t[1] - t[0]) if t.size > 1 else 0.0
+        if t[0] != 0.0 or not h > 0 or np.max(np.abs(np.diff(t) - h)) > 1e-9 * h:
+            raise ValueError(f"mass_reference({law!r}): t must be the uniform grid 0, h, 2h, "
+                             "... (the hybrid reference samples at its data rate)")
+        res = mass_loop_plant(sc, h)(friction=model).simulate(
+            float(t[-1]), method="reference", rtol=rtol)
+        return {"t": np.asarray(res["time"]), "x": np.asarray(res["x"]),
+                "v": np.asarray(res["v"]), "F": np.asarray(res["F"])}
     w = 2.0 * math.pi * sc["u_freq"]
     load = (lambda tq: sc["load"]) if "load" in sc else None
-    return simulate_mass(friction.make_model(law), sc["m"], t,
+    return simulate_mass(model, sc["m"], t,
                          lambda tq: sc["u0"] + sc["u_amp"] * math.sin(w * tq),
                          v0=sc["v0"], load=load, rtol=rtol)
+
+
+def mass_loop_plant(scenario: dict, step: float):
+    """The mass + friction loop of ``scenario`` as a :class:`plants.base.Plant` class
+    (states ``x, v``; output interval ``step`` [s]), for the plants' reference integrator."""
+    from plants.base import Experiment, Plant, PlantParams
+    sc = dict(scenario)
+    w = 2.0 * math.pi * sc["u_freq"]
+
+    class MassLoop(Plant):
+        """Rigid mass m dv/dt = u0 + u_amp sin(2 pi u_freq t) - F at a constant load."""
+        name = "mass_loop"
+        Params = PlantParams
+        main_output = "x"
+        data_rate = 1.0 / step
+        default_experiment = Experiment(0.0, float(sc["stop"]), step)
+        state_names = ("x", "v")
+        state_scale = (1e-3, 1e-3)
+        output_names = ("x", "v")
+
+        def initial_state(self):
+            return np.array([0.0, float(sc["v0"])])
+
+        def derivatives(self, t, s, d, F, u):
+            return np.array([s[1], (sc["u0"] + sc["u_amp"] * math.sin(w * t) - F) / sc["m"]])
+
+        def contact(self, t, s, d, u):
+            return float(s[0]), float(s[1]), sc.get("load")
+
+        def output(self, t, s, d, F, u):
+            return {"x": float(s[0]), "v": float(s[1])}
+
+    return MassLoop
 
 
 def observed_order(steps, errors) -> float:

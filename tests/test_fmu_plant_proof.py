@@ -175,6 +175,23 @@ def test_press_reference_slides_along_vc_where_the_load_law_jumps():
     assert nrmse(ref["x"], fast["x"]) < 2e-3
 
 
+def test_mass_loop_under_load_slides_along_vc_in_the_reference():
+    # the mass proof of load_lugre runs under load: the hybrid reference follows the
+    # sliding motion along |v| = vc; the fixed-step integrator chatters about it
+    from fmus.proof import mass_loop_plant, mass_reference, mass_scenario
+    sc = mass_scenario("load_lugre")
+    assert sc["load"] > 0
+    law = friction.make_model("load_lugre")
+    t = 1e-4 * np.arange(3001)
+    ref = mass_reference("load_lugre", t, sc)
+    on = np.abs(np.abs(ref["v"]) - law.vc) <= 1e-9 * law.vc
+    assert on.sum() >= 50
+    fast = mass_loop_plant(sc, 1e-4)(friction=law).simulate(0.3, substep=1e-5)
+    assert nrmse(ref["x"], fast["x"]) < 1e-2
+    with pytest.raises(ValueError, match="uniform grid"):
+        mass_reference("load_lugre", t[1:], sc)
+
+
 def test_regime_split_gives_each_side_of_the_load_law():
     from friction.reference import regime_split
     from plants.forging_press import press_friction

@@ -19,6 +19,31 @@ outside the library (see :mod:`diagnosis.benchmark`), prints per plant and overa
 
 ``--quick``: one strength and noise level, short plant protocols (about 2 min).
 ``--generic``: also the historical generic mass-like benchmark.
+
+Results (2026-11-21, full grid: strengths 0.5/1, noise 1 %/3 % of std(F); 192 cases, 963 s
+wall on 2 workers of a shared 2-core machine):
+
+=============  =====  =====  ========  =====  =======  =====  =====  ===========  ==========
+plant          cases  top-1  detect.   clean  outside  where  evid.  shrink |err|  x base id
+=============  =====  =====  ========  =====  =======  =====  =====  ===========  ==========
+damping_rig    40     90.0   94.7      0/4    0/4      28.1   42.9   0.189/0.888  9.0
+forging_press  36     47.2   51.5      0/4    0/4      21.4   41.7   0.326/0.655  6.4
+mre_isolator   36     55.6   60.6      0/4    0/4      32.1   10.7   0.329/0.732  3.3
+valve          40     92.5   97.4      0/4    0/4      37.5   32.1   0.068/0.460  4.3
+xml350         40     87.5   97.2      0/4    0/4      50.0   50.0   0.057/0.224  4.8
+overall        192    75.5   81.5      0/20   0/20     34.2   35.3   0.187/0.888  5.1
+=============  =====  =====  ========  =====  =======  =====  =====  ===========  ==========
+
+(top-1, detect. = top-1 over the 178 cases whose effect is detectable at all, where/evid. =
+localisation accuracy [%]; shrink |err| = mean/max absolute error of the reported gap-closed
+fraction, over all library cases (0.095 mean over the correctly named ones; the reported
+shrink falls short of the truth's on average); x base id = seconds per case / one base
+identification.) Misses: every plant's clean cases got ``none`` and every ripple
+``unexplained``; the forging press misses acceleration, load, asymmetry (``unexplained``) and
+inertia (named ``acceleration``); the isolator misses load, position, drift (``unexplained``);
+stribeck_shape is mostly absorbed by the refitted base (10 of 16 cases undetectable); the rig's
+weak delay is called ``none``. Full diagnosis of 20,000 samples: 9.7 s (2.9 x one base
+identification).
 """
 import argparse
 import json

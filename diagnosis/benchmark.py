@@ -970,6 +970,15 @@ def format_summary(res, title: str = "withheld-effect benchmark") -> str:
         named = ", ".join(f"{k} x{v}" for k, v in sorted(e["named"].items(), key=lambda kv: -kv[1]))
         out.append(f"{eff:15s} {e['correct']:4d}/{e['cases']:<4d} {loc:>9s} {lev:>9s} "
                    f"{e['undetectable']:9d}  {named}")
+    plants = list(res["per_plant"])
+    if len(plants) > 1:  # correct / cases of each effect on each plant
+        out.append("\n" + f"{'top-1 by plant':15s} " + " ".join(f"{p[:13]:>13s}" for p in plants))
+        for eff in res["per_effect"]:
+            cells = []
+            for p in plants:
+                rs = [r for r in res["rows"] if r["plant"] == p and r["effect"] == eff]
+                cells.append(f"{sum(r['correct'] for r in rs)}/{len(rs)}" if rs else "n/a")
+            out.append(f"{eff:15s} " + " ".join(f"{c:>13s}" for c in cells))
     wrong = [r for r in res["rows"] if not r["correct"]]
     if wrong:
         out.append("\nmisses (plant, effect, strength, noise -> verdict; truth shrink; "

@@ -23,8 +23,9 @@ std(F) is added. The dataset is what an inverse-dynamics friction measurement wo
 Protocols (seed papers): valve - seed 000 sinusoids (5/10/20 Hz, 4-8 mm lift) at 20 kHz;
 damping rig - seed 001 linear-motor sine/triangle/trapezoid strokes at 1 kHz; forging press -
 seed 004 speeds (1.2 ... 0.002 mm/s, each slow step after a loaded 1.2 mm/s one,
-:data:`PRESS_SCHEDULE`) with the workpiece at 100 Hz, load = deformation resistance; MRE isolator - seed 002 4 Hz shear of 2/4/8 mm at 256 Hz; XML-350 - seed 003
-coloured-noise refinement run under the linear PID, decimated to 1 kHz. Plants without a
+:data:`PRESS_SCHEDULE`) with the workpiece at 100 Hz, load = deformation resistance; MRE
+isolator - seed 002 4 Hz shear of 2/4/8 mm at 256 Hz; XML-350 - seed 003 coloured-noise
+refinement run under the linear PID, decimated to 1 kHz. Plants without a
 measured normal load (all but the press) get a slowly varying, non-monotonic normal-load
 channel (seal preload / supply pressure) so the ``load`` candidate is always in play.
 

@@ -644,7 +644,8 @@ _BAND_FAMILY = {"|v|": "|v|", "|a|": "|a|", "x": "x", "t": "t", "load": "load"}
 
 #: evidence feature of the report -> region family it points at
 _EVIDENCE_FAMILY = {"corr_sign_v": "direction", "corr_v": "direction", "corr_a": "|a|",
-                    "corr_x": "x", "corr_t": "t", "corr_load": "load", "corr_dFdt": "dF/dt"}
+                    "corr_x": "x", "corr_t": "t", "corr_load": "load", "corr_dFdt": "dF/dt",
+                    "corr_level_x": "x", "corr_level_t": "t", "corr_level_load": "load"}
 #: families each effect should point at by the signed evidence correlations
 EXPECTED_EVIDENCE = {"acceleration": ("|a|",), "inertia": ("|a|",), "delay": ("dF/dt", "|a|"),
                      "asymmetry": ("direction",), "load": ("load",), "position": ("x",),

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import least_squares
 
+from friction.base import FrictionModel
 from identification.space import ParameterSpace
 
 from .effects import Candidate, Context
@@ -41,7 +42,7 @@ class Composite:
 
     def predict(self, data) -> np.ndarray:
         F = self.law.simulate(data.t, data.v, **_law_inputs(self.law, data))
-        return _apply_effects(F, self.effects, self.extras, data, self.ctx)
+        return _apply_effects(F, self.effects, self.extras, data, self.ctx, self.law)
 
     def describe(self) -> dict:
         return {"law": self.law.name,
@@ -63,9 +64,13 @@ def _law_inputs(law, data) -> dict:
     return kw
 
 
-def _apply_effects(F, effects, extras, data, ctx):
+def _apply_effects(F, effects, extras, data, ctx, law=None):
     for eff in sorted(effects, key=lambda e: _STAGE_ORDER[e.stage]):
-        if eff.stage in ("multiplicative", "additive", "shift"):
+        if eff.stage == "multiplicative" and law is not None:
+            # a friction-level effect scales the friction, not the law's spring and offset
+            Fc = law.conservative_force(data.x)
+            F = Fc + eff.apply(F - Fc, extras, data, ctx)
+        elif eff.stage in ("multiplicative", "additive", "shift"):
             F = eff.apply(F, extras, data, ctx)
     return F
 
@@ -91,6 +96,9 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     kern = law._kernel
     sd = float(np.std(fit.F)) or 1.0
     nb = len(base_names)
+    # laws with a spring/offset part (mre_lugre) need it at the trial values
+    elastic = type(law).conservative_force is not FrictionModel.conservative_force and \
+        any(e.stage == "multiplicative" for e in effects)
 
     def unpack(u):
         xl = space.to_physical(u[:nb])
@@ -101,7 +109,8 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         xl, extras = unpack(u)
         theta = law.population_theta(base_names, xl[None, :])[0]
         F, _ = kern(t, v, a, load, x, theta, 0, s0)
-        F = _apply_effects(F, effects, extras, fit, ctx)
+        F = _apply_effects(F, effects, extras, fit, ctx,
+                           law.with_values(**dict(zip(base_names, xl))) if elastic else None)
         r = (fit.F - F) / sd
         if not np.all(np.isfinite(r)):
             return np.full(r.size, 1e3)

@@ -102,7 +102,11 @@ def _base_law(model, fit) -> tuple[FrictionModel, list[str]]:
     law = make_model(model) if isinstance(model, str) else model
     names = BASE_NAMES.get(law.name)
     if names is None:
-        names = [n for n in law.free_names() if not n.endswith("_neg") and n not in ("alpha", "b")]
+        # the standard configuration leaves out the direction twins, the offset and the
+        # Stribeck exponent (candidates add them); a law whose alpha is something else
+        # (mre_lugre: the hysteresis shape of seed 002) keeps it
+        drop = ("alpha", "b") if hasattr(law.params, "shape") else ("b",)
+        names = [n for n in law.free_names() if not n.endswith("_neg") and n not in drop]
     return law, list(names)
 
 
@@ -117,6 +121,12 @@ def _evidence(data, r) -> dict:
           "corr_x": corr(data.x), "corr_t": corr(data.t)}
     if data.load is not None:
         ev["corr_load"] = corr(data.load)
+    # a friction-level effect (load, position, drift) makes r proportional to F g(s): its
+    # correlation shows with r sgn(F), not with r
+    rf = r * np.sign(data.F)
+    for key, s in (("x", data.x), ("t", data.t), ("load", data.load)):
+        if s is not None and np.std(s) > 0 and np.std(rf) > 0:
+            ev[f"corr_level_{key}"] = float(np.corrcoef(s, rf)[0, 1])
     # lag of the residual against the measured force's rate: a delay shows as a peak here
     dF = np.gradient(data.F, data.t)
     ev["corr_dFdt"] = corr(dF)
@@ -248,7 +258,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     # 3. which
     effects, skipped, fitted = [], {}, {}
     for k, name in enumerate(names, 1):
-        cand = CANDIDATES[name]
+        cand = CANDIDATES[name].specialise(base.law)
         ok, why = cand.applicable(base.law, fit, ctx)
         if not ok:
             skipped[name] = why
@@ -287,7 +297,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         for e in effects[1:4]:
             if e["gap_closed"] < 0.05 or e["name"] in used:
                 continue
-            cand = CANDIDATES[e["name"]]
+            cand = CANDIDATES[e["name"]].specialise(base.law)
             if cand.stage == "modify_law" and any(c.stage == "modify_law" for c in current.effects):
                 continue
             law_v, names_v = cand.modify_law(current.law, current.base_names, ctx)[0]

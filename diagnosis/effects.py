@@ -42,6 +42,7 @@ class Context:
     dt: float       # sample interval [s]
     L0: float | None  # mean load of the fit data [N]
     L_span: float   # load spread of the fit data [N]
+    L_hi: float = 0.0  # largest load of the fit data [N]
 
 
 def make_context(fit) -> Context:
@@ -50,8 +51,9 @@ def make_context(fit) -> Context:
     sa = float(np.percentile(np.abs(fit.a), 99)) or 1e-3
     L0 = float(np.mean(fit.load)) if fit.load is not None else None
     L_span = float(np.ptp(fit.load)) if fit.load is not None else 0.0
+    L_hi = float(np.max(fit.load)) if fit.load is not None else 0.0
     return Context(sF, sv, sa, float(np.min(fit.x)), float(np.max(fit.x)), float(fit.t[0]),
-                   float(fit.t[-1] - fit.t[0]), fit.dt, L0, L_span)
+                   float(fit.t[-1] - fit.t[0]), fit.dt, L0, L_span, L_hi)
 
 
 @dataclass
@@ -85,6 +87,10 @@ class Candidate:
     def apply(self, F, p: dict, data, ctx: Context) -> np.ndarray:
         return F
 
+    def specialise(self, law) -> "Candidate":
+        """The form of this effect for ``law`` (default: the same for every law)."""
+        return self
+
 
 def _sig_neg(v, ctx):
     # smooth indicator of the negative direction: a sign change is not a step in measured data
@@ -111,14 +117,17 @@ class Load(Candidate):
         return True, ""
 
     def extras(self, ctx):
-        # exponent in [0, 1]: friction does not fall with the normal load and grows at most
-        # in proportion to it (Amontons); elastic/elastomer contacts sit below 1
-        return [Extra("gamma_L", 0.0, 0.0, 1.0, "1")]
+        # k_L = 1: friction proportional to the load (Amontons); 0: independent of it. Seed
+        # 004's levels are affine in the load (Fc = Fc0 + k1 F_sigma, k1 < 0 at low speed),
+        # so k_L may be negative down to where the level would vanish at the largest load
+        k_lo = -min(1.0, 0.9 * ctx.L0 / max(ctx.L_hi - ctx.L0, 1e-12 * ctx.L0))
+        return [Extra("k_L", 0.0, k_lo, 1.0, "1")]
 
     def apply(self, F, p, data, ctx):
-        # friction levels scale with the normal load (seed 004: Fc, Fs, sigma2 grow with load)
-        ratio = np.clip(data.load / ctx.L0, 1e-3, None)
-        return F * ratio ** p["gamma_L"]
+        # friction levels affine in the normal load (seed 004 Eqs. 9-11), relative to the
+        # fit data's mean load: F (1 + k_L (L - L0) / L0), never of the opposite sign
+        factor = 1.0 + p["k_L"] * (data.load - ctx.L0) / ctx.L0
+        return F * np.clip(factor, 0.0, None)
 
 
 class Drift(Candidate):
@@ -140,6 +149,29 @@ class Asymmetry(Candidate):
         # direction-dependent levels and an offset (seeds 000, 003)
         s = _sig_neg(data.v, ctx)
         return F + p["b"] - p["dF_neg"] * s + p["dsigma2_neg"] * data.v * s
+
+    def specialise(self, law):
+        # a law with direction twins carries the asymmetry inside itself, so the levels act
+        # through the bristle state in sticking and crawling too (the additive form only
+        # sees the sign of v, which is undecided near rest)
+        if set(law.twins) >= {"Fc", "Fs", "sigma2"} and hasattr(law.params, "b"):
+            return AsymmetryTwins(self.name, self.description, "modify_law", self.tags)
+        return self
+
+
+class AsymmetryTwins(Candidate):
+    """``asymmetry`` for laws with direction twins: Fc, Fs, sigma2 for v < 0 and the offset
+    b become free parameters of the law itself."""
+    TWINS = ("Fc", "Fs", "sigma2")
+
+    def modify_law(self, law, base_names, ctx):
+        p = law.params
+        start = {law.twins[n]: float(getattr(p, n)) for n in self.TWINS}
+        names = list(base_names) + [law.twins[n] for n in self.TWINS if law.twins[n]
+                                    not in base_names]
+        if "b" not in names:
+            names.append("b")
+        return [(law.with_values(**start), names)]
 
 
 class Position(Candidate):

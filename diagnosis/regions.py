@@ -1,7 +1,8 @@
 """Where the gap lies: the residual's energy by regime, band and frequency.
 
 A region's ``share`` is its fraction of the residual energy sum(r^2); its ``nrmse`` is the
-local RMS(r) over std(F_measured) of the whole record, so regions compare on one scale.
+local RMS(r) and its ``bias`` the local mean of r, both over std(F_measured) of the whole
+record, so regions compare on one scale.
 """
 from __future__ import annotations
 
@@ -20,8 +21,11 @@ def _entry(label, mask, r, sd, total):
     if n == 0:
         return None
     e = float(np.sum(r[mask] ** 2))
+    # the signed mean shows what energy cannot: a level the base fit split between two
+    # regions sits above the model in one and below it in the other
     return {"label": label, "share": e / total if total > 0 else 0.0,
-            "nrmse": float(np.sqrt(np.mean(r[mask] ** 2)) / sd), "samples": n,
+            "nrmse": float(np.sqrt(np.mean(r[mask] ** 2)) / sd),
+            "bias": float(np.mean(r[mask]) / sd), "samples": n,
             "fraction_of_samples": n / r.size}
 
 

@@ -17,7 +17,7 @@ candidate           how it enters the plant model
 ``acceleration``    :class:`EffectLaw`: ``F + f_a tanh(a/a_s) exp(-|v|/v_c)``
 ``position``        :class:`EffectLaw`: ``F (1 + Legendre series in x)``
 ``drift``           :class:`EffectLaw`: ``F (1 + k_drift (t - t0) / T)``, absolute time
-``load``            :class:`EffectLaw`: ``F (load / L0)^gamma_L`` (plants with a load)
+``load``            :class:`EffectLaw`: ``F max(0, 1 + k_L (load - L0) / L0)`` (plants with a load)
 ``inertia``         the plant's moving mass ``M -> M + dm`` (a mass error of the model)
 ``delay``           a time shift between the measured and the simulated position channel
 ==================  ========================================================================
@@ -287,7 +287,7 @@ def load_record(path, options: dict | None = None, *, mapping: dict | None = Non
 # -- friction law + force effects -----------------------------------------------------------
 #: packed layout of the effect parameters after the base law's theta
 _EFF = ("use_acc", "f_a", "a_s", "v_c", "use_pos", "x_lo", "x_hi", "c_x1", "c_x2", "c_x3",
-        "c_x4", "use_drift", "k_drift", "t0", "T", "use_load", "L0", "gamma_L")
+        "c_x4", "use_drift", "k_drift", "t0", "T", "use_load", "L0", "k_L")
 _E = {n: i for i, n in enumerate(_EFF)}
 
 
@@ -295,11 +295,9 @@ _E = {n: i for i, n in enumerate(_EFF)}
 def _effect_force(F, v, a, x, load, t, e):
     """Base force ``F`` [N] with the force effects of the packed vector ``e`` (stage order of
     :mod:`diagnosis.composite`: multiplicative, then additive)."""
-    if e[15] > 0.5:  # load: levels scale with the normal load
-        r = load / e[16]
-        if r < 1e-3:
-            r = 1e-3
-        F = F * r ** e[17]
+    if e[15] > 0.5:  # load: levels affine in the normal load, never of opposite sign
+        r = 1.0 + e[17] * (load - e[16]) / e[16]
+        F = F * max(r, 0.0)
     if e[11] > 0.5:  # drift: relative change per fit duration
         F = F * (1.0 + e[12] * (t - e[13]) / e[14])
     if e[4] > 0.5:  # position: Legendre series along the fit stroke
@@ -346,7 +344,7 @@ def _effect_kernel(base_kernel, nb: int, ns: int):
 
 #: parameters whose zero makes a force effect vanish
 _LEVELS = {"acceleration": ("f_a",), "position": ("c_x1", "c_x2", "c_x3", "c_x4"),
-           "drift": ("k_drift",), "load": ("gamma_L",)}
+           "drift": ("k_drift",), "load": ("k_L",)}
 
 
 def _pack_effects(effects: dict, ctx: Context) -> np.ndarray:
@@ -371,7 +369,7 @@ def _pack_effects(effects: dict, ctx: Context) -> np.ndarray:
             if ctx.L0 is None or not ctx.L0 > 0:
                 raise ValueError("the load effect needs a positive mean load L0 in the context")
             e[_E["use_load"]] = 1.0
-            e[_E["L0"]], e[_E["gamma_L"]] = ctx.L0, p["gamma_L"]
+            e[_E["L0"]], e[_E["k_L"]] = ctx.L0, p["k_L"]
         else:
             raise ValueError(f"{name!r} is not a force effect; choose from {FORCE_EFFECTS}")
     return e
@@ -388,7 +386,7 @@ class EffectLaw(FrictionModel):
     effects : dict
         Effect name (:data:`FORCE_EFFECTS`) -> its parameters (the ``Extra`` names of
         :mod:`diagnosis.effects`, physical units: ``f_a`` [N], ``a_s`` [m/s^2], ``v_c``
-        [m/s], ``c_x1..c_x4`` [-], ``k_drift`` [-], ``gamma_L`` [-]).
+        [m/s], ``c_x1..c_x4`` [-], ``k_drift`` [-], ``k_L`` [-]).
     ctx : Context
         Scales of the fit record (stroke ``x_lo, x_hi`` [m], start ``t0`` and duration ``T``
         [s], mean load ``L0`` [N]) that the effect formulas refer to.

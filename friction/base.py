@@ -203,6 +203,12 @@ class FrictionModel:
         """Friction force [N] for a continuous state and velocity ``v`` [m/s]."""
         raise NotImplementedError
 
+    def conservative_force(self, x) -> np.ndarray:
+        """The part of the law's force that is not friction (a parallel spring and offset,
+        as in the MRE isolator's k0 x + f0) [N] at displacement ``x`` [m]; zero for pure
+        friction laws. Effects on the friction level scale the rest only."""
+        return np.zeros_like(np.asarray(x, dtype=float))
+
     # -- written once -------------------------------------------------------------------
     def initial_state(self) -> np.ndarray:
         return np.zeros(len(self.state_names))

@@ -195,6 +195,10 @@ class MRELuGre(FrictionModel):
     _kernel = staticmethod(_kernel)
     _population_kernel = staticmethod(_population_kernel)
 
+    def conservative_force(self, x) -> np.ndarray:
+        """Parallel spring and offset k0 x + f0 [N] (Eq. 1a): elastic, not friction."""
+        return self.params.k0 * np.asarray(x, dtype=float) + self.params.f0
+
     def _pack(self, p: MRELuGreParams) -> np.ndarray:
         return np.array([p.beta, p.alpha, p.c0, p.k0, p.eps, p.f0,
                          1.0 if p.swap_alpha_eps else 0.0], dtype=np.float64)

@@ -83,9 +83,9 @@ def test_load_effect_is_the_candidate_formula():
     F0 = base.simulate(t, v)
     data = Dataset(t=t, x=x, v=v, a=a, F=F0, load=load)
     ctx = make_context(data)
-    law = EffectLaw(base, {"load": {"gamma_L": 0.7}}, ctx)
+    law = EffectLaw(base, {"load": {"k_L": 0.7}}, ctx)
     assert law.extra_inputs == ("load",)
-    expect = CANDIDATES["load"].apply(F0, {"gamma_L": 0.7}, data, ctx)
+    expect = CANDIDATES["load"].apply(F0, {"k_L": 0.7}, data, ctx)
     assert np.allclose(law.simulate(t, v, load=load), expect, rtol=1e-12, atol=1e-14)
 
 

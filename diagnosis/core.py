@@ -28,7 +28,7 @@ from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
 
-__all__ = ["diagnose", "DiagnosisReport", "noise_floor", "BASE_NAMES", "extrapolation"]
+__all__ = ["diagnose", "DiagnosisReport", "noise_floor", "BASE_NAMES", "extrapolation", "decide"]
 
 #: parameters of each law that the base fit identifies (its "standard" configuration:
 #: symmetric, Gaussian alpha = 2, no offset); candidates add the rest
@@ -168,6 +168,30 @@ def extrapolation(fit, val_sets) -> dict:
                         "validation_range": [float(np.min(allv)), float(np.max(allv))],
                         "outside_share": share, "unit": unit}
     return out
+
+
+def decide(effects: list[dict], before: float, floor: float, noise_abs: float = 1e-6) -> dict:
+    """The verdict from held-out scores (shared by the force and trajectory levels).
+
+    ``none`` when the base's held-out NRMSE ``before`` is within :data:`NOISE_RATIO` of the
+    noise ``floor`` (or below ``noise_abs``); the first of ``effects`` (ranked, dicts with
+    ``name``, ``gap_closed``, ``excess_closed``) when it closes at least
+    :data:`MIN_EXCESS_CLOSED` of the gap above the floor; ``unexplained`` otherwise.
+    """
+    if before <= NOISE_RATIO * floor or before < noise_abs:
+        return {"cause": "none", "gap_closed": 0.0,
+                "reason": f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x "
+                          f"the noise floor {floor:.3g}"}
+    if not effects or effects[0]["excess_closed"] < MIN_EXCESS_CLOSED:
+        return {"cause": "unexplained",
+                "gap_closed": effects[0]["gap_closed"] if effects else 0.0,
+                "reason": "no candidate closes half of the held-out gap above the noise floor"}
+    top = effects[0]
+    verdict = {"cause": top["name"], "gap_closed": top["gap_closed"],
+               "excess_closed": top["excess_closed"]}
+    if len(effects) > 1 and effects[1]["excess_closed"] >= top["excess_closed"] - 0.1:
+        verdict["runner_up"] = effects[1]["name"]
+    return verdict
 
 
 def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed: int = 0,
@@ -314,16 +338,8 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
 
     # 5. verdict
     shift = extrapolation(fit, val_sets) if full is None else {}
-    noise_like = before <= NOISE_RATIO * floor or before < 1e-6
-    if noise_like:
-        verdict = {"cause": "none", "gap_closed": 0.0,
-                   "reason": f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x "
-                             f"the noise floor {floor:.3g}"}
-    elif not effects or effects[0]["excess_closed"] < MIN_EXCESS_CLOSED:
-        verdict = {"cause": "unexplained",
-                   "gap_closed": effects[0]["gap_closed"] if effects else 0.0,
-                   "reason": "no candidate closes half of the held-out gap above the noise "
-                             "floor"}
+    verdict = decide(effects, before, floor, noise_abs=1e-6)
+    if verdict["cause"] == "unexplained":
         for key, e in shift.items():
             verdict["reason"] += (
                 f"; the held-out {key} ({e['validation_range'][0]:.4g} to "
@@ -331,12 +347,6 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                 f"({e['fit_range'][0]:.4g} to {e['fit_range'][1]:.4g} {e['unit']}) for "
                 f"{100 * e['outside_share']:.0f} % of its samples, so an effect of {key} "
                 f"cannot be identified from the fit data: fit on data that spans it")
-    else:
-        top = effects[0]
-        verdict = {"cause": top["name"], "gap_closed": top["gap_closed"],
-                   "excess_closed": top["excess_closed"]}
-        if len(effects) > 1 and effects[1]["excess_closed"] >= top["excess_closed"] - 0.1:
-            verdict["runner_up"] = effects[1]["name"]
     gap = max(before - floor, 1e-12)
     report = DiagnosisReport(
         baseline={"model": law0.name, "metric": "nrmse", "fit": base_fit, "validation": before},

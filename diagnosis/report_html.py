@@ -7,7 +7,7 @@ import io
 
 import numpy as np
 
-__all__ = ["figures", "write_html"]
+__all__ = ["figures", "write_html", "candidates_png"]
 
 
 def _png(fig) -> str:
@@ -103,17 +103,25 @@ def figures(report) -> dict[str, str]:
     fig.tight_layout()
     out["loops"] = _png(fig)
 
+    out["candidates"] = candidates_png(report, "candidate effects, ranked")
+    return out
+
+
+def candidates_png(report, title: str) -> str:
+    """Bar chart of the held-out gap each candidate closes, the named one in red (base64)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
     eff = report["effects"]
     fig, ax = plt.subplots(figsize=(7, 0.45 * max(len(eff), 2) + 1))
     names = [e["name"] for e in eff][::-1]
-    gaps = [100 * e["gap_closed"] for e in eff][::-1]
-    ax.barh(names, gaps, color=["C3" if n == cause else "C0" for n in names])
+    ax.barh(names, [100 * e["gap_closed"] for e in eff][::-1],
+            color=["C3" if n == report["verdict"]["cause"] else "C0" for n in names])
     ax.axvline(0, color="k", lw=0.8)
     ax.set_xlabel("held-out gap closed [%]")
-    ax.set_title("candidate effects, ranked")
+    ax.set_title(title)
     fig.tight_layout()
-    out["candidates"] = _png(fig)
-    return out
+    return _png(fig)
 
 
 def write_html(report, path) -> None:

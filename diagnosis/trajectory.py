@@ -88,7 +88,8 @@ from scipy.optimize import least_squares
 from friction import FrictionModel, make_model
 from friction.dataset import Dataset
 
-from .core import MIN_EXCESS_CLOSED, NOISE_RATIO, TIE, BASE_NAMES, DiagnosisReport, noise_floor
+from .core import (MIN_EXCESS_CLOSED, TIE, BASE_NAMES, DiagnosisReport, decide,
+                   noise_floor)
 from .effects import CANDIDATES, EFFECT_NAMES, Context, make_context
 from .regions import band_splits, frequency_split, regime_split
 
@@ -1251,24 +1252,9 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         final_val = cur_val
 
     # -- 5. verdict (the force level's rules)
-    noise_like = before <= NOISE_RATIO * floor or before < 1e-9
-    if noise_like:
-        verdict = {"cause": "none", "gap_closed": 0.0,
-                   "reason": f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x "
-                             f"the noise floor {floor:.3g}"}
-    elif not effects or effects[0]["excess_closed"] < MIN_EXCESS_CLOSED:
-        verdict = {"cause": "unexplained",
-                   "gap_closed": effects[0]["gap_closed"] if effects else 0.0,
-                   "reason": "no candidate closes half of the held-out gap above the noise "
-                             "floor"}
-    else:
-        top = effects[0]
-        verdict = {"cause": top["name"], "gap_closed": top["gap_closed"],
-                   "excess_closed": top["excess_closed"]}
-        if len(effects) > 1 and effects[1]["excess_closed"] >= top["excess_closed"] - 0.1:
-            verdict["runner_up"] = effects[1]["name"]
-        if tied_names:  # the held-out data cannot tell these apart from the named one
-            verdict["tied_with"] = tied_names
+    verdict = decide(effects, before, floor, noise_abs=1e-9)
+    if verdict["cause"] not in ("none", "unexplained") and tied_names:
+        verdict["tied_with"] = tied_names  # the held-out data cannot tell these apart
     gap = max(before - floor, 1e-12)
     if hasattr(eng, "close"):
         eng.close()
@@ -1313,13 +1299,8 @@ class _NotApplicable(Exception):
 
 # -- report figures -----------------------------------------------------------------------------
 def _png(fig) -> str:
-    import base64
-    import io
-    import matplotlib.pyplot as plt
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=90)
-    plt.close(fig)
-    return base64.b64encode(buf.getvalue()).decode()
+    from .report_html import _png as png
+    return png(fig)
 
 
 def trajectory_figures(report) -> dict[str, str]:
@@ -1372,16 +1353,9 @@ def trajectory_figures(report) -> dict[str, str]:
     fig.tight_layout()
     out["residuals"] = _png(fig)
 
-    eff = report["effects"]
-    fig, ax = plt.subplots(figsize=(7, 0.45 * max(len(eff), 2) + 1))
-    names = [e["name"] for e in eff][::-1]
-    ax.barh(names, [100 * e["gap_closed"] for e in eff][::-1],
-            color=["C3" if n == cause else "C0" for n in names])
-    ax.axvline(0, color="k", lw=0.8)
-    ax.set_xlabel("held-out gap closed [%]")
-    ax.set_title("candidate effects in the re-simulated plant, ranked")
-    fig.tight_layout()
-    out["candidates"] = _png(fig)
+    from .report_html import candidates_png
+    out["candidates"] = candidates_png(report, "candidate effects in the re-simulated plant, "
+                                               "ranked")
     return out
 
 

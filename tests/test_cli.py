@@ -45,3 +45,16 @@ def test_demo_friction_stage_writes_plots_and_summary(tmp_path):
     assert "lugre" in summary["friction_laws"]["models"]
     for png in summary["friction_laws"]["figures"]:
         assert (tmp_path / png).stat().st_size > 10_000
+
+
+@pytest.mark.slow
+def test_demo_fmus_stage_writes_the_contract_cosim_summary(tmp_path):
+    # CONTRACT.md: cosim_vs_reference = {plant: NRMSE at its data rate}, numbers
+    assert main(["demo", "--out", str(tmp_path), "--only", "fmus", "--quick"]) == 0
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    cvr = summary["cosim_vs_reference"]
+    assert {"valve", "damping_rig", "forging_press", "xml350"} <= set(cvr)
+    for plant, value in cvr.items():
+        assert isinstance(value, float) and 0 <= value <= 1e-3, (plant, value)
+        laws = summary["cosim_vs_reference_by_law"][plant]
+        assert value == max(e["nrmse"] for e in laws.values())

@@ -1,0 +1,195 @@
+"""A friction law plus the force-level candidate effects, as one law a plant can take
+(:class:`EffectLaw`; numba kernel wrapping the base law's kernel)."""
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+from numba import njit
+
+from friction import FrictionModel
+
+from .effects import Context
+
+__all__ = ["EffectLaw", "FORCE_EFFECTS"]
+
+#: candidates evaluated inside the friction law by :class:`EffectLaw`
+FORCE_EFFECTS = ("acceleration", "position", "drift", "load")
+
+
+# -- friction law + force effects -----------------------------------------------------------
+#: packed layout of the effect parameters after the base law's theta
+_EFF = ("use_acc", "f_a", "a_s", "v_c", "use_pos", "x_lo", "x_hi", "c_x1", "c_x2", "c_x3",
+        "c_x4", "use_drift", "k_drift", "t0", "T", "use_load", "L0", "k_L")
+_E = {n: i for i, n in enumerate(_EFF)}
+
+
+@njit(cache=True)
+def _effect_force(F, v, a, x, load, t, e):
+    """Base force ``F`` [N] with the force effects of the packed vector ``e`` (stage order of
+    :mod:`diagnosis.composite`: multiplicative, then additive)."""
+    if e[15] > 0.5:  # load: levels affine in the normal load, never of opposite sign
+        r = 1.0 + e[17] * (load - e[16]) / e[16]
+        F = F * max(r, 0.0)
+    if e[11] > 0.5:  # drift: relative change per fit duration
+        F = F * (1.0 + e[12] * (t - e[13]) / e[14])
+    if e[4] > 0.5:  # position: Legendre series along the fit stroke
+        span = e[6] - e[5]
+        if span < 1e-12:
+            span = 1e-12
+        xi = 2.0 * (x - e[5]) / span - 1.0
+        xi = min(1.0, max(-1.0, xi))
+        x2 = xi * xi
+        p = (e[7] * xi + e[8] * 0.5 * (3.0 * x2 - 1.0) + e[9] * 0.5 * (5.0 * x2 - 3.0) * xi
+             + e[10] * (35.0 * x2 * x2 - 30.0 * x2 + 3.0) / 8.0)
+        F = F * (1.0 + p)
+    if e[0] > 0.5:  # acceleration: grows with |a|, fades with |v|
+        F = F + e[1] * math.tanh(a / e[2]) * math.exp(-abs(v) / e[3])
+    return F
+
+
+@functools.lru_cache(maxsize=None)
+def _effect_kernel(base_kernel, nb: int, ns: int):
+    """Numba kernel of base law + force effects; the extra last state is absolute time."""
+
+    @njit
+    def kern(t, v, a, load, x, theta, method, state0):
+        th = theta[:nb].copy()
+        s0 = state0[:ns].copy()
+        F0, S0 = base_kernel(t, v, a, load, x, th, method, s0)
+        n = t.size
+        F = np.empty(n)
+        S = np.empty((n, ns + 1))
+        e = theta[nb:]
+        tau0 = state0[ns]
+        has_a, has_x, has_l = a.size == n, x.size == n, load.size == n
+        for i in range(n):
+            for j in range(ns):
+                S[i, j] = S0[i, j]
+            ti = tau0 + (t[i] - t[0])
+            S[i, ns] = ti
+            F[i] = _effect_force(F0[i], v[i], a[i] if has_a else 0.0, x[i] if has_x else 0.0,
+                                 load[i] if has_l else 1.0, ti, e)
+        return F, S
+
+    return kern
+
+
+#: parameters whose zero makes a force effect vanish
+_LEVELS = {"acceleration": ("f_a",), "position": ("c_x1", "c_x2", "c_x3", "c_x4"),
+           "drift": ("k_drift",), "load": ("k_L",)}
+
+
+def _pack_effects(effects: dict, ctx: Context) -> np.ndarray:
+    e = np.zeros(len(_EFF))
+    e[_E["a_s"]] = e[_E["v_c"]] = e[_E["T"]] = e[_E["L0"]] = 1.0
+    e[_E["x_hi"]] = 1.0
+    for name, p in effects.items():
+        if name == "acceleration":
+            e[_E["use_acc"]] = 1.0
+            for k in ("f_a", "a_s", "v_c"):
+                e[_E[k]] = p[k]
+        elif name == "position":
+            e[_E["use_pos"]] = 1.0
+            e[_E["x_lo"]], e[_E["x_hi"]] = ctx.x_lo, ctx.x_hi
+            for k in range(1, 5):
+                e[_E[f"c_x{k}"]] = p.get(f"c_x{k}", 0.0)
+        elif name == "drift":
+            e[_E["use_drift"]] = 1.0
+            e[_E["k_drift"]] = p["k_drift"]
+            e[_E["t0"]], e[_E["T"]] = ctx.t0, max(ctx.T, 1e-12)
+        elif name == "load":
+            if ctx.L0 is None or not ctx.L0 > 0:
+                raise ValueError("the load effect needs a positive mean load L0 in the context")
+            e[_E["use_load"]] = 1.0
+            e[_E["L0"]], e[_E["k_L"]] = ctx.L0, p["k_L"]
+        else:
+            raise ValueError(f"{name!r} is not a force effect; choose from {FORCE_EFFECTS}")
+    return e
+
+
+class EffectLaw(FrictionModel):
+    """A friction law with candidate force effects, usable wherever a law is (plants,
+    :class:`plants.base.FrictionComponent`, ``simulate``).
+
+    Parameters
+    ----------
+    base : FrictionModel
+        The base law (its kernel runs unchanged).
+    effects : dict
+        Effect name (:data:`FORCE_EFFECTS`) -> its parameters (the ``Extra`` names of
+        :mod:`diagnosis.effects`, physical units: ``f_a`` [N], ``a_s`` [m/s^2], ``v_c``
+        [m/s], ``c_x1..c_x4`` [-], ``k_drift`` [-], ``k_L`` [-]).
+    ctx : Context
+        Scales of the fit record (stroke ``x_lo, x_hi`` [m], start ``t0`` and duration ``T``
+        [s], mean load ``L0`` [N]) that the effect formulas refer to.
+    time0 : float
+        Absolute time at the start of a run [s] (initial value of the time state).
+
+    Notes
+    -----
+    The force is exactly ``Candidate.apply`` of :mod:`diagnosis.effects` applied to the base
+    law's force, sample by sample; the state is the base law's plus the absolute time
+    (``drift`` needs it: a plant's friction stepper only sees step lengths).
+    """
+
+    def __init__(self, base: FrictionModel, effects: dict, ctx: Context, time0: float = 0.0):
+        if isinstance(base, EffectLaw):
+            raise TypeError("EffectLaw wraps a plain friction law, not another EffectLaw")
+        self.base = base
+        self.effects = {k: dict(v) for k, v in effects.items()}
+        self.ctx = ctx
+        self.time0 = float(time0)
+        self.name = base.name + "".join(f"+{k}" for k in self.effects)
+        self.Params = base.Params
+        self.params = base.params
+        self.state_names = tuple(base.state_names) + ("t_abs",)
+        needs = set(base.extra_inputs)
+        if "acceleration" in self.effects:
+            needs.add("a")
+        if "position" in self.effects:
+            needs.add("x")
+        if "load" in self.effects:
+            needs.add("load")
+        self.extra_inputs = tuple(n for n in ("a", "load", "x") if n in needs)
+        self._e = _pack_effects(self.effects, ctx)
+        self.theta = np.concatenate([np.asarray(base.theta, float), self._e])
+        self._kernel = _effect_kernel(type(base)._kernel, int(base.theta.size),
+                                      len(base.state_names))
+
+    def __repr__(self) -> str:
+        return f"EffectLaw({self.base!r}, {self.effects!r})"
+
+    def initial_state(self) -> np.ndarray:
+        return np.concatenate([self.base.initial_state(), [self.time0]])
+
+    def with_time0(self, time0: float) -> "EffectLaw":
+        return EffectLaw(self.base, self.effects, self.ctx, time0)
+
+    def with_values(self, **values) -> "EffectLaw":
+        return EffectLaw(self.base.with_values(**values), self.effects, self.ctx, self.time0)
+
+    def _split(self, inputs):
+        return {k: v for k, v in inputs.items() if k in self.base.extra_inputs}
+
+    def force(self, state, v, **inputs) -> float:
+        ns = len(self.base.state_names)
+        F = self.base.force(np.asarray(state[:ns], float), v, **self._split(inputs))
+        ld = inputs.get("load")
+        return float(_effect_force(float(F), float(v), float(inputs.get("a", 0.0) or 0.0),
+                                   float(inputs.get("x", 0.0) or 0.0),
+                                   1.0 if ld is None else float(ld), float(state[ns]), self._e))
+
+    def derivatives(self, state, v, **inputs) -> np.ndarray:
+        ns = len(self.base.state_names)
+        ds = self.base.derivatives(np.asarray(state[:ns], float), v, **self._split(inputs))
+        return np.concatenate([np.atleast_1d(ds), [1.0]])
+
+    def steady_state(self, v, **inputs) -> np.ndarray:
+        raise NotImplementedError("EffectLaw has no steady state of its own (the effects "
+                                  "depend on acceleration, position or time)")
+
+    def z_max(self) -> float:
+        zm = getattr(self.base, "z_max", None)
+        return zm() if zm else 1e-5

@@ -629,22 +629,14 @@ def _regime_families(where):
     for w in where:
         pre, acc, d = [s.strip() for s in w["label"].split(",")]
         for f, lab in (("direction", d), ("accel/decel", acc), ("pre-sliding", pre)):
-            e = fam[f].setdefault(lab, [0.0, 0, 0.0])
+            e = fam[f].setdefault(lab, [0.0, 0])
             e[0] += w["share"]
             e[1] += w["samples"]
-            e[2] += w.get("bias", 0.0) * w["samples"]
     out = []
     for f, regs in fam.items():
-        for lab, (share, n, bn) in regs.items():
-            out.append({"family": f, "label": lab, "share": share, "fraction": n / tot,
-                        "bias": bn / n if n else 0.0})
+        for lab, (share, n) in regs.items():
+            out.append({"family": f, "label": lab, "share": share, "fraction": n / tot})
     return out
-
-
-def _mean_square(where) -> float:
-    """Mean square of the held-out residual over std(F)^2, from the disjoint regimes."""
-    n = sum(w["samples"] for w in where)
-    return sum(w["samples"] * w["nrmse"] ** 2 for w in where) / n if n else 0.0
 
 
 _BAND_FAMILY = {"|v|": "|v|", "|a|": "|a|", "x": "x", "t": "t", "load": "load"}
@@ -671,8 +663,7 @@ def localise(report, min_fraction: float = 0.05, method: str = "where") -> dict:
     the one with the largest lift; regions holding fewer than ``min_fraction`` of the
     samples are ignored (a few samples at reversals would win by chance). Energy is blind
     to sign: a direction asymmetry that the base fit splits evenly between the directions
-    shows no energy lift, so a region's lift is the larger of its energy lift and the lift of
-    its mean offset, ``1 + bias^2 / mean square`` (the report's signed ``bias``).
+    shows no lift.
 
     ``method="evidence"``: the report's signed ``evidence`` correlations of the held-out
     residual with sign(v), v, a, x, t, load and dF/dt; the top family is that of the largest
@@ -703,13 +694,10 @@ def localise(report, min_fraction: float = 0.05, method: str = "where") -> dict:
     for b in report.get("where_bands", []):
         regions.append({"family": _BAND_FAMILY.get(b.get("signal"), b.get("signal")),
                         "label": b["label"], "share": b["share"],
-                        "fraction": b["fraction_of_samples"], "bias": b.get("bias", 0.0)})
+                        "fraction": b["fraction_of_samples"]})
     regions = [r for r in regions if r["fraction"] >= min_fraction]
-    ms = _mean_square(report["where"])
     for r in regions:
-        # energy lift, or the lift of the region's mean offset (1 + bias^2 / mean square):
-        # an offset the base fit split between two regions has no energy lift
-        r["lift"] = max(r["share"] / r["fraction"], 1.0 + r["bias"] ** 2 / ms if ms > 0 else 0.0)
+        r["lift"] = r["share"] / r["fraction"]
     best = {}
     for r in regions:
         if r["family"] not in best or r["lift"] > best[r["family"]]["lift"]:

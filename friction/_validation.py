@@ -33,7 +33,7 @@ def check_finite(name: str, arr: np.ndarray) -> None:
     bad = ~np.isfinite(arr)
     if bad.any():
         i = int(np.argmax(bad))
-        raise ValueError(f"{name}[{i}] = {arr[i]!r} is not finite (first bad sample of "
+        raise ValueError(f"{name}[{i}] = {float(arr[i])!r} is not finite (first bad sample of "
                          f"{int(bad.sum())} in {name})")
 
 
@@ -45,8 +45,8 @@ def check_time(t: np.ndarray, name: str = "t") -> None:
     dt = np.diff(t)
     if np.any(dt <= 0):
         i = int(np.argmax(dt <= 0))
-        raise ValueError(f"{name} must be strictly increasing: {name}[{i + 1}] = {t[i + 1]!r} "
-                         f"<= {name}[{i}] = {t[i]!r}")
+        raise ValueError(f"{name} must be strictly increasing: {name}[{i + 1}] = "
+                         f"{float(t[i + 1])!r} <= {name}[{i}] = {float(t[i])!r}")
 
 
 def check_same_length(reference: str, n: int, **arrays) -> None:

@@ -47,6 +47,21 @@ class Dataset:
     name: str = "data"
     derived: tuple = ()
 
+    def __post_init__(self):
+        # every dataset is checked however it was built (from_arrays, a file, or the
+        # constructor), so a NaN or a wrong length is named here, not deep in a fit
+        self.t = as_float_array("t", self.t)
+        check_time(self.t)
+        n = self.t.size
+        for key in ("x", "v", "a", "F", "load"):
+            arr = getattr(self, key)
+            if arr is None and key == "load":
+                continue
+            arr = as_float_array(key, arr)
+            check_same_length("t", n, **{key: arr})
+            check_finite(key, arr)
+            setattr(self, key, arr)
+
     @classmethod
     def from_arrays(cls, t, F, *, x=None, v=None, a=None, load=None, name="data",
                     extra=None, check_units: bool = True) -> "Dataset":

@@ -92,3 +92,20 @@ def test_split_is_chronological():
     t, x, v, F = _signal()
     a, b = Dataset.from_arrays(t, F, x=x, v=v).split(0.7)
     assert a.t[-1] < b.t[0] and len(a) + len(b) == t.size
+
+
+def test_constructor_checks_like_from_arrays():
+    # a Dataset built directly (as the Python API allows) is checked too, naming the problem
+    t = np.linspace(0.0, 1.0, 11)
+    z = np.zeros(11)
+    F = np.ones(11)
+    bad = F.copy()
+    bad[4] = np.nan
+    with pytest.raises(ValueError, match=r"F\[4\] = nan is not finite"):
+        Dataset(t=t, x=z, v=z, a=z, F=bad)
+    with pytest.raises(ValueError, match="strictly increasing"):
+        Dataset(t=t[::-1], x=z, v=z, a=z, F=F)
+    with pytest.raises(ValueError, match="length mismatch: F has 10 samples but t has 11"):
+        Dataset(t=t, x=z, v=z, a=z, F=F[:-1])
+    with pytest.raises(ValueError, match=r"load\[0\]"):
+        Dataset(t=t, x=z, v=z, a=z, F=F, load=np.full(11, np.inf))

@@ -42,12 +42,22 @@ def run_diagnose_cli(args) -> int:
     scale = _scale(args.scale)
     sets = [load_dataset(p, mapping=mapping, scale=scale) for p in args.data]
     rep = diagnose(sets[0], args.model, validation=sets[1:] or None, seed=args.seed,
-                   progress=None if quiet else say)
+                   candidates=_candidates(args), progress=None if quiet else say)
+    from .report_html import write_html
+    return _emit(rep, args, write_html)
+
+
+def _candidates(args):
+    text = getattr(args, "candidates", None)
+    return [c.strip() for c in text.split(",") if c.strip()] if text else None
+
+
+def _emit(rep, args, write_html) -> int:
+    """Summary on stdout, JSON and HTML where asked for."""
     print(rep.summary())
     if args.json_out:
         rep.to_json(args.json_out)
     if args.html_out:
-        from .report_html import write_html
         write_html(rep, args.html_out)
     return 0
 
@@ -80,14 +90,8 @@ def _run_trajectory(args, quiet) -> int:
     mapping = parse_mapping(args.mapping)
     scale = _scale(args.scale)
     recs = [load_record(p, o, mapping=mapping, scale=scale) for p, o in zip(args.data, options)]
-    cands = [c.strip() for c in args.candidates.split(",")] if args.candidates else None
     rep = diagnose_trajectory(recs[0], plant, args.model, validation=recs[1:] or None,
-                              candidates=cands, engine=args.engine,
+                              candidates=_candidates(args), engine=args.engine,
                               progress=None if quiet else say)
-    print(rep.summary())
-    if args.json_out:
-        rep.to_json(args.json_out)
-    if args.html_out:
-        from .trajectory import write_trajectory_html
-        write_trajectory_html(rep, args.html_out)
-    return 0
+    from .trajectory_report import write_trajectory_html
+    return _emit(rep, args, write_trajectory_html)

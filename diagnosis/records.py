@@ -7,6 +7,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from friction._validation import as_float_array, check_finite, check_same_length, check_time
+
 __all__ = ["TrajectoryRecord", "record_from_result", "load_record", "parse_experiment"]
 
 
@@ -41,26 +43,18 @@ class TrajectoryRecord:
     t_start: float = 0.0
 
     def __post_init__(self):
-        self.t = np.asarray(self.t, dtype=float).ravel()
-        self.y = np.asarray(self.y, dtype=float).ravel()
-        if self.t.size != self.y.size:
-            raise ValueError(f"record {self.name!r}: t has {self.t.size} samples but y has "
-                             f"{self.y.size}")
-        if self.t.size < 10:
-            raise ValueError(f"record {self.name!r}: need at least 10 samples, got "
-                             f"{self.t.size}")
-        for key, arr in (("t", self.t), ("y", self.y)):
-            bad = np.flatnonzero(~np.isfinite(arr))
-            if bad.size:
-                raise ValueError(f"record {self.name!r}: {key} is not finite at sample "
-                                 f"{bad[0]} ({key}[{bad[0]}] = {arr[bad[0]]!r})")
-        d = np.diff(self.t)
-        if np.any(d <= 0):
-            k = int(np.flatnonzero(d <= 0)[0])
-            raise ValueError(f"record {self.name!r}: t must be strictly increasing; "
-                             f"t[{k + 1}] = {self.t[k + 1]!r} <= t[{k}] = {self.t[k]!r}")
+        try:  # the project's own checks, with the record named
+            self.t = as_float_array("t", np.ravel(self.t))
+            self.y = as_float_array("y", np.ravel(self.y))
+            check_same_length("t", self.t.size, y=self.y)
+            if self.t.size < 10:
+                raise ValueError(f"need at least 10 samples, got {self.t.size}")
+            check_finite("y", self.y)
+            check_time(self.t)
+        except ValueError as exc:
+            raise ValueError(f"record {self.name!r}: {exc}") from None
         if self.t[0] < 0:
-            raise ValueError(f"record {self.name!r}: t starts at {self.t[0]!r} < 0; times "
+            raise ValueError(f"record {self.name!r}: t starts at {float(self.t[0])!r} < 0; times "
                              f"count from the experiment's start [s]")
         if np.max(np.abs(self.y)) > 10.0:
             raise ValueError(f"record {self.name!r}: |y| reaches {np.max(np.abs(self.y)):.4g}"

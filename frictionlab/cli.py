@@ -69,7 +69,7 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--engine", default="plant", choices=("plant", "fmu"),
                    help="trajectory level: in-process plant (default) or plant + friction FMUs")
     g.add_argument("--candidates", default=None,
-                   help="trajectory level: comma-separated candidate effects (default all)")
+                   help="comma-separated candidate effects to try (default all), both levels")
     return ap
 
 

@@ -114,6 +114,9 @@ def test_bad_input(tmp_path):
     bad = tmp_path / "bad.csv"
     bad.write_text("t,x,F\n0,0,0\n0.001,nan,1\n0.002,0,1\n")
     assert main(["diagnose", str(bad), "--model", "lugre"]) == 2
+    good = tmp_path / "good.csv"
+    make_case("clean", n=3000).to_csv(good)
+    assert main(["diagnose", str(good), "--model", "lugre", "--candidates", "load,nope"]) == 2
 
 
 def test_friction_level_effects_leave_the_isolator_spring_alone():

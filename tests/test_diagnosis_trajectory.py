@@ -160,7 +160,7 @@ def test_neutral_effect_law_reproduces_the_plant():
 def test_bad_records_are_refused_with_a_clear_message():
     t = np.arange(100) * 1e-4
     y = np.zeros(100)
-    with pytest.raises(ValueError, match="not finite at sample 7"):
+    with pytest.raises(ValueError, match=r"y\[7\] = nan is not finite"):
         TrajectoryRecord(t, np.where(np.arange(100) == 7, np.nan, y))
     with pytest.raises(ValueError, match="strictly increasing"):
         TrajectoryRecord(t[::-1], y)

@@ -28,7 +28,8 @@ from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
 
-__all__ = ["diagnose", "DiagnosisReport", "noise_floor", "BASE_NAMES", "extrapolation", "decide"]
+__all__ = ["diagnose", "DiagnosisReport", "noise_floor", "BASE_NAMES", "extrapolation", "decide",
+           "report_sections"]
 
 #: parameters of each law that the base fit identifies (its "standard" configuration:
 #: symmetric, Gaussian alpha = 2, no offset); candidates add the rest
@@ -194,6 +195,21 @@ def decide(effects: list[dict], before: float, floor: float, noise_abs: float = 
     return verdict
 
 
+def report_sections(where, bands, freq, effects, verdict, sequence, before, final_val,
+                    floor) -> dict:
+    """The report sections both levels share: the contract's ``where``, ``effects`` and
+    ``verdict``, plus ``where_bands``, ``where_frequency``, ``greedy`` and ``noise_floor``."""
+    gap = max(before - floor, 1e-12)
+    left = max(final_val - floor, 0.0)
+    return {"where": where,
+            "effects": [{k: e[k] for k in ("name", "validation_before", "validation_after",
+                                            "gap_closed", "excess_closed")} for e in effects],
+            "verdict": verdict, "where_bands": bands[:12], "where_frequency": freq,
+            "greedy": {"sequence": sequence, "validation_final": final_val,
+                       "unexplained_nrmse": left, "unexplained_share_of_gap": left / gap},
+            "noise_floor": floor}
+
+
 def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed: int = 0,
              fit_fraction: float = 0.7, greedy: bool = True, progress=None,
              mapping=None, scale=None) -> DiagnosisReport:
@@ -347,19 +363,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                 f"({e['fit_range'][0]:.4g} to {e['fit_range'][1]:.4g} {e['unit']}) for "
                 f"{100 * e['outside_share']:.0f} % of its samples, so an effect of {key} "
                 f"cannot be identified from the fit data: fit on data that spans it")
-    gap = max(before - floor, 1e-12)
     report = DiagnosisReport(
         baseline={"model": law0.name, "metric": "nrmse", "fit": base_fit, "validation": before},
-        where=where,
-        effects=[{k: e[k] for k in ("name", "validation_before", "validation_after",
-                                     "gap_closed", "excess_closed")} for e in effects],
-        verdict=verdict,
-        where_bands=bands[:12],
-        where_frequency=freq,
-        greedy={"sequence": sequence, "validation_final": final_val,
-                "unexplained_nrmse": max(final_val - floor, 0.0),
-                "unexplained_share_of_gap": max(final_val - floor, 0.0) / gap},
-        noise_floor=floor,
+        **report_sections(where, bands, freq, effects, verdict, sequence, before, final_val,
+                          floor),
         evidence=_evidence(val_cat, r_cat),
         extrapolation=shift,
         effect_details={e["name"]: e["fitted"] for e in effects},

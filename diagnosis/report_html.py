@@ -7,7 +7,7 @@ import io
 
 import numpy as np
 
-__all__ = ["figures", "write_html", "candidates_png"]
+__all__ = ["figures", "write_html", "candidates_png", "contract_tables", "img_tag", "PAGE_HEAD"]
 
 
 def _png(fig) -> str:
@@ -124,16 +124,34 @@ def candidates_png(report, title: str) -> str:
     return _png(fig)
 
 
+#: head of every report page (both levels)
+PAGE_HEAD = """<!doctype html><html><head><meta charset="utf-8">
+<title>{title}</title>
+<style>body{{font-family:sans-serif;max-width:1200px;margin:2em auto}}
+table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:3px 8px}}</style></head>"""
+
+
+def contract_tables(report) -> tuple[str, str]:
+    """HTML tables of the contract's ``where`` regions and ranked ``effects``."""
+    where = _table(["region", "share of residual energy", "local NRMSE"],
+                   [(html.escape(w["label"]), f"{100 * w['share']:.1f} %", f"{w['nrmse']:.3g}")
+                    for w in report["where"]])
+    effects = _table(["effect", "held-out before", "after", "gap closed"],
+                     [(html.escape(e["name"]), f"{e['validation_before']:.4g}",
+                       f"{e['validation_after']:.4g}", f"{100 * e['gap_closed']:.1f} %")
+                      for e in report["effects"]])
+    return where, effects
+
+
+def img_tag(png: str) -> str:
+    return f'<img src="data:image/png;base64,{png}" style="max-width:100%">'
+
+
 def write_html(report, path) -> None:
     figs = figures(report)
     b, v = report["baseline"], report["verdict"]
-    rows = "".join(
-        f"<tr><td>{html.escape(e['name'])}</td><td>{e['validation_before']:.4g}</td>"
-        f"<td>{e['validation_after']:.4g}</td><td>{100 * e['gap_closed']:.1f} %</td></tr>"
-        for e in report["effects"])
-    where = "".join(f"<tr><td>{html.escape(w['label'])}</td><td>{100 * w['share']:.1f} %</td>"
-                    f"<td>{w['nrmse']:.3g}</td></tr>" for w in report["where"])
-    img = lambda k: f'<img src="data:image/png;base64,{figs[k]}" style="max-width:100%">'
+    where, rows = contract_tables(report)
+    img = lambda k: img_tag(figs[k])
     esc = lambda x: html.escape(str(x))
     bands = _table(["band", "share of residual energy", "local NRMSE", "share of samples"],
                    [(esc(w["label"]), f"{100 * w['share']:.1f} %", f"{w['nrmse']:.3g}",
@@ -167,23 +185,18 @@ def write_html(report, path) -> None:
     skipped = "".join(f"<li><code>{esc(k)}</code>: {esc(w)}</li>"
                       for k, w in report.get("skipped", {}).items())
     skipped = f"<p>Candidates not tried:</p><ul>{skipped}</ul>" if skipped else ""
-    doc = f"""<!doctype html><html><head><meta charset="utf-8">
-<title>frictionlab diagnosis</title>
-<style>body{{font-family:sans-serif;max-width:1200px;margin:2em auto}}
-table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:3px 8px}}</style></head>
+    doc = PAGE_HEAD.format(title="frictionlab diagnosis") + f"""
 <body><h1>Sim-to-real gap diagnosis</h1>
 <p><b>Verdict: {html.escape(str(v['cause']))}</b> (held-out gap closed
 {100 * v['gap_closed']:.1f} %). {html.escape(v.get('reason', ''))}</p>
 <p>Base model <code>{html.escape(b['model'])}</code>: fit NRMSE {b['fit']:.4g}, held-out NRMSE
 {b['validation']:.4g}, estimated noise floor {report['noise_floor']:.3g}.</p>
 {shift}
-<h2>Where the gap lies</h2><table><tr><th>region</th><th>share of residual energy</th>
-<th>local NRMSE</th></tr>{where}</table>{img('residuals')}
+<h2>Where the gap lies</h2>{where}{img('residuals')}
 <h3>Bands of velocity, acceleration, position, load and time</h3>{bands}
 <h3>Frequency</h3>{freq}
 <h2>Which effect</h2><p>Each candidate is re-identified jointly with the base law on the
-fit data and scored on the held-out data.</p><table><tr><th>effect</th><th>held-out before</th><th>after</th>
-<th>gap closed</th></tr>{rows}</table>{img('candidates')}{params_html}{skipped}
+fit data and scored on the held-out data.</p>{rows}{img('candidates')}{params_html}{skipped}
 <h2>How far it shrinks</h2>{seq}{left}
 <h2>Friction before and after</h2>{img('loops')}
 </body></html>"""

@@ -87,7 +87,7 @@ from friction import FrictionModel, make_model
 from friction.dataset import Dataset
 
 from .core import (MIN_EXCESS_CLOSED, TIE, BASE_NAMES, DiagnosisReport, decide,
-                   noise_floor)
+                   noise_floor, report_sections)
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
 # the parts of the trajectory level, re-exported here (the public names of this module)
@@ -907,7 +907,6 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     verdict = decide(effects, before, floor, noise_abs=1e-9)
     if verdict["cause"] not in ("none", "unexplained") and tied_names:
         verdict["tied_with"] = tied_names  # the held-out data cannot tell these apart
-    gap = max(before - floor, 1e-12)
     if hasattr(eng, "close"):
         eng.close()
     report = DiagnosisReport(
@@ -917,18 +916,10 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                   "normalised_by": ("std of the measured tracking error "
                                     f"({tm.ref_name} - {plant.main_output})"
                                     if tm.ref_name else "std of the measured signal")},
-        where=where,
-        effects=[{k: e[k] for k in ("name", "validation_before", "validation_after",
-                                     "gap_closed", "excess_closed")} for e in effects],
-        verdict=verdict,
+        **report_sections(where, bands, freq, effects, verdict, sequence, before, final_val,
+                          floor),
         plant=plant.name,
         engine=engine,
-        where_bands=bands[:12],
-        where_frequency=freq,
-        greedy={"sequence": sequence, "validation_final": final_val,
-                "unexplained_nrmse": max(final_val - floor, 0.0),
-                "unexplained_share_of_gap": max(final_val - floor, 0.0) / gap},
-        noise_floor=floor,
         noise_floor_parts={"white": white, "reproducibility": repro},
         effect_details={e["name"]: e["fitted"] for e in effects},
         base={"law": base_law.name, "fit_names": fit_names, "params": base_vals,

@@ -72,19 +72,13 @@ def trajectory_figures(report) -> dict[str, str]:
 def write_trajectory_html(report, path) -> None:
     """Self-contained HTML report of a trajectory-level diagnosis."""
     import html
+
+    from .report_html import PAGE_HEAD, contract_tables, img_tag
     figs = trajectory_figures(report)
     b, v = report["baseline"], report["verdict"]
-    rows = "".join(
-        f"<tr><td>{html.escape(e['name'])}</td><td>{e['validation_before']:.4g}</td>"
-        f"<td>{e['validation_after']:.4g}</td><td>{100 * e['gap_closed']:.1f} %</td></tr>"
-        for e in report["effects"])
-    where = "".join(f"<tr><td>{html.escape(w['label'])}</td><td>{100 * w['share']:.1f} %</td>"
-                    f"<td>{w['nrmse']:.3g}</td></tr>" for w in report["where"])
-    img = lambda k: f'<img src="data:image/png;base64,{figs[k]}" style="max-width:100%">'
-    doc = f"""<!doctype html><html><head><meta charset="utf-8">
-<title>frictionlab trajectory diagnosis</title>
-<style>body{{font-family:sans-serif;max-width:1200px;margin:2em auto}}
-table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:3px 8px}}</style></head>
+    where, rows = contract_tables(report)
+    img = lambda k: img_tag(figs[k])
+    doc = PAGE_HEAD.format(title="frictionlab trajectory diagnosis") + f"""
 <body><h1>Sim-to-real gap diagnosis, trajectory level ({html.escape(report['plant'])})</h1>
 <p><b>Verdict: {html.escape(str(v['cause']))}</b> (held-out gap closed
 {100 * v['gap_closed']:.1f} %). {html.escape(v.get('reason', ''))}</p>
@@ -92,10 +86,8 @@ table{{border-collapse:collapse}}td,th{{border:1px solid #ccc;padding:3px 8px}}<
 {html.escape(report['engine'])}): fit NRMSE {b['fit']:.4g}, held-out NRMSE {b['validation']:.4g}
 ({html.escape(b['normalised_by'])}), noise floor {report['noise_floor']:.3g}.</p>
 {img('tracking')}
-<h2>Where the gap lies</h2><table><tr><th>region</th><th>share of residual energy</th>
-<th>local NRMSE</th></tr>{where}</table>{img('residuals')}
-<h2>Which effect</h2><table><tr><th>effect</th><th>held-out before</th><th>after</th>
-<th>gap closed</th></tr>{rows}</table>{img('candidates')}
+<h2>Where the gap lies</h2>{where}{img('residuals')}
+<h2>Which effect</h2>{rows}{img('candidates')}
 </body></html>"""
     with open(path, "w") as fh:
         fh.write(doc)

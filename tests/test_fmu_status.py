@@ -22,6 +22,7 @@ from fmpy.fmi2 import fmi2Error, fmi2OK  # noqa: E402
 from fmus import status_shim  # noqa: E402
 from fmus.build import build_fmu, catalogue, validate  # noqa: E402
 from fmus.master import FMUError, Master  # noqa: E402
+from fmus.testing import LoggedSlave  # noqa: E402
 
 try:
     status_shim.shim_library()
@@ -40,63 +41,6 @@ def fmu_dir(tmp_path_factory):
     for name in ("lugre", "mass", "damping_rig"):
         build_fmu(cat[name], out)
     return out
-
-
-class Slave:
-    """fmpy ``FMU2Slave`` with the log messages captured as (status, message)."""
-
-    def __init__(self, path, name="inst", logging_on=True):
-        from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, \
-            fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE, calloc, free
-        self.md = fmpy.read_model_description(str(path))
-        self.dir = fmpy.extract(str(path))
-        self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
-        self.messages = []
-
-        def logger(env, inst, status, cat, msg):
-            self.messages.append((status, msg.decode()))
-        cb = fmi2CallbackFunctions()
-        cb.logger = fmi2CallbackLoggerTYPE(logger)
-        cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-        cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        self._cb = (cb, logger)
-        self.s = FMU2Slave(guid=self.md.guid, unzipDirectory=self.dir,
-                           modelIdentifier=self.md.coSimulation.modelIdentifier,
-                           instanceName=name)
-        self.s.instantiate(callbacks=cb, loggingOn=logging_on)
-        self.s.setupExperiment(startTime=0.0)
-
-    def set(self, name, value):
-        """fmi2SetReal of one variable; returns the FMI status (fmpy raises above warning)."""
-        try:
-            self.s.setReal([self.vr[name]], [value])
-        except FMICallException as exc:
-            return exc.status
-        return fmi2OK
-
-    def step(self, t, h):
-        try:
-            self.s.doStep(t, h)
-        except FMICallException as exc:
-            return exc.status
-        return fmi2OK
-
-    def get(self, name):
-        return self.s.getReal([self.vr[name]])[0]
-
-    def init(self):
-        self.s.enterInitializationMode()
-        self.s.exitInitializationMode()
-
-    def errors(self):
-        return [m for st, m in self.messages if st >= fmi2Error]
-
-    def close(self):
-        try:
-            self.s.terminate()
-            self.s.fmi2FreeInstance(self.s.component)
-        finally:
-            shutil.rmtree(self.dir, ignore_errors=True)
 
 
 def test_linux64_binary_is_the_shim_in_front_of_pythonfmu(fmu_dir):
@@ -124,7 +68,7 @@ def test_linux64_binary_is_the_shim_in_front_of_pythonfmu(fmu_dir):
 def _lugre_run(path, n=40, bad=None, at=20, logging_on=True):
     """Drive v(t) through the LuGre FMU; ``bad`` = (variable, value) set once at step ``at``.
     Returns (F samples, statuses of the bad call, messages)."""
-    s = Slave(path, "fr", logging_on)
+    s = LoggedSlave(path, "fr", logging_on)
     status = None
     try:
         s.init()
@@ -168,7 +112,7 @@ def test_non_finite_input_gives_fmi2_error_naming_it_and_the_run_goes_on(fmu_dir
 def test_out_of_bounds_parameter_gives_fmi2_error_naming_it_and_its_bound(fmu_dir, name,
                                                                           value, text):
     path = fmu_dir / "lugre.fmu"
-    s = Slave(path, "fr")
+    s = LoggedSlave(path, "fr")
     try:
         start = s.get(name)
         assert s.set(name, value) == fmi2Error
@@ -182,7 +126,7 @@ def test_out_of_bounds_parameter_gives_fmi2_error_naming_it_and_its_bound(fmu_di
         F = s.get("F")
     finally:
         s.close()
-    clean = Slave(path, "fr")  # the same run without the bad call
+    clean = LoggedSlave(path, "fr")  # the same run without the bad call
     try:
         clean.init()
         clean.set("v", 1e-3)
@@ -216,7 +160,7 @@ def test_plant_fmu_non_finite_input_and_bad_parameter(fmu_dir):
     path = fmu_dir / "damping_rig.fmu"
 
     def run(bad_input=False, bad_param=False):
-        s = Slave(path, "rig")
+        s = LoggedSlave(path, "rig")
         try:
             if bad_param:
                 assert s.set("m_c", -1.0) == fmi2Error
@@ -269,7 +213,7 @@ def test_percent_in_a_message_is_safe_for_a_formatting_logger(fmu_dir, capfd):
 
 @needs_shim
 def test_inadmissible_combination_is_an_error_at_initialization_and_refuses_steps(fmu_dir):
-    s = Slave(fmu_dir / "lugre.fmu", "fr")
+    s = LoggedSlave(fmu_dir / "lugre.fmu", "fr")
     try:
         s.s.setString([s.vr["shape"]], ["bogus"])  # a string the law does not know
         with pytest.raises(FMICallException) as exc:
@@ -284,7 +228,7 @@ def test_inadmissible_combination_is_an_error_at_initialization_and_refuses_step
 
 @needs_shim
 def test_non_finite_output_makes_the_step_an_error(fmu_dir):
-    s = Slave(fmu_dir / "mass.fmu", "mass")
+    s = LoggedSlave(fmu_dir / "mass.fmu", "mass")
     try:
         # a = u0 / m = 1e307 m/s2, 1 s steps: x = a t^2 / 2 overflows after a few steps
         for k, v in dict(m=1e-300, u0=1e7, u_amp=0.0).items():
@@ -304,7 +248,7 @@ def test_non_finite_output_makes_the_step_an_error(fmu_dir):
 
 def test_large_finite_outputs_are_not_mistaken_for_an_overflow(fmu_dir):
     # x + v overflows to inf although both are finite: the step must still be OK
-    s = Slave(fmu_dir / "mass.fmu", "mass")
+    s = LoggedSlave(fmu_dir / "mass.fmu", "mass")
     try:
         for k, v in dict(x0=1e308, v0=1e308, u_amp=0.0).items():
             assert s.set(k, v) == fmi2OK
@@ -319,7 +263,7 @@ def test_large_finite_outputs_are_not_mistaken_for_an_overflow(fmu_dir):
 def test_invalid_value_reference_is_an_error_not_a_crash(fmu_dir):
     import ctypes
     import gc
-    s = Slave(fmu_dir / "lugre.fmu", "fr")
+    s = LoggedSlave(fmu_dir / "lugre.fmu", "fr")
     try:
         s.init()
         f, c = s.s._functions, s.s.component
@@ -371,7 +315,7 @@ def test_without_a_compiler_the_build_warns_and_bad_input_gives_discard(tmp_path
     assert validate(path) == []
     with zipfile.ZipFile(path) as z:
         assert "binaries/linux64/fl_lugre_pythonfmu.so" not in z.namelist()
-    s = Slave(path, "fr")
+    s = LoggedSlave(path, "fr")
     try:
         s.init()
         assert s.set("v", NAN) == fmi2OK  # pythonfmu's own binary: no error status

@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import math
-import shutil
 
 import numpy as np
 import pytest
@@ -14,7 +13,7 @@ import friction  # noqa: E402
 from friction.metrics import nrmse  # noqa: E402
 from fmus.build import catalogue, validate  # noqa: E402
 from fmus.modeldescription import base_unit  # noqa: E402
-from fmus.testing import built_fmus  # noqa: E402
+from fmus.testing import LoggedSlave, built_fmus  # noqa: E402
 
 
 @pytest.fixture(scope="session")
@@ -89,44 +88,6 @@ def test_model_structure_lists_true_dependencies(fmu_dir):
     assert deps("mass")[0] == {"x": [], "v": [], "a": ["F_ext", "F_friction"]}
 
 
-class _Slave:
-    """A plain fmpy FMU2Slave with captured log messages."""
-
-    def __init__(self, path, name="inst"):
-        from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, \
-            fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE, calloc, free
-        self.md = fmpy.read_model_description(str(path))
-        self.dir = fmpy.extract(str(path))
-        self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
-        self.messages = []
-
-        def logger(env, inst, status, cat, msg):
-            self.messages.append((status, msg.decode()))
-        cb = fmi2CallbackFunctions()
-        cb.logger = fmi2CallbackLoggerTYPE(logger)
-        cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-        cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        self._cb = (cb, logger)
-        self.s = FMU2Slave(guid=self.md.guid, unzipDirectory=self.dir,
-                           modelIdentifier=self.md.coSimulation.modelIdentifier,
-                           instanceName=name)
-        self.s.instantiate(callbacks=cb, loggingOn=True)
-        self.s.setupExperiment(startTime=0.0)
-
-    def init(self, **values):
-        for k, v in values.items():
-            self.s.setReal([self.vr[k]], [v])
-        self.s.enterInitializationMode()
-        self.s.exitInitializationMode()
-
-    def close(self):
-        try:
-            self.s.terminate()
-            self.s.fmi2FreeInstance(self.s.component)
-        finally:
-            shutil.rmtree(self.dir, ignore_errors=True)
-
-
 def _drive(law, t):
     """Smooth prescribed motion (and load) for one law."""
     v = 2e-3 * np.sin(2 * np.pi * 10 * t) + 5e-4
@@ -143,7 +104,7 @@ def _fmu_run(path, law, h, T, start=None):
     t = h * np.arange(int(round(T / h)) + 1)
     v, extra = _drive(law, t)
     sig = {"v": v, **extra}
-    s = _Slave(path, law)
+    s = LoggedSlave(path, law)
     try:
         s.init(**(start or {}))
         F = np.empty(t.size)
@@ -183,7 +144,7 @@ def test_load_input_changes_the_force(fmu_dir):
     t = 1e-4 * np.arange(1001)
     out, expect = [], []
     for load in (0.0, 2e4):
-        s = _Slave(fmu_dir / f"{law}.fmu")
+        s = LoggedSlave(fmu_dir / f"{law}.fmu")
         try:
             s.init(load=load)
             s.s.setReal([s.vr["v"]], [1e-2])
@@ -204,7 +165,7 @@ def test_optional_twin_parameter_makes_the_law_asymmetric(fmu_dir):
     # Fc_neg = -1 means "same as Fc"; setting it changes only the negative branch
     res = {}
     for fc_neg in (-1.0, 2.0):
-        s = _Slave(fmu_dir / "lugre.fmu")
+        s = LoggedSlave(fmu_dir / "lugre.fmu")
         try:
             s.init(Fc_neg=fc_neg)
             vals = []

@@ -39,24 +39,41 @@ BASE_NAMES = {
 }
 
 #: a candidate must close at least this share of the held-out gap *above the noise floor*
-MIN_EXCESS_CLOSED = 0.5
+#: to be named. Right-family candidates whose form differs from the truth's close 0.38-0.95
+#: of it in the withheld-effect benchmark, effects outside the library at most 0.07 (an
+#: electrical ripple 0.001, a slower current loop at the trajectory level 0.064): a third
+#: keeps a 5x margin above the latter; the report gives the part left unexplained
+MIN_EXCESS_CLOSED = 1.0 / 3.0
 #: candidates within this much closed excess of the best count as tied: the one with fewer
 #: parameters is named (an acceleration term can mimic a mass error, not the reverse)
 TIE = 0.02
 #: base residual within this factor of the noise floor counts as noise
 NOISE_RATIO = 1.2
+#: second differences of the residual beyond this many robust standard deviations are
+#: jumps of the residual (structure), not noise, in :func:`noise_floor`
+NOISE_CLIP = 5.0
 
 
 def noise_floor(data, r) -> float:
     """Measurement-noise level of a residual, as NRMSE [-].
 
     Second differences cancel any smooth (modelled or unmodelled) structure, so
-    std(diff2(r)) / sqrt(6) estimates white noise; the smaller value over the time-sorted
-    residual and its 2:1 decimation guards against coloured noise.
+    std(diff2(r)) / sqrt(6) estimates white noise. The few second differences that straddle a
+    jump of the residual (a velocity reversal under a stiff bristle, a stick-slip transition)
+    are structure, not noise, and would dominate a plain std; so the differences are
+    winsorised at :data:`NOISE_CLIP` robust (MAD) standard deviations first. Gaussian noise
+    keeps its std (a 5-sigma clip changes it by < 1e-5); heavy-tailed measurement noise keeps
+    most of its tails, unlike a pure MAD estimate.
     """
     sd = float(np.std(data.F)) or 1.0
-    d2 = np.diff(r, 2)
-    est = float(np.std(d2)) / np.sqrt(6.0)
+    d2 = np.diff(np.asarray(r, float), 2)
+    if d2.size < 3:
+        return 0.0
+    centred = d2 - np.median(d2)
+    robust = 1.4826 * float(np.median(np.abs(centred)))
+    if robust > 0:
+        centred = np.clip(centred, -NOISE_CLIP * robust, NOISE_CLIP * robust)
+    est = float(np.std(centred)) / np.sqrt(6.0)
     return est / sd
 
 
@@ -186,7 +203,7 @@ def decide(effects: list[dict], before: float, floor: float, noise_abs: float = 
     if not effects or effects[0]["excess_closed"] < MIN_EXCESS_CLOSED:
         return {"cause": "unexplained",
                 "gap_closed": effects[0]["gap_closed"] if effects else 0.0,
-                "reason": "no candidate closes half of the held-out gap above the noise floor"}
+                "reason": "no candidate closes a third of the held-out gap above the noise floor"}
     top = effects[0]
     verdict = {"cause": top["name"], "gap_closed": top["gap_closed"],
                "excess_closed": top["excess_closed"]}

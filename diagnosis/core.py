@@ -27,6 +27,7 @@ from friction.metrics import nrmse
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
+from .transfer import transfer_applicable, transfer_scores
 
 __all__ = ["diagnose", "DiagnosisReport", "noise_floor", "BASE_NAMES", "extrapolation", "decide",
            "report_sections"]
@@ -336,17 +337,46 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                                                                  - len(base_names), 0),
                         "fit_before": base_fit, "fit_after": cost,
                         "fitted": comp.describe()})
-    effects.sort(key=lambda e: -e["gap_closed"])
-    if effects:  # near-ties go to the simpler effect
-        best = effects[0]["excess_closed"]
-        tied = [e for e in effects if e["excess_closed"] >= best - TIE]
-        simplest = min(tied, key=lambda e: e["n_params"])
-        effects.remove(simplest)
-        effects.insert(0, simplest)
+    _rank(effects)
 
-    # 4. greedy stacking
+    # 3b. held-out records at conditions the fit record never saw: transfer scores
+    shift = extrapolation(fit, val_sets) if full is None else {}
+    transfer = None
+    if transfer_applicable(val_sets, shift):
+        say("[diagnose] held-out conditions outside the fit range: transfer scores")
+        wide = _concat([fit] + list(val_sets))
+        cands = {}
+        for name in names:
+            cand = CANDIDATES[name].specialise(base.law)
+            if cand.applicable(base.law, fit, ctx)[0] or \
+                    cand.applicable(base.law, wide, make_context(wide))[0]:
+                cands[name] = cand
+                skipped.pop(name, None)
+        tr = transfer_scores(base, base_names, cands, val_sets, ctx, skip)
+        one_shot = {e["name"]: e for e in effects}
+        before = tr["before"]
+        effects = []
+        for name, after in tr["after"].items():
+            e1 = one_shot.get(name, {})
+            effects.append({"name": name, "validation_before": before, "validation_after": after,
+                            "gap_closed": (before - after) / before if before > 0 else 0.0,
+                            "excess_closed": (before - after) / max(before - floor, 1e-12),
+                            "n_params": e1.get("n_params", 0), "protocol": "transfer",
+                            "fit_record_validation_after": e1.get("validation_after"),
+                            "fitted": {"transfer_params": tr["params"][name],
+                                       **e1.get("fitted", {})}})
+        _rank(effects)
+        transfer = {"covariates": sorted(shift), "folds": tr["folds"],
+                    "explanation": TRANSFER_NOTE}
+
+    # 4. greedy stacking (at the fit-record protocol; a transfer verdict reports its top)
     sequence = []
-    if greedy and effects and effects[0]["excess_closed"] >= MIN_EXCESS_CLOSED:
+    if transfer is not None:
+        top_ok = effects and effects[0]["excess_closed"] >= MIN_EXCESS_CLOSED
+        sequence = ([{"add": effects[0]["name"], "validation": effects[0]["validation_after"]}]
+                    if top_ok else [])
+        final_val = effects[0]["validation_after"] if top_ok else before
+    elif greedy and effects and effects[0]["excess_closed"] >= MIN_EXCESS_CLOSED:
         current = fitted[effects[0]["name"]]
         cur_val = effects[0]["validation_after"]
         sequence.append({"add": effects[0]["name"], "validation": cur_val})
@@ -370,9 +400,14 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         final_val = before
 
     # 5. verdict
-    shift = extrapolation(fit, val_sets) if full is None else {}
     verdict = decide(effects, before, floor, noise_abs=1e-6)
-    if verdict["cause"] == "unexplained":
+    if transfer is not None:
+        verdict["protocol"] = "transfer"
+        verdict["reason"] = (verdict.get("reason", "") + ("; " if verdict.get("reason") else "")
+                             + f"held-out {', '.join(transfer['covariates'])} outside the fit "
+                             f"range: each candidate calibrated on one held-out record, scored "
+                             f"on the others, the base as fitted")
+    elif verdict["cause"] == "unexplained":
         for key, e in shift.items():
             verdict["reason"] += (
                 f"; the held-out {key} ({e['validation_range'][0]:.4g} to "
@@ -386,6 +421,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                           floor),
         evidence=_evidence(val_cat, r_cat),
         extrapolation=shift,
+        transfer=transfer,
         effect_details={e["name"]: e["fitted"] for e in effects},
         base=base.describe(),
         skipped=skipped,
@@ -395,6 +431,23 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     report._models = {"base": base, **fitted}  # for plots; not serialised
     report._data = {"fit": fit, "validation": val_sets}
     return report
+
+
+TRANSFER_NOTE = ("the held-out records lie outside the fit record's range of a covariate, "
+                 "so no candidate of it can be identified on the fit record: the base stays "
+                 "as fitted, each candidate's own parameters are calibrated on one held-out "
+                 "record and it is scored on the others (each in turn)")
+
+
+def _rank(effects: list) -> None:
+    """Sort best first; near-ties (within :data:`TIE` of closed excess) go to the simpler."""
+    effects.sort(key=lambda e: -e["gap_closed"])
+    if effects:
+        best = effects[0]["excess_closed"]
+        tied = [e for e in effects if e["excess_closed"] >= best - TIE]
+        simplest = min(tied, key=lambda e: e["n_params"])
+        effects.remove(simplest)
+        effects.insert(0, simplest)
 
 
 def _concat(sets) -> Dataset:

@@ -100,6 +100,8 @@ class DiagnosisReport(dict):
             lines.append(f"  {e['name']:15s} {e['validation_before']:.4g} -> "
                          f"{e['validation_after']:.4g}  gap closed {e['gap_closed'] * 100:6.1f} %")
         lines.append(f"verdict: {v['cause']} (gap closed {v['gap_closed'] * 100:.1f} %)")
+        if self.get("transfer"):
+            lines.append(f"scored by transfer: {self['transfer']['explanation']}")
         return "\n".join(lines)
 
 
@@ -221,7 +223,8 @@ def report_sections(where, bands, freq, effects, verdict, sequence, before, fina
     left = max(final_val - floor, 0.0)
     return {"where": where,
             "effects": [{k: e[k] for k in ("name", "validation_before", "validation_after",
-                                            "gap_closed", "excess_closed")} for e in effects],
+                                            "gap_closed", "excess_closed", "protocol") if k in e}
+                        for e in effects],
             "verdict": verdict, "where_bands": bands[:12], "where_frequency": freq,
             "greedy": {"sequence": sequence, "validation_final": final_val,
                        "unexplained_nrmse": left, "unexplained_share_of_gap": left / gap},

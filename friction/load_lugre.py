@@ -44,6 +44,7 @@ from scipy.optimize import brentq
 from ._validation import ParameterError
 from .base import FrictionModel, FrictionParams, param
 from .lugre import bristle_update
+from .regimes import RegimeSplit
 
 __all__ = ["LoadLuGreParams", "LoadLuGre", "critical_velocity", "regime_condition",
            "load_lugre_run", "TABLE2_SI", "TABLE3_SI"]
@@ -282,6 +283,20 @@ class LoadLuGre(FrictionModel):
     def vc(self) -> float:
         """Regime-split velocity [m/s] (no-load critical velocity unless given)."""
         return float(self.theta[VC])
+
+    def regimes(self) -> RegimeSplit:
+        """The smooth law of each side of |v| = vc (:class:`friction.regimes.RegimeSplit`):
+        the coefficients of |v| < vc, and of |v| >= vc, at every speed."""
+        cached = getattr(self, "_regimes", None)
+        if cached is None or cached[0] is not self.params:  # cached per parameter set
+            p = self.params
+            vc = self.vc
+            low = type(self)(p.replace(k1_high=p.k1_low, k2_high=p.k2_low, k3_high=p.k3_low,
+                                       vc=vc))
+            high = type(self)(p.replace(k1_low=p.k1_high, k2_low=p.k2_high,
+                                        k3_low=p.k3_high, vc=vc))
+            cached = self._regimes = (p, RegimeSplit(vc, low, high))
+        return cached[1]
 
     def population_theta(self, names, X) -> np.ndarray:
         """As the base, but an automatic vc follows varied no-load parameters row by row."""

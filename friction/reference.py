@@ -21,7 +21,6 @@ velocity towards it (see ``plants.base.Plant.simulate(method="reference")``).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
@@ -29,41 +28,12 @@ from scipy.integrate import solve_ivp
 
 from ._validation import as_float_array, check_signals, check_time
 from .base import FrictionModel
+from .regimes import RegimeSplit, regime_split  # re-exported (scipy-free home)
 
 __all__ = ["simulate_prescribed", "simulate_mass", "DEFAULT_RTOL", "RegimeSplit",
            "regime_split"]
 
 DEFAULT_RTOL = 1e-10
-
-
-@dataclass(frozen=True)
-class RegimeSplit:
-    """A law whose coefficients jump at |v| = ``vc``: the smooth law of each side.
-
-    Attributes
-    ----------
-    vc : float
-        Switching velocity [m/s] (> 0).
-    low, high : FrictionModel
-        The law with the coefficients of |v| < vc, and of |v| >= vc, everywhere.
-    """
-    vc: float
-    low: FrictionModel
-    high: FrictionModel
-
-
-def regime_split(model: FrictionModel) -> RegimeSplit | None:
-    """The two smooth regimes of a law with a velocity-triggered coefficient jump, or
-    ``None`` for a smooth law. Known: ``load_lugre`` (k1, k2, k3 of Table 3 below / above
-    vc). A load-free run has no jump (the coefficients multiply the load), but the split is
-    returned all the same."""
-    if getattr(model, "name", "") != "load_lugre":
-        return None
-    p = model.params
-    vc = float(model.vc)
-    low = type(model)(p.replace(k1_high=p.k1_low, k2_high=p.k2_low, k3_high=p.k3_low, vc=vc))
-    high = type(model)(p.replace(k1_low=p.k1_high, k2_low=p.k2_high, k3_low=p.k3_high, vc=vc))
-    return RegimeSplit(vc, low, high)
 
 
 def _interp(t, y):

@@ -166,6 +166,23 @@ def write_html(report, path) -> None:
     params_html = (f"<h3>Fitted parameters of <code>{esc(named)}</code></h3>"
                    + _table(["parameter", "value", "unit"],
                             [(esc(a), b_, esc(c)) for a, b_, c in params])) if params else ""
+    tr = report.get("transfer")
+    which = ("<p>Each candidate is re-identified jointly with the base law on the fit data and "
+             "scored on the held-out data.</p>")
+    if tr:
+        names = [e["name"] for e in report["effects"][:4]]
+        which = (f"<p>Scored by transfer: {esc(tr['explanation'])}.</p>" + _table(
+            ["calibrated on record", "scored on records", "base"] + [esc(n) for n in names],
+            [(str(f["calibrated_on"]), ", ".join(map(str, f["scored_on"])), f"{f['before']:.4g}")
+             + tuple(f"{f['after'][n]:.4g}" for n in names) for f in tr["folds"]]))
+        fits = report.get("effect_details", {}).get(named, {}).get("transfer_params", [])
+        if fits:
+            keys = sorted({k for p in fits for k in p})
+            params_html = (f"<h3>Parameters of <code>{esc(named)}</code> calibrated on each "
+                           f"held-out record</h3>" + _table(
+                               ["record"] + [esc(k) for k in keys],
+                               [(str(i),) + tuple(f"{p.get(k, float('nan')):.4g}" for k in keys)
+                                for i, p in enumerate(fits)]))
     g = report.get("greedy", {})
     seq = _table(["step", "effect added", "held-out NRMSE"],
                  [("0", "(base)", f"{b['validation']:.4g}")]
@@ -195,8 +212,7 @@ def write_html(report, path) -> None:
 <h2>Where the gap lies</h2>{where}{img('residuals')}
 <h3>Bands of velocity, acceleration, position, load and time</h3>{bands}
 <h3>Frequency</h3>{freq}
-<h2>Which effect</h2><p>Each candidate is re-identified jointly with the base law on the
-fit data and scored on the held-out data.</p>{rows}{img('candidates')}{params_html}{skipped}
+<h2>Which effect</h2>{which}{rows}{img('candidates')}{params_html}{skipped}
 <h2>How far it shrinks</h2>{seq}{left}
 <h2>Friction before and after</h2>{img('loops')}
 </body></html>"""

@@ -191,9 +191,16 @@ def law_variables(model_cls, probe: bool = False) -> list[Var]:
     for n in inputs:
         unit, desc = INPUT_INFO[n]
         vs.append(Var(n, "input", "Real", 0.0, unit, f"{desc} [{unit}]"))
+    switching = has_switch(model_cls)
+    if switching:
+        vs.append(Var(SHARE_INPUT, "input", "Real", -1.0, "1",
+                      "share of the last step the plant spent below v_switch (connect "
+                      "plant.low_share; the bristle state advances with that mix of both "
+                      "regimes; negative: not connected, the regime of the mid-step "
+                      "velocity) [1] (<= 1)", upper=1.0))
     deps = law_feedthrough(model_cls, inputs) if probe else tuple(inputs)
     vs.append(Var("F", "output", "Real", None, "N", "friction force [N]", depends=deps))
-    vs += coupling_variables(inputs)
+    vs += coupling_variables(inputs, switching)
     units = getattr(model_cls, "state_units", None)
     for j, s in enumerate(model_cls.state_names):
         unit = units[j] if units else ("m" if j == 0 else "N" if s.startswith("F") else "")
@@ -205,13 +212,38 @@ def law_variables(model_cls, probe: bool = False) -> list[Var]:
 
 #: outputs of a law FMU for the linearly implicit coupling (see :func:`law_linearisation`)
 COUPLING_OUTPUTS = ("dF_dx", "dF_dv", "dF_dt", "d2F_dt2", "t_kink", "dF_dt_kink")
+#: extra coupling outputs of a law whose coefficients jump at |v| = v_switch
+#: (:func:`switch_linearisation`), and the plant output / law input of the share of a step
+#: spent below it
+SWITCH_OUTPUTS = ("v_switch", "dF_switch", "dF_dx_switch", "dF_dv_switch")
+SHARE_INPUT = "low_share"
 
 
-def coupling_variables(inputs) -> list[Var]:
+def has_switch(model_cls) -> bool:
+    """Whether the law's coefficients jump at a switching speed (``regimes()``)."""
+    return callable(getattr(model_cls, "regimes", None))
+
+
+def coupling_variables(inputs, switching: bool = False) -> list[Var]:
     """Parameters ``h_lin``, ``inputs_at_step_end`` and outputs ``dF_dx``, ``dF_dv``,
     ``dF_dt``, ``d2F_dt2`` of a law FMU: the local linearisation of the law over the coming
-    step (computed from the current inputs, so they depend directly on every input)."""
-    return [
+    step (computed from the current inputs, so they depend directly on every input); with
+    ``switching`` also ``v_switch``, ``dF_switch``, ``dF_dx_switch``, ``dF_dv_switch``."""
+    extra = [] if not switching else [
+        Var("v_switch", "output", "Real", None, "m/s",
+            "speed |v| at which the law's coefficients jump (0: none) [m/s]",
+            depends=tuple(inputs)),
+        Var("dF_switch", "output", "Real", None, "N",
+            "force of the other side of v_switch minus this side's, at the current state "
+            "and inputs [N]", depends=tuple(inputs)),
+        Var("dF_dx_switch", "output", "Real", None, "N/m",
+            "dF_dx of the other side of v_switch minus this side's [N/m]",
+            depends=tuple(inputs)),
+        Var("dF_dv_switch", "output", "Real", None, "N.s/m",
+            "dF_dv of the other side of v_switch minus this side's [N.s/m]",
+            depends=tuple(inputs)),
+    ]
+    return extra + [
         Var("h_lin", "parameter", "Real", 0.0, "s",
             "horizon of the coupling linearisation dF_dx, dF_dv, dF_dt, normally the "
             "communication step [s] (0: not computed, the outputs stay 0) (>= 0)", 0.0),
@@ -348,7 +380,34 @@ def _reversal_time(v, a, b, h):
     return min(inside) if inside else None
 
 
-__all__ += ["COUPLING_OUTPUTS", "coupling_variables", "law_linearisation",
+def switch_linearisation(kernel, thetas: dict, vc: float, state, inputs: dict, h: float,
+                         dv_dt: float | None = None, d2v_dt2: float = 0.0) -> tuple:
+    """Coupling outputs of a law whose coefficients jump at |v| = ``vc`` [m/s].
+
+    Each side of the switch is a smooth law (``thetas["low"]``, ``thetas["high"]``: the
+    packed parameters of :func:`friction.regimes.regime_split`). The side of the current
+    velocity gives :func:`law_linearisation` (so no finite difference straddles the jump);
+    the other side adds ``(vc, dF_switch, dF_dx_switch, dF_dv_switch)``: its force at the
+    current state and inputs minus this side's, and the differences of its slopes. A plant
+    that holds the side of its own velocity in each substep then sees the jump where it
+    happens inside the step (``plants.base.PlantStepper``).
+    """
+    side = "low" if abs(float(inputs["v"])) < vc else "high"
+    other = "high" if side == "low" else "low"
+    lin = law_linearisation(kernel, thetas[side], state, inputs, h, dv_dt, d2v_dt2)
+    K2, D2 = law_linearisation(kernel, thetas[other], state, inputs, h)[:2] if dv_dt is None \
+        else law_linearisation(kernel, thetas[other], state, inputs, h, dv_dt, d2v_dt2)[:2]
+    empty = np.zeros(0)
+    one = np.zeros(1)
+    args = [np.array([float(inputs[n])]) if n in inputs else empty
+            for n in ("v", "a", "load", "x")]
+    F_side = float(kernel(one, *args, thetas[side], 0, state)[0][0])
+    F_other = float(kernel(one, *args, thetas[other], 0, state)[0][0])
+    return tuple(lin) + (vc, F_other - F_side, K2 - lin[0], D2 - lin[1])
+
+
+__all__ += ["COUPLING_OUTPUTS", "SWITCH_OUTPUTS", "SHARE_INPUT", "has_switch",
+            "coupling_variables", "law_linearisation", "switch_linearisation",
             "plant_coupling_inputs"]
 
 
@@ -417,7 +476,13 @@ def plant_variables(plant_cls, probe: bool = False) -> list[Var]:
         unit, desc = signals.get(n, ("", n))
         vs.append(Var(n, "input", "Real", 0.0, unit, desc + (f" [{unit}]" if unit else "")))
     vs += plant_coupling_inputs(plant)
-    for n in plant.all_output_names:
+    signals.setdefault(SHARE_INPUT, ("1", "share of the last communication step spent below "
+                                          "the friction law's v_switch (a sliding stretch "
+                                          "with its Filippov weight; connect to "
+                                          "friction.low_share)"))
+    outs = plant.all_output_names + tuple(
+        n for n in getattr(plant.stepper(), "output_names", ()) if n == SHARE_INPUT)
+    for n in outs:
         unit, desc = signals.get(n, ("", n))
         vs.append(Var(n, "output", "Real", None, unit, desc + (f" [{unit}]" if unit else ""),
                       depends=tuple(deps.get(n, ()))))
@@ -438,6 +503,14 @@ _COUPLING_INPUT_INFO = {
                     "reverses (connect friction.t_kink)"),
     "dF_dt_kink": ("N/s", "friction law's change of rate at t_kink (connect "
                           "friction.dF_dt_kink; 0: none)"),
+    "v_switch": ("m/s", "speed at which the friction law's coefficients jump (connect "
+                        "friction.v_switch; 0: none)"),
+    "dF_switch": ("N", "friction law's force jump to the other side of v_switch (connect "
+                       "friction.dF_switch)"),
+    "dF_dx_switch": ("N/m", "change of dF_dx on the other side of v_switch (connect "
+                            "friction.dF_dx_switch)"),
+    "dF_dv_switch": ("N.s/m", "change of dF_dv on the other side of v_switch (connect "
+                              "friction.dF_dv_switch)"),
 }
 
 
@@ -773,6 +846,14 @@ class LawSlave(SlaveBase):
         self.args1 = (self.t1,) + tuple(self.buf1[n] for n in ("v", "a", "load", "x"))
         self.args2 = (self.t2,) + tuple(self.buf2[n] for n in ("v", "a", "load", "x"))
         self.lin_idx = [self.index[n] for n in COUPLING_OUTPUTS]
+        self.switch = None       # a regime switch: (vc, {"low": theta, "high": theta})
+        if has_switch(cls):
+            split = model.regimes()
+            self.switch = (float(split.vc),
+                           {r: np.ascontiguousarray(getattr(split, r).theta, dtype=np.float64)
+                            for r in ("low", "high")})
+            self.lin_idx += [self.index[n] for n in SWITCH_OUTPUTS]
+            self.share_idx = self.index[SHARE_INPUT]
         self.lin_zeroed = False  # h_lin = 0: the coupling outputs are written once
         self.h_lin = float(self.values[self.index["h_lin"]])
         self.foh = bool(self.values[self.index["inputs_at_step_end"]])
@@ -791,12 +872,17 @@ class LawSlave(SlaveBase):
         """Coupling outputs at the current state and inputs (0 if h_lin = 0)."""
         if self.h_lin > 0.0:
             inputs = dict(zip(self.names, self._inputs()))
-            lin = law_linearisation(self.kernel, self.theta, self.state, inputs, self.h_lin,
-                                    self.slope_v, self.curv_v)
+            if self.switch is not None:
+                lin = switch_linearisation(self.kernel, self.switch[1], self.switch[0],
+                                           self.state, inputs, self.h_lin, self.slope_v,
+                                           self.curv_v)
+            else:
+                lin = law_linearisation(self.kernel, self.theta, self.state, inputs,
+                                        self.h_lin, self.slope_v, self.curv_v)
         elif self.lin_zeroed:
             return  # constant zeros, already written (per-step cost of the plain loops)
         else:
-            lin = (0.0,) * len(COUPLING_OUTPUTS)
+            lin = (0.0,) * len(self.lin_idx)
             self.lin_zeroed = True
         for i, val in zip(self.lin_idx, lin):
             self.values[i] = float(val)
@@ -836,7 +922,17 @@ class LawSlave(SlaveBase):
             self.last_in = now
         self.stepped = True
         self.t2[1] = h
-        F, S = self.kernel(*self.args2, self.theta, 0, self.state)
+        share = self.values[self.share_idx] if self.switch is not None else -1.0
+        if share >= 0.0:
+            # the plant says which share of the step lay below v_switch (sliding along it
+            # with its Filippov weight): the state advances with that mix of both regimes
+            thetas = self.switch[1]
+            S = (share * self.kernel(*self.args2, thetas["low"], 0, self.state)[1]
+                 + (1.0 - share) * self.kernel(*self.args2, thetas["high"], 0, self.state)[1])
+            self._fill(self.fill1)
+            F = np.array([0.0, self.kernel(*self.args1, self.theta, 0, S[1])[0].item(0)])
+        else:
+            F, S = self.kernel(*self.args2, self.theta, 0, self.state)
         new = S[1].tolist()
         for j, zj in enumerate(new):
             if zj - zj != 0.0:  # inf or NaN: the state is kept as it was

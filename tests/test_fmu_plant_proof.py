@@ -17,7 +17,7 @@ pytest.importorskip("pythonfmu")
 
 import friction  # noqa: E402
 from friction.metrics import nrmse  # noqa: E402
-from fmus.runtime import law_linearisation  # noqa: E402
+from fmus.runtime import has_switch, law_linearisation, switch_linearisation  # noqa: E402
 
 
 def _lin(law, state, h, **inputs):
@@ -55,7 +55,9 @@ def test_linearisation_ignores_the_regime_jump_of_the_load_law():
 class _LawStep:
     """In-process stand-in of the law FMU as ``plant_master`` sets it up (Gauss-Seidel,
     plant first): first-order hold of the inputs over a step, linearisation over ``h``
-    along the motion extrapolated from the last three input samples."""
+    along the motion extrapolated from the last three input samples; a law with a regime
+    switch also gives the other side's linearisation and mixes both regimes' state updates
+    by the plant's ``low_share`` (``share``; None: not connected)."""
 
     def __init__(self, law):
         self.law, self.theta = law, np.ascontiguousarray(law.theta)
@@ -65,6 +67,12 @@ class _LawStep:
         self.last = None
         self.slope = self.curv = 0.0
         self.d1 = None
+        self.switch = None
+        self.share = None
+        if has_switch(type(law)):
+            sp = law.regimes()
+            self.switch = (sp.vc, {"low": np.ascontiguousarray(sp.low.theta),
+                                   "high": np.ascontiguousarray(sp.high.theta)})
 
     def _arr(self, n, k):
         if n not in self.inp:
@@ -79,6 +87,9 @@ class _LawStep:
         return float(F[0])
 
     def linearisation(self, h):
+        if self.switch is not None:
+            return switch_linearisation(self.law._kernel, self.switch[1], self.switch[0],
+                                        self.state, dict(self.inp), h, self.slope, self.curv)
         return law_linearisation(self.law._kernel, self.theta, self.state, dict(self.inp), h,
                                  self.slope, self.curv)
 
@@ -86,15 +97,20 @@ class _LawStep:
         d1 = self.inp["v"] - self.last["v"]       # Newton backward, as LawSlave
         d2 = 0.0 if self.d1 is None else d1 - self.d1
         self.slope, self.curv, self.d1 = (d1 + 0.5 * d2) / h, d2 / (h * h), d1
-        _, S = self.law._kernel(np.array([0.0, h]),
-                                *(self._arr(n, 2) for n in ("v", "a", "load", "x")),
-                                self.theta, 0, self.state)
-        self.state = S[1].copy()
+        args = (np.array([0.0, h]),) + tuple(self._arr(n, 2) for n in ("v", "a", "load", "x"))
+        if self.share is not None and self.switch is not None:
+            th = self.switch[1]
+            self.state = (self.share * self.law._kernel(*args, th["low"], 0, self.state)[1][1]
+                          + (1.0 - self.share)
+                          * self.law._kernel(*args, th["high"], 0, self.state)[1][1])
+        else:
+            self.state = self.law._kernel(*args, self.theta, 0, self.state)[1][1].copy()
         self.last = dict(self.inp)
 
 
-def _cosim(plant_cls, law, h, stop, linearised=True):
-    """Gauss-Seidel plant -> law loop as fmus.plant_fmus.plant_master runs it."""
+def _cosim(plant_cls, law, h, stop, linearised=True, share=True):
+    """Gauss-Seidel plant -> law loop as fmus.plant_fmus.plant_master runs it (``share``:
+    plant.low_share connected to a switching law)."""
     from fmus.plant_fmus import plant_connections
     st = plant_cls(external_friction=True).stepper()
     L = _LawStep(law)
@@ -116,6 +132,8 @@ def _cosim(plant_cls, law, h, stop, linearised=True):
         st.set_inputs({"F_friction": L.force(), **dict(zip(st.coupling_names, lin))})
         st.do_step((k - 1) * h, h)
         out[k] = feed()
+        if share and linearised:
+            L.share = st.outputs()["low_share"]
         L.advance(h)
     return out
 

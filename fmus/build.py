@@ -16,10 +16,13 @@ Error statuses: the pythonfmu 0.7 binary maps an exception raised by the slave t
 FMU's ``binaries/linux64/<modelIdentifier>.so`` is our status shim
 (:mod:`fmus.status_shim`, compiled once with the system C compiler and cached), with
 pythonfmu's library next to it as ``<modelIdentifier>_pythonfmu.so``: a call during which
-the slave logged an error returns ``fmi2Error``. Our slaves never raise on bad input; they
+the slave logged an error returns ``fmi2Error``. ``binaries/win64/<modelIdentifier>.dll`` is
+the same shim cross-compiled with MinGW-w64 (``x86_64-w64-mingw32-gcc``), in front of
+pythonfmu's ``<modelIdentifier>_pythonfmu.dll``. Our slaves never raise on bad input; they
 reject the value with an error-level message naming it (see :mod:`fmus.runtime`). Without a
-C compiler the build warns and ships pythonfmu's binary as is; bad input then gives
-``fmi2Discard`` at the next ``fmi2DoStep``. ``binaries/win64`` is pythonfmu's, untouched.
+C compiler (linux64) or without MinGW-w64 (win64) the build warns and ships pythonfmu's
+binary for that platform as is; bad input there gives ``fmi2Discard`` at the next
+``fmi2DoStep``.
 """
 from __future__ import annotations
 
@@ -174,11 +177,13 @@ def build_fmu(recipe: FmuRecipe, out: str | os.PathLike) -> pathlib.Path:
                                 default_experiment=recipe.default_experiment,
                                 log_categories=runtime.SlaveBase.log_categories)
     replace, rename = {"modelDescription.xml": xml}, {}
-    shim = status_shim.shim_or_warn()
-    if shim is not None:
-        shim_rename, shim_replace = status_shim.shim_members(recipe.model_identifier, shim)
-        rename.update(shim_rename)
-        replace.update(shim_replace)
+    for platform in status_shim.PLATFORMS:
+        shim = status_shim.shim_or_warn(platform)
+        if shim is not None:
+            shim_rename, shim_replace = status_shim.shim_members(recipe.model_identifier,
+                                                                 shim, platform)
+            rename.update(shim_rename)
+            replace.update(shim_replace)
     status_shim.rewrite_fmu(dest, replace, rename)
     return dest
 

@@ -30,6 +30,11 @@ try:
 except status_shim.ShimUnavailable as exc:  # pragma: no cover - no C compiler here
     SHIM_REASON = str(exc)
 needs_shim = pytest.mark.skipif(SHIM_REASON is not None, reason=f"no status shim: {SHIM_REASON}")
+try:
+    status_shim.shim_library("win64")
+    WIN64_REASON = None
+except status_shim.ShimUnavailable as exc:  # no MinGW-w64 here
+    WIN64_REASON = str(exc)
 
 NAN, INF = float("nan"), float("inf")
 
@@ -57,11 +62,19 @@ def test_linux64_binary_is_the_shim_in_front_of_pythonfmu(fmu_dir):
                     status_shim.shim_library().read_bytes()
                 assert z.read(f"binaries/linux64/{mid}_pythonfmu.so") == \
                     (res / "linux64" / "libpythonfmu-export.so").read_bytes()
-            # win64 stays pythonfmu's binary, untouched
-            assert z.read(f"binaries/win64/{mid}.dll") == \
-                (res / "win64" / "pythonfmu-export.dll").read_bytes()
-            assert not any(n.startswith("binaries/win64/") and n != f"binaries/win64/{mid}.dll"
-                           for n in names)
+            # win64: the same shim cross-compiled with MinGW-w64 when it is installed,
+            # otherwise pythonfmu's DLL untouched (tests/test_fmu_shim_win64.py checks both)
+            win64 = {n for n in names if n.startswith("binaries/win64/")}
+            pyfmu_dll = (res / "win64" / "pythonfmu-export.dll").read_bytes()
+            if WIN64_REASON is None:
+                assert win64 == {f"binaries/win64/{mid}.dll",
+                                 f"binaries/win64/{mid}_pythonfmu.dll"}
+                assert z.read(f"binaries/win64/{mid}.dll") == \
+                    status_shim.shim_library("win64").read_bytes()
+                assert z.read(f"binaries/win64/{mid}_pythonfmu.dll") == pyfmu_dll
+            else:
+                assert win64 == {f"binaries/win64/{mid}.dll"}
+                assert z.read(f"binaries/win64/{mid}.dll") == pyfmu_dll
         assert validate(path) == [], name
 
 

@@ -115,6 +115,14 @@ def test_install_puts_the_shim_in_front(probe_fmu):
     with zipfile.ZipFile(probe_fmu) as z:
         names = set(z.namelist())
     assert {"binaries/linux64/shimprobe.so", "binaries/linux64/shimprobe_pythonfmu.so"} <= names
+    try:  # win64 too when MinGW-w64 is installed (tests/test_fmu_shim_win64.py)
+        win64 = status_shim.shim_library("win64").read_bytes()
+    except status_shim.ShimUnavailable:
+        assert "binaries/win64/shimprobe_pythonfmu.dll" not in names
+    else:
+        with zipfile.ZipFile(probe_fmu) as z:
+            assert z.read("binaries/win64/shimprobe.dll") == win64
+        assert "binaries/win64/shimprobe_pythonfmu.dll" in names
     with pytest.raises(ValueError, match="already"):
         status_shim.install(probe_fmu)
 

@@ -9,13 +9,21 @@
  *   binaries/linux64/<modelIdentifier>.so            <- this shim (what the importer loads)
  *   binaries/linux64/<modelIdentifier>_pythonfmu.so  <- pythonfmu's libpythonfmu-export.so
  *
- * The shim dlopens the inner library next to itself (RTLD_LOCAL, so any number of FMUs load
- * into one process), forwards every FMI 2.0 co-simulation function, and gives the inner
+ * The shim loads the inner library next to itself once per process (linux64: dlopen with
+ * RTLD_LOCAL, so any number of FMUs load into one process; win64: LoadLibraryW on the full
+ * path, see load_inner), forwards every FMI 2.0 co-simulation function, and gives the inner
  * instance its own logger. That logger forwards each message unchanged to the importer's
  * logger (with the importer's componentEnvironment) and records the worst status logged
  * during the current call; each forwarded call returns max(inner status, worst logged
  * status). A slave that logs at error level and returns normally thus makes the call return
  * fmi2Error.
+ *
+ * The same file builds the win64 binary (MinGW-w64 cross compiler):
+ *
+ *   binaries/win64/<modelIdentifier>.dll             <- this shim
+ *   binaries/win64/<modelIdentifier>_pythonfmu.dll   <- pythonfmu's pythonfmu-export.dll
+ *
+ * Only the loading differs (#ifdef _WIN32 below); the forwarding is the same code.
  *
  * Logging: pythonfmu 0.7 drops every message unless logging is on, so the inner instance
  * always runs with logging on (all categories) and the shim applies the importer's
@@ -23,17 +31,33 @@
  * forwarded: they explain the status the call returns.
  *
  * Build: cc -shared -fPIC -O2 -I<dir of fmi2Functions.h> fmi2_status_shim.c -o <id>.so -ldl
+ *        x86_64-w64-mingw32-gcc -shared -O2 -static-libgcc -I<dir> fmi2_status_shim.c
+ *            -o <id>.dll   (the fmi2 functions are exported by the header's
+ *            FMI2_Export = __declspec(dllexport) on _WIN32)
  */
+#ifdef _WIN32
+#ifndef _WIN32_WINNT
+#define _WIN32_WINNT 0x0601              /* InitOnceExecuteOnce, GetModuleHandleExW */
+#endif
+#define WIN32_LEAN_AND_MEAN
+#define __USE_MINGW_ANSI_STDIO 1         /* C99 snprintf (always NUL-terminated) */
+#include <windows.h>
+#else
 #define _GNU_SOURCE
 #include <dlfcn.h>
 #include <pthread.h>
+#endif
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "fmi2Functions.h"
 
+#ifdef _WIN32
+#define INNER_SUFFIX L"_pythonfmu.dll"
+#else
 #define INNER_SUFFIX "_pythonfmu.so"
+#endif
 #define MAX_CATEGORIES 32
 #define CATEGORY_LEN 64
 
@@ -75,9 +99,7 @@ typedef struct {
 } Inner;
 
 static Inner inner;
-static void *inner_handle = NULL;
 static char inner_error[5120] = "";
-static pthread_once_t inner_once = PTHREAD_ONCE_INIT;
 
 /* the message goes out as a printf format without arguments (as pythonfmu's do) */
 static void no_percent(char *text) {
@@ -85,6 +107,87 @@ static void no_percent(char *text) {
         if (*text == '%')
             *text = '?';
 }
+
+#ifdef _WIN32
+/* -- win64: LoadLibraryW / GetProcAddress ------------------------------------------------ */
+
+#define PATH_CHARS 32768                 /* longest Windows path, in wide characters */
+
+static HMODULE inner_handle = NULL;
+static INIT_ONCE inner_once = INIT_ONCE_STATIC_INIT;
+
+/* text of GetLastError() (no trailing newline) */
+static const char *last_error_text(void) {
+    static char text[512];
+    DWORD err = GetLastError();
+    DWORD n = FormatMessageA(FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS, NULL,
+                             err, 0, text, sizeof text, NULL);
+    while (n > 0 && (text[n - 1] == '\n' || text[n - 1] == '\r' || text[n - 1] == ' '))
+        text[--n] = '\0';
+    if (n == 0)
+        snprintf(text, sizeof text, "error %lu", (unsigned long)err);
+    return text;
+}
+
+/* a wide path as UTF-8 for the log message */
+static const char *utf8(const wchar_t *w) {
+    static char text[4096];
+    if (WideCharToMultiByte(CP_UTF8, 0, w, -1, text, sizeof text, NULL, NULL) == 0)
+        snprintf(text, sizeof text, "(path not representable)");
+    return text;
+}
+
+static void *sym(const char *name) {
+    void *p = (void *)GetProcAddress(inner_handle, name);
+    if (p == NULL && inner_error[0] == '\0')
+        snprintf(inner_error, sizeof inner_error, "fmi2 status shim: %s missing in the inner "
+                 "library: %s", name, last_error_text());
+    return p;
+}
+
+/* Load <own path without .dll>_pythonfmu.dll once per process. */
+static int load_inner_path(void) {
+    static wchar_t path[PATH_CHARS];
+    HMODULE self = NULL;
+    DWORD n;
+    /* this DLL's own module (its folder is the FMU's binaries/win64), not the host's */
+    if (!GetModuleHandleExW(GET_MODULE_HANDLE_EX_FLAG_FROM_ADDRESS |
+                                GET_MODULE_HANDLE_EX_FLAG_UNCHANGED_REFCOUNT,
+                            (LPCWSTR)(void *)&load_inner_path, &self)) {
+        snprintf(inner_error, sizeof inner_error, "fmi2 status shim: GetModuleHandleExW "
+                 "failed: %s", last_error_text());
+        return 0;
+    }
+    n = GetModuleFileNameW(self, path, PATH_CHARS);
+    if (n == 0 || n >= PATH_CHARS) {
+        snprintf(inner_error, sizeof inner_error, "fmi2 status shim: GetModuleFileNameW "
+                 "failed: %s", last_error_text());
+        return 0;
+    }
+    if (n < 4 || _wcsicmp(path + n - 4, L".dll") != 0 ||
+        n - 4 + sizeof INNER_SUFFIX / sizeof(wchar_t) > PATH_CHARS) {
+        snprintf(inner_error, sizeof inner_error, "fmi2 status shim: unexpected library "
+                 "path %s", utf8(path));
+        return 0;
+    }
+    memcpy(path + n - 4, INNER_SUFFIX, sizeof INNER_SUFFIX);
+    /* LoadLibraryW with the full path: the inner library's own imports (python3.dll) are
+     * found by the standard search order, which starts at the host's folder (python.exe's,
+     * where python3.dll lives) and ends on PATH - as when the host loads it directly */
+    inner_handle = LoadLibraryW(path);
+    if (inner_handle == NULL) {
+        snprintf(inner_error, sizeof inner_error, "fmi2 status shim: cannot load %s: %s",
+                 utf8(path), last_error_text());
+        return 0;
+    }
+    return 1;
+}
+
+#else
+/* -- linux64: dlopen / dlsym ----------------------------------------------------------- */
+
+static void *inner_handle = NULL;
+static pthread_once_t inner_once = PTHREAD_ONCE_INIT;
 
 static void *sym(const char *name) {
     void *p = dlsym(inner_handle, name);
@@ -95,20 +198,20 @@ static void *sym(const char *name) {
 }
 
 /* Load <own path without .so>_pythonfmu.so once per process. */
-static void load_inner(void) {
+static int load_inner_path(void) {
     Dl_info info;
     char path[4096];
     size_t n;
-    if (!dladdr((void *)&load_inner, &info) || info.dli_fname == NULL) {
+    if (!dladdr((void *)&load_inner_path, &info) || info.dli_fname == NULL) {
         snprintf(inner_error, sizeof inner_error, "fmi2 status shim: dladdr failed");
-        return;
+        return 0;
     }
     n = strlen(info.dli_fname);
     if (n < 3 || strcmp(info.dli_fname + n - 3, ".so") != 0 ||
         n - 3 + sizeof INNER_SUFFIX > sizeof path) {
         snprintf(inner_error, sizeof inner_error, "fmi2 status shim: unexpected library "
                  "path %s", info.dli_fname);
-        return;
+        return 0;
     }
     memcpy(path, info.dli_fname, n - 3);
     memcpy(path + n - 3, INNER_SUFFIX, sizeof INNER_SUFFIX);
@@ -117,8 +220,15 @@ static void load_inner(void) {
     if (inner_handle == NULL) {
         snprintf(inner_error, sizeof inner_error, "fmi2 status shim: cannot load %s: %s",
                  path, dlerror());
-        return;
+        return 0;
     }
+    return 1;
+}
+#endif
+
+static void load_inner(void) {
+    if (!load_inner_path())
+        return;
 #define LOAD(f) inner.f = (fmi2##f##TYPE *)sym("fmi2" #f)
     LOAD(SetDebugLogging); LOAD(Instantiate); LOAD(FreeInstance); LOAD(SetupExperiment);
     LOAD(EnterInitializationMode); LOAD(ExitInitializationMode); LOAD(Terminate); LOAD(Reset);
@@ -137,12 +247,34 @@ static void load_inner_once(void) {
     no_percent(inner_error);
 }
 
+#ifdef _WIN32
+static BOOL CALLBACK load_inner_once_cb(PINIT_ONCE once, PVOID param, PVOID *context) {
+    (void)once; (void)param; (void)context;
+    load_inner_once();
+    return TRUE;
+}
+#define LOAD_INNER_ONCE() InitOnceExecuteOnce(&inner_once, load_inner_once_cb, NULL, NULL)
+
+BOOL WINAPI DllMain(HINSTANCE self, DWORD reason, LPVOID reserved) {
+    (void)self;
+    /* the importer unloads this library (FreeLibrary: reserved == NULL): unload the inner
+     * one with it, as it would have; at process exit the system unloads both */
+    if (reason == DLL_PROCESS_DETACH && reserved == NULL && inner_handle != NULL) {
+        FreeLibrary(inner_handle);
+        inner_handle = NULL;
+    }
+    return TRUE;
+}
+#else
+#define LOAD_INNER_ONCE() pthread_once(&inner_once, load_inner_once)
+
 __attribute__((destructor)) static void unload_inner(void) {
     /* the importer unloads this library: unload the inner one with it, as it would have */
     if (inner_handle != NULL)
         dlclose(inner_handle);
     inner_handle = NULL;
 }
+#endif
 
 /* -- per-instance record ---------------------------------------------------------------- */
 
@@ -234,7 +366,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
                               const fmi2CallbackFunctions *functions, fmi2Boolean visible,
                               fmi2Boolean loggingOn) {
     Shim *s;
-    pthread_once(&inner_once, load_inner_once);
+    LOAD_INNER_ONCE();
     if (functions == NULL)
         return NULL;
     if (inner_handle == NULL || inner_error[0] != '\0') {

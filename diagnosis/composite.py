@@ -17,9 +17,28 @@ from identification.space import ParameterSpace
 
 from .effects import Candidate, Context
 
-__all__ = ["Composite", "fit_composite"]
+__all__ = ["Composite", "fit_composite", "law_space", "STATIC_LEVELS", "STATIC_LEVEL_SPAN"]
 
 _STAGE_ORDER = {"modify_law": 0, "multiplicative": 1, "additive": 2, "shift": 3}
+
+#: static (break-away) levels of the LuGre family and how far above the data's force scale
+#: (99th percentile of |F|) their box reaches [-]. The identification box stops at 2 x that
+#: scale, which assumes the data show the level; a record that sticks and creeps far below
+#: vs (the forging press) never loads the bristles up to it, yet its held-out part depends
+#: on it through the bristle rate sigma0 |v| / g(v)
+STATIC_LEVELS = ("Fs", "Fs_neg", "Fs0")
+STATIC_LEVEL_SPAN = 10.0
+
+
+def law_space(law, names, fit) -> ParameterSpace:
+    """Search box of the base law's parameters in a joint fit: the identification box with
+    the static levels reaching :data:`STATIC_LEVEL_SPAN` x the force scale of ``fit``."""
+    sF = float(np.percentile(np.abs(fit.F), 99))
+    space = ParameterSpace.build(law, names, data=fit)
+    for j, n in enumerate(names):
+        if n in STATIC_LEVELS and sF > 0:
+            space.upper[j] = max(space.upper[j], STATIC_LEVEL_SPAN * sF)
+    return space
 
 
 @dataclass
@@ -81,10 +100,10 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
 
     Returns the fitted composite and its fit NRMSE. ``law``'s current values start the search.
     """
-    space = ParameterSpace.build(law, base_names, data=fit)
+    space = law_space(law, base_names, fit)
     u_law0 = np.clip(space.to_unit(np.array([getattr(law.params, n) for n in base_names])),
                      0.0, 1.0)
-    ex = [e for eff in effects for e in eff.extras(ctx)]
+    ex = [e for eff in effects for e in eff.force_extras(ctx)]
     lo = np.array([e.lo for e in ex])
     hi = np.array([e.hi for e in ex])
     x_ex0 = np.array([(extras0 or {}).get(e.name, e.x0) for e in ex])
@@ -116,10 +135,11 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
             return np.full(r.size, 1e3)
         return r
 
-    # a time shift is non-convex: start from the best point of a coarse grid
+    # a time shift or a filter time constant is non-convex (or flat at 0): start from the
+    # best point of a coarse grid
     for j, e in enumerate(ex):
-        if e.name == "delay":
-            grid = np.linspace(0.0, 1.0, 51)
+        if e.grid:
+            grid = np.linspace(0.0, 1.0, e.grid)
             costs = []
             for g in grid:
                 u = u0.copy()

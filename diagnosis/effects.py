@@ -13,13 +13,16 @@ Every candidate changes the model in one of four ways, applied in this order:
 
 so candidates compose: the greedy sequence of :mod:`diagnosis.core` stacks them.
 Each candidate declares its own parameters with a physical box computed from the fit data
-(``context``), so no candidate has a free scale an optimiser could abuse.
+(``context``), so no candidate has a free scale an optimiser could abuse: ``extras`` are those
+of the effect's formula at every level, ``force_extras`` add what measured friction data need
+(the filter of a differentiated acceleration channel, the load slope of the viscous part).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.signal import lfilter
 
 from friction import make_model
 
@@ -58,12 +61,18 @@ def make_context(fit) -> Context:
 
 @dataclass
 class Extra:
-    """One extra parameter of a candidate: name, start value and box (physical units)."""
+    """One extra parameter of a candidate: name, start value and box (physical units).
+
+    ``grid`` > 0: the fit starts from the best of that many evenly spaced values over the box
+    (for parameters the residual is not convex in, or whose gradient vanishes at the start,
+    such as a time shift or a filter time constant at 0).
+    """
     name: str
     x0: float
     lo: float
     hi: float
     unit: str = ""
+    grid: int = 0
 
 
 @dataclass
@@ -82,7 +91,14 @@ class Candidate:
         return [(law, list(base_names))]
 
     def extras(self, ctx: Context) -> list[Extra]:
+        """Parameters of the effect's formula at every level (the trajectory level's
+        :class:`diagnosis.effect_law.EffectLaw` implements exactly these)."""
         return []
+
+    def force_extras(self, ctx: Context) -> list[Extra]:
+        """All parameters fitted at the force level: :meth:`extras` plus those only measured
+        friction data need (their zero, the default of :meth:`apply`, is the plain formula)."""
+        return self.extras(ctx)
 
     def apply(self, F, p: dict, data, ctx: Context) -> np.ndarray:
         return F
@@ -97,15 +113,43 @@ def _sig_neg(v, ctx):
     return 0.5 * (1.0 - np.tanh(v / (0.02 * ctx.sv)))
 
 
+#: longest time constant of the acceleration filters of ``acceleration`` and ``inertia``
+#: [samples]: a measured acceleration is differentiated and filtered, and at a low sample
+#: rate (the press's 100 Hz) it chatters from sample to sample during fast events
+MAX_FILTER_SAMPLES = 8
+
+
+def _first_order(u, dt, tau):
+    """Causal first-order lag tau dy/dt + y = u (step-invariant, starts settled)."""
+    if tau <= 0.0:
+        return u
+    e = np.exp(-dt / tau)
+    return lfilter([1.0 - e], [1.0, -e], u, zi=[u[0] * e])[0]
+
+
+def _zero_phase(u, dt, tau):
+    """The first-order lag run forward and backward: smoothing without a time shift."""
+    if tau <= 0.0:
+        return u
+    return _first_order(_first_order(u, dt, tau)[::-1], dt, tau)[::-1]
+
+
 class Acceleration(Candidate):
     def extras(self, ctx):
         return [Extra("f_a", 0.0, -ctx.sF, ctx.sF, "N"),
                 Extra("a_s", 0.3 * ctx.sa, 0.02 * ctx.sa, 3 * ctx.sa, "m/s^2"),
                 Extra("v_c", ctx.sv, 0.05 * ctx.sv, 20 * ctx.sv, "m/s")]
 
+    def force_extras(self, ctx):
+        # the frictional lag of seed 000, acting on the acceleration the part responds to;
+        # started at one sample (at 0 the residual is flat in it)
+        lag = Extra("tau_lag", ctx.dt, 0.0, MAX_FILTER_SAMPLES * ctx.dt, "s")
+        return self.extras(ctx) + [lag]
+
     def apply(self, F, p, data, ctx):
         # acceleration-dependent part (seed 000): grows with |a|, fades with |v|, zero at a = 0
-        return F + p["f_a"] * np.tanh(data.a / p["a_s"]) * np.exp(-np.abs(data.v) / p["v_c"])
+        af = _first_order(data.a, data.dt, p.get("tau_lag", 0.0))
+        return F + p["f_a"] * np.tanh(af / p["a_s"]) * np.exp(-np.abs(data.v) / p["v_c"])
 
 
 class Load(Candidate):
@@ -123,11 +167,20 @@ class Load(Candidate):
         k_lo = -min(1.0, 0.9 * ctx.L0 / max(ctx.L_hi - ctx.L0, 1e-12 * ctx.L0))
         return [Extra("k_L", 0.0, k_lo, 1.0, "1")]
 
+    def force_extras(self, ctx):
+        # seed 004 gives the viscous coefficient its own load slope (k3 of Eq. 11; on the
+        # press it is most of the load effect), so the level factor alone cannot carry it
+        s = 2.0 * ctx.sF / ctx.sv
+        return self.extras(ctx) + [Extra("k_v", 0.0, -s, s, "N.s/m")]
+
     def apply(self, F, p, data, ctx):
         # friction levels affine in the normal load (seed 004 Eqs. 9-11), relative to the
-        # fit data's mean load: F (1 + k_L (L - L0) / L0), never of the opposite sign
-        factor = 1.0 + p["k_L"] * (data.load - ctx.L0) / ctx.L0
-        return F * np.clip(factor, 0.0, None)
+        # fit data's mean load: F (1 + k_L (L - L0) / L0), never of the opposite sign, plus
+        # a viscous part k_v v (L - L0) / L0
+        rel = (data.load - ctx.L0) / ctx.L0
+        F = F * np.clip(1.0 + p["k_L"] * rel, 0.0, None)
+        k_v = p.get("k_v", 0.0)
+        return F + k_v * rel * data.v if k_v else F
 
 
 class Drift(Candidate):
@@ -196,9 +249,15 @@ class Inertia(Candidate):
         m = ctx.sF / ctx.sa
         return [Extra("dm", 0.0, -m, m, "kg")]
 
+    def force_extras(self, ctx):
+        # the inverse dynamics smooths the acceleration it uses offline (zero phase), the a
+        # column of the data may not be; started at one sample (at 0 the residual is flat)
+        smooth = Extra("tau_af", ctx.dt, 0.0, MAX_FILTER_SAMPLES * ctx.dt, "s")
+        return self.extras(ctx) + [smooth]
+
     def apply(self, F, p, data, ctx):
         # mass error of the inverse dynamics leaks dm * a into the "measured" friction
-        return F + p["dm"] * data.a
+        return F + p["dm"] * _zero_phase(data.a, data.dt, p.get("tau_af", 0.0))
 
 
 class Delay(Candidate):
@@ -206,7 +265,7 @@ class Delay(Candidate):
 
     def extras(self, ctx):
         d = self.MAX_SAMPLES * ctx.dt
-        return [Extra("delay", 0.0, -d, d, "s")]
+        return [Extra("delay", 0.0, -d, d, "s", grid=51)]
 
     def apply(self, F, p, data, ctx):
         # the force channel lags (delay > 0) the motion channels

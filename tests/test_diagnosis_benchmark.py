@@ -7,6 +7,7 @@ from diagnosis import diagnose
 from diagnosis.benchmark import (EFFECT_SIZE, PLANT_NAMES, _bump_centre, make_case,
                                  make_plant_case, localise, plant_kinematics, run_benchmark,
                                  truth_shrink)
+from friction import make_model
 from friction.metrics import nrmse
 
 
@@ -51,6 +52,86 @@ def test_bad_plant_or_effect_named():
 def test_plant_case_gets_the_right_name(plant, effect):
     rep = _diagnose(make_plant_case(plant, effect, 1.0, 0.02, seed=5, quick=True))
     assert rep["verdict"]["cause"] == effect
+
+
+# -- candidate forms the plant data need ------------------------------------------------------
+def _chatter_data(n=2000, dt=1e-2):
+    t = np.arange(n) * dt
+    slow = np.sin(2 * np.pi * 0.5 * t)
+    a = slow + 0.8 * (-1.0) ** np.arange(n)  # Nyquist chatter on a slow acceleration
+    v = np.cumsum(slow) * dt + 1e-3
+    from friction.dataset import Dataset
+    return Dataset(t=t, x=np.cumsum(v) * dt, v=v, a=a, F=np.ones(n)), slow
+
+
+def test_inertia_and_acceleration_filter_the_acceleration_channel():
+    from diagnosis.effects import CANDIDATES, make_context
+    data, slow = _chatter_data()
+    ctx = make_context(data)
+    F0 = np.zeros(len(data))
+    inertia, acc = CANDIDATES["inertia"], CANDIDATES["acceleration"]
+    # without the filter (the trajectory level's formula): dm times the a column
+    np.testing.assert_allclose(inertia.apply(F0, {"dm": 2.0}, data, ctx), 2.0 * data.a)
+    assert {e.name for e in inertia.force_extras(ctx)} == {"dm", "tau_af"}
+    # the zero-phase filter removes the chatter and keeps the slow part where it is
+    y = inertia.apply(F0, {"dm": 1.0, "tau_af": 2 * data.dt}, data, ctx)
+    core = slice(100, -100)
+    chatter_left = np.std(np.diff(y[core], 2)) / np.std(np.diff(data.a[core], 2))
+    assert chatter_left < 0.1
+    lags = np.arange(-5, 6)
+    xc = [np.dot(np.roll(y, k)[core], slow[core]) for k in lags]
+    assert lags[int(np.argmax(xc))] == 0
+    # the frictional lag of the acceleration part is causal: nothing before an impulse
+    imp = data.__class__(t=data.t, x=data.x, v=np.full(len(data), 1e-9),
+                         a=np.where(np.arange(len(data)) == 1000, 5.0, 0.0), F=data.F)
+    y = acc.apply(F0, {"f_a": 1.0, "a_s": 1.0, "v_c": 1.0, "tau_lag": 3 * data.dt}, imp, ctx)
+    assert np.all(y[:1000] == 0.0) and y[1000] > 0 and 0 < y[1003] < y[1000]
+
+
+def test_static_level_box_reaches_beyond_the_measured_forces():
+    # a record that sticks and creeps (the press) never loads the bristles up to the static
+    # level, so the joint fit's box for Fs reaches past the identification's 2 x |F|99
+    from diagnosis.composite import STATIC_LEVEL_SPAN, law_space
+    from identification.space import ParameterSpace
+    from friction.dataset import Dataset
+    d = make_case("clean", 1.0, 0.01, n=3000)
+    # forces of 1e4 N: beyond the law's metadata ranges, as on the press
+    fit, _ = Dataset(t=d.t, x=d.x, v=d.v, a=d.a, F=1e4 * d.F).split(0.7)
+    law = make_model("lugre", Fc=2e4, Fs=2.8e4)
+    names = ["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs"]
+    ident = ParameterSpace.build(law, names, data=fit)
+    joint = law_space(law, names, fit)
+    j = names.index("Fs")
+    assert joint.upper[j] == pytest.approx(STATIC_LEVEL_SPAN * np.percentile(np.abs(fit.F), 99))
+    assert joint.upper[j] > 4 * ident.upper[j]
+    others = [k for k in range(len(names)) if k != j]
+    np.testing.assert_array_equal(joint.upper[others], ident.upper[others])
+    np.testing.assert_array_equal(joint.lower, ident.lower)
+
+
+# the forging press: forces of 1e5 N, speeds of mm/s, an acceleration channel sampled at
+# 100 Hz that chatters from sample to sample during slips, a static level the creeping beam
+# never loads its bristles up to, and a load effect that is mostly viscous (seed 004 Table 3)
+# (the press simulation alone takes 30-90 s: slow tests)
+@pytest.mark.slow
+@pytest.mark.parametrize("effect", ["acceleration", "inertia"])
+def test_press_acceleration_and_inertia_cases_get_the_right_name(effect):
+    c = make_plant_case("forging_press", effect, 1.0, 0.01, seed=11)
+    rep = _diagnose(c)
+    assert rep["verdict"]["cause"] == effect
+    sh = truth_shrink(c.data, c.truth, rep)
+    assert sh["reported"] > 0.6 and abs(sh["error"]) < 0.3
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("effect,strength", [("load", 0.5), ("load", 1.0),
+                                             ("stribeck_shape", 1.0), ("inertia", 0.5),
+                                             ("acceleration", 0.5)])
+def test_press_cases_named_at_low_noise(effect, strength):
+    c = make_plant_case("forging_press", effect, strength, 0.01, seed=12)
+    rep = _diagnose(c)
+    assert rep["verdict"]["cause"] == effect
+    assert abs(truth_shrink(c.data, c.truth, rep)["error"]) < 0.3
 
 
 @pytest.mark.parametrize("plant", ["xml350", "mre_isolator"])

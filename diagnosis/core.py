@@ -336,7 +336,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         effects.append({"name": name, "validation_before": before, "validation_after": after,
                         "gap_closed": (before - after) / before if before > 0 else 0.0,
                         "excess_closed": (before - after) / max(before - floor, 1e-12),
-                        "n_params": len(cand.extras(ctx)) + max(len(comp.base_names)
+                        "n_params": len(cand.force_extras(ctx)) + max(len(comp.base_names)
                                                                  - len(base_names), 0),
                         "fit_before": base_fit, "fit_after": cost,
                         "fitted": comp.describe()})

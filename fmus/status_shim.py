@@ -114,8 +114,10 @@ _FLAGS = ["-shared", "-fPIC", "-O2", "-fvisibility=hidden", "-Wall"]
 _LIBS = ["-ldl", "-lpthread"]
 # win64: the fmi2 functions are exported by the header's FMI2_Export (__declspec(dllexport));
 # libgcc linked in, so the DLL needs only KERNEL32 and msvcrt (present on every Windows);
-# no link timestamp, so the same source gives the same bytes
-_WIN64_FLAGS = ["-shared", "-O2", "-Wall", "-static-libgcc", "-Wl,--no-insert-timestamp"]
+# no link timestamp and no image base hashed from the file name: the same source gives the
+# same bytes (the output's file name, in the export table, is fixed too: see shim_library)
+_WIN64_FLAGS = ["-shared", "-O2", "-Wall", "-static-libgcc", "-Wl,--no-insert-timestamp",
+                "-Wl,--disable-auto-image-base"]
 _WIN64_LIBS: list[str] = []
 
 
@@ -158,17 +160,20 @@ def shim_library(platform: str = PLATFORM) -> pathlib.Path:
             return lib
         try:
             cache.mkdir(parents=True, exist_ok=True)
-            fd, tmp = tempfile.mkstemp(suffix=ext, dir=cache)
-            os.close(fd)
+            tmpdir = tempfile.mkdtemp(dir=cache)
         except OSError:
             continue  # cache not writable: try the next place
-        cmd = cc + flags + [f"-I{headers}", str(SOURCE), "-o", tmp] + libs
-        proc = subprocess.run(cmd, capture_output=True, text=True)
-        if proc.returncode != 0:
-            os.unlink(tmp)
-            raise ShimUnavailable(f"compiling the {platform} status shim failed "
-                                  f"({' '.join(cmd)}): {proc.stderr.strip()[-1500:]}")
-        os.replace(tmp, lib)  # atomic: concurrent builds see a complete file
+        try:
+            # a fixed output name: a DLL records it in its export table
+            tmp = os.path.join(tmpdir, f"fmi2_status_shim{ext}")
+            cmd = cc + flags + [f"-I{headers}", str(SOURCE), "-o", tmp] + libs
+            proc = subprocess.run(cmd, capture_output=True, text=True)
+            if proc.returncode != 0:
+                raise ShimUnavailable(f"compiling the {platform} status shim failed "
+                                      f"({' '.join(cmd)}): {proc.stderr.strip()[-1500:]}")
+            os.replace(tmp, lib)  # atomic: concurrent builds see a complete file
+        finally:
+            shutil.rmtree(tmpdir, ignore_errors=True)
         return lib
     raise ShimUnavailable("no writable cache folder for the compiled shim")
 

@@ -12,12 +12,10 @@ and sets ``summary["cosim_vs_reference"] = {plant: nrmse}`` (the contract's shap
 of the plant's two laws) and ``summary["cosim_vs_reference_by_law"] = {plant: {law: {...}}}``:
 for each plant with the classic LuGre and with its own seed's law, the NRMSE of the main
 output at the data rate
-(``step`` = the data period, or the controller period when faster) with the linearly
-implicit coupling, the observed order as that step halves, ``meets_tol_at_data_rate``
-(tolerance 1e-3), and, where the data rate does not meet it, ``fallback``: the finer
-communication step (labelled) that does. Where the controller samples faster than the data
-(the press), ``coarse_steps``/``coarse_errors``/``coarse_order`` add the steps from the data
-period down to the controller period (the order above the integrators' error floor). Also ``summary["cosim_vs_reference_detail"]``,
+(``step`` = the data period, also for the press whose 1 kHz controller runs inside its
+100 Hz step) with the linearly implicit coupling, the observed order as that step halves,
+``meets_tol_at_data_rate`` (tolerance 1e-3), and, where the data rate does not meet it,
+``fallback``: the finer communication step (labelled) that does. Also ``summary["cosim_vs_reference_detail"]``,
 ``summary["cosim_mass_friction"]``, ``summary["xml350_from_parts"]`` (the loop assembled
 from five part FMUs) and ``summary["fmus"]``.
 """

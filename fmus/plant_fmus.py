@@ -33,14 +33,19 @@ its local linearisation over the coming step (``runtime.law_linearisation``; par
   of both regimes. Without this the law at the 10 ms data period of the press linearises
   across the jump and the loop rings between the regimes (3.6e-3 over 2 s).
 
+The plant also outputs ``v_mean`` (travel over the step / step) and the law FMU advances its
+state with it (parameter ``use_v_mean``, set with Gauss-Seidel): the state then follows the
+travel the plant really made, not the trapezoid of the end-point velocities, which aliases
+the bristle-mass mode inside a long step (the press at 10 ms went unstable while its bristle
+re-deflects during the 0.002 mm/s creep).
+
 The plant FMU integrates its step with
 ``F(t) = F_k + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k) + R(t - t_k)`` (``R`` the residual
 above), so the stiff part of the contact is resolved inside the plant's own substeps
 (``plants.base.PlantStepper``). With Gauss-Seidel (plant first) the law advances its state
 with its inputs at both ends of the step (parameter ``inputs_at_step_end``).
 
-:func:`plant_proof` runs that loop with our master at the plant's data rate (the controller
-rate when it is faster) and compares the main output with
+:func:`plant_proof` runs that loop with our master at the plant's data rate and compares the main output with
 ``Plant(friction=law).simulate(method="reference")`` (monolithic ``solve_ivp``), for the
 classic LuGre and for the plant's own seed law.
 """
@@ -156,6 +161,8 @@ def plant_connections(plant_cls, law_cls, coupling: str = "hold") -> list[tuple[
     conns = [("plant.v", "friction.v"), ("friction.F", "plant.F_friction")]
     if coupling == "linearised":
         conns += [(f"friction.{n}", f"plant.{n}") for n in runtime.COUPLING_OUTPUTS]
+        if law_cls.state_names:   # the law's state follows the plant's travel
+            conns.append((f"plant.{runtime.MEAN_INPUT}", f"friction.{runtime.MEAN_INPUT}"))
         if runtime.has_switch(law_cls):   # coefficients jump at |v| = v_switch
             conns += [(f"friction.{n}", f"plant.{n}") for n in runtime.SWITCH_OUTPUTS]
             conns.append((f"plant.{runtime.SHARE_INPUT}", f"friction.{runtime.SHARE_INPUT}"))
@@ -246,6 +253,8 @@ def plant_master(fmu_dir, plant_name: str, law, *, algorithm: str = "gauss-seide
         params["h_lin"] = float(step if step is not None else data_step(cls))
         # Gauss-Seidel, plant first: the law's inputs at its step are those at the end
         params["inputs_at_step_end"] = algorithm == "gauss-seidel"
+        if law.state_names:  # plant.v_mean of the same step (Gauss-Seidel, plant first)
+            params["use_v_mean"] = algorithm == "gauss-seidel"
     return Master(fmus, plant_connections(cls, type(law), coupling), algorithm=algorithm,
                   parameters={"friction": params}, iterations=iterations,
                   record=record or [f"plant.{main}", "friction.F"])
@@ -257,12 +266,10 @@ MAX_COUPLING_STEP = 1e-4
 
 
 def data_step(plant_cls) -> float:
-    """The plant's data period, or its controller period when the controller samples faster
-    [s]: the communication step of the proof at the data rate."""
-    h = 1.0 / plant_cls.data_rate
-    if plant_cls.control_rate:
-        h = min(h, 1.0 / plant_cls.control_rate)
-    return h
+    """The plant's data period 1 / data_rate [s]: the communication step of the proof at the
+    data rate. A controller sampling faster (the press: 1 kHz under 100 Hz data) runs at its
+    own instants inside the plant FMU's step."""
+    return 1.0 / plant_cls.data_rate
 
 
 def coupling_step(plant_cls, max_step: float | None = MAX_COUPLING_STEP) -> float:

@@ -192,6 +192,13 @@ def law_variables(model_cls, probe: bool = False) -> list[Var]:
         unit, desc = INPUT_INFO[n]
         vs.append(Var(n, "input", "Real", 0.0, unit, f"{desc} [{unit}]"))
     switching = has_switch(model_cls)
+    if model_cls.state_names:
+        vs.append(Var(MEAN_INPUT, "input", "Real", 0.0, "m/s",
+                      "mean velocity over the last step, travel / step (connect plant.v_mean; "
+                      "used with use_v_mean) [m/s]"))
+        vs.append(Var("use_v_mean", "parameter", "Boolean", False, "",
+                      "advance the state over a step with the input v_mean (the plant's "
+                      "travel) instead of the velocities at both ends"))
     if switching:
         vs.append(Var(SHARE_INPUT, "input", "Real", -1.0, "1",
                       "share of the last step the plant spent below v_switch (connect "
@@ -217,6 +224,8 @@ COUPLING_OUTPUTS = ("dF_dx", "dF_dv", "dF_dt", "d2F_dt2", "t_kink", "dF_dt_kink"
 #: spent below it
 SWITCH_OUTPUTS = ("v_switch", "dF_switch", "dF_dx_switch", "dF_dv_switch")
 SHARE_INPUT = "low_share"
+#: law input / plant output: mean velocity over the last step (the plant's travel / step)
+MEAN_INPUT = "v_mean"
 
 
 def has_switch(model_cls) -> bool:
@@ -406,7 +415,7 @@ def switch_linearisation(kernel, thetas: dict, vc: float, state, inputs: dict, h
     return tuple(lin) + (vc, F_other - F_side, K2 - lin[0], D2 - lin[1])
 
 
-__all__ += ["COUPLING_OUTPUTS", "SWITCH_OUTPUTS", "SHARE_INPUT", "has_switch",
+__all__ += ["COUPLING_OUTPUTS", "SWITCH_OUTPUTS", "SHARE_INPUT", "MEAN_INPUT", "has_switch",
             "coupling_variables", "law_linearisation", "switch_linearisation",
             "plant_coupling_inputs"]
 
@@ -480,8 +489,11 @@ def plant_variables(plant_cls, probe: bool = False) -> list[Var]:
                                           "the friction law's v_switch (a sliding stretch "
                                           "with its Filippov weight; connect to "
                                           "friction.low_share)"))
+    signals.setdefault(MEAN_INPUT, ("m/s", "mean contact velocity over the last communication "
+                                          "step, travel / step (connect to friction.v_mean)"))
     outs = plant.all_output_names + tuple(
-        n for n in getattr(plant.stepper(), "output_names", ()) if n == SHARE_INPUT)
+        n for n in getattr(plant.stepper(), "output_names", ()) if n in (SHARE_INPUT,
+                                                                         MEAN_INPUT))
     for n in outs:
         unit, desc = signals.get(n, ("", n))
         vs.append(Var(n, "output", "Real", None, unit, desc + (f" [{unit}]" if unit else ""),
@@ -822,7 +834,7 @@ class LawSlave(SlaveBase):
     def rebuild(self, initial):
         cls = self.model_class()
         values = self.param_values()
-        for name in ("h_lin", "inputs_at_step_end"):  # the coupling's, not the law's
+        for name in ("h_lin", "inputs_at_step_end", "use_v_mean"):  # the coupling's
             values.pop(name, None)
         model = cls(cls.Params(**values))
         self.model = model
@@ -857,6 +869,8 @@ class LawSlave(SlaveBase):
         self.lin_zeroed = False  # h_lin = 0: the coupling outputs are written once
         self.h_lin = float(self.values[self.index["h_lin"]])
         self.foh = bool(self.values[self.index["inputs_at_step_end"]])
+        self.mean_idx = (self.index[MEAN_INPUT]
+                         if cls.state_names and self.values[self.index["use_v_mean"]] else None)
         if initial or not hasattr(self, "last_in"):
             self.last_in = None    # inputs at the last communication point
             self.slope_v = 0.0     # dv/dt at the last input sample [m/s^2]
@@ -922,6 +936,13 @@ class LawSlave(SlaveBase):
             self.last_in = now
         self.stepped = True
         self.t2[1] = h
+        v_end = None
+        if self.mean_idx is not None:
+            # the state follows the plant's travel over the step (mean velocity held); the
+            # force at the end still sees the velocity at the end
+            vbuf = self.buf2["v"]
+            v_end = vbuf[1]
+            vbuf.fill(self.values[self.mean_idx])
         share = self.values[self.share_idx] if self.switch is not None else -1.0
         if share >= 0.0:
             # the plant says which share of the step lay below v_switch (sliding along it
@@ -933,6 +954,9 @@ class LawSlave(SlaveBase):
             F = np.array([0.0, self.kernel(*self.args1, self.theta, 0, S[1])[0].item(0)])
         else:
             F, S = self.kernel(*self.args2, self.theta, 0, self.state)
+            if v_end is not None:
+                self._fill(self.fill1)
+                F = np.array([0.0, self.kernel(*self.args1, self.theta, 0, S[1])[0].item(0)])
         new = S[1].tolist()
         for j, zj in enumerate(new):
             if zj - zj != 0.0:  # inf or NaN: the state is kept as it was

@@ -697,6 +697,10 @@ class PlantStepper:
     of being held over the communication step; the substep shrinks so that the explicit
     integrator stays stable against that stiffness. All default to 0 (force held).
 
+    The output ``v_mean`` [m/s] (travel over the last step / step) lets the law FMU advance
+    its state with the plant's real travel instead of the end-point velocities (which alias
+    the contact's fast motion inside a long step).
+
     A law whose coefficients jump at |v| = ``v_switch`` [m/s] (``load_lugre``) adds the
     other side's linearisation: where |v(t)| lies on the other side of ``v_switch`` than
     ``v_k``, ``F`` gains ``dF_switch + dF_dx_switch (x - x_k) + dF_dv_switch (v - v_k)``
@@ -721,6 +725,9 @@ class PlantStepper:
     #: output of the coupling (external friction mode): share of the last step spent on the
     #: low side of |v| = v_switch (a sliding stretch counts with its Filippov weight)
     SHARE_OUTPUT = "low_share"
+    #: output of the coupling (external friction mode): mean contact velocity over the last
+    #: step, travel / step [m/s] (the law advances its state with the plant's real travel)
+    MEAN_OUTPUT = "v_mean"
 
     def __init__(self, plant: Plant, *, substep: float | None = None, start: float = 0.0,
                  friction_method: str = "exact"):
@@ -728,7 +735,7 @@ class PlantStepper:
         self.coupling_names = self.COUPLING_INPUTS if plant.external_friction else ()
         self.input_names = plant.all_input_names
         self.output_names = plant.all_output_names + (
-            (self.SHARE_OUTPUT,) if plant.external_friction else ())
+            (self.SHARE_OUTPUT, self.MEAN_OUTPUT) if plant.external_friction else ())
         self.parameter_names = plant.parameter_names
         self.substep = float(substep or plant.max_substep)
         if not self.substep > 0:
@@ -763,6 +770,7 @@ class PlantStepper:
         self._lin_ref = None    # (F_k, x_k, v_k, substep) of the current step when linearised
         self._mode = None       # regime held by the substeps: "low", "high" or "slide"
         self._low_share = 0.0   # share of the last step on the low side (Filippov weighted)
+        self._v_mean = 0.0      # travel / step of the last step [m/s]
         Ts = p._sample_period()
         self._Ts = Ts
         self._k = 0  # index of the next sample instant
@@ -794,6 +802,7 @@ class PlantStepper:
             out["F"] = self._F
         else:
             out[self.SHARE_OUTPUT] = self._low_share
+            out[self.MEAN_OUTPUT] = self._v_mean
         return out
 
     def do_step(self, t: float, h: float) -> bool:
@@ -807,6 +816,8 @@ class PlantStepper:
         tc = self.time
         self._lin_ref = None
         self._t_low = 0.0
+        x_start = self.plant.contact(tc, self.s, self.d, self.u)[0] if self.fric is None \
+            else 0.0
         if self.fric is None and any(c != 0.0 for c in self._lin):
             x_k, v_k, _ = self.plant.contact(tc, self.s, self.d, self.u)
             self._lin_ref = (self.u["F_friction"], float(x_k), float(v_k),
@@ -823,6 +834,8 @@ class PlantStepper:
             self._sample_due(tc)
         self.time = t_end
         self._low_share = min(1.0, max(0.0, self._t_low / h))
+        if self.fric is None:
+            self._v_mean = (self.plant.contact(t_end, self.s, self.d, self.u)[0] - x_start) / h
         return True
 
     # -- internals ---------------------------------------------------------------------------

@@ -25,14 +25,14 @@ Bad input: a NaN/inf on any input or parameter, or a parameter outside its bound
 stored: ``set_real`` logs it at error level naming the variable and its bound and keeps the
 previous value, so ``fmi2SetReal`` returns ``fmi2Error`` and the instance keeps working. The
 status comes from the FMU's status shim (``fmus/shim``, in front of pythonfmu's binary on
-linux64): a call during which the slave logged an error returns ``fmi2Error``. The slaves never
+linux64 and win64): a call during which the slave logged an error returns ``fmi2Error``. The slaves never
 raise, because pythonfmu 0.7 turns an exception into ``fmi2Fatal`` and destroys the instance
 (and leaves the embedding interpreter corrupt: a later garbage collection segfaults).
 An inadmissible parameter combination (found when the model is built), a failed output
 evaluation or a step that would produce a non-finite output is logged at error level by the
 call that finds it, and every later ``fmi2DoStep`` is refused (``do_step`` returns False) with
-the message again; these give ``fmi2Error`` too. Without the shim (win64, or an FMU built
-without a C compiler) the statuses are pythonfmu's: the call that logs answers ``fmi2OK``, so
+the message again; these give ``fmi2Error`` too. Without the shim (an FMU built without a C
+compiler for linux64 or without MinGW-w64 for win64) the statuses are pythonfmu's: the call that logs answers ``fmi2OK``, so
 a rejected value also refuses the next ``fmi2DoStep``, with ``fmi2Discard``.
 """
 from __future__ import annotations
@@ -539,17 +539,20 @@ def plant_coupling_inputs(plant) -> list[Var]:
 
 # -- slaves ---------------------------------------------------------------------------------
 
-#: file name suffix of pythonfmu's library behind the status shim (fmus.status_shim)
-_INNER_SUFFIX = "_pythonfmu.so"
+#: binaries folder and file name suffix of pythonfmu's library behind the status shim
+#: (fmus.status_shim), by host platform
+_SHIM_INNER = {"linux": ("linux64", "_pythonfmu.so"), "win32": ("win64", "_pythonfmu.dll")}
 
 
 def behind_status_shim(resources, model_identifier: str) -> bool:
-    """True when this FMU runs its linux64 binary and that binary is the status shim (which
-    turns error-level log messages into ``fmi2Error``)."""
-    if not sys.platform.startswith("linux") or not resources:
+    """True when this FMU runs its linux64 or win64 binary and that binary is the status shim
+    (which turns error-level log messages into ``fmi2Error``)."""
+    key = "linux" if sys.platform.startswith("linux") else sys.platform
+    if key not in _SHIM_INNER or not resources:
         return False
-    return os.path.isfile(os.path.join(resources, os.pardir, "binaries", "linux64",
-                                       model_identifier + _INNER_SUFFIX))
+    folder, suffix = _SHIM_INNER[key]
+    return os.path.isfile(os.path.join(resources, os.pardir, "binaries", folder,
+                                       model_identifier + suffix))
 
 
 _CAUS = {"parameter": Fmi2Causality.parameter, "input": Fmi2Causality.input,

@@ -391,3 +391,27 @@ def test_under_wine_missing_inner_dll_is_a_fatal_message_naming_it(wine_run):
     assert status == 4 and cat == "logStatusFatal"
     assert msg.startswith("fmi2 status shim: cannot load ") and \
         msg.split(": ")[1].endswith("\\lonely\\probe_pythonfmu.dll"), msg
+
+
+def test_slave_knows_it_runs_behind_the_win64_shim(tmp_path, monkeypatch):
+    # the slave keeps working after a rejected value only behind the shim (the call gives
+    # fmi2Error); without it the next step is refused (fmi2Discard): on Windows it must look
+    # for <id>_pythonfmu.dll in binaries/win64
+    pytest.importorskip("pythonfmu")
+    import sys
+    from fmus import runtime
+    resources = tmp_path / "resources"
+    resources.mkdir()
+    (tmp_path / "binaries" / "win64").mkdir(parents=True)
+    (tmp_path / "binaries" / "linux64").mkdir(parents=True)
+    (tmp_path / "binaries" / "win64" / "fl_lugre.dll").write_bytes(b"")
+    monkeypatch.setattr(sys, "platform", "win32")
+    assert not runtime.behind_status_shim(str(resources), "fl_lugre")  # pythonfmu's DLL
+    (tmp_path / "binaries" / "linux64" / "fl_lugre_pythonfmu.so").write_bytes(b"")
+    assert not runtime.behind_status_shim(str(resources), "fl_lugre")  # linux64's shim
+    (tmp_path / "binaries" / "win64" / "fl_lugre_pythonfmu.dll").write_bytes(b"")
+    assert runtime.behind_status_shim(str(resources), "fl_lugre")
+    monkeypatch.setattr(sys, "platform", "darwin")  # no shim built for other platforms
+    assert not runtime.behind_status_shim(str(resources), "fl_lugre")
+    monkeypatch.setattr(sys, "platform", "linux")
+    assert runtime.behind_status_shim(str(resources), "fl_lugre")

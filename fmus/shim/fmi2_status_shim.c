@@ -11,7 +11,7 @@
  *
  * The shim loads the inner library next to itself once per process (linux64: dlopen with
  * RTLD_LOCAL, so any number of FMUs load into one process; win64: LoadLibraryW on the full
- * path, see load_inner), forwards every FMI 2.0 co-simulation function, and gives the inner
+ * path, see load_inner_path; unloaded with the shim), forwards every FMI 2.0 co-simulation function, and gives the inner
  * instance its own logger. That logger forwards each message unchanged to the importer's
  * logger (with the importer's componentEnvironment) and records the worst status logged
  * during the current call; each forwarded call returns max(inner status, worst logged

@@ -25,15 +25,16 @@ Bad input: a NaN/inf on any input or parameter, or a parameter outside its bound
 stored: ``set_real`` logs it at error level naming the variable and its bound and keeps the
 previous value, so ``fmi2SetReal`` returns ``fmi2Error`` and the instance keeps working. The
 status comes from the FMU's status shim (``fmus/shim``, in front of pythonfmu's binary on
-linux64 and win64): a call during which the slave logged an error returns ``fmi2Error``. The slaves never
-raise, because pythonfmu 0.7 turns an exception into ``fmi2Fatal`` and destroys the instance
-(and leaves the embedding interpreter corrupt: a later garbage collection segfaults).
-An inadmissible parameter combination (found when the model is built), a failed output
-evaluation or a step that would produce a non-finite output is logged at error level by the
-call that finds it, and every later ``fmi2DoStep`` is refused (``do_step`` returns False) with
-the message again; these give ``fmi2Error`` too. Without the shim (an FMU built without a C
-compiler for linux64 or without MinGW-w64 for win64) the statuses are pythonfmu's: the call that logs answers ``fmi2OK``, so
-a rejected value also refuses the next ``fmi2DoStep``, with ``fmi2Discard``.
+linux64 and win64): a call during which the slave logged an error returns ``fmi2Error``. The
+slaves never raise, because pythonfmu 0.7 turns an exception into ``fmi2Fatal`` and destroys
+the instance (and leaves the embedding interpreter corrupt: a later garbage collection
+segfaults). An inadmissible parameter combination (found when the model is built), a failed
+output evaluation or a step that would produce a non-finite output is logged at error level by
+the call that finds it, and every later ``fmi2DoStep`` is refused (``do_step`` returns False)
+with the message again; these give ``fmi2Error`` too. Without the shim (an FMU built without
+a C compiler for linux64 or without MinGW-w64 for win64) the statuses are pythonfmu's: the
+call that logs answers ``fmi2OK``, so a rejected value also refuses the next ``fmi2DoStep``,
+with ``fmi2Discard``.
 """
 from __future__ import annotations
 

@@ -170,15 +170,23 @@ class Load(Candidate):
     def force_extras(self, ctx):
         # seed 004 gives the viscous coefficient its own load slope (k3 of Eq. 11; on the
         # press it is most of the load effect), so the level factor alone cannot carry it
+        # a seal pressurised from one side (the pneumatic cylinder's O-ring) grows with the
+        # load in one direction of motion and hardly in the other: k_L_neg is the level
+        # slope for v < 0 (k_L then holds for v > 0)
         s = 2.0 * ctx.sF / ctx.sv
-        return self.extras(ctx) + [Extra("k_v", 0.0, -s, s, "N.s/m")]
+        k = self.extras(ctx)[0]
+        return [k, Extra("k_L_neg", 0.0, k.lo, k.hi, "1"), Extra("k_v", 0.0, -s, s, "N.s/m")]
 
     def apply(self, F, p, data, ctx):
         # friction levels affine in the normal load (seed 004 Eqs. 9-11), relative to the
-        # fit data's mean load: F (1 + k_L (L - L0) / L0), never of the opposite sign, plus
-        # a viscous part k_v v (L - L0) / L0
+        # fit data's mean load: F (1 + k_L (L - L0) / L0), never of the opposite sign, with
+        # its own slope k_L_neg for v < 0 where fitted, plus a viscous part k_v v (L - L0) / L0
         rel = (data.load - ctx.L0) / ctx.L0
-        F = F * np.clip(1.0 + p["k_L"] * rel, 0.0, None)
+        k = p["k_L"]
+        if "k_L_neg" in p:
+            s = _sig_neg(data.v, ctx)
+            k = k * (1.0 - s) + p["k_L_neg"] * s
+        F = F * np.clip(1.0 + k * rel, 0.0, None)
         k_v = p.get("k_v", 0.0)
         return F + k_v * rel * data.v if k_v else F
 

@@ -3,50 +3,24 @@
 from __future__ import annotations
 
 import functools
-import math
 
 import numpy as np
 from numba import njit
 
 from friction import FrictionModel
+from friction.extensions import EXTENSIONS, extension_force, pack_extensions
 
 from .effects import Context
 
 __all__ = ["EffectLaw", "FORCE_EFFECTS"]
 
 #: candidates evaluated inside the friction law by :class:`EffectLaw`
-FORCE_EFFECTS = ("acceleration", "position", "drift", "load")
+FORCE_EFFECTS = EXTENSIONS
 
 
 # -- friction law + force effects -----------------------------------------------------------
-#: packed layout of the effect parameters after the base law's theta
-_EFF = ("use_acc", "f_a", "a_s", "v_c", "use_pos", "x_lo", "x_hi", "c_x1", "c_x2", "c_x3",
-        "c_x4", "use_drift", "k_drift", "t0", "T", "use_load", "L0", "k_L")
-_E = {n: i for i, n in enumerate(_EFF)}
-
-
-@njit(cache=True)
-def _effect_force(F, v, a, x, load, t, e):
-    """Base force ``F`` [N] with the force effects of the packed vector ``e`` (stage order of
-    :mod:`diagnosis.composite`: multiplicative, then additive)."""
-    if e[15] > 0.5:  # load: levels affine in the normal load, never of opposite sign
-        r = 1.0 + e[17] * (load - e[16]) / e[16]
-        F = F * max(r, 0.0)
-    if e[11] > 0.5:  # drift: relative change per fit duration
-        F = F * (1.0 + e[12] * (t - e[13]) / e[14])
-    if e[4] > 0.5:  # position: Legendre series along the fit stroke
-        span = e[6] - e[5]
-        if span < 1e-12:
-            span = 1e-12
-        xi = 2.0 * (x - e[5]) / span - 1.0
-        xi = min(1.0, max(-1.0, xi))
-        x2 = xi * xi
-        p = (e[7] * xi + e[8] * 0.5 * (3.0 * x2 - 1.0) + e[9] * 0.5 * (5.0 * x2 - 3.0) * xi
-             + e[10] * (35.0 * x2 * x2 - 30.0 * x2 + 3.0) / 8.0)
-        F = F * (1.0 + p)
-    if e[0] > 0.5:  # acceleration: grows with |a|, fades with |v|
-        F = F + e[1] * math.tanh(a / e[2]) * math.exp(-abs(v) / e[3])
-    return F
+# one formula for the in-process law and the friction_effects FMU block
+_effect_force = extension_force
 
 
 @functools.lru_cache(maxsize=None)
@@ -82,31 +56,8 @@ _LEVELS = {"acceleration": ("f_a",), "position": ("c_x1", "c_x2", "c_x3", "c_x4"
 
 
 def _pack_effects(effects: dict, ctx: Context) -> np.ndarray:
-    e = np.zeros(len(_EFF))
-    e[_E["a_s"]] = e[_E["v_c"]] = e[_E["T"]] = e[_E["L0"]] = 1.0
-    e[_E["x_hi"]] = 1.0
-    for name, p in effects.items():
-        if name == "acceleration":
-            e[_E["use_acc"]] = 1.0
-            for k in ("f_a", "a_s", "v_c"):
-                e[_E[k]] = p[k]
-        elif name == "position":
-            e[_E["use_pos"]] = 1.0
-            e[_E["x_lo"]], e[_E["x_hi"]] = ctx.x_lo, ctx.x_hi
-            for k in range(1, 5):
-                e[_E[f"c_x{k}"]] = p.get(f"c_x{k}", 0.0)
-        elif name == "drift":
-            e[_E["use_drift"]] = 1.0
-            e[_E["k_drift"]] = p["k_drift"]
-            e[_E["t0"]], e[_E["T"]] = ctx.t0, max(ctx.T, 1e-12)
-        elif name == "load":
-            if ctx.L0 is None or not ctx.L0 > 0:
-                raise ValueError("the load effect needs a positive mean load L0 in the context")
-            e[_E["use_load"]] = 1.0
-            e[_E["L0"]], e[_E["k_L"]] = ctx.L0, p["k_L"]
-        else:
-            raise ValueError(f"{name!r} is not a force effect; choose from {FORCE_EFFECTS}")
-    return e
+    return pack_extensions(effects, x_lo=ctx.x_lo, x_hi=ctx.x_hi, t0=ctx.t0, T=ctx.T,
+                           L0=ctx.L0 if "load" in effects else None)
 
 
 class EffectLaw(FrictionModel):

@@ -771,6 +771,7 @@ class PlantStepper:
         self._mode = None       # regime held by the substeps: "low", "high" or "slide"
         self._low_share = 0.0   # share of the last step on the low side (Filippov weighted)
         self._v_mean = 0.0      # travel / step of the last step [m/s]
+        self._carry = None      # (side, force at the end of the last substep on that side)
         Ts = p._sample_period()
         self._Ts = Ts
         self._k = 0  # index of the next sample instant
@@ -910,6 +911,7 @@ class PlantStepper:
         s = self.s
         if self._lin[6] > 0.0:   # a regime switch: substeps hold a regime, slide along it
             v_sw = self._lin[6]
+            self._carry = None
             for i in range(n):
                 s = self._regime_substep(ta + i * h, h, s, None, v_sw, self._coupled_side)[0]
             F = (self._filippov(tb, s, None, self._coupled_side)[1] if self._mode == "slide"
@@ -1007,8 +1009,10 @@ class PlantStepper:
                      + (1.0 - w) * side_fn("high", t0 + h, s1, z, h, kin0, kin1)[1])
                 self._a = p.contact_acceleration(t0 + h, s1, ds_mean, d, u)
             return s1, z
-        # one side held over both stages (and the law's state update)
-        F0 = side_fn(mode, t0, s, z)[0]
+        # one side held over both stages (and the law's state update); the force at the
+        # start is the last substep's end force when it ran on the same side
+        carry, self._carry = self._carry, None
+        F0 = carry[1] if carry is not None and carry[0] == mode else side_fn(mode, t0, s, z)[0]
         k1 = p.derivatives(t0, s, d, F0, u)
         s_pred = s + h * k1
         if internal:
@@ -1020,15 +1024,18 @@ class PlantStepper:
         k2 = p.derivatives(t0 + h, s_pred, d, F_pred, u)
         s1 = s + 0.5 * h * (k1 + k2)
         z1 = z
+        F1 = None
         if internal:
             ds_mean = 0.5 * (k1 + k2)
-            z1 = side_fn(mode, t0 + h, s1, z, h, kin0, self._kin(t0 + h, s1, ds_mean))[1]
+            F1, z1 = side_fn(mode, t0 + h, s1, z, h, kin0, self._kin(t0 + h, s1, ds_mean))
             self._a = p.contact_acceleration(t0 + h, s1, ds_mean, d, u)
         a0, a1 = abs(v0), abs(p.contact(t0 + h, s1, d, u)[1])
         crossed = (a1 >= v_sw) if mode == "low" else (a1 < v_sw)
         if not (crossed and split) or a1 == a0:
             if mode == "low":
                 self._t_low += h
+            if not crossed and F1 is not None:
+                self._carry = (mode, F1)
             return s1, z1
         th = min(1.0, max(0.0, (v_sw - a0) / (a1 - a0)))
         s_c = s + th * (s1 - s)
@@ -1056,6 +1063,7 @@ class PlantStepper:
         s, z, F = self.s, self.z, self._F
         if self._sides is not None:   # a regime switch: substeps hold a regime, slide along it
             vc = self._sides[0]
+            self._carry = None
             for i in range(n):
                 s, z = self._regime_substep(ta + i * h, h, s, z, vc, self._internal_side)
             if self._mode == "slide":

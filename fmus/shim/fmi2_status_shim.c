@@ -11,12 +11,12 @@
  *
  * The shim loads the inner library next to itself once per process (linux64: dlopen with
  * RTLD_LOCAL, so any number of FMUs load into one process; win64: LoadLibraryW on the full
- * path, see load_inner_path; unloaded with the shim), forwards every FMI 2.0 co-simulation function, and gives the inner
- * instance its own logger. That logger forwards each message unchanged to the importer's
- * logger (with the importer's componentEnvironment) and records the worst status logged
- * during the current call; each forwarded call returns max(inner status, worst logged
- * status). A slave that logs at error level and returns normally thus makes the call return
- * fmi2Error.
+ * path, see load_inner_path; either is unloaded with the shim), forwards every FMI 2.0
+ * co-simulation function, and gives the inner instance its own logger. That logger forwards
+ * each message unchanged to the importer's logger (with the importer's componentEnvironment)
+ * and records the worst status logged during the current call; each forwarded call returns
+ * max(inner status, worst logged status). A slave that logs at error level and returns
+ * normally thus makes the call return fmi2Error.
  *
  * The same file builds the win64 binary (MinGW-w64 cross compiler):
  *

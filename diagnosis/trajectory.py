@@ -68,10 +68,12 @@ friction) and the friction-law FMU through :class:`fmus.master.Master`, connecte
 :func:`fmus.plant_fmus.plant_connections`. Both solve the same equations - the plant's
 states with Heun's method and the law's stable bristle update - and differ only by the
 coupling of the co-simulation (plant and friction exchange values at communication points;
-the difference shrinks with ``fmu_step``). The FMU engine supports the candidates that are parameters of
-the friction FMU or of the plant FMU (``asymmetry``, ``stribeck_shape``, ``presliding``,
-``inertia``) and the output shift ``delay``; the others need :class:`EffectLaw` inside the
-plant and raise ``NotImplementedError`` there.
+the difference shrinks with ``fmu_step``). The FMU engine expresses every candidate:
+``asymmetry``, ``stribeck_shape``, ``presliding`` and ``inertia`` are parameters of the
+friction FMU or of the plant FMU, ``delay`` shifts the output, and the force effects of
+:class:`EffectLaw` (``acceleration``, ``load``, ``position``, ``drift``) run in the
+``friction_effects`` FMU block between the law and the plant (the same
+:mod:`friction.extensions` formula, fed by the plant FMU's ``v``, ``a``, ``x`` and load).
 """
 from __future__ import annotations
 
@@ -102,7 +104,7 @@ __all__ = ["TrajectoryRecord", "record_from_result", "load_record", "parse_exper
            "MASS_PARAMETERS", "TrajectoryModel"]
 
 #: candidates the FMU engine can express (friction-FMU / plant-FMU parameters, output shift)
-FMU_EFFECTS = ("asymmetry", "stribeck_shape", "presliding", "inertia", "delay")
+FMU_EFFECTS = ("asymmetry", "stribeck_shape", "presliding", "inertia", "delay") + FORCE_EFFECTS
 #: outputs holding a plant's own position command (the tracking error's reference)
 REFERENCE_OUTPUTS = ("x_d", "S_ref", "x_ref")
 #: plant parameters that are the moving mass (``inertia`` candidate), in order of preference
@@ -158,39 +160,58 @@ class _FMUEngine:
         self.step = float(step) if step else coupling_step(type(plant)) / 4.0
         self.masters = {}
 
-    def _master(self, law_name, signals):
+    def _master(self, law_name, signals, effects=()):
         import os
         from fmus.master import Master
-        from fmus.plant_fmus import plant_connections
-        key = (law_name, tuple(signals))
+        from fmus.plant_fmus import LOAD_SIGNALS, plant_connections
+        key = (law_name, tuple(signals), tuple(effects))
         if key in self.masters:
             return self.masters[key]
         import friction
         fmu_dir = self.fmu_dir
-        if fmu_dir is None or not os.path.isfile(os.path.join(fmu_dir, f"{law_name}.fmu")):
+        need = {self.plant.name, law_name, "lugre"} | ({"friction_effects"} if effects else set())
+        if fmu_dir is None or not all(os.path.isfile(os.path.join(fmu_dir, f"{n}.fmu"))
+                                      for n in need):
             from fmus.testing import built_fmus
-            fmu_dir = self.fmu_dir = str(built_fmus(tuple(sorted({self.plant.name, law_name,
-                                                                  "lugre"}))))
+            fmu_dir = self.fmu_dir = str(built_fmus(tuple(sorted(need))))
         cls = type(self.plant)
         fmus = {"plant": os.path.join(fmu_dir, f"{cls.name}.fmu"),
                 "friction": os.path.join(fmu_dir, f"{law_name}.fmu")}
-        m = Master(fmus, plant_connections(cls, friction.MODELS[law_name]),
-                   record=[f"plant.{s}" for s in signals])
+        conns = plant_connections(cls, friction.MODELS[law_name])
+        if effects:
+            # the effects block sits between the law and the plant (friction.extensions)
+            fmus["effects"] = os.path.join(fmu_dir, "friction_effects.fmu")
+            conns = [c for c in conns if c != ("friction.F", "plant.F_friction")]
+            conns += [("friction.F", "effects.F_law"), ("effects.F", "plant.F_friction"),
+                      ("plant.v", "effects.v"), ("plant.a", "effects.a"),
+                      ("plant.x", "effects.x")]
+            if "load" in effects:
+                outs = cls(external_friction=True).all_output_names
+                src = next((n for n in LOAD_SIGNALS if n in outs), None)
+                if src is None:
+                    raise ValueError(f"plant {cls.name!r} has no load output for the load "
+                                     f"effect (looked for {LOAD_SIGNALS})")
+                conns.append((f"plant.{src}", "effects.load"))
+        m = Master(fmus, conns, record=[f"plant.{s}" for s in signals])
         self.masters[key] = m
         return m
 
     def run(self, law, plant_params: dict, options: dict, stop: float, signals):
+        effects = ()
+        block = {}
         if isinstance(law, EffectLaw):
-            raise NotImplementedError(
-                f"engine='fmu': the effects {sorted(law.effects)} are not parameters of the "
-                f"{law.base.name} friction FMU (they live in EffectLaw inside the plant); use "
-                f"engine='plant' for them")
+            from friction.extensions import EXTENSION_INDEX
+            effects = tuple(sorted(law.effects))
+            block = {n: float(law._e[i]) for n, i in EXTENSION_INDEX.items()}
+            # the block's clock starts at 0 with the run; the law's at its time0
+            block["t0"] -= law.time0
+            law = law.base
         bad = {k: type(v).__name__ for k, v in options.items()
                if v is not None and not isinstance(v, (bool, int, float, str))}
         if bad:
             raise NotImplementedError(f"engine='fmu': experiment option(s) {bad} are not "
                                       f"scalars; the plant FMU exposes only scalar options")
-        m = self._master(law.name, signals)
+        m = self._master(law.name, signals, effects)
         fmu_vars = m.instances["plant"].vars
         pvals = {n: getattr(self.plant.params, n) for n in self.plant.parameter_names}
         pvals.update(plant_params)
@@ -204,7 +225,8 @@ class _FMUEngine:
         opts = {k: v for k, v in options.items() if v is not None}
         lvals = {f.name: getattr(law.params, f.name) for f in dataclasses.fields(law.params)
                  if getattr(law.params, f.name) is not None}
-        m.parameters = {"plant": {**pvals, **opts}, "friction": lvals}
+        m.parameters = {"plant": {**pvals, **opts}, "friction": lvals,
+                        **({"effects": block} if effects else {})}
         n = int(math.ceil(stop / self.step - 1e-9))
         res = m.simulate(start_time=0.0, stop_time=n * self.step, step_size=self.step)
         return res["time"], {s: np.asarray(res[f"plant.{s}"], float) for s in signals}

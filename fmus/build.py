@@ -104,6 +104,15 @@ def _mass_recipe() -> FmuRecipe:
                                  "external friction force (mass+friction proof loop)")
 
 
+def _effects_recipe() -> FmuRecipe:
+    return FmuRecipe(name="friction_effects", base="EffectsSlave",
+                     variables=runtime.effects_variables,
+                     attributes=dict(friction_package="{pkg:friction}"),
+                     description="Friction effects block between a law FMU and a plant FMU: "
+                                 "acceleration-dependent part, load-, position- and "
+                                 "time-dependent levels (friction.extensions)")
+
+
 def _plant_recipes() -> list[FmuRecipe]:
     try:
         from . import plant_fmus
@@ -114,7 +123,7 @@ def _plant_recipes() -> list[FmuRecipe]:
 
 def catalogue() -> dict[str, FmuRecipe]:
     """All FMUs this build knows, by name (laws, ``mass``, then plants and controllers)."""
-    recipes = _law_recipes() + [_mass_recipe()] + _plant_recipes()
+    recipes = _law_recipes() + [_mass_recipe(), _effects_recipe()] + _plant_recipes()
     return {r.name: r for r in recipes}
 
 

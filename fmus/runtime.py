@@ -1228,3 +1228,66 @@ class BlockSlave(SlaveBase):
         self.stepper.do_step(t, h)
         self.stepped = True
         return False
+
+
+# -- friction effects block ------------------------------------------------------------------
+#: inputs of the friction_effects block: (name, unit, description)
+EFFECTS_INPUTS = (("F_law", "N", "friction force of the law FMU"),
+                  ("v", "m/s", "sliding velocity"),
+                  ("a", "m/s2", "acceleration"),
+                  ("x", "m", "position"),
+                  ("load", "N", "normal load"))
+#: parameters that must be > 0
+_EFFECTS_POSITIVE = ("a_s", "v_c", "T", "L0")
+
+
+def effects_variables(friction_package: str = "friction") -> list[Var]:
+    """Variables of the ``friction_effects`` block: the law's force in, the force with the
+    extensions of ``friction.extensions`` out (switches ``use_*`` = 0 or 1)."""
+    ext = importlib.import_module(f"{friction_package}.extensions")
+    vs = []
+    for name, start, unit, desc in ext.EXTENSION_PARAMS:
+        if name.startswith("use_"):
+            vs.append(Var(name, "parameter", "Real", start, unit, f"{desc} [-] (0 or 1)",
+                          0.0, 1.0))
+        elif name in _EFFECTS_POSITIVE:
+            vs.append(Var(name, "parameter", "Real", start, unit, f"{desc} [{unit}]", 0.0,
+                          math.inf, True))
+        else:
+            vs.append(Var(name, "parameter", "Real", start, unit, f"{desc} [{unit}]"))
+    ins = tuple(n for n, _, _ in EFFECTS_INPUTS)
+    for name, unit, desc in EFFECTS_INPUTS:
+        vs.append(Var(name, "input", "Real", 1.0 if name == "load" else 0.0, unit,
+                      f"{desc} [{unit}]"))
+    vs.append(Var("F", "output", "Real", None, "N",
+                  "friction force with the switched-on extensions [N]", depends=ins))
+    return vs
+
+
+class EffectsSlave(SlaveBase):
+    """FMU block between a friction-law FMU and a plant FMU: ``F = extension_force(F_law, v,
+    a, x, load, t, e)`` (``friction.extensions``: the diagnosis' acceleration, load, position
+    and drift candidates), evaluated at the communication points; no state but the time."""
+    friction_package = "friction"
+
+    def make_variables(self):
+        return effects_variables(self.friction_package)
+
+    def rebuild(self, initial):
+        ext = importlib.import_module(f"{self.friction_package}.extensions")
+        p = self.param_values()
+        if p["use_pos"] > 0.5 and not p["x_hi"] > p["x_lo"]:
+            raise ValueError(f"x_hi = {p['x_hi']!r} must be > x_lo = {p['x_lo']!r} [m]")
+        self.e = np.array([float(p[n]) for n, _, _, _ in ext.EXTENSION_PARAMS])
+        self.kernel = ext.extension_force
+        self.in_idx = [self.index[n] for n, _, _ in EFFECTS_INPUTS]
+        self.out_i = self.index["F"]
+
+    def compute_outputs(self):
+        vals = self.values
+        F, v, a, x, load = (vals[i] for i in self.in_idx)
+        vals[self.out_i] = float(self.kernel(F, v, a, x, load, self.time, self.e))
+
+    def advance(self, t, h):
+        self.time = t + h
+        return False

@@ -264,16 +264,28 @@ def test_fmu_engine_agrees_with_the_in_process_plant():
     assert engines < 0.2 * effect, (engines, effect)
 
 
-def test_fmu_engine_refuses_what_the_friction_fmu_cannot_express():
-    fit, val, _ = _records("clean", 0.02, 0.02)
-    with pytest.raises(NotImplementedError, match="acceleration.*engine='plant'"):
-        diagnose_trajectory(fit, _model(), validation=val, candidates=["acceleration"],
-                            engine="fmu")
+def test_fmu_engine_runs_the_force_effects_in_the_effects_block():
+    """acceleration, position and drift (EffectLaw) through the friction_effects FMU block
+    between the law FMU and the plant FMU: the loop reproduces the in-process plant with the
+    same EffectLaw far closer than the effects' own imprint on the trajectory."""
+    pytest.importorskip("fmpy")
+    pytest.importorskip("pythonfmu")
+    opts = dict(distance=1e-4, compensation=False, controller="sdpid")
+    stage = XML350(xml350_friction(), f_current=2000.0)
+    rec = record_from_result(stage.simulate(0.03, **opts), opts, name="scurve")
     t, x, v, a = _motion(100)
-    ctx = make_context(Dataset(t=t, x=x, v=v, a=a, F=np.ones_like(t)))
-    law = EffectLaw(xml350_friction(), {"drift": {"k_drift": 0.1}}, ctx)
-    with pytest.raises(NotImplementedError, match="drift"):
-        simulate_record(_model(), law, fit, engine="fmu")
+    ctx = make_context(Dataset(t=t, x=x * 1e-3, v=v * 1e-3, a=a, F=np.ones_like(t)))
+    law = EffectLaw(xml350_friction(), {"acceleration": {"f_a": 0.3, "a_s": 0.05, "v_c": 1e-3},
+                                        "drift": {"k_drift": 2.0},
+                                        "position": {"c_x1": 0.3, "c_x2": 0.2}}, ctx)
+    y_plant = simulate_record(stage, law, rec)
+    y_fmu = simulate_record(stage, law, rec, engine="fmu")
+    y_base = simulate_record(stage, xml350_friction(), rec)
+    sd = np.std(stage.simulate(0.03, **opts)["x_d"] - rec.y)
+    engines = np.sqrt(np.mean((y_fmu - y_plant) ** 2)) / sd
+    effect = np.sqrt(np.mean((y_plant - y_base) ** 2)) / sd
+    assert effect > 0.03
+    assert engines < 0.2 * effect, (engines, effect)
 
 
 # -- command line -------------------------------------------------------------------------------
@@ -417,3 +429,24 @@ def test_actuator_lag_outside_the_library_is_unexplained(candidates):
     rep = diagnose_trajectory(fit, _model(), validation=val, candidates=candidates)
     assert rep["baseline"]["validation"] > 1.5 * rep["noise_floor"]  # a real gap
     assert rep["verdict"]["cause"] == "unexplained", rep.summary()
+
+
+@pytest.mark.slow
+def test_fmu_engine_carries_the_load_effect_on_the_press():
+    """The load effect through the friction_effects block, fed by the press FMU's load
+    output: the same trajectory as the in-process press with the same EffectLaw."""
+    pytest.importorskip("fmpy")
+    from diagnosis.effects import Context
+    from plants.forging_press import ForgingPress
+    press = ForgingPress()
+    res = press.simulate(2.0)
+    rec = record_from_result(res, {}, name="press 2 s")
+    L0 = float(np.mean(res["load"]))
+    ctx = Context(sF=1e5, sv=1e-3, sa=1e-3, x_lo=0.0, x_hi=1.0, t0=0.0, T=2.0, dt=0.01,
+                  L0=L0, L_span=1.0, L_hi=L0)
+    law = EffectLaw(press.friction, {"load": {"k_L": 0.5}}, ctx)
+    y_plant = simulate_record(press, law, rec)
+    y_fmu = simulate_record(press, law, rec, engine="fmu")
+    effect = np.sqrt(np.mean((y_plant - simulate_record(press, press.friction, rec)) ** 2))
+    assert effect > 0
+    assert np.sqrt(np.mean((y_fmu - y_plant) ** 2)) < 1e-3 * effect

@@ -46,6 +46,10 @@ step and stiffness), called over the substep with the velocity at both ends. The
 force entering the derivatives is the kernel's output at the step ends, so the stiff
 bristle never sees an explicit update. Discrete updates run eagerly when time reaches a
 sample instant, so outputs at an instant show the controller output computed from it.
+A law whose coefficients jump at |v| = vc (:func:`friction.regimes.regime_split`) is
+stepped regime by regime: each substep holds one regime, a substep crossing vc is cut at
+the crossing, and the motion slides along |v| = vc (Filippov) where both regimes push onto
+it (:class:`PlantStepper`), as the reference integrator does with located events.
 """
 from __future__ import annotations
 
@@ -982,7 +986,9 @@ class PlantStepper:
         p, d, u = self.plant, self.d, self.u
         v0 = p.contact(t0, s, d, u)[1]
         mode = self._mode
-        if mode == "slide":
+        if not split:
+            pass   # the rest of a substep cut at a crossing: the regime the surface chose
+        elif mode == "slide":
             mode = self._classify(t0, s, z, side_fn, "low" if abs(v0) < v_sw else "high")
         elif mode is None or (mode == "low") != (abs(v0) < v_sw):
             mode = "low" if abs(v0) < v_sw else "high"

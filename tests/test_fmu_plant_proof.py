@@ -52,6 +52,28 @@ def test_linearisation_ignores_the_regime_jump_of_the_load_law():
     assert math.isfinite(K) and abs(K) < 10 * law.params.sigma0
 
 
+def test_switch_linearisation_gives_the_other_side_of_vc():
+    from plants.forging_press import press_friction
+    law = press_friction()
+    sp = law.regimes()
+    th = {"low": np.ascontiguousarray(sp.low.theta), "high": np.ascontiguousarray(sp.high.theta)}
+    z, v, load, h = np.array([1e-6]), 0.9 * sp.vc, 5e5, 1e-2
+    out = switch_linearisation(law._kernel, th, sp.vc, z, {"v": v, "load": load}, h, 0.0, 0.0)
+    assert len(out) == 10 and out[6] == sp.vc
+    # this side's slopes are the smooth low law's: no finite difference across the jump
+    low = law_linearisation(law._kernel, th["low"], z, {"v": v, "load": load}, h, 0.0, 0.0)
+    high = law_linearisation(law._kernel, th["high"], z, {"v": v, "load": load}, h, 0.0, 0.0)
+    assert out[:6] == pytest.approx(low)
+    # the other side: the high law's force and slopes at the same state and inputs
+    jump = sp.high.force(z, v, load=load) - sp.low.force(z, v, load=load)
+    assert jump > 1e4 and out[7] == pytest.approx(jump, rel=1e-9)
+    assert out[0] + out[8] == pytest.approx(high[0], rel=1e-6, abs=1e-3 * abs(high[0]))
+    assert out[1] + out[9] == pytest.approx(high[1], rel=1e-6)
+    # without load the coefficients do not matter: no jump, same slopes
+    out0 = switch_linearisation(law._kernel, th, sp.vc, z, {"v": v, "load": 0.0}, h, 0.0, 0.0)
+    assert out0[7] == 0.0 and out0[9] == pytest.approx(0.0, abs=1e-6 * abs(out0[1]))
+
+
 class _LawStep:
     """In-process stand-in of the law FMU as ``plant_master`` sets it up (Gauss-Seidel,
     plant first): first-order hold of the inputs over a step, linearisation over ``h``
@@ -328,7 +350,10 @@ def test_plant_fmu_proof_at_the_data_rate(proof_fmu_dir, plant):
                         time_budget=300, coarser=True)
         assert r["steps"][0] == pytest.approx(data_step(cls)), r
         assert r["nrmse_first"] <= 1e-3, (plant, law.name, r)
-        if r["errors"][0] > 1e-5:   # below: the integrators' floor, not the coupling
+        # below 2e-5: the fixed-step floor, not the coupling (valve + lugre, whose law
+        # follows the plant's travel: 1.57e-5 / 1.60e-5 / 2.5e-5 at 50 / 25 / 12.5 us; on the
+        # end-point velocities 3.9e-5 / 2.4e-5 / 3.3e-5)
+        if r["errors"][0] > 2e-5:
             assert r["errors"][1] < r["errors"][0], (plant, law.name, r)
         if plant == "forging_press" and law.name == "load_lugre":  # 10 ms -> 5 ms
             assert r["order"] >= 0.8, r

@@ -54,7 +54,8 @@ def test_plant_cosimulation_matches_the_reference(plant_fmu_dir, plant):
     for law in plant_laws(cls).values():
         r = plant_proof(plant_fmu_dir, plant, law, stop=stop, refinements=2)
         assert r["nrmse"] <= 1e-3, (plant, law.name, r)
-        assert r["errors"][1] < r["errors"][0], (plant, law.name, r)
+        if r["errors"][0] > 2e-5:  # below: the fixed-step floor (valve + lugre: 3.5e-6)
+            assert r["errors"][1] < r["errors"][0], (plant, law.name, r)
 
 
 @pytest.mark.slow

@@ -103,6 +103,9 @@ __all__ = ["TrajectoryRecord", "record_from_result", "load_record", "parse_exper
            "diagnose_trajectory", "FORCE_EFFECTS", "FMU_EFFECTS", "REFERENCE_OUTPUTS",
            "MASS_PARAMETERS", "TrajectoryModel"]
 
+#: residual [-] (in units of the record's scale) of a trial point whose simulation fails
+FAILED_RESIDUAL = 1e3
+
 #: candidates the FMU engine can express (friction-FMU / plant-FMU parameters, output shift)
 FMU_EFFECTS = ("asymmetry", "stribeck_shape", "presliding", "inertia", "delay") + FORCE_EFFECTS
 #: outputs holding a plant's own position command (the tracking error's reference)
@@ -692,7 +695,13 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
 
     def residual(setup, u, case):
         law, pp, delay, _ = setup.build(u, ctx)
-        y, _ = tm._output(law, pp, case.record, case.stop, delay)
+        try:
+            y, _ = tm._output(law, pp, case.record, case.stop, delay)
+        except (ValueError, ArithmeticError) as exc:
+            # a trial point the plant cannot run (diverged, or drove the press through its
+            # workpiece): a residual far worse than any run, so the search steps back
+            say(f"[diagnose-trajectory] trial point failed: {exc}")
+            return np.full(int(case.mask.sum()), FAILED_RESIDUAL)
         r = (case.record.y - y)[case.mask] / case.sd
         return r
 
@@ -700,7 +709,11 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         rs = []
         for c in val_cases:
             law, pp, delay, _ = setup.build(u, ctx)
-            y, _ = tm._output(law, pp, c.record, c.stop, delay)
+            try:
+                y, _ = tm._output(law, pp, c.record, c.stop, delay)
+            except (ValueError, ArithmeticError) as exc:
+                say(f"[diagnose-trajectory] held-out run failed: {exc}")
+                return math.inf, None
             rs.append((c.record.y - y)[c.mask])
         num = np.concatenate(rs)
         den = np.concatenate([((c.ref[c.mask] - c.record.y[c.mask]) if c.ref is not None
@@ -739,6 +752,9 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     u_base, base_fit, _ = fit(base_setup, base_setup.unit0(), max_sims_base)
     base_law, _, _, base_vals = base_setup.build(u_base, ctx)
     before, r_val = score(base_setup, u_base)
+    if r_val is None:
+        raise ValueError("the fitted base model cannot run the held-out record(s) (see the "
+                         "message above); check the records' experiment options")
 
     # -- 2. where (held-out residual by regime, band, frequency)
     val_data = [_kinematics(plant, base_law, c.record) for c in val_cases]
@@ -764,8 +780,8 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     u_p = np.clip(u_base + 1e-4 * np.where(u_base < 0.5, 1.0, -1.0), 0.0, 1.0)
     _, r_pert = score(base_setup, u_p)
     den = np.std(np.concatenate([d.F for d, _ in parts])) or 1.0
-    repro = float(np.sqrt(np.mean(np.concatenate([a - b for a, b in zip(r_val, r_pert)]) ** 2))
-                  / den)
+    repro = 0.0 if r_pert is None else float(
+        np.sqrt(np.mean(np.concatenate([a - b for a, b in zip(r_val, r_pert)]) ** 2)) / den)
     floor = float(np.hypot(white, repro))
     where = regime_split(val_cat, r_cat)
     bands = band_splits(val_cat, r_cat)

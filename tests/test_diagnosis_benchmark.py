@@ -109,29 +109,24 @@ def test_static_level_box_reaches_beyond_the_measured_forces():
     np.testing.assert_array_equal(joint.lower, ident.lower)
 
 
-# the forging press: forces of 1e5 N, speeds of mm/s, an acceleration channel sampled at
-# 100 Hz that chatters from sample to sample during slips, a static level the creeping beam
-# never loads its bristles up to, and a load effect that is mostly viscous (seed 004 Table 3)
+# the forging press: forces of 1e5 N, speeds of mm/s, a static level the creeping beam never
+# loads its bristles up to, a load effect that is mostly viscous (seed 004 Table 3) and an
+# acceleration channel the inverse dynamics filters. Before the filters, the viscous load
+# slope and the static-level box, these cases closed 0.35 / 0.45 (acceleration / inertia),
+# 0.28 / 0.38 (load 0.5 / 1) of the gap, and stribeck_shape at strength 1 was "unexplained".
 # (the press simulation alone takes 30-90 s: slow tests)
 @pytest.mark.slow
-@pytest.mark.parametrize("effect", ["acceleration", "inertia"])
-def test_press_acceleration_and_inertia_cases_get_the_right_name(effect):
-    c = make_plant_case("forging_press", effect, 1.0, 0.01, seed=11)
-    rep = _diagnose(c)
-    assert rep["verdict"]["cause"] == effect
-    sh = truth_shrink(c.data, c.truth, rep)
-    assert sh["reported"] > 0.6 and abs(sh["error"]) < 0.3
-
-
-@pytest.mark.slow
-@pytest.mark.parametrize("effect,strength", [("load", 0.5), ("load", 1.0),
-                                             ("stribeck_shape", 1.0), ("inertia", 0.5),
-                                             ("acceleration", 0.5)])
-def test_press_cases_named_at_low_noise(effect, strength):
+@pytest.mark.parametrize("effect,strength,max_err", [
+    ("acceleration", 1.0, 0.4), ("inertia", 1.0, 0.3), ("acceleration", 0.5, 0.4),
+    ("inertia", 0.5, 0.3), ("load", 0.5, 0.15), ("load", 1.0, 0.15),
+    ("stribeck_shape", 1.0, 0.15)])
+def test_press_cases_named_with_their_shrink(effect, strength, max_err):
     c = make_plant_case("forging_press", effect, strength, 0.01, seed=12)
     rep = _diagnose(c)
     assert rep["verdict"]["cause"] == effect
-    assert abs(truth_shrink(c.data, c.truth, rep)["error"]) < 0.3
+    sh = truth_shrink(c.data, c.truth, rep)
+    assert abs(sh["error"]) < max_err, sh
+    assert sh["reported"] > 0.5 * sh["truth"], sh
 
 
 @pytest.mark.parametrize("plant", ["xml350", "mre_isolator"])

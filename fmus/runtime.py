@@ -203,9 +203,9 @@ def law_variables(model_cls, probe: bool = False) -> list[Var]:
     if switching:
         vs.append(Var(SHARE_INPUT, "input", "Real", -1.0, "1",
                       "share of the last step the plant spent below v_switch (connect "
-                      "plant.low_share; the bristle state advances with that mix of both "
-                      "regimes; negative: not connected, the regime of the mid-step "
-                      "velocity) [1] (<= 1)", upper=1.0))
+                      "plant.low_share; with inputs_at_step_end the bristle state advances "
+                      "with that mix of both regimes; negative: not connected, the regime of "
+                      "the mid-step velocity) [1] (<= 1)", upper=1.0))
     deps = law_feedthrough(model_cls, inputs) if probe else tuple(inputs)
     vs.append(Var("F", "output", "Real", None, "N", "friction force [N]", depends=deps))
     vs += coupling_variables(inputs, switching)
@@ -947,7 +947,8 @@ class LawSlave(SlaveBase):
             vbuf = self.buf2["v"]
             v_end = vbuf[1]
             vbuf.fill(self.values[self.mean_idx])
-        share = self.values[self.share_idx] if self.switch is not None else -1.0
+        # the plant's low_share describes this step only when it stepped first (Gauss-Seidel)
+        share = self.values[self.share_idx] if self.switch is not None and self.foh else -1.0
         if share >= 0.0:
             # the plant says which share of the step lay below v_switch (sliding along it
             # with its Filippov weight): the state advances with that mix of both regimes

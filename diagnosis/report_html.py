@@ -40,7 +40,7 @@ def _effect_parameters(report, name) -> list[tuple[str, str, str]]:
     comp = report._models.get(name)
     if comp is None or name not in CANDIDATES:
         return []
-    units = {e.name: e.unit for e in CANDIDATES[name].extras(comp.ctx)}
+    units = {e.name: e.unit for e in CANDIDATES[name].force_extras(comp.ctx)}
     rows = [(k, f"{v:.4g}", units.get(k, "")) for k, v in comp.extras.items()]
     base = set(report.get("base", {}).get("params", {}))
     law_units = {i.name: i.unit for i in comp.law.params.info()}

@@ -20,18 +20,18 @@ outside the library (see :mod:`diagnosis.benchmark`), prints per plant and overa
 ``--quick``: one strength and noise level, short plant protocols (about 2 min).
 ``--generic``: also the historical generic mass-like benchmark.
 
-Results (2026-11-21 11:45 UTC, full grid: strengths 0.5/1, noise 1 %/3 % of std(F); 192
-cases, 470 s wall on 1 worker of a shared 2-core machine, one BLAS thread):
+Results (2026-11-21 12:00 UTC, full grid: strengths 0.5/1, noise 1 %/3 % of std(F); 192
+cases, 504 s wall on 1 worker of a shared 2-core machine, one BLAS thread):
 
 =============  =====  =====  ========  =====  =======  =====  =====  ===========  ==========
 plant          cases  top-1  detect.   clean  outside  where  evid.  shrink |err|  x base id
 =============  =====  =====  ========  =====  =======  =====  =====  ===========  ==========
-damping_rig    40     95.0   100.0     0/4    0/4      28.1   57.1   0.109/0.437  2.9
-forging_press  36     91.7   100.0     0/4    0/4      35.7   37.5   0.121/0.358  4.3
-mre_isolator   36     91.7   100.0     0/4    0/4      32.1   28.6   0.135/0.462  1.9
-valve          40     95.0   100.0     0/4    0/4      37.5   42.9   0.065/0.460  2.4
-xml350         40     87.5   97.2      0/4    0/4      50.0   71.4   0.044/0.224  2.2
-overall        192    92.2   99.4      0/20   0/20     36.8   47.8   0.093/0.462  2.4
+damping_rig    40     95.0   100.0     0/4    0/4      28.1   57.1   0.109/0.437  3.4
+forging_press  36     91.7   100.0     0/4    0/4      35.7   37.5   0.097/0.358  3.9
+mre_isolator   36     91.7   100.0     0/4    0/4      32.1   28.6   0.135/0.462  4.5
+valve          40     95.0   100.0     0/4    0/4      37.5   42.9   0.065/0.460  7.1
+xml350         40     87.5   97.2      0/4    0/4      50.0   71.4   0.044/0.224  3.4
+overall        192    92.2   99.4      0/20   0/20     36.8   47.8   0.089/0.462  4.3
 =============  =====  =====  ========  =====  =======  =====  =====  ===========  ==========
 
 (top-1, detect. = top-1 over the 178 cases whose effect is detectable at all, where/evid. =
@@ -43,16 +43,19 @@ fit's held-out error within 1.2 x the truth's): stribeck_shape, mostly absorbed 
 refitted base (10 of 16 cases), the isolator's weak inertia, the press's weak load; the one
 detectable miss is the XML-350's weak delay at 3 % noise (``none``).
 
-The same grid and kinematics without the acceleration filters, the viscous load slope and
-the static-level box of the joint fit (:mod:`diagnosis.effects`, :mod:`diagnosis.composite`):
+The same grid and kinematics without the acceleration filters, the viscous load slope, the
+static-level box of the joint fit and the delay's re-identified start (:mod:`diagnosis.effects`,
+:mod:`diagnosis.composite`; the last one alone took the press's delay cases from 0.69 to 0.87
+of the gap at strength 1 / 1 % noise, truth 0.87):
 forging press 88.9 % top-1 (97.0 % detectable), shrink |err| 0.226/0.575 (acceleration and
 inertia closed 0.3-0.45 of a gap the truth closes 0.8-0.95, load 0.28/0.38 of 0.49/0.71,
 stribeck_shape at strength 1 ``unexplained``: Fs sat on the identification box's 2 x |F|99);
 overall 91.7 % (98.9 %), shrink |err| 0.122/0.575; the other plants' top-1 unchanged, their
 shrink errors 0.134/0.146/0.067/0.055 (rig, isolator, valve, XML-350). Full diagnosis of
-20,000 samples: 1.1 s (2.1 x one base identification). With OpenBLAS free to start threads on
-the loaded machine, the same diagnosis took 13-26 s: its small SVDs (the least-squares trust
-region) spin waiting for cores; hence one BLAS thread unless ``OPENBLAS_NUM_THREADS`` is set.
+20,000 samples: 3.6 s (2.7 x one base identification; 1.1 s, 2.1 x, before the delay's
+second start). With OpenBLAS free to start threads on the loaded machine, the same diagnosis
+took 13-26 s: its small SVDs (the least-squares trust region) spin waiting for cores; hence
+one BLAS thread unless ``OPENBLAS_NUM_THREADS`` is set.
 """
 import os
 

@@ -25,6 +25,7 @@ import numpy as np
 from scipy.signal import lfilter
 
 from friction import make_model
+from friction.dataset import Dataset
 
 __all__ = ["Candidate", "CANDIDATES", "EFFECT_NAMES", "Context", "make_context"]
 
@@ -102,6 +103,11 @@ class Candidate:
 
     def apply(self, F, p: dict, data, ctx: Context) -> np.ndarray:
         return F
+
+    #: ``undo(data, p, ctx) -> Dataset``: the data with the effect at ``p`` taken out, for
+    #: effects the base fit absorbs in a distorted way (see :func:`diagnosis.composite.
+    #: fit_composite`); ``None``: no such start
+    undo = None
 
     def specialise(self, law) -> "Candidate":
         """The form of this effect for ``law`` (default: the same for every law)."""
@@ -278,6 +284,13 @@ class Delay(Candidate):
     def apply(self, F, p, data, ctx):
         # the force channel lags (delay > 0) the motion channels
         return np.interp(data.t - p["delay"], data.t, F)
+
+    def undo(self, data, p, ctx):
+        """``data`` with its force channel shifted back by ``p["delay"]`` (for a
+        re-identification of the base law without the shift)."""
+        F = np.interp(data.t + p["delay"], data.t, data.F)
+        return Dataset(t=data.t, x=data.x, v=data.v, a=data.a, F=F, load=data.load,
+                       name=data.name)
 
 
 class StribeckShape(Candidate):

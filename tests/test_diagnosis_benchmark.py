@@ -88,6 +88,22 @@ def test_inertia_and_acceleration_filter_the_acceleration_channel():
     assert np.all(y[:1000] == 0.0) and y[1000] > 0 and 0 < y[1003] < y[1000]
 
 
+def test_delay_undo_takes_the_shift_back_out():
+    from diagnosis.effects import CANDIDATES, make_context
+    data = make_case("clean", 1.0, 0.0, n=3000)
+    ctx = make_context(data)
+    delay = CANDIDATES["delay"]
+    p = {"delay": 7.3 * data.dt}
+    from friction.dataset import Dataset
+    shifted = Dataset(t=data.t, x=data.x, v=data.v, a=data.a,
+                      F=delay.apply(data.F, p, data, ctx))
+    back = delay.undo(shifted, p, ctx)
+    inner = slice(20, -20)  # the ends have no data to shift in
+    assert np.max(np.abs(back.F - data.F)[inner]) < 0.02 * np.ptp(data.F)
+    assert np.max(np.abs(shifted.F - data.F)[inner]) > 0.05 * np.ptp(data.F)
+    np.testing.assert_array_equal(back.v, data.v)
+
+
 def test_static_level_box_reaches_beyond_the_measured_forces():
     # a record that sticks and creeps (the press) never loads the bristles up to the static
     # level, so the joint fit's box for Fs reaches past the identification's 2 x |F|99
@@ -119,7 +135,7 @@ def test_static_level_box_reaches_beyond_the_measured_forces():
 @pytest.mark.parametrize("effect,strength,max_err", [
     ("acceleration", 1.0, 0.4), ("inertia", 1.0, 0.3), ("acceleration", 0.5, 0.4),
     ("inertia", 0.5, 0.3), ("load", 0.5, 0.15), ("load", 1.0, 0.15),
-    ("stribeck_shape", 1.0, 0.15)])
+    ("stribeck_shape", 1.0, 0.15), ("delay", 1.0, 0.08)])
 def test_press_cases_named_with_their_shrink(effect, strength, max_err):
     c = make_plant_case("forging_press", effect, strength, 0.01, seed=12)
     rep = _diagnose(c)

@@ -55,7 +55,6 @@ import dataclasses
 import math
 import os
 
-import numpy as np
 
 from . import runtime
 
@@ -289,7 +288,7 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
                 stop: float | None = None, rtol: float = 1e-9, tol: float = 1e-3,
                 max_halvings: int = 4, time_budget: float | None = None,
                 coupling: str = "linearised", max_step: float | None = None,
-                coarser: bool = False) -> dict:
+                coarser: bool = False, plant_params: dict | None = None) -> dict:
     """NRMSE of the co-simulated main output against the plant's reference integrator.
 
     The loop communicates at ``h0`` = :func:`data_step` (or, with ``max_step`` for the
@@ -298,7 +297,10 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
     are run (for the observed order); halving continues (at most ``max_halvings`` times)
     until the NRMSE is at most ``tol``. Below the data period the plant's internal substep
     (<= the communication step) shrinks too, so the coupling error is not masked by a fixed
-    integrator error. ``time_budget`` [s] stops a reference integration that crawls with
+    integrator error. ``plant_params`` changes plant parameters in the reference and the
+    plant FMU alike (e.g. an encoder resolution of 0: a quantised closed loop does not repeat
+    itself to the last count, a floor no step size removes). ``time_budget`` [s] stops a
+    reference integration that crawls with
     ``TimeoutError``. ``coarser=True`` also runs the steps between ``h0`` and the data
     period that divide it (a plant whose controller samples faster than its data: the press
     at 1 kHz, data at 100 Hz), for an observed order above the integrator's error floor.
@@ -318,6 +320,8 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
     from .proof import observed_order
     cls = plants.PLANTS[plant_name]
     plant = cls(friction=law)
+    if plant_params:
+        plant = plant.with_params(**plant_params)
     hd = 1.0 / cls.data_rate
     h = data_step(cls) if max_step is None else coupling_step(cls, max_step)
     per = int(round(hd / h))  # communication steps per data sample
@@ -330,6 +334,8 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
     main = cls.main_output
     steps, errors = [], []
     with plant_master(fmu_dir, plant_name, law, coupling=coupling, step=h) as m:
+        if plant_params:
+            m.parameters["plant"] = {k: float(v) for k, v in plant_params.items()}
         for k in range(max_halvings + 1):
             hk = h / 2 ** k
             if coupling == "linearised":

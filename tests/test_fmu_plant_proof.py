@@ -360,6 +360,25 @@ def test_plant_fmu_proof_at_the_data_rate(proof_fmu_dir, plant):
 
 
 @pytest.mark.slow
+@pytest.mark.parametrize("plant, encoder", [("valve", "q_S"), ("xml350", "resolution")])
+def test_quantised_loops_converge_first_order_once_the_encoder_is_ideal(proof_fmu_dir, plant,
+                                                                         encoder):
+    """The valve (100 nm encoder) and the XML-350 (1 nm) with classic LuGre sit on an error
+    floor at their data rate (1.6e-5, 3.5e-5): a closed loop on a quantised position does
+    not repeat itself to the last count. With an ideal encoder (resolution 0, in the
+    reference and the plant FMU alike) the same co-simulation converges at least first
+    order as the communication step halves three times."""
+    from fmus.plant_fmus import plant_laws, plant_proof
+    cls = plants.PLANTS[plant]
+    law = plant_laws(cls)["lugre"]
+    r = plant_proof(proof_fmu_dir, plant, law, stop=200.0 / cls.data_rate, refinements=4,
+                    max_halvings=3, plant_params={encoder: 0.0})
+    assert r["nrmse_first"] <= 1e-3, r
+    assert r["order"] >= 0.9, r
+    assert r["errors"][-1] < 0.2 * r["errors"][0], r
+
+
+@pytest.mark.slow
 @pytest.mark.parametrize("plant", ["mre_isolator"])
 def test_finer_step_fallback_meets_the_tolerance(proof_fmu_dir, plant):
     from fmus.demo import FALLBACK_STEP

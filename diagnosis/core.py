@@ -321,7 +321,8 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     for k, name in enumerate(names, 1):
         cand = CANDIDATES[name].specialise(base.law)
         ok, why = cand.applicable(base.law, fit, ctx)
-        if not ok:
+        why = why if not ok else _missing_columns(cand, val_sets)
+        if why:
             skipped[name] = why
             continue
         say(f"[diagnose] candidate {k}/{len(names)}: {name}")
@@ -351,8 +352,9 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         cands = {}
         for name in names:
             cand = CANDIDATES[name].specialise(base.law)
-            if cand.applicable(base.law, fit, ctx)[0] or \
-                    cand.applicable(base.law, wide, make_context(wide))[0]:
+            if not _missing_columns(cand, val_sets) and (
+                    cand.applicable(base.law, fit, ctx)[0]
+                    or cand.applicable(base.law, wide, make_context(wide))[0]):
                 cands[name] = cand
                 skipped.pop(name, None)
         tr = transfer_scores(base, base_names, cands, val_sets, ctx, skip)
@@ -440,6 +442,15 @@ TRANSFER_NOTE = ("the held-out records lie outside the fit record's range of a c
                  "so no candidate of it can be identified on the fit record: the base stays "
                  "as fitted, each candidate's own parameters are calibrated on one held-out "
                  "record and it is scored on the others (each in turn)")
+
+
+def _missing_columns(cand, val_sets) -> str:
+    """Why ``cand`` cannot be scored on the held-out sets ('' when it can)."""
+    for key in cand.needs:
+        bad = [v.name for v in val_sets if getattr(v, key) is None]
+        if bad:
+            return f"the held-out data {bad} has no {key} column"
+    return ""
 
 
 def _rank(effects: list) -> None:

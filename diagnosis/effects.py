@@ -20,6 +20,7 @@ of the effect's formula at every level, ``force_extras`` add what measured frict
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 import numpy as np
 from scipy.signal import lfilter
@@ -83,6 +84,8 @@ class Candidate:
     description: str
     stage: str = "additive"   # modify_law | multiplicative | additive | shift
     tags: tuple = field(default_factory=tuple)
+    #: optional data columns the effect reads (fit and held-out data must both have them)
+    needs: ClassVar[tuple] = ()
 
     def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
         return True, ""
@@ -159,6 +162,8 @@ class Acceleration(Candidate):
 
 
 class Load(Candidate):
+    needs = ("load",)
+
     def applicable(self, law, fit, ctx):
         if fit.load is None:
             return False, "the data has no load column"

@@ -98,9 +98,17 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
     """
     e = np.array([p[1] for p in EXTENSION_PARAMS], float)
     ix = EXTENSION_INDEX
+    if "position" in effects and not x_hi > x_lo:
+        raise ValueError(f"x_hi = {x_hi!r} is out of bounds: must be > x_lo = {x_lo!r} [m]")
+    if "drift" in effects and not T > 0:
+        raise ValueError(f"T = {T!r} is out of bounds: must be > 0 [s]")
     for name, p in effects.items():
         if name == "acceleration":
             e[ix["use_acc"]] = 1.0
+            for k in ("a_s", "v_c"):
+                if not p[k] > 0:
+                    raise ValueError(f"{k} = {p[k]!r} is out of bounds: must be > 0 "
+                                     f"[{'m/s^2' if k == 'a_s' else 'm/s'}]")
             for k in ("f_a", "a_s", "v_c"):
                 e[ix[k]] = p[k]
         elif name == "position":
@@ -111,7 +119,7 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
         elif name == "drift":
             e[ix["use_drift"]] = 1.0
             e[ix["k_drift"]] = p["k_drift"]
-            e[ix["t0"]], e[ix["T"]] = t0, max(T, 1e-12)
+            e[ix["t0"]], e[ix["T"]] = t0, T
         elif name == "load":
             if L0 is None or not L0 > 0:
                 raise ValueError("the load extension needs a positive reference load L0 [N]")

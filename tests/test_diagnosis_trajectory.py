@@ -472,3 +472,16 @@ def test_press_load_dependence_is_named_from_positions():
                               candidates=["load", "asymmetry", "inertia"])
     assert rep["verdict"]["cause"] == "load", rep.summary()
     assert rep["effects"][0]["gap_closed"] > 0.5
+
+
+@pytest.mark.parametrize("effects, kw, name", [
+    ({"acceleration": {"f_a": 0.1, "a_s": 0.0, "v_c": 1e-3}}, {}, "a_s"),
+    ({"acceleration": {"f_a": 0.1, "a_s": 0.1, "v_c": -1.0}}, {}, "v_c"),
+    ({"drift": {"k_drift": 0.1}}, {"T": 0.0}, "T"),
+    ({"position": {"c_x1": 0.1}}, {"x_lo": 0.2, "x_hi": 0.1}, "x_hi"),
+    ({"load": {"k_L": 0.1}}, {"L0": -5.0}, "L0"),
+])
+def test_extensions_refuse_impossible_parameters_naming_them(effects, kw, name):
+    from friction.extensions import pack_extensions
+    with pytest.raises(ValueError, match=name):
+        pack_extensions(effects, **kw)

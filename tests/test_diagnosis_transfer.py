@@ -86,3 +86,12 @@ def test_transfer_does_not_favour_load_when_the_change_is_not_load():
                    candidates=["load", "asymmetry", "drift", "acceleration"])
     assert rep["verdict"]["protocol"] == "transfer"
     assert rep["verdict"]["cause"] == "asymmetry", rep.summary()
+
+
+def test_held_out_records_without_a_load_column_skip_the_load_candidate():
+    from dataclasses import replace
+    fit = _record(L_FIT, _load_truth, 1, "fit")
+    held = replace(_record(L_FIT, _load_truth, 2, "no load"), load=None)
+    rep = diagnose(fit, "lugre", validation=[held], candidates=["load", "asymmetry"])
+    assert "no load" in rep["skipped"]["load"] and "load column" in rep["skipped"]["load"]
+    assert [e["name"] for e in rep["effects"]] == ["asymmetry"]

@@ -100,9 +100,12 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
 
     Returns the fitted composite and its fit NRMSE. ``law``'s current values start the search.
     """
-    space = law_space(law, base_names, fit)
-    u_law0 = np.clip(space.to_unit(np.array([getattr(law.params, n) for n in base_names])),
-                     0.0, 1.0)
+    nb = len(base_names)
+    # no law parameter to fit (the transfer scores calibrate only a candidate's own): the
+    # law stays at its values
+    space = law_space(law, base_names, fit) if nb else None
+    u_law0 = (np.clip(space.to_unit(np.array([getattr(law.params, n) for n in base_names])),
+                      0.0, 1.0) if nb else np.zeros(0))
     ex = [e for eff in effects for e in eff.force_extras(ctx)]
     lo = np.array([e.lo for e in ex])
     hi = np.array([e.hi for e in ex])
@@ -114,13 +117,12 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     s0 = law.initial_state()
     kern = law._kernel
     sd = float(np.std(fit.F)) or 1.0
-    nb = len(base_names)
     # laws with a spring/offset part (mre_lugre) need it at the trial values
     elastic = type(law).conservative_force is not FrictionModel.conservative_force and \
         any(e.stage == "multiplicative" for e in effects)
 
     def unpack(u):
-        xl = space.to_physical(u[:nb])
+        xl = space.to_physical(u[:nb]) if nb else np.zeros(0)
         extras = {e.name: lo[j] + (hi[j] - lo[j]) * u[nb + j] for j, e in enumerate(ex)}
         return xl, extras
 
@@ -153,7 +155,7 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
 
     sol = solve(u0)
     undo = [eff for eff in effects if eff.undo is not None]
-    if undo:
+    if undo and nb:
         # the base law identified on the record with the effect in it absorbed part of it (a
         # 15-sample delay on the press reads as an inverted Stribeck curve, a basin the joint
         # fit does not leave although it finds the delay): a second start re-identifies the

@@ -26,61 +26,18 @@ conditions the question is about.
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from friction.metrics import nrmse
 
-from .composite import Composite, _apply_effects, fit_composite
+from .composite import Composite, fit_composite
 
-__all__ = ["transfer_applicable", "transfer_scores", "fit_extras"]
+__all__ = ["transfer_applicable", "transfer_scores"]
 
 
 def transfer_applicable(val_sets, shift: dict) -> bool:
     """Whether the transfer scores apply: two or more held-out records and a covariate of
     theirs outside the fit range (``shift`` from :func:`diagnosis.core.extrapolation`)."""
     return len(val_sets) >= 2 and bool(shift)
-
-
-def fit_extras(law, effects, data, ctx, max_nfev: int = 60) -> tuple[Composite, float]:
-    """Fit only the effects' parameters on ``data``, the law held at its values.
-
-    Returns the composite and its NRMSE on ``data``.
-    """
-    ex = [e for eff in effects for e in _force_extras(eff, ctx)]
-    F0 = law.simulate(data.t, data.v, **_inputs(law, data))
-    if not ex:
-        comp = Composite(law, [], list(effects), {}, ctx)
-        return comp, nrmse(data.F, _apply_effects(F0, effects, {}, data, ctx, law))
-    lo = np.array([e.lo for e in ex])
-    hi = np.array([e.hi for e in ex])
-    sd = float(np.std(data.F)) or 1.0
-
-    def unpack(u):
-        return {e.name: lo[j] + (hi[j] - lo[j]) * u[j] for j, e in enumerate(ex)}
-
-    def residual(u):
-        r = (data.F - _apply_effects(F0, effects, unpack(u), data, ctx, law)) / sd
-        return r if np.all(np.isfinite(r)) else np.full(r.size, 1e3)
-
-    u0 = np.clip([(e.x0 - e.lo) / (e.hi - e.lo) for e in ex], 0.0, 1.0)
-    for j, e in enumerate(ex):
-        if getattr(e, "grid", 0):  # non-convex (a time shift): start from a coarse grid
-            grid = np.linspace(0.0, 1.0, e.grid)
-            costs = [float(np.sum(residual(np.r_[u0[:j], g, u0[j + 1:]]) ** 2)) for g in grid]
-            u0[j] = grid[int(np.argmin(costs))]
-    sol = least_squares(residual, u0, bounds=(0.0, 1.0), max_nfev=max_nfev, diff_step=1e-6)
-    comp = Composite(law, [], list(effects), unpack(sol.x), ctx)
-    return comp, float(np.sqrt(np.mean(sol.fun ** 2)))
-
-
-def _force_extras(eff, ctx):
-    fx = getattr(eff, "force_extras", None)
-    return fx(ctx) if fx is not None else eff.extras(ctx)
-
-
-def _inputs(law, data) -> dict:
-    from .composite import _law_inputs
-    return _law_inputs(law, data)
 
 
 def transfer_scores(base: Composite, base_names, candidates: dict, val_sets, ctx,
@@ -127,10 +84,7 @@ def transfer_scores(base: Composite, base_names, candidates: dict, val_sets, ctx
             best = None
             for law_v, names_v in cand.modify_law(base.law, base_names, ctx):
                 new = [m for m in names_v if m not in base_names]
-                if new:
-                    comp, cost = fit_composite(law_v, new, [cand], val_sets[i], ctx)
-                else:
-                    comp, cost = fit_extras(law_v, [cand], val_sets[i], ctx)
+                comp, cost = fit_composite(law_v, new, [cand], val_sets[i], ctx)
                 if best is None or cost < best[1]:
                     best = (comp, cost)
             comp = best[0]
@@ -138,8 +92,7 @@ def transfer_scores(base: Composite, base_names, candidates: dict, val_sets, ctx
             pc[name].append(P_c)
             fold["after"][name] = nrmse(F_o, P_c)
             desc = comp.describe()
-            params[name].append({**{k: desc["params"][k] for k in desc["params"]},
-                                 **desc["extras"]})
+            params[name].append({**desc["params"], **desc["extras"]})
         folds.append(fold)
     F_all = np.concatenate(meas)
     return {"before": nrmse(F_all, np.concatenate(pb)),

@@ -239,19 +239,16 @@ def coupling_variables(inputs, switching: bool = False) -> list[Var]:
     ``dF_dt``, ``d2F_dt2`` of a law FMU: the local linearisation of the law over the coming
     step (computed from the current inputs, so they depend directly on every input); with
     ``switching`` also ``v_switch``, ``dF_switch``, ``dF_dx_switch``, ``dF_dv_switch``."""
+    def out(name, unit, description):
+        return Var(name, "output", "Real", None, unit, f"{description} [{unit}]",
+                   depends=tuple(inputs))
+
     extra = [] if not switching else [
-        Var("v_switch", "output", "Real", None, "m/s",
-            "speed |v| at which the law's coefficients jump (0: none) [m/s]",
-            depends=tuple(inputs)),
-        Var("dF_switch", "output", "Real", None, "N",
-            "force of the other side of v_switch minus this side's, at the current state "
-            "and inputs [N]", depends=tuple(inputs)),
-        Var("dF_dx_switch", "output", "Real", None, "N/m",
-            "dF_dx of the other side of v_switch minus this side's [N/m]",
-            depends=tuple(inputs)),
-        Var("dF_dv_switch", "output", "Real", None, "N.s/m",
-            "dF_dv of the other side of v_switch minus this side's [N.s/m]",
-            depends=tuple(inputs)),
+        out("v_switch", "m/s", "speed |v| at which the law's coefficients jump (0: none)"),
+        out("dF_switch", "N", "force of the other side of v_switch minus this side's, at "
+                              "the current state and inputs"),
+        out("dF_dx_switch", "N/m", "dF_dx of the other side of v_switch minus this side's"),
+        out("dF_dv_switch", "N.s/m", "dF_dv of the other side of v_switch minus this side's"),
     ]
     return extra + [
         Var("h_lin", "parameter", "Real", 0.0, "s",
@@ -261,25 +258,16 @@ def coupling_variables(inputs, switching: bool = False) -> list[Var]:
             "the inputs set before fmi2DoStep are the values at the end of the step "
             "(Gauss-Seidel after the plant): the state advances with the inputs at both "
             "ends (first-order hold) instead of holding them"),
-        Var("dF_dx", "output", "Real", None, "N/m",
-            "slope of F against the travel over the coming step (h_lin) [N/m]",
-            depends=tuple(inputs)),
-        Var("dF_dv", "output", "Real", None, "N.s/m",
-            "slope of F against the end velocity of the coming step (h_lin) [N.s/m]",
-            depends=tuple(inputs)),
-        Var("dF_dt", "output", "Real", None, "N/s",
-            "rate of F over the coming step (h_lin) along the motion extrapolated from the "
-            "last two input samples, beyond dF_dx and dF_dv [N/s]",
-            depends=tuple(inputs)),
-        Var("d2F_dt2", "output", "Real", None, "N/s2",
-            "curvature of that rate over the coming step (h_lin) [N/s2]",
-            depends=tuple(inputs)),
-        Var("t_kink", "output", "Real", None, "s",
-            "time into the coming step at which the extrapolated velocity reverses (0: no "
-            "reversal) [s]", depends=tuple(inputs)),
-        Var("dF_dt_kink", "output", "Real", None, "N/s",
-            "change of dF_dt at t_kink (the force's kink where |v| turns) [N/s]",
-            depends=tuple(inputs)),
+        out("dF_dx", "N/m", "slope of F against the travel over the coming step (h_lin)"),
+        out("dF_dv", "N.s/m", "slope of F against the end velocity of the coming step (h_lin)"),
+        out("dF_dt", "N/s", "rate of F over the coming step (h_lin) along the motion "
+                            "extrapolated from the last two input samples, beyond dF_dx and "
+                            "dF_dv"),
+        out("d2F_dt2", "N/s2", "curvature of that rate over the coming step (h_lin)"),
+        out("t_kink", "s", "time into the coming step at which the extrapolated velocity "
+                           "reverses (0: no reversal)"),
+        out("dF_dt_kink", "N/s", "change of dF_dt at t_kink (the force's kink where |v| "
+                                 "turns)"),
     ]
 
 

@@ -349,12 +349,13 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     if transfer_applicable(val_sets, shift):
         say("[diagnose] held-out conditions outside the fit range: transfer scores")
         wide = _concat([fit] + list(val_sets))
+        ctx_wide = make_context(wide)
         cands = {}
         for name in names:
             cand = CANDIDATES[name].specialise(base.law)
             if not _missing_columns(cand, val_sets) and (
                     cand.applicable(base.law, fit, ctx)[0]
-                    or cand.applicable(base.law, wide, make_context(wide))[0]):
+                    or cand.applicable(base.law, wide, ctx_wide)[0]):
                 cands[name] = cand
                 skipped.pop(name, None)
         tr = transfer_scores(base, base_names, cands, val_sets, ctx, skip)
@@ -366,7 +367,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
             effects.append({"name": name, "validation_before": before, "validation_after": after,
                             "gap_closed": (before - after) / before if before > 0 else 0.0,
                             "excess_closed": (before - after) / max(before - floor, 1e-12),
-                            "n_params": e1.get("n_params", 0), "protocol": "transfer",
+                            "n_params": tr["n_params"][name], "protocol": "transfer",
                             "fit_record_validation_after": e1.get("validation_after"),
                             "fitted": {"transfer_params": tr["params"][name],
                                        **e1.get("fitted", {})}})

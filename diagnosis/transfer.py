@@ -65,13 +65,14 @@ def transfer_scores(base: Composite, base_names, candidates: dict, val_sets, ctx
     dict
         ``{"before": nrmse, "after": {name: nrmse}, "folds": [{"calibrated_on": i,
         "scored_on": [j, ...], "before": nrmse, "after": {name: nrmse}}],
-        "params": {name: [per-fold fitted extras]}}``.
+        "params": {name: [per-fold fitted extras]}, "n_params": {name: count}}`` (the count
+        of calibrated parameters, for the tie rule).
     """
     n = len(val_sets)
     base_pred = [base.predict(v) for v in val_sets]
     meas, pb = [], []
     pc = {name: [] for name in candidates}
-    folds, params = [], {name: [] for name in candidates}
+    folds, params, n_params = [], {name: [] for name in candidates}, {}
     for i in range(n):
         others = [j for j in range(n) if j != i]
         fold = {"calibrated_on": i, "scored_on": others, "after": {}}
@@ -86,8 +87,9 @@ def transfer_scores(base: Composite, base_names, candidates: dict, val_sets, ctx
                 new = [m for m in names_v if m not in base_names]
                 comp, cost = fit_composite(law_v, new, [cand], val_sets[i], ctx)
                 if best is None or cost < best[1]:
-                    best = (comp, cost)
+                    best = (comp, cost, len(cand.force_extras(ctx)) + len(new))
             comp = best[0]
+            n_params[name] = best[2]
             P_c = np.concatenate([comp.predict(val_sets[j])[skip[j]:] for j in others])
             pc[name].append(P_c)
             fold["after"][name] = nrmse(F_o, P_c)
@@ -97,4 +99,4 @@ def transfer_scores(base: Composite, base_names, candidates: dict, val_sets, ctx
     F_all = np.concatenate(meas)
     return {"before": nrmse(F_all, np.concatenate(pb)),
             "after": {name: nrmse(F_all, np.concatenate(p)) for name, p in pc.items()},
-            "folds": folds, "params": params}
+            "folds": folds, "params": params, "n_params": n_params}

@@ -78,6 +78,7 @@ from friction.dataset import Dataset
 from friction.metrics import nrmse
 
 from .core import diagnose
+from .regions import band_splits, regime_split
 
 __all__ = ["make_case", "run_benchmark", "CASES", "BASE", "expected", "PLANT_NAMES",
            "PLANT_CASES", "EXPECTED_FAMILIES", "PlantKinematics", "BenchCase",
@@ -708,6 +709,13 @@ def localise(report, min_fraction: float = 0.05, method: str = "where") -> dict:
             "ranking": [(r["family"], r["label"], round(r["lift"], 3)) for r in ranking]}
 
 
+def localise_gap(held: Dataset, gap: np.ndarray, min_fraction: float = 0.05) -> dict:
+    """:func:`localise` (``where`` method) of a given held-out gap, e.g. the noise-free one
+    ``truth - base fit``: the region a report of that gap would put on top."""
+    pseudo = {"where": regime_split(held, gap), "where_bands": band_splits(held, gap)[:12]}
+    return localise(pseudo, min_fraction=min_fraction)
+
+
 def truth_shrink(data: Dataset, truth: np.ndarray, report, base_truth=None) -> dict:
     """The gap fraction the true model closes on the report's held-out part, vs the report.
 
@@ -732,15 +740,25 @@ def truth_shrink(data: Dataset, truth: np.ndarray, report, base_truth=None) -> d
 
 def _score(case_effect, exp, rep, data, truth, seconds) -> dict:
     from .core import NOISE_RATIO
+    from .significance import improvement_z, z_threshold
     cause = rep["verdict"]["cause"]
     loc = localise(rep)
     loc_ev = localise(rep, method="evidence")
     fams = EXPECTED_FAMILIES.get(case_effect)
     fams_ev = EXPECTED_EVIDENCE.get(case_effect)
     sh = truth_shrink(data, truth, rep)
-    # detectable: the base fit's held-out error exceeds the true model's by the margin the
-    # diagnosis itself needs to call a residual more than noise
-    detectable = bool(rep["baseline"]["validation"] > NOISE_RATIO * sh["val_truth"])
+    # detectable: an oracle that knows the truth tells it from the base fit by either path of
+    # the verdict: the base fit's held-out error exceeds the truth's by the noise ratio, or
+    # the truth's held-out improvement over it is significant at the diagnosis' level
+    k = int(rep["timing"]["fit_samples"])
+    base_pred = rep._models["base"].predict(data)[k:] if hasattr(rep, "_models") else None
+    z_truth = (improvement_z(data.F[k:] - base_pred, data.F[k:] - np.asarray(truth)[k:])
+               if base_pred is not None else 0.0)
+    detectable = bool(rep["baseline"]["validation"] > NOISE_RATIO * sh["val_truth"]
+                      or z_truth >= z_threshold(max(len(rep["effects"]), 1)))
+    # where the gap truly lies: the same sections on the noise-free gap (truth - base fit)
+    loc_true = (localise_gap(data.select(slice(k, None)), np.asarray(truth)[k:] - base_pred)
+                if base_pred is not None else {"family": "", "label": ""})
     return {"verdict": cause, "expected": exp, "correct": cause == exp,
             "gap_closed": rep["verdict"]["gap_closed"], "truth_shrink": sh["truth"],
             "shrink_error": sh["error"], "validation_before": rep["baseline"]["validation"],
@@ -750,7 +768,11 @@ def _score(case_effect, exp, rep, data, truth, seconds) -> dict:
             "loc_correct": (loc["family"] in fams) if fams else None,
             "loc_evidence_family": loc_ev["family"],
             "loc_evidence_correct": (loc_ev["family"] in fams_ev) if fams_ev else None,
+            "loc_true_family": loc_true["family"], "loc_true_label": loc_true["label"],
+            "loc_matches_truth": (loc["label"] == loc_true["label"]
+                                  if case_effect not in ("clean", "outside") else None),
             "detectable": detectable if case_effect not in ("clean", "outside") else None,
+            "truth_z": z_truth,
             "runner_up": rep["verdict"].get("runner_up", ""),
             "ranking": [e["name"] for e in rep["effects"][:3]], "seconds": seconds}
 
@@ -881,6 +903,7 @@ def summarise(rows) -> dict:
         lib = [r for r in rs if r["effect"] not in ("clean", "outside")]
         loc = [r for r in lib if r["loc_correct"] is not None]
         loc_ev = [r for r in lib if r["loc_evidence_correct"] is not None]
+        loc_tr = [r for r in lib if r.get("loc_matches_truth") is not None]
         det = [r for r in rs if r["detectable"] is not False]
         sh = np.array([r["shrink_error"] for r in lib]) if lib else np.zeros(0)
         shc = np.array([r["shrink_error"] for r in lib if r["correct"]])
@@ -900,6 +923,8 @@ def summarise(rows) -> dict:
                "localisation_evidence_accuracy": (
                    float(np.mean([r["loc_evidence_correct"] for r in loc_ev])) if loc_ev
                    else None),
+               "localisation_truth_accuracy": (
+                   float(np.mean([r["loc_matches_truth"] for r in loc_tr])) if loc_tr else None),
                "shrink_abs_error_mean": float(np.mean(np.abs(sh))) if sh.size else None,
                "shrink_abs_error_max": float(np.max(np.abs(sh))) if sh.size else None,
                "shrink_abs_error_mean_correct": (float(np.mean(np.abs(shc))) if shc.size
@@ -915,12 +940,13 @@ def summarise(rows) -> dict:
     per_effect = {}
     for r in rows:
         e = per_effect.setdefault(r["effect"], {"cases": 0, "correct": 0, "loc_correct": 0,
-                                                "loc_evidence_correct": 0, "undetectable": 0,
-                                                "named": {}})
+                                                "loc_evidence_correct": 0, "loc_truth": 0,
+                                                "undetectable": 0, "named": {}})
         e["cases"] += 1
         e["correct"] += bool(r["correct"])
         e["loc_correct"] += bool(r["loc_correct"])
         e["loc_evidence_correct"] += bool(r["loc_evidence_correct"])
+        e["loc_truth"] += bool(r.get("loc_matches_truth"))
         e["undetectable"] += r["detectable"] is False
         if not r["correct"]:
             e["named"][r["verdict"]] = e["named"].get(r["verdict"], 0) + 1
@@ -946,7 +972,8 @@ def format_summary(res, title: str = "withheld-effect benchmark") -> str:
     out = []
     out.append(f"\n== {title} ==")
     out.append(f"{'plant':14s} {'cases':>5s} {'top-1 %':>7s} {'detect.%':>8s} {'clean':>6s} "
-               f"{'outside':>7s} {'loc %':>6s} {'evid %':>6s} {'shrink |err| mean/max':>22s} "
+               f"{'outside':>7s} {'loc %':>6s} {'evid %':>6s} {'true %':>6s} "
+               f"{'shrink |err| mean/max':>22s} "
                f"{'s/case':>7s} {'x base id':>9s}")
     rows = list(res["per_plant"].items()) + [("OVERALL", res["overall"])]
     for name, f in rows:
@@ -956,21 +983,25 @@ def format_summary(res, title: str = "withheld-effect benchmark") -> str:
                    f"{f['outside_named_wrongly']:>4d}/{f['outside_cases']:<2d} "
                    f"{_pct(f['localisation_accuracy']):>6s} "
                    f"{_pct(f['localisation_evidence_accuracy']):>6s} "
+                   f"{_pct(f.get('localisation_truth_accuracy')):>6s} "
                    f"{_num(f['shrink_abs_error_mean']):>11s}/"
                    f"{_num(f['shrink_abs_error_max']):<10s} "
                    f"{f['seconds_per_case']:7.2f} "
                    f"{_num(f['time_ratio'], '.1f'):>9s}")
     out.append("  clean: cases with an attribution / clean cases; outside: named / out-of-library "
                "cases; x base id: seconds per case / one base identification of that plant's clean "
-               "case, timed in the same worker")
-    out.append(f"\n{'effect':15s} {'top-1':>9s} {'where':>9s} {'evidence':>9s} {'undetect.':>9s}  "
-               f"named instead")
+               "case, timed in the same worker; loc/evid: top region in the effect's family "
+               "(EXPECTED_FAMILIES / EXPECTED_EVIDENCE); true: the report's top region is the "
+               "noise-free gap's (truth - base fit)")
+    out.append(f"\n{'effect':15s} {'top-1':>9s} {'where':>9s} {'evidence':>9s} {'true':>9s} "
+               f"{'undetect.':>9s}  named instead")
     for eff, e in res["per_effect"].items():
         na = eff in ("clean", "outside")
         loc = "-" if na else f"{e['loc_correct']}/{e['cases']}"
         lev = "-" if na else f"{e['loc_evidence_correct']}/{e['cases']}"
+        ltr = "-" if na else f"{e.get('loc_truth', 0)}/{e['cases']}"
         named = ", ".join(f"{k} x{v}" for k, v in sorted(e["named"].items(), key=lambda kv: -kv[1]))
-        out.append(f"{eff:15s} {e['correct']:4d}/{e['cases']:<4d} {loc:>9s} {lev:>9s} "
+        out.append(f"{eff:15s} {e['correct']:4d}/{e['cases']:<4d} {loc:>9s} {lev:>9s} {ltr:>9s} "
                    f"{e['undetectable']:9d}  {named}")
     plants = list(res["per_plant"])
     if len(plants) > 1:  # correct / cases of each effect on each plant

@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import json
-import sys
 
 from friction.dataset import load_dataset, parse_mapping
 from frictionlab.progress import report as say

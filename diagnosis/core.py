@@ -27,6 +27,7 @@ from friction.metrics import nrmse
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
+from .significance import improvement_z, z_threshold
 from .transfer import transfer_applicable, transfer_scores
 
 __all__ = ["diagnose", "DiagnosisReport", "noise_floor", "BASE_NAMES", "extrapolation", "decide",
@@ -97,8 +98,10 @@ class DiagnosisReport(dict):
             lines.append(f"  {w['share'] * 100:5.1f} %  {w['label']}  (NRMSE {w['nrmse']:.3g})")
         lines.append("which (held-out validation NRMSE before -> after):")
         for e in self["effects"]:
+            z = f"  z {e['significance_z']:5.1f}" if "significance_z" in e else ""
             lines.append(f"  {e['name']:15s} {e['validation_before']:.4g} -> "
-                         f"{e['validation_after']:.4g}  gap closed {e['gap_closed'] * 100:6.1f} %")
+                         f"{e['validation_after']:.4g}  gap closed {e['gap_closed'] * 100:6.1f} %"
+                         + z)
         lines.append(f"verdict: {v['cause']} (gap closed {v['gap_closed'] * 100:.1f} %)")
         if self.get("transfer"):
             lines.append(f"scored by transfer: {self['transfer']['explanation']}")
@@ -129,6 +132,23 @@ def _base_law(model, fit) -> tuple[FrictionModel, list[str]]:
         drop = ("alpha", "b") if hasattr(law.params, "shape") else ("b",)
         names = [n for n in law.free_names() if not n.endswith("_neg") and n not in drop]
     return law, list(names)
+
+
+def fit_base(fit, model, ctx=None, seed: int = 0):
+    """The diagnosis' base fit: ``model`` identified on ``fit``, then polished as a composite
+    with no effect (the same least squares every candidate is fitted with).
+
+    Returns
+    -------
+    (Composite, list of str, float)
+        The fitted base, the names of its free parameters and its fit NRMSE.
+    """
+    from identification import identify
+    ctx = ctx or make_context(fit)
+    law0, base_names = _base_law(model, fit)
+    res = identify(fit, law0, names=base_names, seed=seed)
+    base, base_fit = fit_composite(res["model"], base_names, [], fit, ctx)
+    return base, base_names, base_fit
 
 
 def _evidence(data, r) -> dict:
@@ -198,11 +218,34 @@ def decide(effects: list[dict], before: float, floor: float, noise_abs: float = 
     noise ``floor`` (or below ``noise_abs``); the first of ``effects`` (ranked, dicts with
     ``name``, ``gap_closed``, ``excess_closed``) when it closes at least
     :data:`MIN_EXCESS_CLOSED` of the gap above the floor; ``unexplained`` otherwise.
+
+    A gap within the noise ratio but above the floor is still named when the top candidate
+    closes :data:`MIN_EXCESS_CLOSED` of it *and* its held-out improvement is significant:
+    its paired statistic ``significance_z`` (:func:`diagnosis.significance.improvement_z`)
+    reaches the one-sided quantile of :data:`~diagnosis.significance.FAMILY_LEVEL` split
+    over the candidates scored. A long record resolves an effect whose RMS is a fraction of
+    the noise's; effects without the statistic (transfer, trajectory level) keep the ratio.
     """
-    if before <= NOISE_RATIO * floor or before < noise_abs:
+    if before < noise_abs:
         return {"cause": "none", "gap_closed": 0.0,
-                "reason": f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x "
-                          f"the noise floor {floor:.3g}"}
+                "reason": f"held-out residual NRMSE {before:.3g} is below {noise_abs:.3g}"}
+    if before <= NOISE_RATIO * floor:
+        z_need = z_threshold(len(effects)) if effects else np.inf
+        top = effects[0] if effects else {}
+        small_but_real = (before > floor and top.get("excess_closed", 0.0) >= MIN_EXCESS_CLOSED
+                          and top.get("significance_z", 0.0) >= z_need)
+        if not small_but_real:
+            return {"cause": "none", "gap_closed": 0.0,
+                    "reason": f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x "
+                              f"the noise floor {floor:.3g}, and no candidate's held-out "
+                              f"improvement is significant (paired z >= {z_need:.2f})"}
+        return {"cause": top["name"], "gap_closed": top["gap_closed"],
+                "excess_closed": top["excess_closed"], "significance_z": top["significance_z"],
+                "reason": f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x the "
+                          f"noise floor {floor:.3g}, but {top['name']} closes "
+                          f"{100 * top['excess_closed']:.0f} % of the gap above it with a "
+                          f"significant held-out improvement (paired z = "
+                          f"{top['significance_z']:.1f} >= {z_need:.2f}): a small real effect"}
     if not effects or effects[0]["excess_closed"] < MIN_EXCESS_CLOSED:
         return {"cause": "unexplained",
                 "gap_closed": effects[0]["gap_closed"] if effects else 0.0,
@@ -215,6 +258,11 @@ def decide(effects: list[dict], before: float, floor: float, noise_abs: float = 
     return verdict
 
 
+#: keys of each ranked effect in the report
+EFFECT_KEYS = ("name", "validation_before", "validation_after", "gap_closed", "excess_closed",
+               "significance_z", "protocol")
+
+
 def report_sections(where, bands, freq, effects, verdict, sequence, before, final_val,
                     floor) -> dict:
     """The report sections both levels share: the contract's ``where``, ``effects`` and
@@ -222,9 +270,7 @@ def report_sections(where, bands, freq, effects, verdict, sequence, before, fina
     gap = max(before - floor, 1e-12)
     left = max(final_val - floor, 0.0)
     return {"where": where,
-            "effects": [{k: e[k] for k in ("name", "validation_before", "validation_after",
-                                            "gap_closed", "excess_closed", "protocol") if k in e}
-                        for e in effects],
+            "effects": [{k: e[k] for k in EFFECT_KEYS if k in e} for e in effects],
             "verdict": verdict, "where_bands": bands[:12], "where_frequency": freq,
             "greedy": {"sequence": sequence, "validation_final": final_val,
                        "unexplained_nrmse": left, "unexplained_share_of_gap": left / gap},
@@ -259,7 +305,6 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         ``baseline``, ``where``, ``effects``, ``verdict`` (the contract) plus ``where_bands``,
         ``where_frequency``, ``greedy``, ``noise_floor``, ``evidence``, ``skipped``, ``timing``.
     """
-    from identification import identify
 
     t_start = time.perf_counter()
     say = progress or (lambda msg: None)
@@ -279,13 +324,11 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     if unknown:
         raise ValueError(f"unknown candidate effect(s) {unknown}; choose from {list(EFFECT_NAMES)}")
     ctx = make_context(fit)
-    law0, base_names = _base_law(model, fit)
 
     # 1. base fit
-    say(f"[diagnose] fitting base {law0.name} on {len(fit)} samples")
-    res = identify(fit, law0, names=base_names, seed=seed)
-    base = Composite(res["model"], base_names, [], {}, ctx)
-    base, base_fit = fit_composite(base.law, base_names, [], fit, ctx)
+    say(f"[diagnose] fitting base {model if isinstance(model, str) else model.name} on "
+        f"{len(fit)} samples")
+    base, base_names, base_fit = fit_base(fit, model, ctx, seed=seed)
 
     def predict_val(comp: Composite) -> list[np.ndarray]:
         if full is not None:
@@ -296,14 +339,18 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     # transient of the bristle state, not a model error; they are left out of the scores
     skip = [0] if full is not None else [min(200, len(v) // 50) for v in val_sets]
 
-    def val_score(comp: Composite) -> float:
+    F_all = np.concatenate([v.F[k:] for v, k in zip(val_sets, skip)])
+    held_residuals = {}  # pooled held-out residuals of each scored model, for the paired test
+
+    def val_score(comp: Composite, key: str | None = None) -> float:
         # pooled NRMSE over all held-out sets: RMS of all residuals / std of all measured F
         P = predict_val(comp)
-        F_all = np.concatenate([v.F[k:] for v, k in zip(val_sets, skip)])
         P_all = np.concatenate([p[k:] for p, k in zip(P, skip)])
+        if key is not None:
+            held_residuals[key] = F_all - P_all
         return nrmse(F_all, P_all)
 
-    before = val_score(base)
+    before = val_score(base, "base")
     r_val = [v.F - p for v, p in zip(val_sets, predict_val(base))]
     r_val = [r if k == 0 else np.concatenate([np.zeros(k), r[k:]]) for r, k in zip(r_val, skip)]
     val_cat = val_sets[0] if len(val_sets) == 1 else _concat(val_sets)
@@ -332,11 +379,13 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
             if best is None or cost < best[1]:
                 best = (comp, cost)
         comp, cost = best
-        after = val_score(comp)
+        after = val_score(comp, name)
         fitted[name] = comp
         effects.append({"name": name, "validation_before": before, "validation_after": after,
                         "gap_closed": (before - after) / before if before > 0 else 0.0,
                         "excess_closed": (before - after) / max(before - floor, 1e-12),
+                        "significance_z": float(improvement_z(held_residuals["base"],
+                                                              held_residuals[name])),
                         "n_params": len(cand.force_extras(ctx)) + max(len(comp.base_names)
                                                                  - len(base_names), 0),
                         "fit_before": base_fit, "fit_after": cost,
@@ -422,7 +471,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                 f"{100 * e['outside_share']:.0f} % of its samples, so an effect of {key} "
                 f"cannot be identified from the fit data: fit on data that spans it")
     report = DiagnosisReport(
-        baseline={"model": law0.name, "metric": "nrmse", "fit": base_fit, "validation": before},
+        baseline={"model": base.law.name, "metric": "nrmse", "fit": base_fit, "validation": before},
         **report_sections(where, bands, freq, effects, verdict, sequence, before, final_val,
                           floor),
         evidence=_evidence(val_cat, r_cat),

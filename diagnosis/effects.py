@@ -305,10 +305,15 @@ class StribeckShape(Candidate):
         return True, ""
 
     def modify_law(self, law, base_names, ctx):
-        out = [(law, list(base_names) + ["alpha"])]
-        other = "lorentzian" if law.params.shape == "gaussian" else "gaussian"
-        out.append((law.with_values(shape=other), list(base_names)))
-        return out
+        names = list(base_names)
+        if law.params.shape == "gaussian":
+            return [(law, names + ["alpha"]), (law.with_values(shape="lorentzian"), names)]
+        # the exponent acts on the gaussian form only: a lorentzian base gets the gaussian
+        # family with a free exponent, started at alpha = 1 (an exponential tail, closest
+        # to the lorentzian's heavy one) and at 2 (was: the gaussian at alpha = 2 only, so
+        # a lorentzian base could never change its Stribeck exponent)
+        return [(law.with_values(shape="gaussian", alpha=1.0), names + ["alpha"]),
+                (law.with_values(shape="gaussian", alpha=2.0), names + ["alpha"])]
 
 
 class Presliding(Candidate):

@@ -136,9 +136,11 @@ def contract_tables(report) -> tuple[str, str]:
     where = _table(["region", "share of residual energy", "local NRMSE"],
                    [(html.escape(w["label"]), f"{100 * w['share']:.1f} %", f"{w['nrmse']:.3g}")
                     for w in report["where"]])
-    effects = _table(["effect", "held-out before", "after", "gap closed"],
+    effects = _table(["effect", "held-out before", "after", "gap closed",
+                      "improvement z (paired, held-out)"],
                      [(html.escape(e["name"]), f"{e['validation_before']:.4g}",
-                       f"{e['validation_after']:.4g}", f"{100 * e['gap_closed']:.1f} %")
+                       f"{e['validation_after']:.4g}", f"{100 * e['gap_closed']:.1f} %",
+                       f"{e['significance_z']:.1f}" if "significance_z" in e else "-")
                       for e in report["effects"]])
     return where, effects
 

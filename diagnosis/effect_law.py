@@ -8,7 +8,7 @@ import numpy as np
 from numba import njit
 
 from friction import FrictionModel
-from friction.extensions import EXTENSIONS, extension_force, pack_extensions
+from friction.extensions import EXTENSIONS, POSITION_KNOTS, extension_force, pack_extensions
 
 from .effects import Context
 
@@ -51,7 +51,8 @@ def _effect_kernel(base_kernel, nb: int, ns: int):
 
 
 #: parameters whose zero makes a force effect vanish
-_LEVELS = {"acceleration": ("f_a",), "position": ("c_x1", "c_x2", "c_x3", "c_x4"),
+_LEVELS = {"acceleration": ("f_a",),
+           "position": tuple(f"c_x{k}" for k in range(1, POSITION_KNOTS)),
            "drift": ("k_drift",), "load": ("k_L",)}
 
 
@@ -71,7 +72,7 @@ class EffectLaw(FrictionModel):
     effects : dict
         Effect name (:data:`FORCE_EFFECTS`) -> its parameters (the ``Extra`` names of
         :mod:`diagnosis.effects`, physical units: ``f_a`` [N], ``a_s`` [m/s^2], ``v_c``
-        [m/s], ``c_x1..c_x4`` [-], ``k_drift`` [-], ``k_L`` [-]).
+        [m/s], ``c_x1..c_x11`` [-], ``k_drift`` [-], ``k_L`` [-]).
     ctx : Context
         Scales of the fit record (stroke ``x_lo, x_hi`` [m], start ``t0`` and duration ``T``
         [s], mean load ``L0`` [N]) that the effect formulas refer to.

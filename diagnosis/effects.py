@@ -27,6 +27,7 @@ from scipy.signal import lfilter
 
 from friction import make_model
 from friction.dataset import Dataset
+from friction.extensions import POSITION_KNOTS, position_map
 
 __all__ = ["Candidate", "CANDIDATES", "EFFECT_NAMES", "Context", "make_context"]
 
@@ -247,20 +248,18 @@ class AsymmetryTwins(Candidate):
 
 
 class Position(Candidate):
-    ORDER = 4
     stage_doc = "friction level scaled along the stroke"
+    NAMES = tuple(f"c_x{k}" for k in range(1, POSITION_KNOTS))
 
     def extras(self, ctx):
-        return [Extra(f"c_x{k}", 0.0, -1.0, 1.0, "1") for k in range(1, self.ORDER + 1)]
+        return [Extra(n, 0.0, -1.0, 1.0, "1") for n in self.NAMES]
 
     def apply(self, F, p, data, ctx):
-        span = max(ctx.x_hi - ctx.x_lo, 1e-12)
-        xi = np.clip(2.0 * (data.x - ctx.x_lo) / span - 1.0, -1.0, 1.0)
-        coef = np.zeros(self.ORDER + 1)
-        for k in range(1, self.ORDER + 1):
-            coef[k] = p[f"c_x{k}"]
-        # friction level varying along the stroke: a smooth Legendre series in position
-        return F * (1.0 + np.polynomial.legendre.legval(xi, coef))
+        # friction level varying along the stroke: a friction map, linear between equally
+        # spaced knots over the fit record's stroke (a local defect, a worn section)
+        span_hi = max(ctx.x_hi, ctx.x_lo + 1e-12)
+        return F * (1.0 + position_map(data.x, ctx.x_lo, span_hi,
+                                       [p.get(n, 0.0) for n in self.NAMES]))
 
 
 class Inertia(Candidate):

@@ -15,7 +15,7 @@ candidate           how it enters the plant model
                     (:meth:`diagnosis.effects.StribeckShape.modify_law`)
 ``presliding``      a static map replaced by LuGre (same hook as the force level)
 ``acceleration``    :class:`EffectLaw`: ``F + f_a tanh(a/a_s) exp(-|v|/v_c)``
-``position``        :class:`EffectLaw`: ``F (1 + Legendre series in x)``
+``position``        :class:`EffectLaw`: ``F (1 + piecewise-linear map in x)``
 ``drift``           :class:`EffectLaw`: ``F (1 + k_drift (t - t0) / T)``, absolute time
 ``load``            :class:`EffectLaw`: ``F max(0, 1 + k_L (load - L0) / L0)`` (plants with a load)
 ``inertia``         the plant's moving mass ``M -> M + dm`` (a mass error of the model)

@@ -305,7 +305,6 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         ``baseline``, ``where``, ``effects``, ``verdict`` (the contract) plus ``where_bands``,
         ``where_frequency``, ``greedy``, ``noise_floor``, ``evidence``, ``skipped``, ``timing``.
     """
-
     t_start = time.perf_counter()
     say = progress or (lambda msg: None)
     fit = _as_dataset(fit_data, mapping, scale)

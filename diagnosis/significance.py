@@ -57,8 +57,8 @@ def improvement_z(r_base, r_cand, lags: int | None = None) -> float:
     s = float(x @ x) / n
     for k in range(1, L + 1):
         s += 2.0 * (1.0 - k / (L + 1.0)) * float(x[k:] @ x[:-k]) / n
-    if s <= 0.0:
-        return 0.0 if m == 0.0 else float(np.sign(m) * np.inf)
+    if s <= 0.0:  # a constant differential: no spread to compare with (kept finite for JSON)
+        return 0.0 if m == 0.0 else float(np.sign(m) * 1e12)
     return float(m / np.sqrt(s / n))
 
 

@@ -16,9 +16,12 @@ outside the library (see :mod:`diagnosis.benchmark`), prints per plant and overa
   the same run; and a full 20,000-sample diagnosis against one base identification.
 
     python benchmarks/bench_diagnosis.py [--quick] [--workers N] [--generic] [--json OUT]
+                                         [--checkpoint FILE]
 
 ``--quick``: one strength and noise level, short plant protocols (about 2 min).
 ``--generic``: also the historical generic mass-like benchmark.
+``--checkpoint FILE``: finished cases are appended to FILE; an interrupted run started again
+with the same FILE resumes where it stopped.
 
 Results (2026-11-21 14:20 UTC, full grid: strengths 0.5/1, noise 1 %/3 % of std(F); 192
 cases, 231 s wall on 2 workers of a shared 2-core machine, one BLAS thread):
@@ -108,12 +111,15 @@ def main(argv=None):
     ap.add_argument("--generic", action="store_true")
     ap.add_argument("--json", default=None)
     ap.add_argument("--plants", default=",".join(PLANT_NAMES))
+    ap.add_argument("--checkpoint", default=None,
+                    help="JSON-lines file of finished cases; run again with it to resume")
     args = ap.parse_args(argv)
     strengths = (1.0,) if args.quick else (0.5, 1.0)
     noises = (0.02,) if args.quick else (0.01, 0.03)
     t0 = time.perf_counter()
     res = run_benchmark(strengths=strengths, noises=noises, plants=args.plants.split(","),
-                        quick=args.quick, workers=args.workers, progress=print)
+                        quick=args.quick, workers=args.workers, progress=print,
+                        checkpoint=args.checkpoint)
     wall = time.perf_counter() - t0
     print(format_summary(res, f"per plant: strengths {strengths}, noise {noises} x std(F), "
                      f"{len(res['rows'])} cases, {wall:.0f} s wall on {args.workers} worker(s)"))

@@ -796,7 +796,8 @@ def _run_one(job):
     rep = diagnose(data, model, seed=dseed)
     dt = time.perf_counter() - t0
     row = {"plant": plant or "generic", "effect": eff, "strength": s, "noise": nz,
-           "samples": len(data), "effect_rms": erms, "base_id_seconds": _BASE_SECONDS[key]}
+           "samples": len(data), "effect_rms": erms, "base_id_seconds": _BASE_SECONDS[key],
+           "_job": job}
     row.update(_score(eff, expected(eff), rep, data, truth, dt))
     return row
 
@@ -818,9 +819,34 @@ def _base_identification_seconds(plant, quick, seed):
     return time.perf_counter() - t0
 
 
+def _job_key(job) -> str:
+    plant, eff, s, nz, seed, quick, dseed = job
+    return f"{plant}|{eff}|{s!r}|{nz!r}|{seed}|{int(bool(quick))}|{dseed}"
+
+
+def _load_checkpoint(path, keys) -> dict:
+    """Rows already scored in the checkpoint file ``path`` (one JSON object per line, with
+    its job ``key``), for the jobs in ``keys``; a truncated last line (a run killed while
+    writing) is ignored."""
+    import json
+    import os
+    done = {}
+    if path is None or not os.path.exists(path):
+        return done
+    with open(path) as fh:
+        for line in fh:
+            try:
+                row = json.loads(line)
+            except json.JSONDecodeError:
+                continue
+            if isinstance(row, dict) and row.get("key") in keys:
+                done[row["key"]] = row
+    return done
+
+
 def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed=0,
                   progress=None, plants=None, quick: bool = False, workers: int = 1,
-                  clean_repeats: int = 1) -> dict:
+                  clean_repeats: int = 1, checkpoint=None) -> dict:
     """Run every case and score it.
 
     Parameters
@@ -842,6 +868,10 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
         Processes running cases in parallel (1: in this process).
     clean_repeats : int
         Clean cases per (noise, strength) with different noise seeds.
+    checkpoint : str or path, optional
+        File the scored rows are appended to as they finish (JSON lines); a run started
+        again with the same file and grid skips the cases already in it (resume after an
+        interruption).
 
     Returns
     -------
@@ -870,9 +900,30 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
                         jobs.append((plant, eff, s, nz, seed + len(jobs) + 1, quick, seed))
     say = progress or (lambda msg: None)
     rows = []
+    keys = [_job_key(j) for j in jobs]
+    resumed = _load_checkpoint(checkpoint, set(keys))
+    if resumed:
+        say(f"[benchmark] resuming: {len(resumed)} of {len(jobs)} cases read from {checkpoint}")
+        rows.extend(resumed[k] for k in keys if k in resumed)
+    todo = [j for j, k in zip(jobs, keys) if k not in resumed]
+    if checkpoint is not None and resumed:
+        with open(checkpoint, "rb+") as fh:  # a line cut by the interruption: end it
+            fh.seek(0, 2)
+            if fh.tell() > 0:
+                fh.seek(-1, 2)
+                if fh.read(1) != b"\n":
+                    fh.write(b"\n")
 
     def done(row, k):
         rows.append(row)
+        if checkpoint is not None:
+            import json
+            row["key"] = _job_key(row.pop("_job"))
+            with open(checkpoint, "a") as fh:
+                fh.write(json.dumps(row, default=float) + "\n")
+        else:
+            row.pop("_job", None)
+        k += len(resumed)
         lc = row["loc_correct"]
         lc = "-" if lc is None else "ok" if lc else "miss"
         say(f"[benchmark {k}/{len(jobs)}] {row['plant']} {row['effect']} s={row['strength']} "
@@ -882,16 +933,19 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
             f"shrink {row['gap_closed']:.2f} vs truth {row['truth_shrink']:.2f}; "
             f"{row['seconds']:.1f} s")
 
-    if workers > 1 and len(jobs) > 1:
+    if workers > 1 and len(todo) > 1:
         import multiprocessing as mp
         from concurrent.futures import ProcessPoolExecutor
         with ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("spawn"),
                                  initializer=_init_worker, initargs=(dict(_KIN_CACHE),)) as ex:
-            for k, row in enumerate(ex.map(_run_one, jobs), 1):
+            for k, row in enumerate(ex.map(_run_one, todo), 1):
                 done(row, k)
     else:
-        for k, job in enumerate(jobs, 1):
+        for k, job in enumerate(todo, 1):
             done(_run_one(job), k)
+    order = {k: i for i, k in enumerate(keys)}  # the grid's order, resumed or not
+    if checkpoint is not None:
+        rows.sort(key=lambda r: order[r["key"]])
     return summarise(rows)
 
 

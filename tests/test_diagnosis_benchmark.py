@@ -324,6 +324,28 @@ def test_benchmark_top1_goal_on_every_plant():
     assert res["overall"]["shrink_abs_error_mean"] < 0.15
 
 
+def test_benchmark_resumes_from_its_checkpoint(tmp_path):
+    ck = tmp_path / "bench.jsonl"
+    grid = dict(effects=("clean", "drift"), strengths=(1.0,), noises=(0.02,),
+                plants=["xml350"], quick=True, checkpoint=ck)
+    full = run_benchmark(**grid)
+    lines = ck.read_text().splitlines()
+    assert len(lines) == 2
+    # interrupted after the first case, while writing the second
+    ck.write_text(lines[0] + "\n" + lines[1][:40])
+    said = []
+    again = run_benchmark(**grid, progress=said.append)
+    assert said[0].startswith("[benchmark] resuming: 1 of 2")
+    assert sum(m.startswith("[benchmark 2/2]") for m in said) == 1  # only the missing case
+    assert [r["verdict"] for r in again["rows"]] == [r["verdict"] for r in full["rows"]]
+    assert [r["effect"] for r in again["rows"]] == ["clean", "drift"]
+    assert again["top1_accuracy"] == full["top1_accuracy"]
+    # the cut line was ended, so a third run finds both cases and scores none
+    said = []
+    run_benchmark(**grid, progress=said.append)
+    assert said == ["[benchmark] resuming: 2 of 2 cases read from " + str(ck)]
+
+
 def test_cli_benchmark_needs_no_data_and_takes_plants():
     from frictionlab.cli import build_parser, main
     args = build_parser().parse_args(["diagnose", "--benchmark", "--plants", "xml350,valve"])

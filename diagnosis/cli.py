@@ -41,9 +41,23 @@ def run_diagnose_cli(args) -> int:
     scale = _scale(args.scale)
     sets = [load_dataset(p, mapping=mapping, scale=scale) for p in args.data]
     rep = diagnose(sets[0], args.model, validation=sets[1:] or None, seed=args.seed,
-                   candidates=_candidates(args), progress=None if quiet else say)
+                   candidates=_candidates(args), progress=None if quiet else say,
+                   noise_level=_noise_level(args, mapping, scale))
     from .report_html import write_html
     return _emit(rep, args, write_html)
+
+
+def _noise_level(args, mapping, scale):
+    """``--noise-level`` [N], or the spread of a standstill record's force (``--noise-record``)."""
+    level = getattr(args, "noise_level", None)
+    record = getattr(args, "noise_record", None)
+    if level is not None and record:
+        raise ValueError("give --noise-level or --noise-record, not both")
+    if record:
+        import numpy as np
+        F = np.asarray(load_dataset(record, mapping=mapping, scale=scale).F, float)
+        return float(np.std(F))
+    return level
 
 
 def _candidates(args):

@@ -70,6 +70,12 @@ def build_parser() -> argparse.ArgumentParser:
                    help="trajectory level: in-process plant (default) or plant + friction FMUs")
     g.add_argument("--candidates", default=None,
                    help="comma-separated candidate effects to try (default all), both levels")
+    g.add_argument("--noise-level", type=float, default=None,
+                   help="RMS of the force measurement's noise [N] (default: estimated from the "
+                   "residual, which under-reads filtered, coloured noise)")
+    g.add_argument("--noise-record", default=None,
+                   help="a standstill record (CSV/.mat, same --map/--scale): the spread of its "
+                   "force channel is the noise level")
     return ap
 
 

@@ -129,3 +129,67 @@ def test_stribeck_shape_candidate_frees_the_exponent_of_a_lorentzian_base():
     fitted = rep["effect_details"]["stribeck_shape"]["params"]
     assert fitted["alpha"] == pytest.approx(0.7, abs=0.1)
     assert rep["verdict"]["cause"] == "stribeck_shape"
+
+
+# -- the noise level: estimated, or given by the user ------------------------------------------
+def _coloured_clean_case(tau=3.0, rel=0.02):
+    """A clean valve case whose force noise went through a first-order filter (tau samples),
+    as an anti-alias filter or a filtered inverse dynamics colours it."""
+    from scipy.signal import lfilter
+
+    from friction.dataset import Dataset
+    case = make_plant_case("valve", "clean", 1.0, 0.0, seed=5, quick=True)
+    rng = np.random.default_rng(7)
+    a = np.exp(-1.0 / tau)
+    n = lfilter([1 - a], [1, -a], rng.standard_normal(len(case.data)))
+    n *= rel * np.std(case.truth) / np.std(n)
+    d = case.data
+    data = Dataset.from_arrays(d.t, case.truth + n, x=d.x, v=d.v, a=d.a, load=d.load,
+                               check_units=False)
+    return data, case.base, float(np.std(n))
+
+
+def test_coloured_noise_is_never_given_a_name_and_is_none_once_its_level_is_known():
+    data, base, sd_noise = _coloured_clean_case()
+    rep = diagnose(data, base)
+    # the second differences under-read filtered noise: the gap reads as structure, but no
+    # candidate may claim it
+    assert rep["noise_source"] == "estimated"
+    assert rep["verdict"]["cause"] in ("none", "unexplained")
+    given = diagnose(data, base, noise_level=sd_noise)
+    assert given["noise_source"] == "given"
+    assert given["verdict"]["cause"] == "none"
+
+
+def test_bad_noise_level_named(tmp_path):
+    data, base, sd_noise = _coloured_clean_case()
+    for bad in (0.0, -1.0, float("nan"), "loud"):
+        with pytest.raises(ValueError, match="noise_level"):
+            diagnose(data, base, noise_level=bad, candidates=["drift"])
+    # a level above the force's whole spread: a unit slip (mN for N)
+    with pytest.raises(ValueError, match="unit"):
+        diagnose(data, base, noise_level=1000 * sd_noise * 50, candidates=["drift"])
+
+
+def test_cli_takes_the_noise_level_from_a_standstill_record(tmp_path):
+    import json
+
+    from frictionlab.cli import main
+    data, base, sd_noise = _coloured_clean_case()
+    fit = tmp_path / "run.csv"
+    data.to_csv(fit)
+    rng = np.random.default_rng(9)
+    t = np.arange(2000) * data.dt
+    F = 0.3 + sd_noise * rng.standard_normal(t.size)
+    still = tmp_path / "standstill.csv"
+    np.savetxt(still, np.c_[t, np.zeros_like(t), np.zeros_like(t), F], delimiter=",",
+               header="t,x,v,F", comments="")
+    out = tmp_path / "gap.json"
+    assert main(["diagnose", str(fit), "--model", "lugre", "--noise-record", str(still),
+                 "--json", str(out), "--candidates", "drift,asymmetry"]) == 0
+    rep = json.loads(out.read_text())
+    assert rep["noise_source"] == "given"
+    assert rep["noise_floor"] == pytest.approx(np.std(F) / np.std(data.F[int(0.7 * len(data)):]),
+                                               rel=0.05)
+    assert main(["diagnose", str(fit), "--model", "lugre", "--noise-record", str(still),
+                 "--noise-level", "0.1"]) != 0

@@ -943,8 +943,8 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
     else:
         for k, job in enumerate(todo, 1):
             done(_run_one(job), k)
-    order = {k: i for i, k in enumerate(keys)}  # the grid's order, resumed or not
-    if checkpoint is not None:
+    if checkpoint is not None:  # the grid's order, resumed or not
+        order = {k: i for i, k in enumerate(keys)}
         rows.sort(key=lambda r: order[r["key"]])
     return summarise(rows)
 

@@ -8,7 +8,7 @@ import numpy as np
 from numba import njit
 
 from friction import FrictionModel
-from friction.extensions import EXTENSIONS, POSITION_KNOTS, extension_force, pack_extensions
+from friction.extensions import EXTENSIONS, POSITION_NAMES, extension_force, pack_extensions
 
 from .effects import Context
 
@@ -52,7 +52,7 @@ def _effect_kernel(base_kernel, nb: int, ns: int):
 
 #: parameters whose zero makes a force effect vanish
 _LEVELS = {"acceleration": ("f_a",),
-           "position": tuple(f"c_x{k}" for k in range(1, POSITION_KNOTS)),
+           "position": POSITION_NAMES,
            "drift": ("k_drift",), "load": ("k_L",)}
 
 

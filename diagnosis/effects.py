@@ -27,7 +27,7 @@ from scipy.signal import lfilter
 
 from friction import make_model
 from friction.dataset import Dataset
-from friction.extensions import POSITION_KNOTS, position_map
+from friction.extensions import POSITION_NAMES, position_map
 
 __all__ = ["Candidate", "CANDIDATES", "EFFECT_NAMES", "Context", "make_context"]
 
@@ -252,7 +252,7 @@ class AsymmetryTwins(Candidate):
 
 class Position(Candidate):
     stage_doc = "friction level scaled along the stroke"
-    NAMES = tuple(f"c_x{k}" for k in range(1, POSITION_KNOTS))
+    NAMES = POSITION_NAMES
 
     def extras(self, ctx):
         return [Extra(n, 0.0, -1.0, 1.0, "1") for n in self.NAMES]

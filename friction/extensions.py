@@ -25,7 +25,7 @@ import math
 import numpy as np
 from numba import njit
 
-__all__ = ["EXTENSIONS", "EXTENSION_PARAMS", "EXTENSION_INDEX", "POSITION_KNOTS",
+__all__ = ["EXTENSIONS", "EXTENSION_PARAMS", "EXTENSION_INDEX", "POSITION_KNOTS", "POSITION_NAMES",
            "extension_force", "pack_extensions", "position_map"]
 
 #: extension names, in the order of their switches in the packed vector
@@ -34,6 +34,8 @@ EXTENSIONS = ("acceleration", "position", "drift", "load")
 #: defect a tenth of the stroke wide (93 % of a Gaussian bump of sigma 0.08 x stroke, where
 #: the former 4th-order Legendre series caught 45-60 %)
 POSITION_KNOTS = 12
+#: names of the position map's free knot values (knot 0 is pinned at 0)
+POSITION_NAMES = tuple(f"c_x{k}" for k in range(1, POSITION_KNOTS))
 
 #: packed layout: (name, default, unit, description)
 EXTENSION_PARAMS = (
@@ -45,9 +47,9 @@ EXTENSION_PARAMS = (
     ("x_lo", 0.0, "m", "start of the stroke the position map refers to"),
     ("x_hi", 1.0, "m", "end of the stroke the position map refers to (> x_lo)"),
 ) + tuple(
-    (f"c_x{k}", 0.0, "1", f"relative level change at knot {k} of the stroke map (knot 0 at "
-                          f"x_lo is 0; knot {POSITION_KNOTS - 1} at x_hi)")
-    for k in range(1, POSITION_KNOTS)
+    (n, 0.0, "1", f"relative level change at knot {k} of the stroke map (knot 0 at x_lo is "
+                  f"0; knot {POSITION_KNOTS - 1} at x_hi)")
+    for k, n in enumerate(POSITION_NAMES, 1)
 ) + (
     ("use_drift", 0.0, "1", "level drift over time on (1) or off (0)"),
     ("k_drift", 0.0, "1", "relative level change per duration T"),
@@ -146,8 +148,8 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
         elif name == "position":
             e[ix["use_pos"]] = 1.0
             e[ix["x_lo"]], e[ix["x_hi"]] = x_lo, x_hi
-            for k in range(1, POSITION_KNOTS):
-                e[ix[f"c_x{k}"]] = p.get(f"c_x{k}", 0.0)
+            for n in POSITION_NAMES:
+                e[ix[n]] = p.get(n, 0.0)
         elif name == "drift":
             e[ix["use_drift"]] = 1.0
             e[ix["k_drift"]] = p["k_drift"]

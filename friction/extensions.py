@@ -80,6 +80,9 @@ def position_map(x, x_lo: float, x_hi: float, c) -> np.ndarray:
                          f"got {c.size}")
     if not x_hi > x_lo:
         raise ValueError(f"x_hi = {x_hi!r} is out of bounds: must be > x_lo = {x_lo!r} [m]")
+    bad = np.flatnonzero(~np.isfinite(c))
+    if bad.size:
+        raise ValueError(f"{POSITION_NAMES[bad[0]]} = {c[bad[0]]!r} is not a finite number")
     knots = np.linspace(x_lo, x_hi, POSITION_KNOTS)
     return np.interp(x, knots, np.concatenate([[0.0], c]))
 

@@ -270,6 +270,8 @@ def test_position_map_is_piecewise_linear_and_the_compiled_formula():
         position_map(x, -0.02, 0.03, c[:-1])
     with pytest.raises(ValueError, match="x_hi"):
         position_map(x, 0.03, -0.02, c)
+    with pytest.raises(ValueError, match="c_x3"):
+        position_map(x, -0.02, 0.03, np.r_[c[:2], np.nan, c[3:]])
 
 
 # -- run_benchmark -----------------------------------------------------------------------------

@@ -211,7 +211,81 @@ class FrictionModel:
 
     # -- written once -------------------------------------------------------------------
     def initial_state(self) -> np.ndarray:
+        """State of a contact at rest with no history: zeros (bristles undeflected)."""
         return np.zeros(len(self.state_names))
+
+    def steady_state_state(self, v0, **inputs) -> np.ndarray:
+        """The state the law settles to when sliding at the constant velocity ``v0``.
+
+        The initial state consistent with a record that starts in motion: started from it,
+        the law gives its steady-state force :meth:`steady_state` from the first sample on,
+        instead of the start-up transient of an undeflected bristle (``z = 0`` at speed
+        gives ``F = (sigma1 + sigma2) v``, a spike of a stiff, damped contact). For the
+        classic LuGre ``z = g(v0) sgn(v0) / sigma0``.
+
+        Written once for every law whose state equations are affine in each state and
+        decoupled, ``ds_i/dt = c_i - k_i s_i`` at frozen inputs (the LuGre family: the
+        bristle deflection, the MRE hysteretic variable, a first-order lag): each state
+        is the root ``c_i / k_i`` of its own derivative, found from two evaluations of
+        :meth:`derivatives`. A state that does not relax at ``v0`` (``k_i = 0``: at rest,
+        or a rate switched off) keeps its rest value 0. Laws whose states are coupled,
+        nonlinear in themselves, or frozen by design at speed override this.
+
+        Parameters
+        ----------
+        v0 : float
+            Velocity [m/s] at which the law slides.
+        **inputs : float
+            The law's other inputs at that instant, as :meth:`derivatives` takes them:
+            ``a`` [m/s^2], ``load`` [N], ``x`` [m].
+
+        Returns
+        -------
+        ndarray, shape (n_states,)
+            The steady state, in the units of ``state_names`` (``z`` [m], ...); zeros at
+            ``v0 = 0`` for the LuGre family (the rest state).
+        """
+        n = len(self.state_names)
+        s = np.zeros(n)
+        v0 = float(v0)
+        if n == 0 or v0 == 0.0 or not math.isfinite(v0):
+            return s
+        d0 = np.asarray(self.derivatives(np.zeros(n), v0, **inputs), float)
+        for i in range(n):
+            e = np.zeros(n)
+            # a unit step of state i: the slope -k_i is exact for an affine derivative
+            e[i] = 1.0
+            slope = float(np.asarray(self.derivatives(e, v0, **inputs), float)[i] - d0[i])
+            if slope < 0.0 and math.isfinite(slope) and math.isfinite(d0[i]):
+                s[i] = -d0[i] / slope
+        return s
+
+    def record_start_state(self, t, v, *, a=None, load=None, x=None) -> np.ndarray:
+        """Initial state consistent with the first sample of a record (see
+        :meth:`steady_state_state`): the steady state at the record's first velocity and
+        inputs; the rest state (zeros) for a record that starts at rest.
+
+        Parameters
+        ----------
+        t, v : array_like, shape (N,)
+            Time [s] and velocity [m/s] of the record.
+        a, load, x : array_like, shape (N,), optional
+            Acceleration [m/s^2], load [N], displacement [m] where the law needs them.
+
+        Returns
+        -------
+        ndarray, shape (n_states,)
+        """
+        t, v, a, load, x = self._inputs(t, v, a, load, x)
+        return self._start_from(v, a, load, x)
+
+    def _start_from(self, v, a, load, x) -> np.ndarray:
+        """:meth:`record_start_state` of validated kernel inputs (see :meth:`_inputs`)."""
+        if v.size == 0:
+            return self.initial_state()
+        inputs = {k: float(arr[0]) for k, arr in (("a", a), ("load", load), ("x", x))
+                  if k in self.extra_inputs and arr.size}
+        return self.steady_state_state(float(v[0]), **inputs)
 
     def _inputs(self, t, v, a=None, load=None, x=None):
         t, v, extra = check_signals(t, v, a=a, load=load, x=x)
@@ -242,8 +316,10 @@ class FrictionModel:
             that need them (``extra_inputs``).
         method : {"exact", "euler"}
             Bristle update. ``exact`` is stable at any step size.
-        state0 : array_like, optional
-            Initial state (default zeros).
+        state0 : array_like or "steady", optional
+            Initial state (default zeros: at rest). ``"steady"``: the state consistent
+            with the first sample, the law's steady state at the first velocity
+            (:meth:`record_start_state`), for a record that starts in motion.
         return_state : bool
             Also return the state trajectory, shape (N, n_states).
 
@@ -255,7 +331,12 @@ class FrictionModel:
         if method not in METHODS:
             raise ValueError(f"method must be one of {sorted(METHODS)}, got {method!r}")
         t, v, a, load, x = self._inputs(t, v, a, load, x)
-        s0 = self.initial_state() if state0 is None else np.asarray(state0, float).ravel()
+        if isinstance(state0, str):
+            if state0 != "steady":
+                raise ValueError(f"state0 = {state0!r}: give an array or 'steady'")
+            s0 = self._start_from(v, a, load, x)
+        else:
+            s0 = self.initial_state() if state0 is None else np.asarray(state0, float).ravel()
         if s0.size != len(self.state_names):
             raise ValueError(f"state0 must have {len(self.state_names)} entries "
                              f"{self.state_names}, got {s0.size}")

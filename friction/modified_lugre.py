@@ -393,6 +393,31 @@ class ModifiedLuGre(DirectionalStribeck, FrictionModel):
         v = np.asarray(v, dtype=float)
         return self.g(v) * np.sign(v) + self.sigma2_of(v) * v + self.params.b
 
+    def steady_state_state(self, v0, a=None, **inputs) -> np.ndarray:
+        """State (z, q) settled at the constant velocity ``v0`` [m/s] (see
+        :meth:`friction.base.FrictionModel.steady_state_state`).
+
+        ``z = g(v0) sgn(v0) / sigma0`` [m] whatever the switch: where Gamma(v0) = 0 (the
+        cosine form beyond v2) the bristle rate vanishes and the generic root finding has
+        no slope, but the state the law was heading to is still this one. ``q`` is the lag
+        state at the acceleration ``a`` [m/s^2] of that instant (0 when not given: constant
+        speed): F_d^ss(v0, a) [N] (``fd_form="lag"``) or ``a`` itself
+        (``"filtered_acceleration"``); 0 when tau = 0 (the state then carries nothing).
+        """
+        v0 = float(v0)
+        p = self.params
+        if v0 == 0.0 or not math.isfinite(v0):
+            return np.zeros(2)
+        z = float(self.g(v0)) * math.copysign(1.0, v0) / p.sigma0
+        a0 = 0.0 if a is None else float(a)
+        if p.tau == 0.0 or not math.isfinite(a0):
+            q = 0.0
+        elif p.fd_form == "lag":
+            q = float(self.fd_steady(v0, a0))
+        else:
+            q = a0
+        return np.array([z, q])
+
     def _zdot(self, z, v):
         p = self.params
         return float(self.gamma_switch(v)) * (v - p.sigma0 * abs(v) / float(self.g(v)) * z)

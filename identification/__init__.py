@@ -19,9 +19,9 @@ from .executors import DaskExecutor, InlineExecutor, ProcessExecutor
 from .functions import minimize
 from .objectives import InProcessObjective, Objective
 from .result import IdentificationResult
-from .space import ParameterSpace, default_bounds
+from .space import ParameterSpace, default_bounds, default_names
 
 __all__ = ["identify", "IdentificationResult", "ALGORITHMS", "DEFAULT_ALGORITHM", "Algorithm",
            "get_algorithm", "confidence_intervals", "Objective", "InProcessObjective",
-           "ParameterSpace", "default_bounds", "InlineExecutor", "ProcessExecutor",
-           "DaskExecutor", "minimize"]
+           "ParameterSpace", "default_bounds", "default_names", "InlineExecutor",
+           "ProcessExecutor", "DaskExecutor", "minimize"]

@@ -143,7 +143,7 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
         validation = load_dataset(validation)
     check_data(data)
     if validation is not None:
-        check_data(validation)
+        check_data(validation, role="validation")
     if isinstance(model, str):
         model = make_model(model)
     if not isinstance(model, FrictionModel):
@@ -248,8 +248,10 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     fit = nrmse(data.F, F_fit)
     val = None
     if validation is not None:
-        F_val = InProcessObjective(model, validation, space.names,
-                                   method=method).predict(x_best[None, :])[0]
+        # scored from the law's steady state at the record's first velocity: a held-out
+        # record that starts in motion is not a start from rest
+        F_val = InProcessObjective(model, validation, space.names, method=method,
+                                   start="steady").predict(x_best[None, :])[0]
         val = nrmse(validation.F, F_val)
     ci = None
     if info.get("jac") is not None and info.get("u") is not None:

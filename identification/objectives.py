@@ -18,19 +18,48 @@ from friction.dataset import Dataset
 __all__ = ["Objective", "InProcessObjective", "check_data"]
 
 
-def check_data(data) -> Dataset:
-    """Validate an identification dataset; raise a clear error on bad data."""
+#: fewest samples a record must have to be fitted or scored (an NRMSE over fewer is noise)
+MIN_SAMPLES = 10
+
+
+def check_data(data, role: str = "fit") -> Dataset:
+    """Validate an identification dataset; raise a clear one-line error on bad data.
+
+    Parameters
+    ----------
+    data : Dataset
+        The record.
+    role : {"fit", "validation"}
+        ``"validation"``: a held-out record, scored and not fitted. It needs
+        :data:`MIN_SAMPLES` samples (refused as "too short to score") and a measured force
+        with a spread (its NRMSE divides by it); it may be at rest throughout.
+    """
+    if role not in ("fit", "validation"):
+        raise ValueError(f"role = {role!r}: must be 'fit' or 'validation'")
     if not isinstance(data, Dataset):
         raise TypeError(f"data must be a friction.dataset.Dataset (load one with "
                         f"friction.load_dataset), got {type(data).__name__}")
+    what = "data" if role == "fit" else (
+        f"validation data {data.name!r}" if data.name else "validation data")
+    if role == "validation" and len(data) < MIN_SAMPLES:
+        raise ValueError(f"{what} has {len(data)} samples: too short to score "
+                         f"(need >= {MIN_SAMPLES})")
     for key in ("t", "v", "F"):
         arr = getattr(data, key)
         bad = ~np.isfinite(arr)
         if bad.any():
             i = int(np.argmax(bad))
-            raise ValueError(f"data.{key}[{i}] = {arr[i]!r} is not finite (first bad sample)")
-    if len(data) < 10:
-        raise ValueError(f"data has {len(data)} samples: too few to identify anything (need >= 10)")
+            raise ValueError(f"{what}: {key}[{i}] = {arr[i]!r} is not finite (first bad sample)"
+                             if role == "validation" else
+                             f"data.{key}[{i}] = {arr[i]!r} is not finite (first bad sample)")
+    if len(data) < MIN_SAMPLES:
+        raise ValueError(f"data has {len(data)} samples: too few to identify anything "
+                         f"(need >= {MIN_SAMPLES})")
+    if role == "validation":
+        if not np.std(data.F) > 0:
+            raise ValueError(f"{what}: the measured force is constant, so its NRMSE is "
+                             f"undefined (std(F) = 0)")
+        return data
     if not np.std(data.F) > 0:
         raise ValueError("data.F is constant: nothing to fit (the measured friction force "
                          "has zero spread)")
@@ -86,31 +115,55 @@ class InProcessObjective(Objective):
         Identified parameters, the columns of ``X``.
     method : {"exact", "euler"}
         Bristle update (``exact``: stable at any step).
+    start : {"rest", "steady"}
+        Initial state of each simulation: the law at rest (zeros, the fit's default), or
+        the law's steady state at the record's first velocity
+        (:meth:`friction.base.FrictionModel.record_start_state`), which a held-out record
+        that starts in motion needs (from rest a stiff, damped bristle would spike).
     """
     parallel_inside = True
 
-    def __init__(self, model: FrictionModel, data: Dataset, names, method: str = "exact"):
+    def __init__(self, model: FrictionModel, data: Dataset, names, method: str = "exact",
+                 start: str = "rest"):
+        if start not in ("rest", "steady"):
+            raise ValueError(f"start = {start!r}: must be 'rest' or 'steady'")
         self.model = model
-        self.data = check_data(data)
+        # a steady start is the held-out protocol: the record is scored, not fitted
+        self.data = check_data(data, role="validation" if start == "steady" else "fit")
         self.names = list(names)
         self.method = method
+        self.start = start
         self._inputs = dict(a=data.a, load=data.load, x=data.x)
         if "load" in model.extra_inputs and data.load is None:
             raise ValueError(f"model {model.name!r} needs a load column [N] in the data")
 
     def predict(self, X) -> np.ndarray:
         X = np.atleast_2d(np.asarray(X, float))
-        if X.shape[0] == 1:
+        if X.shape[0] == 1 or self.start != "rest":
             # one set (least-squares residual): the serial kernel, no thread-pool launch;
-            # same update code as the population kernel, so the same numbers
+            # same update code as the population kernel, so the same numbers. A steady
+            # start depends on each row's values: row by row as well
             m = self.model
-            theta = m.population_theta(self.names, X)[0]
             t, v, a, load, x = self._prepared()
-            F, _ = m._kernel(t, v, a, load, x, theta, METHODS[self.method],
-                             m.initial_state())
-            return F[None, :]
+            rows = []
+            for row in X:
+                theta = m.population_theta(self.names, row[None, :])[0]
+                F, _ = m._kernel(t, v, a, load, x, theta, METHODS[self.method],
+                                 self._state0(row, v, a, load, x))
+                rows.append(F)
+            return np.array(rows)
         return self.model.simulate_population(self.data.t, self.data.v, self.names, X,
                                               method=self.method, **self._inputs)
+
+    def _state0(self, row, v, a, load, x) -> np.ndarray:
+        m = self.model
+        if self.start == "rest":
+            return m.initial_state()
+        try:
+            trial = m.with_values(**dict(zip(self.names, map(float, row))))
+        except (ValueError, TypeError):  # values the law rejects: no steady state to take
+            return m.initial_state()
+        return trial._start_from(v, a, load, x)
 
     def _prepared(self):
         if getattr(self, "_prep", None) is None:

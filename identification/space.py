@@ -14,7 +14,20 @@ import numpy as np
 
 from friction.base import FrictionModel
 
-__all__ = ["ParameterSpace", "default_bounds"]
+__all__ = ["ParameterSpace", "default_bounds", "default_names"]
+
+
+def default_names(model: FrictionModel) -> list[str]:
+    """The parameters :func:`identification.identify` fits when none are named, and the
+    free set of the diagnosis' base law (:func:`diagnosis.core.fit_base`): one definition,
+    so both commands mean the same law by a name.
+
+    Every numeric parameter of the law that is set (:meth:`friction.base.FrictionModel.
+    free_names`): for the classic LuGre sigma0, sigma1, sigma2, Fc, Fs, vs, the Stribeck
+    exponent alpha and the offset b; a direction twin left ``None`` (symmetric law) and a
+    law's preset constants are not identified.
+    """
+    return list(model.free_names())
 
 
 def _unit_kind(unit: str) -> str:
@@ -98,7 +111,7 @@ class ParameterSpace:
     def build(cls, model: FrictionModel, names=None, bounds=None, data=None) -> "ParameterSpace":
         infos = {i.name: i for i in model.Params.info()}
         if names is None:
-            names = model.free_names()
+            names = default_names(model)
         names = list(names)
         if not names:
             raise ValueError("nothing to identify: names is empty")

@@ -49,7 +49,9 @@ def build_parser() -> argparse.ArgumentParser:
     i.add_argument("--algorithm", default=None, help="identification algorithm (default: the "
                    "fast robust one; see identification.ALGORITHMS)")
     i.add_argument("--seed", type=int, default=0, help="random seed (reproducible runs)")
-    i.add_argument("--checkpoint", default=None, help="checkpoint file: resume from it if it exists")
+    i.add_argument("--checkpoint", default=None, help="checkpoint file (JSON-lines evaluation "
+                   "log, written as the run goes): a rerun with the same file resumes to the "
+                   "uninterrupted result; least_squares and static_ls refuse it")
     i.add_argument("--max-evals", type=int, default=None, help="evaluation budget")
 
     g = sub.add_parser("diagnose", help="locate and name the sim-to-real gap of a model")

@@ -1,9 +1,7 @@
 """``identify(data, model, ...)``: one interface over every algorithm and objective."""
 from __future__ import annotations
 
-import hashlib
 import os
-import pickle
 import time
 
 import numpy as np
@@ -14,6 +12,7 @@ from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
 
 from .algorithms import DEFAULT_ALGORITHM, get_algorithm
+from .checkpoint import CHECKPOINT_VERSION, EvaluationLog, fingerprint
 from .objectives import InProcessObjective, Objective, check_data
 from .executors import make_executor
 from .problem import BudgetExhausted, Problem
@@ -21,39 +20,6 @@ from .result import IdentificationResult
 from .space import ParameterSpace
 
 __all__ = ["identify", "confidence_intervals", "CHECKPOINT_VERSION"]
-
-CHECKPOINT_VERSION = 1
-
-
-def _fingerprint(data: Dataset, names, algorithm: str, seed) -> str:
-    h = hashlib.sha1()
-    for arr in (data.t, data.v, data.F):
-        h.update(np.ascontiguousarray(arr).tobytes())
-    h.update(repr((list(names), algorithm, seed)).encode())
-    return h.hexdigest()
-
-
-def _save_checkpoint(path, payload) -> None:
-    tmp = f"{path}.tmp"
-    with open(tmp, "wb") as fh:
-        pickle.dump(payload, fh, protocol=pickle.HIGHEST_PROTOCOL)
-    os.replace(tmp, path)  # atomic: an interrupt never leaves a half-written checkpoint
-
-
-def _load_checkpoint(path, fingerprint):
-    with open(path, "rb") as fh:
-        try:
-            payload = pickle.load(fh)
-        except Exception as exc:
-            raise ValueError(f"checkpoint {path} is unreadable ({exc}); delete it to start "
-                             f"afresh") from None
-    if payload.get("version") != CHECKPOINT_VERSION:
-        raise ValueError(f"checkpoint {path} has version {payload.get('version')}, "
-                         f"expected {CHECKPOINT_VERSION}; delete it to start afresh")
-    if payload.get("fingerprint") != fingerprint:
-        raise ValueError(f"checkpoint {path} belongs to another run (different data, "
-                         f"parameters, algorithm or seed); delete it or choose another file")
-    return payload
 
 
 def confidence_intervals(space: ParameterSpace, u, jac, cost: float, n: int,
@@ -121,14 +87,20 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     progress : None, True or callable(n, info)
         ``True`` prints progress lines on stderr.
     checkpoint : path, optional
-        Step-wise algorithms save their state here every ``checkpoint_every`` iterations
-        (and on interrupt); an existing checkpoint of the same run is resumed.
+        Evaluation log (JSON lines, :mod:`identification.checkpoint`): every evaluation is
+        appended as it finishes, and a run given an existing log of the same data, model,
+        parameters, algorithm and seed replays it, then continues live, giving the result of
+        an uninterrupted run. A file that is not such a log is refused, never executed.
+        Algorithms that cannot resume (``least_squares``, ``static_ls``) refuse it.
     objective : None, "cosim", Objective, or callable(model, data, names) -> Objective
         Default: the in-process numba objective.
     executor : None, "auto", "inline", "processes", dask Client, or object
         Where population evaluations run (see :mod:`identification.executors`).
     method : {"exact", "euler"}
         Bristle update of the in-process objective.
+    checkpoint_every : int
+        ``os.fsync`` the checkpoint every this many logged records (each is flushed to the
+        operating system at once, so an interrupt or a killed process loses nothing).
     **options
         Algorithm options (e.g. ``pop_size``, ``max_iter``).
 
@@ -150,6 +122,14 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
         raise TypeError(f"model must be a registry name or a FrictionModel, got "
                         f"{type(model).__name__}")
     alg = get_algorithm(algorithm if algorithm is not None else DEFAULT_ALGORITHM, **options)
+    if checkpoint is not None and not getattr(alg, "checkpointable", True):
+        # refused, not ignored: a user who asked for a checkpoint must not lose the run
+        raise ValueError(f"algorithm {alg.name!r} cannot use a checkpoint: "
+                         f"{alg.no_checkpoint or 'it cannot resume'}; run it without one")
+    if max_evals is not None and not (isinstance(max_evals, (int, np.integer))
+                                      and max_evals > 0):
+        raise ValueError(f"max_evals = {max_evals!r}: the evaluation budget must be a "
+                         f"positive integer")
     space = ParameterSpace.build(model, names, bounds, data)
 
     if objective is None:
@@ -180,56 +160,47 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
 
     history: list[float] = []
     info: dict = {}
-    elapsed_before = 0.0
-    fingerprint = _fingerprint(data, space.names, alg.name, seed)
-    resumed = False
+    log = None
+    t_problem0 = problem._t0
     try:
+        if checkpoint is not None:
+            obj_kind = objective if isinstance(objective, (str, type(None))) \
+                else type(objective).__name__
+            fp = fingerprint(data, model, space.names, alg.name, seed,
+                             extra=(obj_kind, method))
+            log = problem.log = EvaluationLog(
+                checkpoint, {"fingerprint": fp, "algorithm": alg.name, "model": model.name,
+                             "names": space.names, "seed": seed, "data": data.name},
+                sync_every=checkpoint_every)
+            if prog is not None and log.n_logged:
+                prog(0, f"resuming from {checkpoint}: replaying {log.n_logged} logged "
+                        f"records")
         if alg.steppable:
             state = None
-            if checkpoint is not None and os.path.exists(checkpoint):
-                payload = _load_checkpoint(checkpoint, fingerprint)
-                state = payload["state"]
-                rng.bit_generator.state = payload["rng"]
-                problem.n_evals = payload["n_evals"]
-                problem.best_u, problem.best_cost = payload["best_u"], payload["best_cost"]
-                history = list(payload["history"])
-                elapsed_before = payload["elapsed"]
-                resumed = True
-
-            def save():
-                if checkpoint is not None and state is not None:
-                    _save_checkpoint(checkpoint, dict(
-                        version=CHECKPOINT_VERSION, fingerprint=fingerprint, state=state,
-                        rng=rng.bit_generator.state, n_evals=problem.n_evals,
-                        best_u=problem.best_u, best_cost=problem.best_cost, history=history,
-                        elapsed=elapsed_before + time.perf_counter() - t_start,
-                        algorithm=alg.name, names=space.names))
-
             try:
-                if state is None:
-                    state = alg.start(problem, rng, u0)
-                    history.append(problem.best_cost)
+                state = alg.start(problem, rng, u0)
+                history.append(problem.best_cost)
                 while not alg.finished(state) and not problem.exhausted:
                     state = alg.step(problem, rng, state)
                     history.append(problem.best_cost)
                     if prog is not None:
                         prog(1, f"it {state.get('iteration')} evals {problem.n_evals} "
                                 f"cost={problem.best_cost:.4g}")
-                    if state.get("iteration", 0) % checkpoint_every == 0:
-                        save()
             except BudgetExhausted:
                 pass
-            except KeyboardInterrupt:
-                save()
-                raise
-            save()
             info = dict(state.get("info", {})) if state else {}
         else:
             info = alg.run(problem, rng, u0, progress=prog) or {}
             history = list(info.pop("history", [problem.best_cost]))
     finally:
+        if log is not None:
+            log.close()  # every finished evaluation is in the file, interrupted or not
         if exe is not None and not (executor is not None and hasattr(executor, "costs")):
             exe.close()
+    resumed = log is not None and log.n_replayed > 0
+    if log is not None and log.diverged is not None and prog is not None:
+        prog(0, f"checkpoint: the run left the log at record {log.diverged + 1} of "
+                f"{log.n_logged} (changed options?) and continued live")
 
     if problem.best_u is None:
         raise RuntimeError(f"{alg.name}: no finite cost found (every simulated parameter set "
@@ -260,12 +231,13 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
             ci = confidence_intervals(space, u_ci, info["jac"], problem.best_cost, len(data))
     if obj is not objective and hasattr(obj, "close"):
         obj.close()  # FMU instances we opened are freed now, not at interpreter exit
-    wall = elapsed_before + time.perf_counter() - t_start
+    # a replay moves the problem's clock back to the original run's (problem._t0)
+    wall = time.perf_counter() - t_start + (t_problem0 - problem._t0)
     return IdentificationResult(
         params=params, model=fitted, fit_nrmse=float(fit),
         validation_nrmse=None if val is None else float(val),
         cost_history=[float(c) for c in history], n_evals=int(problem.n_evals),
-        trace=[[int(n), float(sec) + elapsed_before, float(c)] for n, sec, c in problem.trace],
+        trace=[[int(n), float(sec), float(c)] for n, sec, c in problem.trace],
         wall_time=float(wall), ci=ci, algorithm=alg.name, seed=seed,
         options=dict(alg.options), bounds=space.as_json(), resumed=resumed,
         message=str(info.get("message", "")), data=data.name,

@@ -3,14 +3,20 @@
 :class:`Problem` wraps an objective, the parameter space and an executor. Algorithms call
 ``evaluate(U)`` (a population in unit-cube coordinates) or, for least squares,
 ``residuals(u)`` / ``jacobian(u)``. The problem counts simulations, keeps the best point
-and enforces the evaluation budget.
+and enforces the evaluation budget. With a checkpoint (``log``, an
+:class:`identification.checkpoint.EvaluationLog`) every population evaluation and every
+deterministic block run through :meth:`Problem.run_unit` is logged, and replayed from the log
+on a resume.
 """
 from __future__ import annotations
 
 import time
 
+import json
+
 import numpy as np
 
+from .checkpoint import finite_or_none, plain
 from .space import ParameterSpace
 
 __all__ = ["Problem", "BudgetExhausted"]
@@ -42,6 +48,9 @@ class Problem:
         #: (evaluations, seconds since start, best cost) after every improvement
         self.trace: list[tuple[int, float, float]] = []
         self._t0 = time.perf_counter()
+        #: checkpoint log (EvaluationLog) or None
+        self.log = None
+        self._in_unit = False
 
     @property
     def dim(self) -> int:
@@ -79,10 +88,62 @@ class Problem:
         take = int(min(n, self.remaining))
         c = np.full(n, np.inf)
         X = self.space.to_physical(U[:take])
-        c[:take] = self.executor.costs(self.objective, X)
+        c[:take] = self._costs(X)
         self.n_evals += take
         self._track(U[:take], c[:take])
         return c
+
+    def _costs(self, X) -> np.ndarray:
+        """Costs of physical rows ``X``: replayed from the checkpoint log while the run
+        asks for exactly the logged rows, else simulated (and logged)."""
+        log = None if self._in_unit else self.log
+        if log is not None:
+            rec = log.replay_costs(X)
+            if rec is not None:
+                # the original run's clock: trace times and wall time carry on from it
+                self._t0 = time.perf_counter() - float(rec["s"])
+                return np.array([np.inf if c is None else c for c in rec["c"]], float)
+        c = np.asarray(self.executor.costs(self.objective, X), float)
+        if log is not None:
+            log.append({"k": "costs", "X": X, "c": [finite_or_none(v) for v in c],
+                        "s": time.perf_counter() - self._t0})
+        return c
+
+    def run_unit(self, kind: str, key: dict, compute):
+        """Run a deterministic block ``compute() -> dict`` (JSON-able numbers, strings,
+        lists) once per checkpoint.
+
+        Without a log this is ``compute()``. With one, a block whose ``kind`` and ``key``
+        (its inputs) match the next logged record is not run: its logged output is returned
+        and the evaluations, best point and trace it produced are restored. Otherwise it runs
+        and is logged when it finishes (an interrupted block reruns from its start on
+        resume). Both paths return the output after a JSON round trip, so they return equal
+        objects.
+        """
+        log = None if self._in_unit else self.log
+        if log is None:
+            return compute()
+        rec = log.replay_unit(kind, key)
+        if rec is not None:
+            after = rec["after"]
+            self.n_evals = int(after["n_evals"])
+            self.best_cost = np.inf if after["best_cost"] is None else float(after["best_cost"])
+            self.best_u = None if after["best_u"] is None else np.array(after["best_u"], float)
+            self.trace.extend((int(n), float(s), float(c)) for n, s, c in after["trace"])
+            self._t0 = time.perf_counter() - float(rec["s"])
+            return rec["out"]
+        n_trace = len(self.trace)
+        self._in_unit = True  # a block is atomic: nothing inside it is logged on its own
+        try:
+            out = json.loads(json.dumps(plain(compute())))
+        finally:
+            self._in_unit = False
+        log.append({"k": "unit", "kind": kind, "key": key, "out": out,
+                    "after": {"n_evals": self.n_evals,
+                              "best_cost": finite_or_none(self.best_cost),
+                              "best_u": self.best_u, "trace": self.trace[n_trace:]},
+                    "s": time.perf_counter() - self._t0})
+        return out
 
     def residuals(self, u) -> np.ndarray:
         """Scaled residual vector at ``u`` (``sum r^2 = nrmse^2``)."""
@@ -95,6 +156,14 @@ class Problem:
         self._track(u[None, :], np.array([c]))
         return np.where(np.isfinite(r), r, 1e3)
 
+    def jacobian_uncounted(self, u, step: float = 1e-6) -> np.ndarray:
+        """The Jacobian :meth:`jacobian` gives at ``u`` with ``r0`` from :meth:`residuals`
+        (the same numbers), neither counted nor tracked: a replayed least-squares run
+        recomputes its final Jacobian (for confidence intervals) with it."""
+        u = np.clip(np.asarray(u, float), 0.0, 1.0)
+        r = self.objective.residuals(self.space.to_physical(u))
+        return self._jacobian_values(u, np.where(np.isfinite(r), r, 1e3), step)
+
     def jacobian(self, u, r0=None, step: float = 1e-6) -> np.ndarray:
         """Forward-difference Jacobian of the residuals in unit-cube coordinates, all D
         perturbed sets simulated in one population call."""
@@ -102,15 +171,19 @@ class Problem:
         D = u.size
         if self.remaining < D + (r0 is None):
             raise BudgetExhausted
+        self.n_evals += D
+        if r0 is None:
+            r0 = self.objective.residuals(self.space.to_physical(u))
+            self.n_evals += 1
+        return self._jacobian_values(u, r0, step)
+
+    def _jacobian_values(self, u, r0, step) -> np.ndarray:
+        D = u.size
         h = np.full(D, step)
         h = np.where(u + h > 1.0, -h, h)  # step inward at the upper face
         U = np.repeat(u[None, :], D, axis=0) + np.diag(h)
         X = self.space.to_physical(U)
         F = self.objective.predict(X)
-        self.n_evals += D
-        if r0 is None:
-            r0 = self.objective.residuals(self.space.to_physical(u))
-            self.n_evals += 1
         R = (F - self.objective.data.F[None, :]) * self.objective._rscale
         J = (R - r0[None, :]) / h[:, None]
         return np.where(np.isfinite(J), J, 0.0).T

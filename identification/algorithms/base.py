@@ -3,14 +3,19 @@
 Two shapes, both minimising :class:`identification.problem.Problem` over the unit cube:
 
 * **step-wise** (metaheuristics, CMA-ES): ``start(problem, rng, u0) -> state`` then
-  ``step(problem, rng, state) -> state`` until ``finished(state)``. ``state`` is a dict of
-  numpy arrays and numbers (plus picklable objects), so the driver can checkpoint it every
-  few iterations and resume after an interrupt.
+  ``step(problem, rng, state) -> state`` until ``finished(state)``.
 * **one-shot** (wrapped scipy solvers): ``run(problem, rng, u0, progress) -> info dict``.
 
 The driver (:func:`identification.api.identify`) owns budget, progress, cost history and
 checkpoints; the problem owns the best point. ``info`` may carry ``jac`` (for confidence
 intervals) and ``message``.
+
+Checkpoints (:mod:`identification.checkpoint`) log every ``problem.evaluate`` and replay it
+on a resume, so an algorithm that draws its randomness from ``rng`` only and evaluates through
+the problem resumes to the uninterrupted result with nothing more to do. Work that bypasses
+``evaluate`` goes through ``problem.run_unit`` (a logged deterministic block), or the
+algorithm sets ``checkpointable = False`` and says why in ``no_checkpoint``: the driver then
+refuses a checkpoint instead of ignoring it.
 """
 from __future__ import annotations
 
@@ -29,6 +34,9 @@ class Algorithm:
     defaults: dict = {}
     #: one-line source (paper / library)
     source: str = ""
+    #: False: a checkpoint is refused with ``no_checkpoint`` as the reason
+    checkpointable: bool = True
+    no_checkpoint: str = ""
 
     def __init__(self, **options):
         unknown = set(options) - set(self.defaults)

@@ -27,7 +27,60 @@ def run_least_squares(problem, u0, *, method="trf", max_nfev=None, ftol=1e-10, x
 
     Returns the scipy result (``x``, ``jac``, ``fun``) or ``None`` if the budget ran out
     before the first iteration finished.
+
+    With a checkpoint (``problem.log``) the run is one logged block: its Jacobians (D x N
+    each) are too big to log, so a resume skips a finished run (result and evaluation count
+    from the log, ``jac`` recomputed at ``x`` on first use: the same numbers) and reruns an
+    interrupted one from ``u0``.
     """
+    if getattr(problem, "log", None) is None:
+        return _run_least_squares(problem, u0, method=method, max_nfev=max_nfev, ftol=ftol,
+                                  xtol=xtol, gtol=gtol, diff_step=diff_step,
+                                  tr_solver=tr_solver)
+    u0 = np.asarray(u0, float)
+    key = {"u0": u0, "x0": problem.space.to_physical(np.clip(u0, 0.0, 1.0)),
+           "lower": problem.space.lower, "upper": problem.space.upper, "method": method,
+           "max_nfev": max_nfev, "ftol": ftol, "xtol": xtol, "gtol": gtol,
+           "diff_step": diff_step, "tr_solver": tr_solver}
+    live = {}
+
+    def compute():
+        res = live["res"] = _run_least_squares(
+            problem, u0, method=method, max_nfev=max_nfev, ftol=ftol, xtol=xtol, gtol=gtol,
+            diff_step=diff_step, tr_solver=tr_solver)
+        if res is None:
+            return {"none": True}
+        return {"x": res.x, "cost": float(res.cost), "message": str(res.message),
+                "status": int(res.status), "nfev": int(res.nfev),
+                "success": bool(res.success)}
+
+    out = problem.run_unit("least_squares", key, compute)
+    if "res" in live:
+        return live["res"]
+    return None if out.get("none") else _ReplayedLeastSquares(problem, out, diff_step)
+
+
+class _ReplayedLeastSquares:
+    """A finished least-squares run read from a checkpoint: ``x``, ``cost``, ``message``,
+    ``status``, ``nfev``, ``success`` as logged; ``jac`` recomputed at ``x`` when asked."""
+
+    def __init__(self, problem, out, diff_step):
+        self._problem, self._step = problem, diff_step
+        self.x = np.asarray(out["x"], float)
+        self.cost = float(out["cost"])
+        self.message, self.status = out["message"], out["status"]
+        self.nfev, self.success = out["nfev"], out["success"]
+        self._jac = None
+
+    @property
+    def jac(self):
+        if self._jac is None:
+            self._jac = self._problem.jacobian_uncounted(self.x, step=self._step)
+        return self._jac
+
+
+def _run_least_squares(problem, u0, *, method, max_nfev, ftol, xtol, gtol, diff_step,
+                       tr_solver):
     cache = {}
 
     def fun(u):
@@ -54,6 +107,9 @@ class LeastSquares(Algorithm):
     name = "least_squares"
     kind = "local"
     steppable = False
+    checkpointable = False
+    no_checkpoint = ("it is one scipy least-squares run, which cannot be resumed part-way; "
+                     "multistart_ls (the default) resumes after each of its starts")
     defaults = dict(max_nfev=200, ftol=1e-10, xtol=1e-10, gtol=1e-10, tr_solver="lsmr")
     source = "scipy.optimize.least_squares (Branch, Coleman, Li 1999 TRF)"
 

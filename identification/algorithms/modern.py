@@ -12,7 +12,8 @@ __all__ = ["CMAES", "DifferentialEvolution", "ALGORITHM_CLASSES"]
 class CMAES(Algorithm):
     """Covariance-matrix adaptation evolution strategy (Hansen), ``cma.CMAEvolutionStrategy``
     with box constraints on the unit cube; each generation is one population evaluation.
-    Step-wise, so checkpointable (the strategy object pickles)."""
+    Step-wise; a checkpoint replays the logged generations (cma draws from its own seed,
+    taken from ``rng``)."""
     name = "cmaes"
     defaults = dict(sigma0=0.25, pop_size=None, max_iter=300, tol_fun=1e-14, tol_x=1e-12)
     source = "cma (N. Hansen), CMA-ES with bound handling"
@@ -41,7 +42,8 @@ class CMAES(Algorithm):
 
 class DifferentialEvolution(Algorithm):
     """``scipy.optimize.differential_evolution`` (best1bin, Latin-hypercube init), vectorised:
-    one population evaluation per generation. One-shot (scipy drives the loop)."""
+    one population evaluation per generation. One-shot (scipy drives the loop); a checkpoint
+    replays the logged generations (scipy's seed is taken from ``rng``)."""
     name = "differential_evolution"
     steppable = False
     defaults = dict(pop_size=15, max_iter=200, tol=1e-10, mutation=(0.5, 1.0), recombination=0.7,

@@ -156,7 +156,9 @@ class AlternatingLeastSquares(Algorithm):
         L = np.clip(L, box_L[0], box_L[1])
         history = []
         sd = np.std(F)
-        for i in range(self.k):
+
+        def alternate(L, nl):
+            counter[0] = 0
             # nonlinear step: theta_NL with theta_L fixed (bounded LM-type trust region)
             r = least_squares(lambda q: (force(L, q) - F) / sd, nl, bounds=box_NL,
                               method="trf", x_scale=np.maximum(np.abs(nl), 1e-12),
@@ -169,10 +171,19 @@ class AlternatingLeastSquares(Algorithm):
             sol = lsq_linear(A / col, F, bounds=(box_L[0] * col, box_L[1] * col))
             L = sol.x / col
             cost = float(np.sqrt(np.mean((A @ L - F) ** 2)) / sd)
+            problem.n_evals += counter[0]
+            return {"L": L, "nl": nl, "cost": cost}
+
+        for i in range(self.k):
+            # one alternation depends on (L, nl) only: the unit a checkpoint logs and skips
+            out = problem.run_unit(
+                "alternation", {"i": i, "L": L, "nl": nl, "box_L": box_L, "box_NL": box_NL},
+                lambda: alternate(L, nl))
+            L, nl = np.asarray(out["L"], float), np.asarray(out["nl"], float)
+            cost = float(out["cost"])
             history.append(cost)
             if progress is not None:
                 progress(1, f"alternation {i + 1}/{self.k} cost={cost:.4g}")
-        problem.n_evals += counter[0]
         s0f = L[0]
         final = {"sigma0": s0f, "sigma1": L[1], "sigma2": L[2], "b": L[3],
                  "Fc": nl[0] * s0f, "Fs": (nl[0] + nl[1]) * s0f, "vs": float(np.exp(nl[2]))}
@@ -200,6 +211,8 @@ class StaticLeastSquares(Algorithm):
     name = "static_ls"
     kind = "local"
     steppable = False
+    checkpointable = False
+    no_checkpoint = "it is one closed-form static fit (seconds), with nothing to resume"
     defaults = dict(load_tol=None, accel_tol=None)
     source = "seed 004 Eqs. 8, 14-18"
 

@@ -71,8 +71,14 @@ class LoggedSlave:
 
     def init(self, **values) -> None:
         """Set start values, then enter and exit initialization mode."""
+        types = {v.name: v.type for v in self.md.modelVariables}
         for k, v in values.items():
-            self.s.setReal([self.vr[k]], [v])
+            if types[k] == "Boolean":
+                self.s.setBoolean([self.vr[k]], [bool(v)])
+            elif types[k] in ("Integer", "Enumeration"):
+                self.s.setInteger([self.vr[k]], [int(v)])
+            else:
+                self.s.setReal([self.vr[k]], [v])
         self.s.enterInitializationMode()
         self.s.exitInitializationMode()
 

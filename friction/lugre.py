@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from numba import njit, prange
@@ -36,6 +37,8 @@ __all__ = ["LuGreParams", "LuGre", "bristle_update", "lugre_run"]
 @dataclass(frozen=True)
 class LuGreParams(FrictionParams):
     """Parameters of the classic LuGre law (defaults: a small precision-stage contact)."""
+    #: option fields -> their choices and the integer codes the kernels use
+    OPTIONS: ClassVar[dict] = {"shape": SHAPES}
     sigma0: float = param(1e5, "N/m", "bristle stiffness", lower=0, lower_open=True,
                           upper=1e9, search=(1e3, 1e7), log=True)
     sigma1: float = param(300.0, "N.s/m", "micro-damping of the bristles", lower=0,

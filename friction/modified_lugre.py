@@ -42,6 +42,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from numba import njit, prange
@@ -72,6 +73,9 @@ class ModifiedLuGreParams(FrictionParams):
     velocity Fc/(sigma0 h) = 0.24 m/s at h = 5e-5 s, with the switch band v1 = 0.1 m/s,
     v2 = 0.2 m/s below it.
     """
+    #: option fields -> their choices and the integer codes the kernels use
+    OPTIONS: ClassVar[dict] = {"shape": SHAPES, "gamma_form": GAMMA_FORMS,
+                               "fd_form": FD_FORMS}
     sigma0: float = param(5e5, "N/m", "bristle stiffness", lower=0, lower_open=True,
                           upper=1e9, search=(1e4, 1e7), log=True)
     sigma1: float = param(40.0, "N.s/m", "micro-damping of the bristles", lower=0,

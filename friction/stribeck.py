@@ -16,6 +16,7 @@ sample, so it is exact at any step size.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from numba import njit, prange
@@ -31,6 +32,8 @@ __all__ = ["StribeckParams", "StaticStribeck", "stribeck_force", "stribeck_run"]
 @dataclass(frozen=True)
 class StribeckParams(FrictionParams):
     """Parameters of the static Stribeck map (defaults: those of the classic LuGre)."""
+    #: option fields -> their choices and the integer codes the kernels use
+    OPTIONS: ClassVar[dict] = {"shape": SHAPES}
     sigma2: float = param(0.4, "N.s/m", "viscous coefficient (v >= 0)", lower=0,
                           search=(0.0, 50.0))
     Fc: float = param(1.0, "N", "Coulomb friction level (v >= 0)", lower=0, lower_open=True,

@@ -26,7 +26,7 @@ from friction.modified_lugre import ModifiedLuGre, ModifiedLuGreParams
 from friction.stribeck import StaticStribeck, StribeckParams, stribeck_force
 
 hypothesis = pytest.importorskip("hypothesis")
-from hypothesis import HealthCheck, given, note, settings  # noqa: E402
+from hypothesis import HealthCheck, example, given, note, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
 from fmus.native import ckernels  # noqa: E402
@@ -430,9 +430,14 @@ def test_pack_twins_resolve_to_plus_values():
 
 
 @settings(max_examples=100, deadline=None, database=None)
-@given(st.floats(1e-300, 1e300), st.floats(0.0, 1.0))
+@given(st.floats(5e-324, 1e300), st.floats(0.0, 1.0))
+@example(v1=2.0 ** -24, frac=0.0)   # repr's 16 digits are not printf's nearest 16
+@example(v1=100.0, frac=0.0)        # "100.0", not "1e+02"
+@example(v1=1e16, frac=0.5)
+@example(v1=5e-324, frac=0.0)
 def test_modified_lugre_relation_message_is_the_python_one(v1, frac):
-    """Any v2 <= v1: the C message is the Python ParameterError text (repr of the values)."""
+    """Any v2 <= v1: the C message is the Python ParameterError text, the values written as
+    Python's repr writes them."""
     v2 = v1 * frac
     if not v2 > 0.0:
         v2 = v1

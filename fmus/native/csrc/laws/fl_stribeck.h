@@ -109,40 +109,99 @@ static inline double fl_twin(double neg, double pos)
     return isnan(neg) ? pos : neg;
 }
 
-/* shortest text that reads back as x, as Python's repr(float): fixed notation with at least
- * one decimal for 1e-4 <= |x| < 1e16, else d.ddde+XX */
+/* the text of x with digits D (nd of them, no point) and decimal exponent ex, as Python's
+ * repr(float): fixed notation with at least one decimal for -4 <= ex < 16, else
+ * d.ddde+XX */
+static inline void fl_fmt_digits(int neg, const char *D, int nd, int ex, char *buf, size_t n)
+{
+    char tmp[64];
+    int i, k = 0;
+    if (neg)
+        tmp[k++] = '-';
+    if (ex >= -4 && ex < 16) {
+        if (ex < 0) {
+            tmp[k++] = '0';
+            tmp[k++] = '.';
+            for (i = 0; i < -ex - 1; ++i)
+                tmp[k++] = '0';
+            for (i = 0; i < nd; ++i)
+                tmp[k++] = D[i];
+        } else {
+            for (i = 0; i <= ex; ++i)
+                tmp[k++] = i < nd ? D[i] : '0';
+            tmp[k++] = '.';
+            if (nd > ex + 1)
+                for (i = ex + 1; i < nd; ++i)
+                    tmp[k++] = D[i];
+            else
+                tmp[k++] = '0';
+        }
+        tmp[k] = '\0';
+    } else {
+        tmp[k++] = D[0];
+        if (nd > 1) {
+            tmp[k++] = '.';
+            for (i = 1; i < nd; ++i)
+                tmp[k++] = D[i];
+        }
+        snprintf(tmp + k, sizeof tmp - (size_t)k, "e%+03d", ex);
+    }
+    snprintf(buf, n, "%s", tmp);
+}
+
+/* shortest text that reads back as x, the digits Python's repr(float) chooses: at the
+ * fewest digits that round-trip, the nearest such decimal (printf's rounding, or when that
+ * misses at a power of two, its neighbour one unit in the last digit away) */
 static inline void fl_fmt(double x, char *buf, size_t n)
 {
-    int prec, ex, dec;
-    size_t len;
-    const char *e;
+    char s[40], D[24];
+    int prec, nd, ex, neg, i, step;
+    unsigned long long m, top;
     if (n == 0)
         return;
-    if (isnan(x)) {
-        snprintf(buf, n, "nan");
-        return;
-    }
-    if (isinf(x)) {
-        snprintf(buf, n, x > 0 ? "inf" : "-inf");
+    if (isnan(x) || isinf(x)) {
+        snprintf(buf, n, "%s", isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf"));
         return;
     }
     for (prec = 0; prec < 17; ++prec) {
-        snprintf(buf, n, "%.*e", prec, x);
-        if (strtod(buf, NULL) == x)
+        snprintf(s, sizeof s, "%.*e", prec, x);
+        neg = s[0] == '-';
+        nd = 0;
+        for (i = neg; s[i] != 'e'; ++i)
+            if (s[i] != '.')
+                D[nd++] = s[i];
+        D[nd] = '\0';
+        ex = atoi(s + i + 1);
+        if (strtod(s, NULL) == x)
             break;
+        /* the nearest decimal of prec + 1 digits misses x: try its neighbours */
+        m = strtoull(D, NULL, 10);
+        for (top = 1, i = 0; i < nd; ++i)
+            top *= 10u;
+        for (step = -1; step <= 1; step += 2) {
+            unsigned long long mm = step > 0 ? m + 1u : m - 1u;
+            int e2 = ex;
+            char t[40];
+            if (mm >= top) {
+                mm /= 10u;
+                e2 += 1;
+            } else if (mm < top / 10u) {
+                mm = mm * 10u + 9u;
+                e2 -= 1;
+            }
+            snprintf(t, sizeof t, "%s%llue%d", neg ? "-0." : "0.", mm, e2 + 1);
+            if (strtod(t, NULL) == x) {
+                snprintf(D, sizeof D, "%llu", mm);
+                ex = e2;
+                goto found;
+            }
+        }
     }
-    e = strchr(buf, 'e');
-    ex = e ? atoi(e + 1) : 0;
-    if (ex < -4 || ex >= 16)
-        return; /* exponent form, as printed */
-    dec = prec - ex > 0 ? prec - ex : 0;
-    snprintf(buf, n, "%.*f", dec, x);
-    len = strlen(buf);
-    if (dec == 0 && len + 2 < n) {
-        buf[len] = '.';
-        buf[len + 1] = '0';
-        buf[len + 2] = '\0';
-    }
+found:
+    nd = (int)strlen(D);
+    while (nd > 1 && D[nd - 1] == '0') /* 100 = "1" at exponent 2 */
+        D[--nd] = '\0';
+    fl_fmt_digits(neg, D, nd, ex, buf, n);
 }
 
 /* an option field's code must be one of 0 .. nchoices-1; else a message naming it */

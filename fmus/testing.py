@@ -7,7 +7,7 @@ import pathlib
 import shutil
 import tempfile
 
-__all__ = ["built_fmus", "LoggedSlave"]
+__all__ = ["built_fmus", "built_native_fmus", "LoggedSlave"]
 
 
 @functools.lru_cache(maxsize=None)
@@ -16,6 +16,21 @@ def built_fmus(only: tuple | None = None) -> pathlib.Path:
     from .build import build_all
     out = pathlib.Path(tempfile.mkdtemp(prefix="frictionlab_fmus_"))
     build_all(out, only=list(only) if only else None, progress=False)
+    return out
+
+
+@functools.lru_cache(maxsize=None)
+def built_native_fmus(only: tuple | None = None) -> pathlib.Path:
+    """Build every native FMU (or ``only`` those) into a temporary folder once per process;
+    each is validated with fmpy. Returns the folder (``<name>_native.fmu`` files)."""
+    from .native.build import build_native, native_catalogue
+    from .build import validate
+    out = pathlib.Path(tempfile.mkdtemp(prefix="frictionlab_native_"))
+    for name in (only or tuple(native_catalogue())):
+        path = build_native(name, out)
+        problems = validate(path)
+        if problems:
+            raise RuntimeError(f"{path.name} fails fmpy validation: " + "; ".join(problems))
     return out
 
 
@@ -33,6 +48,7 @@ class LoggedSlave:
         self.md = fmpy.read_model_description(str(path))
         self.dir = fmpy.extract(str(path))
         self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
+        self.types = {v.name: v.type for v in self.md.modelVariables}
         self.messages = []
 
         def logger(env, inst, status, cat, msg):
@@ -49,10 +65,16 @@ class LoggedSlave:
         self.s.setupExperiment(startTime=0.0)
 
     def set(self, name, value) -> int:
-        """fmi2SetReal of one variable; returns the FMI status."""
+        """Set one variable with the setter of its type; returns the FMI status."""
         from fmpy.fmi1 import FMICallException
+        kind = self.types[name]
         try:
-            self.s.setReal([self.vr[name]], [value])
+            if kind == "Boolean":
+                self.s.setBoolean([self.vr[name]], [bool(value)])
+            elif kind in ("Integer", "Enumeration"):
+                self.s.setInteger([self.vr[name]], [int(value)])
+            else:
+                self.s.setReal([self.vr[name]], [value])
         except FMICallException as exc:
             return exc.status
         return 0
@@ -71,14 +93,8 @@ class LoggedSlave:
 
     def init(self, **values) -> None:
         """Set start values, then enter and exit initialization mode."""
-        types = {v.name: v.type for v in self.md.modelVariables}
         for k, v in values.items():
-            if types[k] == "Boolean":
-                self.s.setBoolean([self.vr[k]], [bool(v)])
-            elif types[k] in ("Integer", "Enumeration"):
-                self.s.setInteger([self.vr[k]], [int(v)])
-            else:
-                self.s.setReal([self.vr[k]], [v])
+            self.set(k, v)
         self.s.enterInitializationMode()
         self.s.exitInitializationMode()
 
@@ -87,8 +103,12 @@ class LoggedSlave:
         return [m for st, m in self.messages if st >= 3]
 
     def close(self) -> None:
+        from fmpy.fmi1 import FMICallException
         try:
-            self.s.terminate()
+            try:
+                self.s.terminate()
+            except FMICallException:
+                pass  # e.g. never initialized: fmi2Terminate is not allowed there
             self.s.fmi2FreeInstance(self.s.component)
         finally:
             shutil.rmtree(self.dir, ignore_errors=True)

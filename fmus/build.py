@@ -1,4 +1,4 @@
-"""Build the frictionlab FMUs (FMI 2.0 co-simulation, pythonfmu runtime).
+"""Build the frictionlab FMUs: native (plain C, :mod:`fmus.native`) and pythonfmu ones.
 
 ``build_all(out)`` (the ``frictionlab build-fmus --out DIR`` command) builds one FMU per
 friction law in ``friction.MODELS``, the ``mass`` FMU of the mass+friction proof loop and, once
@@ -203,41 +203,86 @@ def validate(path) -> list[str]:
     return validate_fmu(str(path))
 
 
-def build_all(out: str | os.PathLike, only=None, *, progress: bool = True) -> dict[str, pathlib.Path]:
-    """Build (and validate) every FMU into folder ``out``.
+def build_all(out: str | os.PathLike, only=None, *, progress: bool = True,
+              kinds=("native", "pythonfmu")) -> dict[str, pathlib.Path]:
+    """Build (and validate) every FMU into folder ``out``: the native ones
+    (``<name>_native.fmu``, plain C, :mod:`fmus.native.build`) and the pythonfmu ones
+    (``<name>.fmu``).
 
     Parameters
     ----------
     out : path
         Output folder (created).
     only : list of str, optional
-        Names to build (see :func:`catalogue`); default all.
+        Names to build (see :func:`catalogue` and :func:`fmus.native.build.native_catalogue`);
+        a name both know is built in both kinds, ``<name>_native`` natively only; default all.
     progress : bool
         Print one progress line per FMU on stderr.
+    kinds : tuple of str
+        ``"native"`` and/or ``"pythonfmu"``.
 
     Returns
     -------
     dict
-        name -> path of the built FMU.
+        name -> path of the built FMU (native ones keyed ``<name>_native``).
 
     Raises
     ------
     ValueError
         Unknown names in ``only``.
     RuntimeError
-        An FMU fails ``fmpy`` validation (the problems are listed).
+        An FMU fails ``fmpy`` validation (the problems are listed), or the native FMUs could
+        not be compiled (no C compiler: the message says what to install; the pythonfmu FMUs
+        are built all the same).
     """
-    cat = catalogue()
-    names = list(cat) if not only else list(only)
-    unknown = [n for n in names if n not in cat]
-    if unknown:
-        raise ValueError(f"unknown FMU name(s) {unknown}; choose from {sorted(cat)}")
-    built = {}
-    for k, name in enumerate(names, 1):
+    from .native.build import SUFFIX, build_native, native_catalogue
+    from .native.ckernels import NativeBuildError
+    cat = catalogue() if "pythonfmu" in kinds else {}
+    ncat = native_catalogue() if "native" in kinds else {}
+    if not only:
+        py_names, nat_names = list(cat), list(ncat)
+    else:
+        py_names, nat_names, unknown = [], [], []
+        for n in only:
+            if n.endswith(SUFFIX) and n[:-len(SUFFIX)] in ncat:
+                nat_names.append(n[:-len(SUFFIX)])
+                continue
+            if n in ncat:
+                nat_names.append(n)
+            if n in cat:
+                py_names.append(n)
+            if n not in ncat and n not in cat:
+                unknown.append(n)
+        if unknown:
+            raise ValueError(f"unknown FMU name(s) {unknown}; choose from "
+                             f"{sorted(set(cat) | set(ncat))}")
+    total = len(py_names) + len(nat_names)
+    built, k, native_error = {}, 0, None
+    for name in nat_names:
+        k += 1
+        try:
+            path = build_native(name, out)
+        except NativeBuildError as exc:
+            native_error = exc
+            report(f"[build-fmus] native FMUs skipped: {str(exc).splitlines()[0]}", progress)
+            k += len(nat_names) - nat_names.index(name) - 1
+            break
+        _check_valid(path)
+        report(f"[build-fmus {k}/{total}] {path} (native, valid)", progress)
+        built[name + SUFFIX] = path
+    for name in py_names:
+        k += 1
         path = build_fmu(cat[name], out)
-        problems = validate(path)
-        if problems:
-            raise RuntimeError(f"{path.name} fails fmpy validation: " + "; ".join(problems))
-        report(f"[build-fmus {k}/{len(names)}] {path} (valid)", progress)
+        _check_valid(path)
+        report(f"[build-fmus {k}/{total}] {path} (pythonfmu, valid)", progress)
         built[name] = path
+    if native_error is not None:
+        raise RuntimeError(f"the native FMUs were not built ({str(native_error).splitlines()[0]}"
+                           f"); the pythonfmu FMUs were") from native_error
     return built
+
+
+def _check_valid(path) -> None:
+    problems = validate(path)
+    if problems:
+        raise RuntimeError(f"{path.name} fails fmpy validation: " + "; ".join(problems))

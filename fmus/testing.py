@@ -15,7 +15,7 @@ def built_fmus(only: tuple | None = None) -> pathlib.Path:
     """Build (and validate) the FMUs into a temporary folder once per process; returns it."""
     from .build import build_all
     out = pathlib.Path(tempfile.mkdtemp(prefix="frictionlab_fmus_"))
-    build_all(out, only=list(only) if only else None, progress=False)
+    build_all(out, only=list(only) if only else None, progress=False, kinds=("pythonfmu",))
     return out
 
 

@@ -48,7 +48,7 @@ SCRIPT = textwrap.dedent('''
 def test_every_fmu_runs_in_a_clean_venv(tmp_path):
     from fmus.build import build_all, catalogue
     fmu_dir = tmp_path / "fmus"
-    build_all(fmu_dir, progress=False)
+    build_all(fmu_dir, progress=False, kinds=("pythonfmu",))
     venv = tmp_path / "venv"
     subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
     py = venv / "bin" / "python"

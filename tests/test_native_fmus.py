@@ -387,3 +387,28 @@ def test_a_host_builds_the_fmu_from_its_sources(ndir, tmp_path):
     a = _run(_path(ndir, "lugre"), "lugre", n=200)
     b = _run(rebuilt, "lugre", n=200)
     assert np.array_equal(a, b)
+
+
+def test_build_fmus_names_the_missing_compiler_and_still_builds_pythonfmu(tmp_path):
+    """No C compiler on PATH: a one-line error that says what to install, exit code 2, and
+    the pythonfmu FMU of the law is there all the same."""
+    import os
+    import sys
+    bindir = pathlib.Path(sys.executable).parent
+    env = {"PATH": str(bindir), "HOME": os.environ.get("HOME", str(tmp_path))}
+    proc = subprocess.run([str(bindir / "frictionlab"), "build-fmus", "--out",
+                           str(tmp_path / "out"), "--only", "stribeck"],
+                          capture_output=True, text=True, env=env, timeout=300)
+    assert proc.returncode == 2
+    err = [line for line in proc.stderr.splitlines() if "error:" in line]
+    assert len(err) == 1 and "no C compiler" in err[0] and "apt-get install gcc" in err[0]
+    assert (tmp_path / "out" / "stribeck.fmu").is_file()
+    assert not (tmp_path / "out" / f"stribeck{SUFFIX}.fmu").exists()
+
+
+def test_build_all_builds_both_kinds(tmp_path):
+    from fmus.build import build_all
+    built = build_all(tmp_path, only=["stribeck", "mass_native"], progress=False)
+    assert set(built) == {"stribeck", "stribeck_native", "mass_native"}
+    for p in built.values():
+        assert p.is_file()

@@ -3,20 +3,72 @@ explicit column mapping, and the checks that keep bad files from producing silen
 
 A :class:`Dataset` holds SI arrays. ``to_structured()`` returns the fmpy-style structured
 array with ``time`` first, the layout used by simulations and FMU runs alike.
+
+Files as they come from spreadsheets and loggers are read too: ``;``, tab, ``|`` or
+whitespace separators, decimal commas, a UTF-8 (or UTF-16) byte-order mark; what was
+detected is listed in ``Dataset.notes``. Errors about the data are :class:`DataError`, whose
+message gives hints in Python syntax (``scale={'x': 0.001}``) and whose ``cli`` attribute
+gives the same message with command-line hints (``--scale x=1e-3``), which the
+``frictionlab`` command prints.
 """
 from __future__ import annotations
 
 import csv
+import math
 import os
+import re
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ._validation import as_float_array, check_finite, check_same_length, check_time
 
-__all__ = ["Dataset", "load_dataset", "load_csv", "load_mat", "parse_mapping"]
+__all__ = ["Dataset", "DataError", "load_dataset", "load_csv", "load_mat", "parse_mapping"]
 
 COLUMNS = ("t", "x", "v", "a", "F", "load")
+
+#: plausibility limits of the unit check (SI): a speed above V_MAX [m/s] (99.5th percentile
+#: of |v|, measured or differentiated from x; friction rigs and robot joints stay well below:
+#: the real records in ../shared/data/real reach 0.66 m/s), a measured position spanning more
+#: than X_SPAN_MAX [m]. A column given an explicit scale (even 1) is not checked.
+V_MAX = 5.0
+X_SPAN_MAX = 20.0
+
+
+class DataError(ValueError):
+    """A problem with a data file or its columns.
+
+    ``str(err)`` gives hints in Python syntax (for API users); ``err.cli`` the same message
+    with ``frictionlab`` option syntax (``--map t=COLUMN``, ``--scale x=1e-3``).
+    """
+
+    def __init__(self, message: str, cli: str | None = None):
+        super().__init__(message)
+        self.cli = cli if cli is not None else message
+
+
+def _num(f: float) -> str:
+    """A scale factor as a user types it: 1e-3 rather than 0.001."""
+    if f > 0 and abs(math.log10(f) - round(math.log10(f))) < 1e-12 and f != 1.0:
+        return f"1e{round(math.log10(f))}"
+    return repr(float(f))
+
+
+def _scale_hint(factors: dict, syntax: str) -> str:
+    if syntax == "cli":
+        return "--scale " + ",".join(f"{k}={_num(f)}" for k, f in factors.items())
+    return "scale={" + ", ".join(f"'{k}': {_num(f)}" for k, f in factors.items()) + "}"
+
+
+def _map_hint(col: str, syntax: str) -> str:
+    if syntax == "cli":
+        return f"--map {col}=COLUMN"
+    return f"mapping={{'{col}': 'COLUMN'}}"
+
+
+def _data_error(make) -> DataError:
+    """``make(syntax) -> message`` for ``syntax`` in ("python", "cli")."""
+    return DataError(make("python"), cli=make("cli"))
 
 
 @dataclass
@@ -36,6 +88,9 @@ class Dataset:
         Normal/deformation load [N].
     extra : dict
         Extra columns, kept and ignored.
+    notes : tuple of str
+        How the file was read when it was not the plain contract CSV (separator, decimal
+        commas, byte-order mark).
     """
     t: np.ndarray
     x: np.ndarray
@@ -46,6 +101,7 @@ class Dataset:
     extra: dict = field(default_factory=dict)
     name: str = "data"
     derived: tuple = ()
+    notes: tuple = ()
 
     def __post_init__(self):
         # every dataset is checked however it was built (from_arrays, a file, or the
@@ -64,8 +120,29 @@ class Dataset:
 
     @classmethod
     def from_arrays(cls, t, F, *, x=None, v=None, a=None, load=None, name="data",
-                    extra=None, check_units: bool = True) -> "Dataset":
-        """Build and validate a dataset; derives missing x, v, a."""
+                    extra=None, check_units: bool = True, asserted_units=(),
+                    notes=()) -> "Dataset":
+        """Build and validate a dataset; derives missing x, v, a.
+
+        Parameters
+        ----------
+        t : array
+            Time [s], strictly increasing.
+        F : array
+            Measured friction force [N].
+        x, v, a : array, optional
+            Position [m], velocity [m/s], acceleration [m/s^2]; x or v is required, the
+            others are derived (recorded in ``derived``).
+        load : array, optional
+            Normal/deformation load [N].
+        check_units : bool
+            Run :meth:`check_units` (catches mm for m, mm/s for m/s, degrees for rad).
+        asserted_units : iterable of str
+            Columns whose unit the caller vouches for (e.g. given an explicit scale): the
+            unit check never blames them.
+        notes : tuple of str
+            How the source file was read (kept in ``notes``).
+        """
         t = as_float_array("t", t)
         check_time(t)
         n = t.size
@@ -78,8 +155,9 @@ class Dataset:
         for key, arr in arrays.items():
             check_finite(key, arr)
         if "x" not in arrays and "v" not in arrays:
-            raise ValueError("dataset needs a position column 'x' [m] or a velocity column "
-                             "'v' [m/s] (or map yours with mapping=)")
+            raise _data_error(lambda s: f"dataset needs a position column 'x' [m] or a "
+                              f"velocity column 'v' [m/s] (map yours with "
+                              f"{_map_hint('x', s)} or {_map_hint('v', s)})")
         derived = []
         if "v" not in arrays:
             arrays["v"] = np.gradient(arrays["x"], t)
@@ -93,9 +171,9 @@ class Dataset:
             derived.append("a")
         ds = cls(t=t, x=arrays["x"], v=arrays["v"], a=arrays["a"], F=F,
                  load=arrays.get("load"), extra=dict(extra or {}), name=name,
-                 derived=tuple(derived))
+                 derived=tuple(derived), notes=tuple(notes))
         if check_units:
-            ds.check_units()
+            ds.check_units(asserted_units)
         return ds
 
     def __len__(self) -> int:
@@ -105,32 +183,98 @@ class Dataset:
     def dt(self) -> float:
         return float(np.median(np.diff(self.t)))
 
-    def check_units(self) -> None:
-        """Catch the common factor-1000 slips (mm for m, ms for s) before they cost a fit."""
-        if "v" not in self.derived and "x" not in self.derived:
+    def check_units(self, asserted=()) -> None:
+        """Catch unit slips (mm for m, mm/s for m/s, degrees for rad, ms for s) before they
+        cost a fit, naming the column that is off and the scale that fixes it.
+
+        Only measured columns are blamed: a velocity differentiated from x points at x, and
+        a position integrated from v is never checked (its span grows with any offset of v).
+
+        * x and v both measured: ``d(x)/dt`` against v. A ratio near 1000 means x is in mm,
+          near 0.001 that v is in mm/s (or t in ms), near 57.3 / 0.0175 degrees for rad.
+        * a measured position spanning more than :data:`X_SPAN_MAX` [m], a speed above
+          :data:`V_MAX` [m/s] (99.5th percentile of |v|, so one noisy difference does not
+          count): blamed on v if v was measured (and on x too when both were: they agree),
+          on x if v was differentiated from it.
+
+        Parameters
+        ----------
+        asserted : iterable of str
+            Columns whose unit the caller vouches for (an explicit ``scale`` entry, even
+            ``1``): never blamed.
+
+        Raises
+        ------
+        DataError
+            With the column, what it looks like, and the ``scale`` (``--scale``) to use.
+        """
+        asserted = set(asserted)
+        measured = {c for c in ("x", "v") if c not in self.derived}
+
+        def fail(column_text, factors, extra=""):
+            def make(syn):
+                fix = _scale_hint(factors, syn)
+                keep = ("--scale " + ",".join(f"{k}=1" for k in factors) if syn == "cli"
+                        else "scale={" + ", ".join(f"'{k}': 1" for k in factors) + "}")
+                return (f"{column_text}; columns must be SI (s, m, m/s). Rescale with {fix}"
+                        f"{extra(syn) if extra else ''}; if the values are SI, say so with "
+                        f"{keep}")
+            raise _data_error(make)
+
+        if measured == {"x", "v"} and not {"x", "v"} <= asserted:
             dxdt = np.gradient(self.x, self.t)
-            moving = np.abs(self.v) > 0.05 * np.max(np.abs(self.v)) if np.any(self.v) else None
+            vmax = float(np.max(np.abs(self.v)))
+            moving = np.abs(self.v) > 0.05 * vmax if vmax > 0 else None
             if moving is not None and moving.sum() > 10:
-                ratio = np.median(np.abs(dxdt[moving]) / np.abs(self.v[moving]))
-                for factor, unit in ((1e3, "x looks like millimetres or v like m/s*1e-3"),
-                                     (1e-3, "v looks like mm/s or x like km")):
-                    if 0.3 * factor < ratio < 3 * factor:
-                        raise ValueError(
-                            f"units off by 1000: d(x)/dt is {ratio:.3g} times v ({unit}); "
-                            f"columns must be SI (m, m/s). Rescale with scale={{'x': 1e-3}} "
-                            f"or --scale x=1e-3")
-        xr = float(np.ptp(self.x))
-        if xr > 20.0:
-            raise ValueError(f"x spans {xr:g} m: this looks like millimetres; columns must be "
-                             f"SI (m). Rescale with scale={{'x': 1e-3}} or --scale x=1e-3")
-        vmax = float(np.max(np.abs(self.v)))
-        if vmax > 100.0:
-            raise ValueError(f"|v| reaches {vmax:g} m/s: this looks like mm/s; columns must be "
-                             f"SI (m/s). Rescale with scale={{'v': 1e-3}} or --scale v=1e-3")
+                ratio = float(np.median(np.abs(dxdt[moving]) / np.abs(self.v[moving])))
+                deg = 180.0 / np.pi
+                known = [  # ratio, band, blamed column, what it looks like, factor
+                    (1e3, 3.0, "x", "x looks like millimetres (v like m/s)", 1e-3),
+                    (1e6, 3.0, "x", "x looks like micrometres (v like m/s)", 1e-6),
+                    (deg, 1.5, "x", "x looks like degrees (v like rad/s)", 1.0 / deg),
+                    (1e-3, 3.0, "v", "v looks like mm/s (x like m)", 1e-3),
+                    (1e-6, 3.0, "v", "v looks like um/s (x like m)", 1e-6),
+                    (1.0 / deg, 1.5, "v", "v looks like deg/s (x like rad)", 1.0 / deg)]
+                for r0, band, col, what, factor in known:
+                    if r0 / band < ratio < r0 * band:
+                        if col in asserted:  # the other column of the pair is off
+                            col, factor = ({"x": "v", "v": "x"}[col], 1.0 / factor)
+                            what = f"{col} is off by {_num(factor)}"
+                        also = ((lambda syn: " (or " + _scale_hint({"t": 1e-3}, syn)
+                                 + " if t is in milliseconds)")
+                                if col == "v" and r0 == 1e-3 and "t" not in asserted else "")
+                        off = max(r0, 1.0 / r0)
+                        off = "1000" if off == 1e3 else f"{off:.3g}"
+                        fail(f"units off by {off}: d(x)/dt is {ratio:.3g} times v: {what}",
+                             {col: factor}, also)
+        span = float(np.ptp(self.x))
+        v99 = float(np.percentile(np.abs(self.v), 99.5))
+        # x and v both measured passed the ratio check: they share one unit, so a slip in
+        # one is a slip in both
+        both = [c for c in ("x", "v") if c in measured and c not in asserted]
+        rad = np.pi / 180.0
+
+        def degrees(cols):  # a rotary axis logged in degrees looks the same: say so
+            return lambda syn: (" (or " + _scale_hint({c: rad for c in cols}, syn)
+                                + " if in degrees)")
+
+        if "x" in both and span > X_SPAN_MAX:
+            fail(f"x spans {span:g} m: this looks like millimetres"
+                 + (" (and v like mm/s)" if "v" in both else ""),
+                 {c: 1e-3 for c in both}, degrees(both))
+        if "v" in both and v99 > V_MAX:
+            fail(f"|v| reaches {v99:g} m/s: this looks like mm/s"
+                 + (" (and x like mm)" if "x" in both else ""),
+                 {c: 1e-3 for c in both}, degrees(both))
+        if "v" not in measured and "x" not in asserted and v99 > V_MAX:
+            # v was differentiated from x: x is the measured column to blame
+            fail(f"the velocity differentiated from x reaches {v99:g} m/s: x looks like "
+                 f"millimetres", {"x": 1e-3}, degrees(["x"]))
         dt = self.dt
-        if dt >= 0.5 and self.t.size > 200 and (self.t[-1] - self.t[0]) > 3600 * 24:
-            raise ValueError(f"t steps by {dt:g} over {self.t[-1] - self.t[0]:g}: this looks "
-                             f"like milliseconds; t must be in s (--scale t=1e-3)")
+        if "t" not in asserted and dt >= 0.5 and self.t.size > 200 \
+                and (self.t[-1] - self.t[0]) > 3600 * 24:
+            fail(f"t steps by {dt:g} s over {self.t[-1] - self.t[0]:g} s: t looks like "
+                 f"milliseconds", {"t": 1e-3})
 
     def to_structured(self) -> np.ndarray:
         """Structured array with ``time`` first (fmpy convention)."""
@@ -148,7 +292,7 @@ class Dataset:
         return Dataset(t=self.t[index], x=self.x[index], v=self.v[index], a=self.a[index],
                        F=self.F[index], load=sub(self.load),
                        extra={k: val[index] for k, val in self.extra.items()},
-                       name=self.name, derived=self.derived)
+                       name=self.name, derived=self.derived, notes=self.notes)
 
     def split(self, fraction: float = 0.7) -> tuple["Dataset", "Dataset"]:
         """Chronological split into a fit part and a held-out part."""
@@ -183,65 +327,167 @@ def parse_mapping(text: str | None) -> dict[str, str]:
     return out
 
 
-def _apply(columns: dict[str, np.ndarray], mapping, scale, name, check_units) -> Dataset:
+def _apply(columns: dict[str, np.ndarray], mapping, scale, name, check_units,
+           notes=()) -> Dataset:
     mapping = dict(mapping or {})
     unknown = set(mapping) - set(COLUMNS)
     if unknown:
-        raise ValueError(f"mapping keys {sorted(unknown)} are not dataset columns {COLUMNS}")
+        raise _data_error(lambda s: f"{'--map' if s == 'cli' else 'mapping'} keys "
+                          f"{sorted(unknown)} are not dataset columns {COLUMNS}")
     picked = {}
     for col in COLUMNS:
         src = mapping.get(col, col)
         if src in columns:
             picked[col] = np.asarray(columns[src], dtype=float).ravel()
         elif col in mapping:
-            raise ValueError(f"column {src!r} (mapped to {col!r}) not found; available: "
-                             f"{sorted(columns)}")
+            raise DataError(f"column {src!r} (mapped to {col!r}) not found; available: "
+                            f"{sorted(columns)}")
     for col, factor in (scale or {}).items():
         if col not in picked:
-            raise ValueError(f"scale given for {col!r}, which is not in the data")
+            raise _data_error(lambda s: f"{'--scale' if s == 'cli' else 'scale'} given for "
+                              f"{col!r}, which is not in the data (columns: "
+                              f"{sorted(picked)})")
         picked[col] = picked[col] * float(factor)
     if "t" not in picked:
-        raise ValueError(f"no time column 't' (available: {sorted(columns)}); map it with "
-                         f"mapping={{'t': 'yourname'}}")
+        raise _data_error(lambda s: f"no time column 't' (available: {sorted(columns)}); "
+                          f"map it with {_map_hint('t', s)}")
     if "F" not in picked:
-        raise ValueError(f"no friction-force column 'F' (available: {sorted(columns)}); map it "
-                         f"with mapping={{'F': 'yourname'}}")
+        raise _data_error(lambda s: f"no friction-force column 'F' (available: "
+                          f"{sorted(columns)}); map it with {_map_hint('F', s)}")
     used = {mapping.get(c, c) for c in picked}
     extra = {k: v for k, v in columns.items() if k not in used}
     return Dataset.from_arrays(picked.pop("t"), picked.pop("F"), name=name, extra=extra,
-                               check_units=check_units, **picked)
+                               check_units=check_units, asserted_units=tuple(scale or ()),
+                               notes=notes, **picked)
+
+
+_DECIMAL_COMMA = re.compile(r"^\s*[+-]?(\d+,\d*|,\d+)([eE][+-]?\d+)?\s*$")
+
+
+def _decode(raw: bytes) -> tuple[str, list[str]]:
+    """Bytes -> text, honouring a byte-order mark (Excel writes one)."""
+    if raw.startswith(b"\xef\xbb\xbf"):
+        return raw[3:].decode("utf-8", errors="replace"), ["UTF-8 byte-order mark"]
+    if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
+        return raw.decode("utf-16"), ["UTF-16 text"]
+    try:
+        return raw.decode("utf-8"), []
+    except UnicodeDecodeError:  # a spreadsheet's legacy code page (a header with a degree sign)
+        return raw.decode("latin-1"), ["latin-1 text"]
+
+
+def _sniff(lines: list[str]) -> str | None:
+    """The separator of a header line and the data lines after it: the candidate that splits
+    the header in more than one field and every sampled data line the same way; ``None``
+    for runs of whitespace."""
+    head, sample = lines[0], lines[1:21]
+    best = None
+    for sep in (",", ";", "\t", "|"):
+        n = len(next(csv.reader([head], delimiter=sep)))
+        if n < 2:
+            continue
+        counts = [len(next(csv.reader([ln], delimiter=sep))) for ln in sample]
+        if all(c == n for c in counts):
+            return sep
+        if best is None:
+            best = sep
+    if best is None and len(head.split()) > 1:
+        return None
+    return best if best is not None else ","
+
+
+def _to_floats(cells: list[str], decimal_comma: bool) -> np.ndarray | None:
+    """Cells -> floats (empty -> NaN); None if a cell is not a number."""
+    out = np.empty(len(cells))
+    try:
+        for i, c in enumerate(cells):
+            c = c.strip()
+            if decimal_comma and "," in c:
+                c = c.replace(",", ".", 1)
+            out[i] = float(c) if c else np.nan
+    except ValueError:
+        return None
+    return out
 
 
 def load_csv(path, mapping=None, scale=None, check_units: bool = True) -> Dataset:
-    """Load a contract CSV (header row, comma separated, SI units)."""
+    """Load a measurement CSV (header row, SI units; the contract's is comma separated).
+
+    Separators ``,``, ``;``, tab and ``|`` (or runs of whitespace) are detected from the
+    header and the first data lines; decimal commas (``0,25`` in a ``;``- or tab-separated
+    file, or quoted) and a UTF-8/UTF-16 byte-order mark are read correctly. What was
+    detected is kept in ``Dataset.notes``.
+
+    Parameters
+    ----------
+    path : path
+        The file.
+    mapping : dict, optional
+        ``{contract column: file column}``, e.g. ``{"t": "time", "x": "pos"}``.
+    scale : dict, optional
+        ``{contract column: factor}`` to SI, e.g. ``{"x": 1e-3}`` for a position in mm; a
+        column given a factor (even 1) is never blamed by the unit check.
+    check_units : bool
+        Run :meth:`Dataset.check_units`.
+    """
     path = os.fspath(path)
     if not os.path.exists(path):
         raise FileNotFoundError(f"no such data file: {path}")
-    with open(path, newline="") as fh:
-        reader = csv.reader(fh)
-        try:
-            header = [h.strip() for h in next(reader)]
-        except StopIteration:
-            raise ValueError(f"{path}: empty file") from None
-        rows = [r for r in reader if r and any(c.strip() for c in r)]
-    if not rows:
-        raise ValueError(f"{path}: header but no data rows")
-    cols: dict[str, list] = {h: [] for h in header}
+    with open(path, "rb") as fh:
+        text, notes = _decode(fh.read())
+    lines = [ln for ln in text.splitlines() if ln.strip()]
+    if not lines:
+        raise DataError(f"{path}: empty file")
+    if len(lines) < 2:
+        raise DataError(f"{path}: header but no data rows")
+    sep = _sniff(lines)
+    if sep is None:
+        rows = [ln.split() for ln in lines]
+        notes.append("whitespace-separated")
+    else:
+        rows = list(csv.reader(lines, delimiter=sep))
+        if sep != ",":
+            notes.append({";": "';'-separated", "\t": "tab-separated",
+                          "|": "'|'-separated"}[sep])
+    header = [h.strip().strip('"').strip() for h in rows[0]]
+    if all(_to_floats([h], True) is not None for h in header if h):
+        raise DataError(f"{path}: the first line holds numbers, not column names: add a "
+                        f"header row (t, x, v, F, ...) naming the columns")
+    rows = rows[1:]
     for lineno, r in enumerate(rows, start=2):
         if len(r) != len(header):
-            raise ValueError(f"{path}:{lineno}: {len(r)} fields, header has {len(header)}")
-        for h, cell in zip(header, r):
-            cols[h].append(cell)
+            why = ""
+            if sep == "," and len(r) > len(header) and any(
+                    _DECIMAL_COMMA.match(f"{a},{b}") for a, b in zip(r, r[1:])):
+                why = ("; decimal commas in a comma-separated file? Save it with ';' as the "
+                       "separator (or with decimal points)")
+            raise DataError(f"{path}:{lineno}: {len(r)} fields, header has "
+                            f"{len(header)}{why}")
+    cols = {h: [r[j] for r in rows] for j, h in enumerate(header)}
+    wanted = set(COLUMNS) | set((mapping or {}).values())
     arrays = {}
+    comma_cols = []
     for h, cells in cols.items():
-        try:
-            arrays[h] = np.array([float(c) if c.strip() else np.nan for c in cells])
-        except ValueError:
-            if h in COLUMNS or h in (mapping or {}).values():
-                bad = next(c for c in cells if not _isfloat(c))
-                raise ValueError(f"{path}: column {h!r} has a non-numeric value {bad!r}") from None
+        arr = _to_floats(cells, decimal_comma=False)
+        if arr is None and any(_DECIMAL_COMMA.match(c) for c in cells) \
+                and not any("." in c for c in cells):
+            # a comma can only sit inside a field here (another separator, or quoted)
+            arr = _to_floats(cells, decimal_comma=True)
+            if arr is not None:
+                comma_cols.append(h)
+        if arr is None:
+            if h in wanted:
+                bad = next((c for c in cells if _to_floats([c], True) is None), None)
+                if bad is None:  # every cell is a number with one decimal mark or the other
+                    raise DataError(f"{path}: column {h!r} mixes decimal commas and decimal "
+                                    f"points ({next(c for c in cells if ',' in c)!r}, "
+                                    f"{next(c for c in cells if '.' in c)!r})")
+                raise DataError(f"{path}: column {h!r} has a non-numeric value {bad!r}")
             continue  # non-numeric extra column: kept out
-    return _apply(arrays, mapping, scale, os.path.basename(path), check_units)
+        arrays[h] = arr
+    if comma_cols:
+        notes.append("decimal commas")
+    return _apply(arrays, mapping, scale, os.path.basename(path), check_units, tuple(notes))
 
 
 def _isfloat(c: str) -> bool:

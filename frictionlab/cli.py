@@ -52,7 +52,8 @@ def build_parser() -> argparse.ArgumentParser:
     i.add_argument("--checkpoint", default=None, help="checkpoint file (JSON-lines evaluation "
                    "log, written as the run goes): a rerun with the same file resumes to the "
                    "uninterrupted result; least_squares and static_ls refuse it")
-    i.add_argument("--max-evals", type=int, default=None, help="evaluation budget")
+    i.add_argument("--max-evals", type=int, default=None, help="evaluation budget "
+                   "(simulations, a positive integer)")
 
     g = sub.add_parser("diagnose", help="locate and name the sim-to-real gap of a model")
     _add_data_options(g, optional=True)
@@ -116,7 +117,9 @@ def main(argv=None) -> int:
             OSError, ImportError) as exc:
         if os.environ.get("FRICTIONLAB_DEBUG"):
             raise
-        msg = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+        # data errors carry their hints in command-line syntax too (--scale, --map)
+        text = str(getattr(exc, "cli", None) or exc).strip()
+        msg = text.splitlines()[0] if text else type(exc).__name__
         print(f"frictionlab {args.command}: error: {msg}", file=sys.stderr)
         return 2
 

@@ -28,6 +28,11 @@ def parse_scale(text):
 def run_identify_cli(args) -> int:
     """Entry point used by ``frictionlab identify`` (see :mod:`frictionlab.cli`)."""
     from . import identify
+    max_evals = getattr(args, "max_evals", None)
+    if max_evals is not None and max_evals <= 0:
+        # refused before loading anything: a zero budget is not a data problem
+        raise ValueError(f"--max-evals {max_evals}: the evaluation budget must be a positive "
+                         f"integer (simulations)")
     mapping = parse_mapping(getattr(args, "mapping", None))
     scale = parse_scale(getattr(args, "scale", None))
     files = list(args.data)
@@ -39,10 +44,11 @@ def run_identify_cli(args) -> int:
         validation = load_dataset(files[1], mapping=mapping, scale=scale)
     quiet = getattr(args, "quiet", False)
     result = identify(data, args.model, algorithm=getattr(args, "algorithm", None),
-                      seed=getattr(args, "seed", 0), max_evals=getattr(args, "max_evals", None),
+                      seed=getattr(args, "seed", 0), max_evals=max_evals,
                       validation=validation, progress=not quiet,
                       checkpoint=getattr(args, "checkpoint", None))
-    print(f"data        : {files[0]} ({len(data)} samples)")
+    print(f"data        : {files[0]} ({len(data)} samples"
+          + (f"; read as {', '.join(data.notes)})" if data.notes else ")"))
     if validation is not None:
         print(f"validation  : {files[1]} ({len(validation)} samples)")
     print(result.summary())

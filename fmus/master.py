@@ -24,12 +24,21 @@ initialization mode.
 
 Per-step overhead is kept low: value references and ctypes buffers are built once; per
 communication step each instance gets one ``fmi2SetReal`` (all its connected inputs), one
-``fmi2DoStep`` and one ``fmi2GetReal`` (only the outputs that are connected or recorded),
-called through ctypes pointers without argtypes on ready ctypes arguments (no per-call
-conversion or array building); the fixed-point pass re-sets only instances whose inputs
-changed; results go into a preallocated array. Any FMU call returning fmi2Discard or worse
-(our FMUs answer fmi2Error for bad input, see :mod:`fmus.status_shim`) raises
-:class:`FMUError` naming the instance, the call, the time and the FMU's last log messages.
+``fmi2DoStep`` and one ``fmi2GetReal`` (only the outputs that are connected or recorded);
+the fixed-point pass re-sets only instances whose inputs changed. These calls run in a small
+compiled loop (:mod:`fmus.master_loop`, built with the system C compiler on first use) on
+those buffers, through the FMUs' own function pointers, so a native FMU's step is not buried
+under a Python round trip per call; without a C compiler (or with ``loop="python"``) the same
+calls run from Python through ctypes pointers without argtypes on ready ctypes arguments.
+Both loops give the same results bit for bit.
+
+Parameters are set with the FMI setter of each variable's type, from Python-style values
+translated for either FMU kind (:func:`fmu_values`: ``shape="lorentzian"`` becomes a native
+FMU's Enumeration code, a twin ``Fc_neg=None`` its ``use_Fc_neg = false``).
+
+Any FMU call returning fmi2Discard or worse (our FMUs answer fmi2Error for bad input, see
+:mod:`fmus.status_shim`) raises :class:`FMUError` naming the instance, the call, the time
+and the FMU's last log messages.
 """
 from __future__ import annotations
 
@@ -46,7 +55,8 @@ import numpy as np
 
 from frictionlab.progress import Progress
 
-__all__ = ["Master", "Connection", "FMUError", "simulate_cosim", "ALGORITHMS"]
+__all__ = ["Master", "Connection", "FMUError", "simulate_cosim", "ALGORITHMS", "fmu_values",
+           "fmu_file", "law_parameters", "FMU_KINDS"]
 
 ALGORITHMS = ("gauss-seidel", "jacobi")
 _STATUS = ["ok", "warning", "discard", "error", "fatal", "pending"]
@@ -77,6 +87,105 @@ class Connection:
         if not dot or not inst or not var:
             raise ValueError(f"connection end {ref!r} must be 'instance.variable'")
         return inst, var
+
+
+#: the two kinds of frictionlab FMU: ``<name>.fmu`` (pythonfmu) and ``<name>_native.fmu`` (C)
+FMU_KINDS = ("pythonfmu", "native")
+
+
+def fmu_file(fmu_dir, name: str, native: bool = False) -> str:
+    """Path of the FMU ``name`` in ``fmu_dir``: ``<name>.fmu`` (pythonfmu) or, with
+    ``native``, ``<name>_native.fmu`` (:mod:`fmus.native.build`)."""
+    suffix = "_native" if native else ""
+    return os.path.join(os.fspath(fmu_dir), f"{name}{suffix}.fmu")
+
+
+def _enum_code(var, value):
+    items = list(getattr(var.declaredType, "items", None) or [])
+    if isinstance(value, str):
+        for item in items:
+            if item.name == value:
+                return int(item.value)
+        raise ValueError(f"{var.name} = {value!r} is not one of "
+                         f"{', '.join(i.name for i in items) or '(no items)'}")
+    if isinstance(value, bool) or int(value) != value:
+        raise ValueError(f"{var.name} = {value!r}: give an item name or an integer code")
+    return int(value)
+
+
+def _as_bool(name, value):
+    if isinstance(value, str):
+        low = value.strip().lower()
+        if low in ("true", "1"):
+            return True
+        if low in ("false", "0"):
+            return False
+        raise ValueError(f"{name} = {value!r} is not a Boolean")
+    return bool(value)
+
+
+def fmu_values(variables: Mapping, values: Mapping) -> dict:
+    """Python-style values (a law's parameters, start values) -> values of the FMU's variables,
+    for either FMU kind; returns ``{variable name: value}`` typed for its FMI setter
+    (``float`` for Real, ``int`` for Integer and Enumeration, ``bool``, ``str``).
+
+    ``variables``: name -> fmpy ``ScalarVariable`` of the FMU. Translated:
+
+    * an option by name (``shape="lorentzian"``) -> its Enumeration code where the variable
+      is an Enumeration (native FMUs); a String variable (pythonfmu) keeps the name;
+    * an optional parameter (Python ``None``, e.g. a direction twin ``Fc_neg``): ``None`` ->
+      ``use_Fc_neg = False`` where the FMU has that Boolean flag (native), else the
+      variable's start value, which stands for "unset" there (pythonfmu); a number ->
+      ``use_Fc_neg = True`` and the number (native), the number (pythonfmu);
+    * Booleans (``True``, ``1``, ``"true"``), Integers and Reals by type.
+
+    Raises ``ValueError`` naming an unknown variable or an untranslatable value.
+    """
+    out = {}
+    for name, value in values.items():
+        var = variables.get(name)
+        if var is None:
+            raise ValueError(f"no variable {name!r}; variables: {sorted(variables)}")
+        flag = variables.get(f"use_{name}")
+        twin = flag is not None and flag.type == "Boolean" and var.type == "Real"
+        if value is None:
+            if twin:
+                out[flag.name] = False
+                continue
+            if var.start in (None, ""):
+                raise ValueError(f"{name} = None: the FMU has neither a flag use_{name} nor an "
+                                 f"'unset' start value")
+            value = var.start  # the pythonfmu FMU's sentinel for None
+        elif twin:
+            out[flag.name] = True
+        t = var.type
+        try:
+            if t == "Real":
+                out[name] = float(value)
+            elif t == "Enumeration":
+                out[name] = _enum_code(var, value)
+            elif t == "Integer":
+                if isinstance(value, str) or int(value) != value:
+                    raise ValueError(f"{name} = {value!r} is not an integer")
+                out[name] = int(value)
+            elif t == "Boolean":
+                out[name] = _as_bool(name, value)
+            else:
+                out[name] = str(value)
+        except (TypeError, ValueError) as exc:
+            if isinstance(exc, ValueError) and str(exc).startswith(name):
+                raise
+            raise ValueError(f"{name} = {value!r} cannot be a {t}: {exc}") from None
+    return out
+
+
+def law_parameters(model, exclude=()) -> dict:
+    """Every parameter of a friction law (a ``friction.MODELS`` instance) as a dict for
+    :class:`Master` ``parameters``, options (``shape``) and unset twins (``None``) included;
+    :func:`fmu_values` turns it into either FMU kind's values. ``exclude``: names left out."""
+    import dataclasses
+    return {f.name: getattr(model.params, f.name) for f in dataclasses.fields(model.params)
+            if f.name not in exclude}
 
 
 def _raw_function(dll, name):
@@ -168,15 +277,23 @@ class Master:
         Relative convergence tolerance of the fixed-point iteration.
     parameters, start_values : mapping, optional
         Instance -> {variable: value}; set after instantiation, before initialization
-        (parameters, and start values of inputs).
+        (parameters, and start values of inputs), each with the FMI setter of its type.
+        Python-style values are translated for either FMU kind (:func:`fmu_values`): an
+        option by name (``shape="lorentzian"``), ``None`` for an unset optional parameter.
     record : list of str, optional
         ``"instance.variable"`` columns of the result (outputs or inputs); default every
         output of every instance.
+    loop : {"auto", "c", "python"}, optional
+        Where the per-step loop runs: ``"c"`` the compiled loop of :mod:`fmus.master_loop`
+        (the same calls on the same buffers, without a Python round trip per FMI call),
+        ``"python"`` the Python loop, ``"auto"`` (default, or ``$FRICTIONLAB_MASTER_LOOP``)
+        the C loop when a C compiler could build it. Both give the same results bit for bit.
     """
 
     def __init__(self, fmus: Mapping[str, str], connections: Iterable = (), *,
                  algorithm: str = "gauss-seidel", order=None, iterations: int = 0,
-                 tolerance: float = 1e-10, parameters=None, start_values=None, record=None):
+                 tolerance: float = 1e-10, parameters=None, start_values=None, record=None,
+                 loop: str | None = None):
         from fmpy import extract, read_model_description
         from fmpy.fmi2 import fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, \
             fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE
@@ -188,6 +305,11 @@ class Master:
             raise ValueError(f"iterations = {iterations!r} is out of bounds: must be >= 0")
         if not fmus:
             raise ValueError("fmus: need at least one FMU instance")
+        from .master_loop import LOOPS
+        loop = loop if loop is not None else os.environ.get("FRICTIONLAB_MASTER_LOOP", "auto")
+        if loop not in LOOPS:
+            raise ValueError(f"loop must be one of {LOOPS}, got {loop!r}")
+        self.loop = loop
         self.algorithm, self.iterations, self.tolerance = algorithm, int(iterations), float(tolerance)
         self.log: dict[str, deque] = {name: deque(maxlen=50) for name in fmus}
 
@@ -298,6 +420,7 @@ class Master:
                                      f"{list(self.instances)}")
                 for var in vals:
                     self.instances[inst].var(var)
+                self._fmu_values(self.instances[inst], vals)  # refused here, not mid-run
         self._runs = 0
 
     # -- helpers ------------------------------------------------------------------------
@@ -318,19 +441,27 @@ class Master:
         except FMICallException as exc:
             raise FMUError(inst.name, call, t, exc.status, self.log.get(inst.name, ())) from None
 
+    def _fmu_values(self, inst, values):
+        try:
+            return fmu_values(inst.vars, values)
+        except ValueError as exc:
+            raise ValueError(f"instance '{inst.name}' ({os.path.basename(inst.path)}): "
+                             f"{exc}") from None
+
     def _set_values(self, inst, values, t):
+        """Set Python-style values (:func:`fmu_values`) by the variables' types."""
         s = inst.slave
-        for name, value in values.items():
-            v = inst.var(name)
+        for name, value in self._fmu_values(inst, values).items():
+            v = inst.vars[name]
             vr = [v.valueReference]
             if v.type == "Real":
-                self._call(inst, f"fmi2SetReal({name})", t, s.setReal, vr, [float(value)])
+                self._call(inst, f"fmi2SetReal({name})", t, s.setReal, vr, [value])
             elif v.type in ("Integer", "Enumeration"):
-                self._call(inst, f"fmi2SetInteger({name})", t, s.setInteger, vr, [int(value)])
+                self._call(inst, f"fmi2SetInteger({name})", t, s.setInteger, vr, [value])
             elif v.type == "Boolean":
-                self._call(inst, f"fmi2SetBoolean({name})", t, s.setBoolean, vr, [bool(value)])
+                self._call(inst, f"fmi2SetBoolean({name})", t, s.setBoolean, vr, [value])
             else:
-                self._call(inst, f"fmi2SetString({name})", t, s.setString, vr, [str(value)])
+                self._call(inst, f"fmi2SetString({name})", t, s.setString, vr, [value])
             if v.causality == "input" and name in inst.inputs:
                 inst.in_np[inst.inputs.index(name)] = float(value)
 
@@ -411,6 +542,95 @@ class Master:
                 prev = cur
         return passes
 
+    def _c_loop(self, insts, srcs):
+        """The compiled loop of :mod:`fmus.master_loop` for this run, or None (Python loop:
+        ``loop="python"``, no C compiler, or an instance's raw calls replaced, e.g. by call
+        counters)."""
+        if self.loop == "python":
+            return None
+        from . import master_loop
+        raw = all(isinstance(f, ctypes._CFuncPtr) for i in insts
+                  for f in (i.raw_set, i.raw_step, i.raw_get))
+        lib = master_loop.library() if raw else None
+        if lib is None:
+            if self.loop == "c":
+                raise RuntimeError("loop='c': the C master loop is not available: " +
+                                   (master_loop.UNAVAILABLE if raw else
+                                    "an instance's FMI calls are not the FMU's functions"))
+            return None
+        return master_loop.CLoop(insts, jacobi=self.algorithm == "jacobi",
+                                 iterations=self.iterations, tolerance=self.tolerance,
+                                 feedthrough=self._feedthrough, conn_src=self._conn_src,
+                                 rec_src=srcs)
+
+    def _run_c(self, cloop, t0, h, n, srcs, prog, chunk) -> np.ndarray:
+        """Steps 1..n in the C loop, in chunks between progress reports; returns the
+        recorded values, one row per communication point."""
+        out = np.empty((n + 1, len(srcs)))
+        out[0] = [buf[slot] for buf, slot in srcs]
+        k = 1
+        while k <= n:
+            end = min(n, ((k - 1) // chunk + 1) * chunk)
+            if not cloop.run(t0, h, k, end, out[k:end + 1]):
+                inst, call, status, t = cloop.error()
+                self._check(inst, call, status, t)
+                raise FMUError(inst.name, call, t, status, self.log.get(inst.name, ()))
+            if end % chunk == 0:
+                prog(chunk)
+            k = end + 1
+        return out
+
+    def _run_python(self, insts, t0, h, n, srcs, prog, chunk) -> np.ndarray:
+        """Steps 1..n in Python (the reference of the C loop); returns the recorded values,
+        one row per communication point."""
+        # recorded values go straight from the ctypes buffers into a flat array of doubles
+        flat = array.array("d")
+        keep = flat.extend
+        keep([buf[slot] for buf, slot in srcs])
+        gs = self.algorithm == "gauss-seidel"
+        iters = self.iterations
+        # per instance, everything a step touches, unpacked once (the loop below is the
+        # per-step overhead of the master: one fmi2SetReal, fmi2DoStep, fmi2GetReal each)
+        plan = [(inst, inst.cv, [(slot, src.out_buf, j) for slot, src, j in inst.gather],
+                 inst.in_buf, inst.in_vr, inst.n_in and inst.n_in_c, inst.raw_set,
+                 inst.raw_step, inst.out_buf, inst.out_vr, inst.n_out and inst.n_out_c,
+                 inst.raw_get)
+                for inst in insts]
+        hc, c_double = ctypes.c_double(h), ctypes.c_double
+        check = self._check
+        for k in range(1, n + 1):
+            t = t0 + (k - 1) * h
+            if gs:
+                for inst, c, gather, ibuf, ivr, nin, fset, fstep, obuf, ovr, nout, fget in plan:
+                    if nin:
+                        for slot, src, j in gather:
+                            ibuf[slot] = src[j]
+                        st = fset(c, ivr, nin, ibuf)
+                        if st > 1:
+                            check(inst, "fmi2SetReal", st, t)
+                    st = fstep(c, c_double(t), hc, _TRUE)
+                    if st > 1:
+                        check(inst, "fmi2DoStep", st, t)
+                    if nout:
+                        st = fget(c, ovr, nout, obuf)
+                        if st > 1:
+                            check(inst, "fmi2GetReal", st, t + h)
+            else:
+                for inst in insts:
+                    self._gather_set(inst, t)
+                for inst in insts:
+                    st = inst.raw_step(inst.cv, c_double(t), hc, _TRUE)
+                    if st > 1:
+                        check(inst, "fmi2DoStep", st, t)
+                for inst in insts:
+                    self._get(inst, t + h)
+            if iters:
+                self._settle(t + h, iters)
+            keep([buf[slot] for buf, slot in srcs])
+            if k % chunk == 0:
+                prog(chunk)
+        return np.frombuffer(flat, dtype=np.float64).reshape(n + 1, len(srcs))
+
     # -- simulation -----------------------------------------------------------------------
     def simulate(self, stop_time: float | None = None, step_size: float | None = None,
                  start_time: float | None = None, *, progress=None) -> np.ndarray:
@@ -459,58 +679,16 @@ class Master:
         self._settle(t0, max(self.iterations, len(insts)))
 
         cols = self._columns
-        # recorded values go straight from the ctypes buffers into a flat array of doubles
         srcs = [(c[0].out_buf if c[1] == "out" else c[0].in_buf, c[2]) for c in cols]
-        flat = array.array("d")
-        keep = flat.extend
-        keep([buf[slot] for buf, slot in srcs])
         show = progress if progress is not None else n > 20000
         prog = progress if callable(progress) else \
             Progress(total=n, label="cosim", enabled=bool(show))
-        gs = self.algorithm == "gauss-seidel"
-        iters = self.iterations
         chunk = max(1, n // 100)
-        # per instance, everything a step touches, unpacked once (the loop below is the
-        # per-step overhead of the master: one fmi2SetReal, fmi2DoStep, fmi2GetReal each)
-        plan = [(inst, inst.cv, [(slot, src.out_buf, j) for slot, src, j in inst.gather],
-                 inst.in_buf, inst.in_vr, inst.n_in and inst.n_in_c, inst.raw_set,
-                 inst.raw_step, inst.out_buf, inst.out_vr, inst.n_out and inst.n_out_c,
-                 inst.raw_get)
-                for inst in insts]
-        hc, c_double = ctypes.c_double(h), ctypes.c_double
-        check = self._check
-        for k in range(1, n + 1):
-            t = t0 + (k - 1) * h
-            if gs:
-                for inst, c, gather, ibuf, ivr, nin, fset, fstep, obuf, ovr, nout, fget in plan:
-                    if nin:
-                        for slot, src, j in gather:
-                            ibuf[slot] = src[j]
-                        st = fset(c, ivr, nin, ibuf)
-                        if st > 1:
-                            check(inst, "fmi2SetReal", st, t)
-                    st = fstep(c, c_double(t), hc, _TRUE)
-                    if st > 1:
-                        check(inst, "fmi2DoStep", st, t)
-                    if nout:
-                        st = fget(c, ovr, nout, obuf)
-                        if st > 1:
-                            check(inst, "fmi2GetReal", st, t + h)
-            else:
-                for inst in insts:
-                    self._gather_set(inst, t)
-                for inst in insts:
-                    st = inst.raw_step(inst.cv, c_double(t), hc, _TRUE)
-                    if st > 1:
-                        check(inst, "fmi2DoStep", st, t)
-                for inst in insts:
-                    self._get(inst, t + h)
-            if iters:
-                self._settle(t + h, iters)
-            keep([buf[slot] for buf, slot in srcs])
-            if k % chunk == 0:
-                prog(chunk)
-        out = np.frombuffer(flat, dtype=np.float64).reshape(n + 1, len(cols))
+        cloop = self._c_loop(insts, srcs)
+        if cloop is not None:
+            out = self._run_c(cloop, t0, h, n, srcs, prog, chunk)
+        else:
+            out = self._run_python(insts, t0, h, n, srcs, prog, chunk)
         time = t0 + h * np.arange(n + 1)
         dtype = [("time", np.float64)] + [(c, np.float64) for c in self.record]
         res = np.empty(n + 1, dtype=dtype)

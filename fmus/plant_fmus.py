@@ -53,8 +53,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import os
-
 
 from . import runtime
 
@@ -135,13 +133,15 @@ XML350_CONNECTIONS = [
 ]
 
 
-def xml350_loop_master(fmu_dir, *, friction_params: dict | None = None, record=None):
-    """An open :class:`fmus.master.Master` of the XML-350 loop assembled from part FMUs."""
+def xml350_loop_master(fmu_dir, *, friction_params: dict | None = None, record=None,
+                       native: bool = False):
+    """An open :class:`fmus.master.Master` of the XML-350 loop assembled from part FMUs
+    (``native``: the friction law is ``lugre_native.fmu``, the parts stay pythonfmu FMUs)."""
     from plants.xml350 import xml350_friction
-    from .master import Master
+    from .master import Master, fmu_file
     fmus = {"trajectory": "xml350_trajectory", "feedforward": "lugre_feedforward",
             "mechanics": "xml350_mechanics", "friction": "lugre", "controller": "sdpid"}
-    fmus = {k: os.path.join(fmu_dir, f"{v}.fmu") for k, v in fmus.items()}
+    fmus = {k: fmu_file(fmu_dir, v, native and k == "friction") for k, v in fmus.items()}
     law = xml350_friction()
     params = {"friction": {**_law_params(law), **(friction_params or {})}}
     return Master(fmus, XML350_CONNECTIONS, order=XML350_ORDER, iterations=1,
@@ -232,31 +232,45 @@ def _law_params(model) -> dict:
 
 def plant_master(fmu_dir, plant_name: str, law, *, algorithm: str = "gauss-seidel",
                  iterations: int = 0, record=None, coupling: str = "linearised",
-                 step: float | None = None):
+                 step: float | None = None, native: bool = False):
     """An open :class:`fmus.master.Master` of ``<plant>.fmu`` + ``<law>.fmu``.
 
     ``coupling``: ``"linearised"`` (the law's ``dF_dx``, ``dF_dv``, ``dF_dt`` drive the
     plant; the law's ``h_lin`` is set to ``step``, default :func:`data_step`; change
     ``master.parameters["friction"]["h_lin"]`` when running at another step; with
     Gauss-Seidel the law advances its state with the inputs at both ends of the step) or
-    ``"hold"``.
+    ``"hold"``. ``native``: the law is the native C FMU ``<law>_native.fmu`` of ``fmu_dir``
+    (the same results; its switching law reads ``low_share`` only with ``use_low_share``,
+    which is set where the coupling connects it).
     """
     import plants
-    from .master import Master
+    from .master import Master, fmu_file
     cls = plants.PLANTS[plant_name]
-    fmus = {"plant": os.path.join(fmu_dir, f"{plant_name}.fmu"),
-            "friction": os.path.join(fmu_dir, f"{law.name}.fmu")}
+    fmus = {"plant": fmu_file(fmu_dir, plant_name),
+            "friction": fmu_file(fmu_dir, law.name, native)}
     main = cls.main_output
     params = _law_params(law)
+    if runtime.has_switch(type(law)) and "vc" not in params and \
+            "vc" in {f.name for f in dataclasses.fields(law.params)}:
+        # the regime-split velocity the law derives (load_lugre: Eq. 13's root), passed as
+        # the very double the reference uses: a root finder of the FMU's own may land an ulp
+        # away, and a plant sliding along |v| = vc then sees the other regime at the tie
+        params["vc"] = float(law.vc)
     if coupling == "linearised":
         params["h_lin"] = float(step if step is not None else data_step(cls))
         # Gauss-Seidel, plant first: the law's inputs at its step are those at the end
         params["inputs_at_step_end"] = algorithm == "gauss-seidel"
         if law.state_names:  # plant.v_mean of the same step (Gauss-Seidel, plant first)
             params["use_v_mean"] = algorithm == "gauss-seidel"
-    return Master(fmus, plant_connections(cls, type(law), coupling), algorithm=algorithm,
-                  parameters={"friction": params}, iterations=iterations,
-                  record=record or [f"plant.{main}", "friction.F"])
+    m = Master(fmus, plant_connections(cls, type(law), coupling), algorithm=algorithm,
+               parameters={"friction": params}, iterations=iterations,
+               record=record or [f"plant.{main}", "friction.F"])
+    if coupling == "linearised" and runtime.has_switch(type(law)) and \
+            "use_low_share" in m.instances["friction"].vars:
+        # the native law reads plant.low_share only when told to (the pythonfmu law whenever
+        # it is >= 0 with inputs_at_step_end, which the plant's output always is)
+        m.parameters["friction"]["use_low_share"] = algorithm == "gauss-seidel"
+    return m
 
 
 #: longest communication step of the finer-step fallback [s]: a stiff contact coupled with
@@ -288,7 +302,8 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
                 stop: float | None = None, rtol: float = 1e-9, tol: float = 1e-3,
                 max_halvings: int = 4, time_budget: float | None = None,
                 coupling: str = "linearised", max_step: float | None = None,
-                coarser: bool = False, plant_params: dict | None = None) -> dict:
+                coarser: bool = False, plant_params: dict | None = None,
+                native: bool = False) -> dict:
     """NRMSE of the co-simulated main output against the plant's reference integrator.
 
     The loop communicates at ``h0`` = :func:`data_step` (or, with ``max_step`` for the
@@ -304,6 +319,7 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
     ``TimeoutError``. ``coarser=True`` also runs the steps between ``h0`` and the data
     period that divide it (a plant whose controller samples faster than its data: the press
     at 1 kHz, data at 100 Hz), for an observed order above the integrator's error floor.
+    ``native``: the law is the native C FMU (``<law>_native.fmu``; :func:`plant_master`).
 
     Returns
     -------
@@ -333,7 +349,8 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
     ref = plant.simulate(n * hd, method="reference", rtol=rtol, time_budget=time_budget)
     main = cls.main_output
     steps, errors = [], []
-    with plant_master(fmu_dir, plant_name, law, coupling=coupling, step=h) as m:
+    with plant_master(fmu_dir, plant_name, law, coupling=coupling, step=h,
+                      native=native) as m:
         if plant_params:
             m.parameters["plant"] = {k: float(v) for k, v in plant_params.items()}
         for k in range(max_halvings + 1):

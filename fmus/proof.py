@@ -11,7 +11,6 @@ reports the slope of log(error) over log(step).
 from __future__ import annotations
 
 import math
-import os
 
 import numpy as np
 
@@ -60,7 +59,7 @@ def mass_connections(law: str) -> list[tuple[str, str]]:
 
 def mass_cosim(fmu_dir, law: str, *, step: float, stop: float | None = None,
                algorithm: str = "gauss-seidel", scenario: dict | None = None,
-               master=None, iterations: int = 0) -> np.ndarray:
+               master=None, iterations: int = 0, native: bool = False) -> np.ndarray:
     """Co-simulate ``mass.fmu`` + ``<law>.fmu`` from ``fmu_dir``; returns the result array.
 
     Pass an open ``master`` (from :func:`mass_master`) to reuse loaded FMUs across runs.
@@ -70,17 +69,18 @@ def mass_cosim(fmu_dir, law: str, *, step: float, stop: float | None = None,
     if master is not None:
         return master.simulate(stop_time=stop, step_size=step)
     with mass_master(fmu_dir, law, algorithm=algorithm, scenario=sc,
-                     iterations=iterations) as m:
+                     iterations=iterations, native=native) as m:
         return m.simulate(stop_time=stop, step_size=step)
 
 
 def mass_master(fmu_dir, law: str, *, algorithm: str = "gauss-seidel",
-                scenario: dict | None = None, iterations: int = 0):
-    """An open :class:`fmus.master.Master` of the mass + ``law`` loop."""
-    from .master import Master
+                scenario: dict | None = None, iterations: int = 0, native: bool = False):
+    """An open :class:`fmus.master.Master` of the mass + ``law`` loop (``native``: the
+    native C FMUs ``mass_native.fmu`` and ``<law>_native.fmu`` of ``fmu_dir``)."""
+    from .master import Master, fmu_file
     sc = scenario or mass_scenario(law)
-    fmus = {"mass": os.path.join(fmu_dir, "mass.fmu"),
-            "friction": os.path.join(fmu_dir, f"{law}.fmu")}
+    fmus = {"mass": fmu_file(fmu_dir, "mass", native),
+            "friction": fmu_file(fmu_dir, law, native)}
     params = {"mass": {"m": sc["m"], "u0": sc["u0"], "u_amp": sc["u_amp"],
                        "u_freq": sc["u_freq"], "v0": sc["v0"]}}
     start = {"friction": {"load": sc["load"]}} if "load" in sc else {}

@@ -32,28 +32,31 @@ from .objectives import Objective, check_data
 __all__ = ["CoSimObjective", "ClosedLoopCoSimObjective", "fmu_dir_for"]
 
 
-def fmu_dir_for(laws, fmu_dir=None) -> str:
-    """Folder holding ``<law>.fmu`` (and ``mass.fmu``): the given one, or built once."""
+def fmu_dir_for(laws, fmu_dir=None, native: bool = False) -> str:
+    """Folder holding ``<law>.fmu`` (and ``mass.fmu``), or with ``native`` the native C FMUs
+    ``<law>_native.fmu`` (``mass_native.fmu``): the given one, or built once per process."""
+    from fmus.master import fmu_file
     if fmu_dir is not None:
         for law in laws:
-            if not os.path.exists(os.path.join(fmu_dir, f"{law}.fmu")):
-                raise FileNotFoundError(f"{law}.fmu not found in {fmu_dir}; build it with "
-                                        f"frictionlab build-fmus --out {fmu_dir}")
+            path = fmu_file(fmu_dir, law, native)
+            if not os.path.exists(path):
+                raise FileNotFoundError(f"{os.path.basename(path)} not found in {fmu_dir}; "
+                                        f"build it with frictionlab build-fmus --out {fmu_dir}")
         return str(fmu_dir)
+    names = tuple(sorted(set(laws)))
+    if native:
+        from fmus.testing import built_native_fmus
+        return str(built_native_fmus(names))
     from fmus.testing import built_fmus
-    return str(built_fmus(tuple(sorted(set(laws)))))
+    return str(built_fmus(names))
 
 
 def _fixed_parameters(model: FrictionModel, names) -> dict:
-    """Numeric parameters of the model that are set (twins left None stay at the FMU's
-    'same as +' start)."""
-    out = {}
-    for info in model.Params.info():
-        val = getattr(model.params, info.name)
-        if info.name in names or val is None or isinstance(val, (str, bool)):
-            continue
-        out[info.name] = float(val)
-    return out
+    """The model's parameters that are not identified, as Python values (options by name,
+    unset twins ``None``); the master sets them in either FMU kind
+    (:func:`fmus.master.fmu_values`)."""
+    from fmus.master import law_parameters
+    return law_parameters(model, exclude=set(names))
 
 
 class _MasterHolder:
@@ -88,24 +91,30 @@ class CoSimObjective(_MasterHolder, Objective):
     data : Dataset
     names : list of str
     fmu_dir : path, optional
-        Folder with ``<law>.fmu``; default: built once per process.
+        Folder with ``<law>.fmu`` (``<law>_native.fmu`` with ``native``); default: built once
+        per process.
+    native : bool
+        Run the native C FMU of the law (:mod:`fmus.native`) instead of the pythonfmu one:
+        the same cost, without Python inside the FMU.
     """
     parallel_inside = False
 
-    def __init__(self, model: FrictionModel, data: Dataset, names, fmu_dir=None):
+    def __init__(self, model: FrictionModel, data: Dataset, names, fmu_dir=None,
+                 native: bool = False):
         self.model = model
         self.data = check_data(data)
         self.names = list(names)
+        self.native = bool(native)
         # resolved (built) here, once, so worker processes receive a ready folder
-        self.fmu_dir = fmu_dir_for([model.name], fmu_dir)
+        self.fmu_dir = fmu_dir_for([model.name], fmu_dir, self.native)
         self._master = None
         self.n_runs = 0
 
     def _open(self):
         if self._master is None:
-            from fmus.master import Master
-            d = fmu_dir_for([self.model.name], self.fmu_dir)
-            self._master = Master({"friction": os.path.join(d, f"{self.model.name}.fmu")}, [])
+            from fmus.master import Master, fmu_file
+            d = fmu_dir_for([self.model.name], self.fmu_dir, self.native)
+            self._master = Master({"friction": fmu_file(d, self.model.name, self.native)}, [])
             inst = self._master.instances["friction"]
             self._inst = inst
             self._slave = inst.slave
@@ -116,7 +125,23 @@ class CoSimObjective(_MasterHolder, Objective):
             self._in_buf = (ctypes.c_double * len(ins))()
             self._F_vr = (ctypes.c_uint * 1)(inst.vars["F"].valueReference)
             self._F_buf = (ctypes.c_double * 1)()
+            self._loop = self._c_loop(inst)
         return self._master
+
+    def _c_loop(self, inst):
+        """The compiled drive of :mod:`fmus.master_loop` over this instance's buffers (the
+        same calls as the Python loop of :meth:`_run`), or None (Python loop)."""
+        from fmus import master_loop
+        if self._master.loop == "python" or master_loop.library() is None:
+            return None
+
+        from types import SimpleNamespace
+        # the instance's handle and functions, with the objective's buffers
+        drive = SimpleNamespace(cv=inst.cv, raw_set=inst.raw_set, raw_step=inst.raw_step,
+                                raw_get=inst.raw_get, in_vr=self._in_vr, in_buf=self._in_buf,
+                                n_in=len(self._in_names), out_vr=self._F_vr,
+                                out_buf=self._F_buf, n_out=1, gather=())
+        return master_loop.CLoop([drive])
 
     def _run(self, x) -> np.ndarray:
         from fmus.master import FMUError
@@ -138,10 +163,20 @@ class CoSimObjective(_MasterHolder, Objective):
         self._master._set_values(inst, params, t[0])
         self._master._call(inst, "fmi2EnterInitializationMode", t[0], s.enterInitializationMode)
         self._master._call(inst, "fmi2ExitInitializationMode", t[0], s.exitInitializationMode)
+        F = np.empty(t.size)
+        if self._loop is not None:
+            tc = np.ascontiguousarray(t, dtype=np.float64)
+            Uc = np.ascontiguousarray(U, dtype=np.float64)
+            Umc = np.ascontiguousarray(Um if Um.size else np.zeros((1, U.shape[1])),
+                                       dtype=np.float64)
+            if self._loop.prescribed(tc, Uc, Umc, F) >= 0:
+                _, call, status, tk = self._loop.error()
+                raise FMUError("friction", call, tk, status,
+                               self._master.log.get("friction", ()))
+            return F
         f_set, f_get, f_step, c = inst.f_set, inst.f_get, inst.f_step, inst.c
         n_in = len(self._in_names)
         ib, ivr, Fb, Fvr = self._in_buf, self._in_vr, self._F_buf, self._F_vr
-        F = np.empty(t.size)
         for k in range(t.size):
             for j in range(n_in):
                 ib[j] = U[k, j]
@@ -186,12 +221,15 @@ class ClosedLoopCoSimObjective(_MasterHolder, Objective):
     step : float, optional
         Communication step [s] (default: the data interval; must divide it).
     fmu_dir : path, optional
+    native : bool
+        Run the native C FMUs (``mass_native.fmu``, ``<law>_native.fmu``).
     """
     parallel_inside = False
 
     def __init__(self, model, data, names, *, mass, u_amp, u_freq, u0=0.0, v0=0.0, step=None,
-                 fmu_dir=None):
+                 fmu_dir=None, native: bool = False):
         self.model, self.data, self.names = model, check_data(data), list(names)
+        self.native = bool(native)
         self.loop = dict(m=float(mass), u0=float(u0), u_amp=float(u_amp),
                          u_freq=float(u_freq), v0=float(v0))
         dt = np.diff(data.t)
@@ -203,16 +241,16 @@ class ClosedLoopCoSimObjective(_MasterHolder, Objective):
         if abs(ratio - round(ratio)) > 1e-9:
             raise ValueError(f"step = {self.step!r} must divide the data interval {self.dt!r}")
         self.every = int(round(ratio))
-        self.fmu_dir = fmu_dir_for([model.name, "mass"], fmu_dir)
+        self.fmu_dir = fmu_dir_for([model.name, "mass"], fmu_dir, self.native)
         self._master = None
 
     def _open(self):
         if self._master is None:
-            from fmus.master import Master
+            from fmus.master import Master, fmu_file
             from fmus.proof import mass_connections
-            d = fmu_dir_for([self.model.name, "mass"], self.fmu_dir)
-            fm = {"mass": os.path.join(d, "mass.fmu"),
-                  "friction": os.path.join(d, f"{self.model.name}.fmu")}
+            d = fmu_dir_for([self.model.name, "mass"], self.fmu_dir, self.native)
+            fm = {"mass": fmu_file(d, "mass", self.native),
+                  "friction": fmu_file(d, self.model.name, self.native)}
             self._master = Master(fm, mass_connections(self.model.name),
                                   parameters={"mass": dict(self.loop), "friction": {}},
                                   record=["mass.v", "friction.F"])

@@ -211,7 +211,9 @@ def test_cli_build_fmus(tmp_path, capsys):
     from frictionlab.cli import main
     assert main(["build-fmus", "--out", str(tmp_path), "--only", "stribeck"]) == 0
     assert validate(tmp_path / "stribeck.fmu") == []
-    assert "[build-fmus 1/1]" in capsys.readouterr().err
+    assert validate(tmp_path / "stribeck_native.fmu") == []  # both kinds
+    err = capsys.readouterr().err
+    assert "[build-fmus 1/2]" in err and "[build-fmus 2/2]" in err
     assert main(["build-fmus", "--out", str(tmp_path), "--only", "nonsense"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "unknown FMU name" in err[0] and "nonsense" in err[0]

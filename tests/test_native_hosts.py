@@ -197,8 +197,8 @@ CASES = {
 def recorded_motion(law: str, n: int, seed: int = 7, smooth: bool = False
                     ) -> dict[str, np.ndarray]:
     """A recorded motion of ``n`` samples at ``H``: two tones with reversals, a dwell at rest
-    and sensor noise (``smooth``: neither); ``a`` the smooth acceleration, ``x`` the travel,
-    ``load`` a slow swell, ``low_share`` a share in [0, 1]."""
+    and sensor noise (``smooth``: neither); ``a`` the smooth acceleration, ``x`` the position
+    (travel about its mean), ``load`` a slow swell, ``low_share`` a share in [0, 1]."""
     case = CASES[law]
     rng = np.random.default_rng(seed)
     t = H * np.arange(n)
@@ -211,6 +211,7 @@ def recorded_motion(law: str, n: int, seed: int = 7, smooth: bool = False
         dwell = (t > 0.13) & (t < 0.16)
         v[dwell], a[dwell] = 0.0, 0.0
     x = np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * H)))
+    x -= np.mean(x)  # the travel about the middle of the stroke
     load = case.get("load", 1.0) * (1.0 + 0.3 * np.sin(2 * math.pi * 1.5 * t))
     share = np.clip(0.5 + 0.6 * np.sin(2 * math.pi * 7.0 * t), 0.0, 1.0)
     return {"v": v, "a": a, "x": x, "load": load, "low_share": share}

@@ -13,8 +13,11 @@
 * 1,000 instantiate/step/free cycles in fresh processes end with exit code 0 and repeat
   each other bit for bit, and valgrind finds no error in a few cycles of every native FMU.
 
-Slow ones are marked; the default part runs the C host on two laws, ecos, libcosim and the
-process cycles.
+Slow ones are marked. The default part builds the native lugre, load_lugre and mass FMUs and
+runs the C host on those two laws (2,000 steps, coupling outputs), ecos and libcosim with
+LuGre, 1,000 cycles over the three FMUs and valgrind on one LuGre cycle; the slow part covers
+every law and native FMU (10,000 steps, ecos and libcosim per law, the container, the fresh
+fmpy venv, 1,000 cycles over all seven, valgrind on each).
 """
 from __future__ import annotations
 

@@ -60,7 +60,12 @@ class Composite:
     ctx: Context | None = None
 
     def predict(self, data) -> np.ndarray:
-        F = self.law.simulate(data.t, data.v, **_law_inputs(self.law, data))
+        """Force [N] along ``data``, the law started from the state consistent with the
+        record's first samples, its motion and its measured force
+        (:meth:`friction.base.FrictionModel.record_start_state`)."""
+        kw = _law_inputs(self.law, data)
+        s0 = self.law.record_start_state(data.t, data.v, F=data.F, **kw)
+        F = self.law.simulate(data.t, data.v, state0=s0, **kw)
         return _apply_effects(F, self.effects, self.extras, data, self.ctx, self.law)
 
     def describe(self) -> dict:
@@ -99,6 +104,8 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     """Jointly re-identify the base law's parameters and the effects' extras on ``fit``.
 
     Returns the fitted composite and its fit NRMSE. ``law``'s current values start the search.
+    Every trial is simulated from its own state consistent with the record's first samples
+    (its motion and measured force), as :meth:`Composite.predict` scores it.
     """
     nb = len(base_names)
     # no law parameter to fit (the transfer scores calibrate only a candidate's own): the
@@ -114,9 +121,9 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     u0 = np.concatenate([u_law0, np.clip(u_ex0, 0.0, 1.0)])
     # kernel inputs validated once; each evaluation only repacks theta
     t, v, a, load, x = law._inputs(fit.t, fit.v, **_law_inputs(law, fit))
-    s0 = law.initial_state()
     kern = law._kernel
     sd = float(np.std(fit.F)) or 1.0
+    F0 = float(fit.F[0])
     # laws with a spring/offset part (mre_lugre) need it at the trial values
     elastic = type(law).conservative_force is not FrictionModel.conservative_force and \
         any(e.stage == "multiplicative" for e in effects)
@@ -126,12 +133,21 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         extras = {e.name: lo[j] + (hi[j] - lo[j]) * u[nb + j] for j, e in enumerate(ex)}
         return xl, extras
 
+    def trial_law(xl):
+        try:
+            return law.with_values(**dict(zip(base_names, map(float, xl))))
+        except (ValueError, TypeError):  # values the law rejects (NaN cost below)
+            return None
+
     def residual(u):
         xl, extras = unpack(u)
         theta = law.population_theta(base_names, xl[None, :])[0]
+        trial = trial_law(xl) if nb else law
+        s0 = law.initial_state() if trial is None else trial._start_from(t, v, a, load, x, F0)
         F, _ = kern(t, v, a, load, x, theta, 0, s0)
         F = _apply_effects(F, effects, extras, fit, ctx,
-                           law.with_values(**dict(zip(base_names, xl))) if elastic else None)
+                           (trial or law.with_values(**dict(zip(base_names, xl))))
+                           if elastic else None)
         r = (fit.F - F) / sd
         if not np.all(np.isfinite(r)):
             return np.full(r.size, 1e3)

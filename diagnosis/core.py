@@ -31,14 +31,54 @@ from .significance import improvement_z, z_threshold
 from .transfer import transfer_applicable, transfer_scores
 
 __all__ = ["diagnose", "DiagnosisReport", "noise_floor", "BASE_NAMES", "extrapolation", "decide",
-           "report_sections"]
+           "report_sections", "BaseFitError", "BASE_FIT_LIMIT", "base_free_names", "warm_up",
+           "MIN_SCORED_SAMPLES"]
 
-#: parameters of each law that the base fit identifies (its "standard" configuration:
-#: symmetric, Gaussian alpha = 2, no offset); candidates add the rest
+#: parameters of each law that the *trajectory* level screens for its base re-fit (a
+#: "standard" configuration: symmetric, Gaussian alpha = 2, no offset). The force level's
+#: base is identify's default law instead (:func:`base_free_names`)
 BASE_NAMES = {
     "lugre": ["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs"],
     "stribeck": ["sigma2", "Fc", "Fs", "vs"],
 }
+
+#: a base whose NRMSE on its own fit record reaches this (worse than the record's mean
+#: force, NRMSE 1) stops the diagnosis: effects scored against it would be credited with
+#: what the base itself lacks (Franka case 4: the constant torque offset read as
+#: ``asymmetry``)
+BASE_FIT_LIMIT = 1.0
+#: fewest scored samples a held-out record must keep (after its warm-up, :func:`warm_up`)
+MIN_SCORED_SAMPLES = 10
+#: warm-up of a held-out record that starts at rest: this share of its samples, at most
+#: :data:`WARM_UP_MAX`, is not scored
+WARM_UP_SHARE = 1.0 / 50.0
+WARM_UP_MAX = 200
+
+
+class BaseFitError(ValueError):
+    """The base law fits its own fit record worse than a constant (NRMSE >=
+    :data:`BASE_FIT_LIMIT`): no effect can be named on top of it. ``fit_nrmse`` holds the
+    figure."""
+
+    def __init__(self, message: str, fit_nrmse: float):
+        super().__init__(message)
+        self.fit_nrmse = float(fit_nrmse)
+
+
+def warm_up(record) -> int:
+    """Samples at the start of a separate held-out record that are not scored.
+
+    None for a record that starts in motion: the law starts from its steady state at the
+    first velocity (:meth:`friction.base.FrictionModel.record_start_state`), the state
+    consistent with the first samples, so there is no start-up transient to hide (from an
+    undeflected bristle the rack-and-pinion's held-out stroke spiked by 760 N). A record
+    that starts at rest (``v[0] = 0``) starts the law at rest, while the real contact may
+    hold a deflection from before: its first :data:`WARM_UP_SHARE` (at most
+    :data:`WARM_UP_MAX` samples) are a warm-up.
+    """
+    if len(record) == 0 or record.v[0] != 0.0:
+        return 0
+    return min(WARM_UP_MAX, int(len(record) * WARM_UP_SHARE))
 
 #: a candidate must close at least this share of the held-out gap *above the noise floor*
 #: to be named. Right-family candidates whose form differs from the truth's close 0.38-0.95
@@ -122,33 +162,57 @@ def _as_dataset(d, mapping=None, scale=None):
     return load_dataset(d, mapping=mapping, scale=scale)
 
 
-def _base_law(model, fit) -> tuple[FrictionModel, list[str]]:
+def base_free_names(law: FrictionModel) -> list[str]:
+    """Free parameters of the diagnosis' base law: those ``frictionlab identify`` fits by
+    default (:func:`identification.space.default_names`, one definition for both
+    commands). For the classic LuGre: sigma0, sigma1, sigma2, Fc, Fs, vs, the Stribeck
+    exponent alpha and the offset b (direction twins left ``None`` stay symmetric;
+    candidates add what the base lacks)."""
+    from identification.space import default_names
+    return default_names(law)
+
+
+def _base_law(model, fit, names=None) -> tuple[FrictionModel, list[str]]:
     law = make_model(model) if isinstance(model, str) else model
-    names = BASE_NAMES.get(law.name)
-    if names is None:
-        # the standard configuration leaves out the direction twins, the offset and the
-        # Stribeck exponent (candidates add them); a law whose alpha is something else
-        # (mre_lugre: the hysteresis shape of seed 002) keeps it
-        drop = ("alpha", "b") if hasattr(law.params, "shape") else ("b",)
-        names = [n for n in law.free_names() if not n.endswith("_neg") and n not in drop]
-    return law, list(names)
+    return law, list(base_free_names(law) if names is None else names)
 
 
-def fit_base(fit, model, ctx=None, seed: int = 0):
+def fit_base(fit, model, ctx=None, seed: int = 0, names=None, check: bool = True):
     """The diagnosis' base fit: ``model`` identified on ``fit``, then polished as a composite
     with no effect (the same least squares every candidate is fitted with).
+
+    Parameters
+    ----------
+    fit : Dataset
+        The fit record.
+    model : str or FrictionModel
+        Base law (registry name, or an instance whose values start the fit).
+    ctx : Context, optional
+        Scales of ``fit`` (:func:`diagnosis.effects.make_context`).
+    seed : int
+        Seed of the identification.
+    names : list of str, optional
+        Free parameters (default :func:`base_free_names`, identify's default set).
+    check : bool
+        Raise :class:`BaseFitError` when the fit NRMSE reaches :data:`BASE_FIT_LIMIT`.
 
     Returns
     -------
     (Composite, list of str, float)
-        The fitted base, the names of its free parameters and its fit NRMSE.
+        The fitted base, the names of its free parameters and its fit NRMSE [-].
     """
     from identification import identify
     ctx = ctx or make_context(fit)
-    law0, base_names = _base_law(model, fit)
-    res = identify(fit, law0, names=base_names, seed=seed)
-    base, base_fit = fit_composite(res["model"], base_names, [], fit, ctx)
-    return base, base_names, base_fit
+    law0, names = _base_law(model, fit, names)
+    res = identify(fit, law0, names=names, seed=seed)
+    base, base_fit = fit_composite(res["model"], names, [], fit, ctx)
+    if check and not base_fit < BASE_FIT_LIMIT:
+        raise BaseFitError(
+            f"the base {base.law.name} fits its own fit record {fit.name!r} at NRMSE "
+            f"{base_fit:.3g} >= {BASE_FIT_LIMIT:g}, worse than the record's mean force: no "
+            f"effect is named on a base that does not fit (check the force's sign, units "
+            f"and offset, or choose another base law)", base_fit)
+    return base, names, base_fit
 
 
 def _evidence(data, r) -> dict:
@@ -279,7 +343,8 @@ def report_sections(where, bands, freq, effects, verdict, sequence, before, fina
 
 def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed: int = 0,
              fit_fraction: float = 0.7, greedy: bool = True, progress=None,
-             mapping=None, scale=None, noise_level: float | None = None) -> DiagnosisReport:
+             mapping=None, scale=None, noise_level: float | None = None,
+             base_names: list | None = None) -> DiagnosisReport:
     """Locate and name the sim-to-real gap of a friction model.
 
     Parameters
@@ -303,6 +368,22 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         channel in a standstill record. Default: estimated from the held-out residual's
         second differences, which reads white noise right but under-reads noise a filter
         has coloured (the gap then reads as structure: ``unexplained``, never a name).
+    base_names : list of str, optional
+        Free parameters of the base law. Default: those ``identify`` fits by default
+        (:func:`base_free_names`), so both commands fit the same law.
+
+    Every record is simulated from the law's steady state at its first velocity (a record
+    that starts in motion), a separate held-out record that starts at rest after an
+    unscored warm-up (:func:`warm_up`); one too short to score is refused.
+
+    Raises
+    ------
+    BaseFitError
+        When the base fits its own fit record at NRMSE >= :data:`BASE_FIT_LIMIT` (worse
+        than the record's mean): the diagnosis stops instead of naming effects.
+    ValueError
+        On bad input, e.g. a held-out record with fewer than :data:`MIN_SCORED_SAMPLES`
+        samples to score.
 
     Returns
     -------
@@ -323,6 +404,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     else:
         vals = validation if isinstance(validation, (list, tuple)) else [validation]
         val_sets = [_as_dataset(v, mapping, scale) for v in vals]
+    # held-out records that start at rest keep an unscored warm-up; the chronological
+    # hold-out continues the fit part's simulation and needs none
+    skip = [0] if full is not None else [warm_up(v) for v in val_sets]
+    _check_scorable(val_sets, skip, chronological=full is not None)
     if noise_level is not None:
         _check_noise_level(noise_level, val_sets)
     names = list(candidates) if candidates is not None else list(EFFECT_NAMES)
@@ -334,16 +419,12 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     # 1. base fit
     say(f"[diagnose] fitting base {model if isinstance(model, str) else model.name} on "
         f"{len(fit)} samples")
-    base, base_names, base_fit = fit_base(fit, model, ctx, seed=seed)
+    base, base_names, base_fit = fit_base(fit, model, ctx, seed=seed, names=base_names)
 
     def predict_val(comp: Composite) -> list[np.ndarray]:
         if full is not None:
             return [comp.predict(full)[len(fit):]]
         return [comp.predict(v) for v in val_sets]
-
-    # separate files start from rest in the model: their first samples are a start-up
-    # transient of the bristle state, not a model error; they are left out of the scores
-    skip = [0] if full is not None else [min(200, len(v) // 50) for v in val_sets]
 
     F_all = np.concatenate([v.F[k:] for v, k in zip(val_sets, skip)])
     held_residuals = {}  # pooled held-out residuals of each scored model, for the paired test
@@ -519,6 +600,23 @@ def _check_noise_level(noise_level, val_sets) -> None:
     if nl >= sd:
         raise ValueError(f"noise_level = {nl:.4g} N is out of bounds: must be below the spread "
                          f"of the measured force (std {sd:.4g} N); check its unit (N, not mN)")
+
+
+def _check_scorable(val_sets, skip, chronological: bool) -> None:
+    """Refuse a held-out record with fewer than :data:`MIN_SCORED_SAMPLES` samples left to
+    score after its warm-up, naming it, in one line."""
+    for v, k in zip(val_sets, skip):
+        n = len(v) - k
+        if n < MIN_SCORED_SAMPLES:
+            what = ("the held-out part of the record" if chronological
+                    else f"held-out record {v.name!r}")
+            warm = f" after its {k}-sample warm-up" if k else ""
+            raise ValueError(f"{what} has {n} samples to score{warm}: too short to score "
+                             f"(need >= {MIN_SCORED_SAMPLES})")
+    sd = float(np.std(np.concatenate([v.F[k:] for v, k in zip(val_sets, skip)])))
+    if not sd > 0:
+        raise ValueError("the held-out measured force is constant: its NRMSE is undefined "
+                         "(std(F) = 0)")
 
 
 def _missing_columns(cand, val_sets) -> str:

@@ -117,6 +117,12 @@ class Candidate:
         """The form of this effect for ``law`` (default: the same for every law)."""
         return self
 
+    def own_law_names(self, law) -> tuple:
+        """Parameters of the law itself that belong to this effect, whether or not the base
+        already frees them (the transfer scores calibrate them with the effect's own; by
+        default only the names :meth:`modify_law` adds to the base's)."""
+        return ()
+
 
 def _sig_neg(v, ctx):
     # smooth indicator of the negative direction: a sign change is not a step in measured data
@@ -249,6 +255,11 @@ class AsymmetryTwins(Candidate):
             names.append("b")
         return [(law.with_values(**start), names)]
 
+    def own_law_names(self, law):
+        # the offset is this effect's too: identify's default base frees it on the fit
+        # record, but a held-out condition with its own offset is the asymmetry's to carry
+        return tuple(law.twins[n] for n in self.TWINS) + ("b",)
+
 
 class Position(Candidate):
     stage_doc = "friction level scaled along the stroke"
@@ -308,14 +319,18 @@ class StribeckShape(Candidate):
 
     def modify_law(self, law, base_names, ctx):
         names = list(base_names)
+        with_alpha = names + ([] if "alpha" in names else ["alpha"])
         if law.params.shape == "gaussian":
-            return [(law, names + ["alpha"]), (law.with_values(shape="lorentzian"), names)]
+            # a base that already fits its exponent (identify's default set) has only the
+            # other shape left to try
+            variants = [] if "alpha" in names else [(law, with_alpha)]
+            return variants + [(law.with_values(shape="lorentzian"), names)]
         # the exponent acts on the gaussian form only: a lorentzian base gets the gaussian
         # family with a free exponent, started at alpha = 1 (an exponential tail, closest
         # to the lorentzian's heavy one) and at 2 (was: the gaussian at alpha = 2 only, so
         # a lorentzian base could never change its Stribeck exponent)
-        return [(law.with_values(shape="gaussian", alpha=1.0), names + ["alpha"]),
-                (law.with_values(shape="gaussian", alpha=2.0), names + ["alpha"])]
+        return [(law.with_values(shape="gaussian", alpha=1.0), with_alpha),
+                (law.with_values(shape="gaussian", alpha=2.0), with_alpha)]
 
 
 class Presliding(Candidate):

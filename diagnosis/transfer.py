@@ -50,7 +50,8 @@ def transfer_scores(base: Composite, base_names, candidates: dict, val_sets, ctx
         The base law fitted on the fit record (held fixed).
     base_names : list of str
         Its fitted parameter names (a ``modify_law`` candidate calibrates only the names it
-        adds to these).
+        adds to these, and those it declares its own,
+        :meth:`diagnosis.effects.Candidate.own_law_names`).
     candidates : dict
         ``{name: Candidate}`` (already specialised to the base law).
     val_sets : list of Dataset
@@ -83,8 +84,9 @@ def transfer_scores(base: Composite, base_names, candidates: dict, val_sets, ctx
         pb.append(P_b)
         for name, cand in candidates.items():
             best = None
+            own = cand.own_law_names(base.law)
             for law_v, names_v in cand.modify_law(base.law, base_names, ctx):
-                new = [m for m in names_v if m not in base_names]
+                new = [m for m in names_v if m not in base_names or m in own]
                 comp, cost = fit_composite(law_v, new, [cand], val_sets[i], ctx)
                 if best is None or cost < best[1]:
                     best = (comp, cost, len(cand.force_extras(ctx)) + len(new))

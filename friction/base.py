@@ -31,6 +31,9 @@ from ._validation import ParameterError, check_signals
 
 __all__ = ["param", "ParamInfo", "FrictionParams", "FrictionModel", "METHODS"]
 
+#: steps of the warm-up ramp from rest of :meth:`FrictionModel.record_start_state`
+WARM_UP_SAMPLES = 64
+
 #: Bristle-update schemes. ``exact``: exponential update over each step (stable at any step
 #: and stiffness). ``euler``: explicit Euler as the papers implement it (unstable when
 #: h*sigma0*|v|/g(v) > 2; kept to reproduce their instability).
@@ -260,10 +263,32 @@ class FrictionModel:
                 s[i] = -d0[i] / slope
         return s
 
-    def record_start_state(self, t, v, *, a=None, load=None, x=None) -> np.ndarray:
-        """Initial state consistent with the first sample of a record (see
-        :meth:`steady_state_state`): the steady state at the record's first velocity and
-        inputs; the rest state (zeros) for a record that starts at rest.
+    def record_start_state(self, t, v, *, a=None, load=None, x=None, F=None) -> np.ndarray:
+        """Initial state consistent with the first samples of a record.
+
+        From the motion alone (``F`` not given):
+
+        * a record that starts at rest (``v[0] = 0``): the rest state (zeros);
+        * one that starts sliding and is not speeding up (``v[0]`` and the first velocity
+          step ``v[1] - v[0]`` of opposite signs, or no step): it has been sliding for a
+          while, so the law's steady state at ``v[0]`` (:meth:`steady_state_state`; LuGre
+          ``z = g(v0) sgn(v0) / sigma0``);
+        * one that starts speeding up, at ``a0 = (v[1] - v[0]) / (t[1] - t[0])`` with the
+          sign of ``v[0]``: a warm-up from rest at that constant acceleration up to
+          ``v[0]`` (duration ``v[0] / a0``, :data:`WARM_UP_SAMPLES` steps of the law's own
+          kernel, inputs held at their first values), whose final state is taken. Long
+          after the start of the motion that is the steady state; just after it (a record
+          cut where the motion begins, at ``v[0]`` of 1e-17 m/s) it is nearly the rest
+          state, not the saturated bristle of the steady state at a vanishing speed.
+
+        With the measured force ``F`` (a record to score or fit), its first sample decides
+        the first state (the bristle deflection, ``state_names[0]``) as well: the value at
+        which the law's :meth:`force` at the first sample equals ``F[0]`` (the force is
+        affine in it across the LuGre family), kept within the bristle's saturation (the
+        largest deflection of the law's steady states); the other states as above. A record
+        that starts in steady sliding gets its steady deflection back, one cut just before
+        a reversal (sliding slowly, the bristle already unloading) or at rest under a load
+        gets the deflection it has, which no rule on the motion alone can know.
 
         Parameters
         ----------
@@ -271,21 +296,77 @@ class FrictionModel:
             Time [s] and velocity [m/s] of the record.
         a, load, x : array_like, shape (N,), optional
             Acceleration [m/s^2], load [N], displacement [m] where the law needs them.
+        F : array_like, shape (N,), optional
+            Measured friction force [N] (only ``F[0]`` is read).
 
         Returns
         -------
         ndarray, shape (n_states,)
         """
         t, v, a, load, x = self._inputs(t, v, a, load, x)
-        return self._start_from(v, a, load, x)
+        F0 = None
+        if F is not None:
+            F0 = float(np.asarray(F, dtype=float).ravel()[0])
+        return self._start_from(t, v, a, load, x, F0)
 
-    def _start_from(self, v, a, load, x) -> np.ndarray:
+    def _start_from(self, t, v, a, load, x, F0=None) -> np.ndarray:
         """:meth:`record_start_state` of validated kernel inputs (see :meth:`_inputs`)."""
-        if v.size == 0:
+        n = len(self.state_names)
+        if n == 0 or v.size == 0:
             return self.initial_state()
-        inputs = {k: float(arr[0]) for k, arr in (("a", a), ("load", load), ("x", x))
-                  if k in self.extra_inputs and arr.size}
-        return self.steady_state_state(float(v[0]), **inputs)
+        v0 = float(v[0])
+        first = {k: float(arr[0]) for k, arr in (("a", a), ("load", load), ("x", x))
+                 if k in self.extra_inputs and arr.size}
+        s = self._motion_start(t, v, a, load, x, first)
+        if F0 is None or not math.isfinite(F0):
+            return s
+        bound = self._deflection_bound(v0, first)
+        if not (bound > 0 and math.isfinite(bound)):
+            return s
+        # the force is affine in the first state: two evaluations give it
+        lo, hi = s.copy(), s.copy()
+        lo[0], hi[0] = 0.0, bound
+        try:
+            f_lo = float(self.force(lo, v0, **first))
+            slope = (float(self.force(hi, v0, **first)) - f_lo) / bound
+        except (ValueError, ZeroDivisionError, FloatingPointError):
+            return s
+        if slope == 0.0 or not (math.isfinite(slope) and math.isfinite(f_lo)):
+            return s
+        s[0] = min(max((F0 - f_lo) / slope, -bound), bound)
+        return s
+
+    def _motion_start(self, t, v, a, load, x, first) -> np.ndarray:
+        """The state from the first samples of the motion alone (:meth:`record_start_state`
+        without ``F``)."""
+        v0 = float(v[0])
+        if v0 == 0.0:
+            return self.initial_state()
+        acc = (float(v[1]) - v0) / float(t[1] - t[0]) if v.size > 1 else 0.0
+        if not acc * v0 > 0.0:
+            return self.steady_state_state(v0, **first)
+        # speeding up: a warm-up from rest at the first acceleration, through the law
+        T = v0 / acc
+        tw = np.linspace(0.0, T, WARM_UP_SAMPLES)
+        vw = acc * tw
+        held = lambda arr: np.full(tw.size, float(arr[0])) if arr.size else np.zeros(0)
+        aw = np.full(tw.size, acc) if a.size else np.zeros(0)
+        # the displacement runs up to x[0] along the ramp (a spring reads it)
+        xw = float(x[0]) - 0.5 * acc * (T * T - tw * tw) if x.size else np.zeros(0)
+        _, S = self._kernel(tw, vw, aw, held(load), xw, self.theta, METHODS["exact"],
+                            self.initial_state())
+        s = np.array(S[-1], dtype=float)
+        return s if np.all(np.isfinite(s)) else self.steady_state_state(v0, **first)
+
+    def _deflection_bound(self, v0, first) -> float:
+        """Largest |first state| of the law's steady states (the bristle's saturation,
+        max(Fs, Fc) / sigma0 for the LuGre family) at the first sample's inputs: at a
+        vanishing speed, at ``v0`` and far above it, both directions."""
+        speeds = (1e-200, abs(v0), 1e3 * max(abs(v0), 1.0))
+        vals = [abs(float(self.steady_state_state(sgn * sp, **first)[0]))
+                for sp in speeds for sgn in (1.0, -1.0) if sp > 0]
+        vals = [val for val in vals if math.isfinite(val)]
+        return max(vals) if vals else 0.0
 
     def _inputs(self, t, v, a=None, load=None, x=None):
         t, v, extra = check_signals(t, v, a=a, load=load, x=x)
@@ -334,7 +415,7 @@ class FrictionModel:
         if isinstance(state0, str):
             if state0 != "steady":
                 raise ValueError(f"state0 = {state0!r}: give an array or 'steady'")
-            s0 = self._start_from(v, a, load, x)
+            s0 = self._start_from(t, v, a, load, x)
         else:
             s0 = self.initial_state() if state0 is None else np.asarray(state0, float).ravel()
         if s0.size != len(self.state_names):

@@ -222,10 +222,10 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     fit = nrmse(data.F, F_fit)
     val = None
     if validation is not None:
-        # scored from the law's steady state at the record's first velocity: a held-out
+        # scored from the state consistent with the record's first samples: a held-out
         # record that starts in motion is not a start from rest
         F_val = InProcessObjective(model, validation, space.names, method=method,
-                                   start="steady").predict(x_best[None, :])[0]
+                                   start="record").predict(x_best[None, :])[0]
         val = nrmse(validation.F, F_val)
     ci = None
     if info.get("jac") is not None and info.get("u") is not None:

@@ -115,21 +115,21 @@ class InProcessObjective(Objective):
         Identified parameters, the columns of ``X``.
     method : {"exact", "euler"}
         Bristle update (``exact``: stable at any step).
-    start : {"rest", "steady"}
+    start : {"rest", "record"}
         Initial state of each simulation: the law at rest (zeros, the fit's default), or
-        the law's steady state at the record's first velocity
-        (:meth:`friction.base.FrictionModel.record_start_state`), which a held-out record
-        that starts in motion needs (from rest a stiff, damped bristle would spike).
+        the state consistent with the record's first samples, its motion and its measured
+        force (:meth:`friction.base.FrictionModel.record_start_state`), which a held-out
+        record that starts in motion needs (from rest a stiff, damped bristle would spike).
     """
     parallel_inside = True
 
     def __init__(self, model: FrictionModel, data: Dataset, names, method: str = "exact",
                  start: str = "rest"):
-        if start not in ("rest", "steady"):
-            raise ValueError(f"start = {start!r}: must be 'rest' or 'steady'")
+        if start not in ("rest", "record"):
+            raise ValueError(f"start = {start!r}: must be 'rest' or 'record'")
         self.model = model
-        # a steady start is the held-out protocol: the record is scored, not fitted
-        self.data = check_data(data, role="validation" if start == "steady" else "fit")
+        # a start from the record is the held-out protocol: it is scored, not fitted
+        self.data = check_data(data, role="validation" if start == "record" else "fit")
         self.names = list(names)
         self.method = method
         self.start = start
@@ -141,21 +141,21 @@ class InProcessObjective(Objective):
         X = np.atleast_2d(np.asarray(X, float))
         if X.shape[0] == 1 or self.start != "rest":
             # one set (least-squares residual): the serial kernel, no thread-pool launch;
-            # same update code as the population kernel, so the same numbers. A steady
-            # start depends on each row's values: row by row as well
+            # same update code as the population kernel, so the same numbers. A start from
+            # the record depends on each row's values: row by row as well
             m = self.model
             t, v, a, load, x = self._prepared()
             rows = []
             for row in X:
                 theta = m.population_theta(self.names, row[None, :])[0]
                 F, _ = m._kernel(t, v, a, load, x, theta, METHODS[self.method],
-                                 self._state0(row, v, a, load, x))
+                                 self._state0(row, t, v, a, load, x))
                 rows.append(F)
             return np.array(rows)
         return self.model.simulate_population(self.data.t, self.data.v, self.names, X,
                                               method=self.method, **self._inputs)
 
-    def _state0(self, row, v, a, load, x) -> np.ndarray:
+    def _state0(self, row, t, v, a, load, x) -> np.ndarray:
         m = self.model
         if self.start == "rest":
             return m.initial_state()
@@ -163,7 +163,7 @@ class InProcessObjective(Objective):
             trial = m.with_values(**dict(zip(self.names, map(float, row))))
         except (ValueError, TypeError):  # values the law rejects: no steady state to take
             return m.initial_state()
-        return trial._start_from(v, a, load, x)
+        return trial._start_from(t, v, a, load, x, float(self.data.F[0]))
 
     def _prepared(self):
         if getattr(self, "_prep", None) is None:

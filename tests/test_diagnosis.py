@@ -46,15 +46,23 @@ def test_report_follows_the_contract():
 def test_emps_points_at_direction_asymmetry(real_data):
     from identification.real_data import load_emps
     rep = diagnose(load_emps("estimation"), "lugre", validation=load_emps("validation"))
-    assert rep["verdict"]["cause"] == "asymmetry"
-    assert rep["effects"][0]["gap_closed"] > 0.15
-    # the fitted direction twins are the worn screw's documented values (README of emps/:
-    # Fv+ 166.7, Fv- 240.4 N s/m; Fc+ 20.14, Fc- 20.63 N), here within 5 %
+    # The base is identify's default law, offset b included (the published IDIM-LS model
+    # has one, OF = -3.16 N; the base finds -3.2 N). Of the 25 % that `asymmetry` closed
+    # over a base without it, most was that offset: the direction twins alone close 9 %
+    # of the pulse set's held-out gap (the 5 N external pulses and the structural
+    # flexibility are most of it, outside the library), under the one-third rule. So the
+    # verdict names no *other* effect, and asymmetry ranks first.
+    assert rep["base"]["params"]["b"] == pytest.approx(-3.16, abs=0.3)
+    assert rep["verdict"]["cause"] in ("asymmetry", "unexplained"), rep.summary()
+    top = rep["effects"][0]
+    assert top["name"] == "asymmetry" and top["gap_closed"] > 0.05
+    # the fitted direction twins show the worn screw (README of emps/: Fv+ 166.7, Fv- 240.4
+    # N s/m, ratio 1.44; Fc+ 20.14, Fc- 20.63 N)
     p = rep["effect_details"]["asymmetry"]["params"]
-    assert p["sigma2"] == pytest.approx(166.7, rel=0.05)
-    assert p["sigma2_neg"] == pytest.approx(240.4, rel=0.05)
-    assert p["Fc"] + p["b"] == pytest.approx(20.14, rel=0.05)      # sliding level, v > 0
-    assert p["Fc_neg"] - p["b"] == pytest.approx(20.63, rel=0.05)  # and v < 0
+    assert 1.3 < p["sigma2_neg"] / p["sigma2"] < 1.7
+    assert p["sigma2_neg"] == pytest.approx(240.4, rel=0.1)
+    assert p["Fc"] + p["b"] == pytest.approx(20.14, rel=0.15)      # sliding level, v > 0
+    assert p["Fc_neg"] - p["b"] == pytest.approx(20.63, rel=0.15)  # and v < 0
 
 
 @pytest.fixture(scope="module")
@@ -142,7 +150,8 @@ def test_friction_level_effects_leave_the_isolator_spring_alone():
     t = np.arange(0, 1.0, 1 / 256)
     x = 4e-3 * np.sin(2 * np.pi * 4 * t)
     v = np.gradient(x, t)
-    F = law.simulate(t, v, x=x)
+    # (a composite predicts a record from the law's steady state at its first velocity)
+    F = law.simulate(t, v, x=x, state0="steady")
     data = Dataset(t=t, x=x, v=v, a=np.gradient(v, t), F=F)
     ctx = make_context(data)
     drifted = Composite(law, [], [CANDIDATES["drift"]], {"k_drift": 0.5}, ctx).predict(data)

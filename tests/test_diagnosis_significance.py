@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from diagnosis import diagnose
-from diagnosis.benchmark import make_plant_case
+from diagnosis.benchmark import make_case, make_plant_case
 from diagnosis.core import MIN_EXCESS_CLOSED, NOISE_RATIO, decide
 from diagnosis.significance import improvement_z, z_threshold
 from friction import make_model
@@ -97,10 +97,12 @@ def test_decide_names_a_small_gap_only_when_its_improvement_is_significant():
 
 
 def test_weak_stribeck_shape_inside_the_noise_is_named_and_reported():
-    # the valve at 3 % noise: the refitted base absorbs most of the extra low-speed tail, its
-    # held-out error is 1.07 x the noise floor (was called `none`)
-    case = make_plant_case("valve", "stribeck_shape", 1.0, 0.03, seed=101)
-    rep = diagnose(case.data, case.base)
+    # a Lorentzian Stribeck curve under a Gaussian base: the base, which frees its exponent
+    # as identify does, absorbs most of it; its held-out error is 1.06 x the noise floor,
+    # yet the Lorentzian closes the rest with a significant held-out improvement. (The
+    # valve's extra exponential low-speed tail, this test's case before, is now inside the
+    # base's own family, a Gaussian of exponent ~1: `none` is right for it.)
+    rep = diagnose(make_case("stribeck_shape", 1.0, 0.02, seed=1), "lugre")
     assert rep["baseline"]["validation"] <= NOISE_RATIO * rep["noise_floor"]
     assert rep["verdict"]["cause"] == "stribeck_shape"
     top = rep["effects"][0]

@@ -68,6 +68,69 @@ def test_lugre_steady_state_is_g_over_sigma0_and_rest_stays_rest():
         m.simulate(t, t, state0="settled")
 
 
+@pytest.mark.parametrize("name", sorted(MODELS))
+def test_a_record_cut_while_speeding_up_starts_where_the_whole_record_was(name):
+    # a motion from rest at constant acceleration, cut at sample k: the state taken from
+    # the cut record's first samples (a warm-up from rest through the law) is the state the
+    # simulation of the whole record had there, from just after the start (nearly the rest
+    # state, not the saturated bristle of a steady state at a vanishing speed) to long
+    # after it (the steady state)
+    m = make_model(name)
+    vmax = 2 * _SPEED.get(name, 0.05)
+    t = np.linspace(0.0, 0.02, 401)
+    v = vmax * t / t[-1]
+    kw = {}
+    if name == "load_lugre":
+        kw["load"] = np.full(t.size, 1e5)
+    if name == "mre_lugre":
+        kw["x"] = np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))))
+    if name == "modified_lugre":
+        kw["a"] = np.full(t.size, vmax / t[-1])
+    _, S = m.simulate(t, v, return_state=True, **kw)
+    for k in (1, 5, 40, 399):
+        cut = {key: arr[k:] for key, arr in kw.items()}
+        s = m.record_start_state(t[k:], v[k:], **cut)
+        scale = np.max(np.abs(S), axis=0) + 1e-300
+        np.testing.assert_allclose(s / scale, S[k] / scale, atol=1e-4, err_msg=f"k={k}")
+    if m.state_names:
+        # just after the start the steady state would be far off
+        ss = m.steady_state_state(float(v[1]), **{key: float(arr[1]) for key, arr in kw.items()})
+        assert abs(ss[0] - S[1, 0]) > 0.5 * abs(ss[0])
+
+
+@pytest.mark.parametrize("name", sorted(n for n in MODELS if n != "stribeck"))
+def test_the_measured_first_force_gives_the_bristle_state_a_record_has(name):
+    # a record cut anywhere (speeding up, slowing down before a reversal, at a reversal):
+    # the first measured force gives back the state the whole record's simulation had
+    # there, which the motion alone cannot tell (just before a reversal the bristle is
+    # already unloading, not at its steady deflection). The modified LuGre's lag state
+    # comes from the motion, not from the force: its lag is made static here
+    m = make_model(name)
+    if name == "modified_lugre":
+        m = m.with_values(tau=0.0)
+    vmax = _SPEED.get(name, 0.05)
+    t = np.linspace(0.0, 0.2, 2001)
+    v = vmax * np.sin(2 * np.pi * 7.0 * t + 0.3)
+    kw = {}
+    if name == "load_lugre":
+        kw["load"] = np.full(t.size, 1e5)
+    if name == "mre_lugre":
+        kw["x"] = np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))))
+    if name == "modified_lugre":
+        kw["a"] = vmax * 2 * np.pi * 7.0 * np.cos(2 * np.pi * 7.0 * t + 0.3)
+    F, S = m.simulate(t, v, return_state=True, **kw)
+    for k in (0, 100, 300, 671, 1500):
+        cut = {key: arr[k:] for key, arr in kw.items()}
+        s = m.record_start_state(t[k:], v[k:], F=F[k:], **cut)
+        scale = np.max(np.abs(S[:, 0]))
+        assert abs(s[0] - S[k, 0]) <= 1e-6 * scale, k
+        Fk = m.simulate(t[k:], v[k:], state0=s, **cut)
+        np.testing.assert_allclose(Fk, F[k:], atol=1e-5 * np.max(np.abs(F)))
+    # a measured force beyond the law's reach keeps the bristle within its saturation
+    s = m.record_start_state(t, v, F=np.full(t.size, 1e12), **kw)
+    assert abs(s[0]) <= m._deflection_bound(float(v[0]), {k: float(a[0]) for k, a in kw.items()})
+
+
 def test_modified_lugre_beyond_its_switch_still_starts_saturated():
     # the cosine switch is exactly 0 beyond v2: the bristle rate vanishes there, yet the
     # state the law heads to is g / sigma0, and the lag state follows the acceleration
@@ -97,11 +160,15 @@ def test_rack_pinion_held_out_part_scored_without_the_start_spike(rack_pinion_sp
     spike = held.F[0] - m.simulate(held.t, held.v)[0]          # from rest: the spike
     start = held.F[0] - m.simulate(held.t, held.v, state0="steady")[0]
     assert abs(spike) > 500.0 and abs(start) < 0.1 * abs(spike)
-    # the validation score is the steady start's (it was 5.4 from rest)
-    P = m.simulate(held.t, held.v, state0="steady")
+    # the validation score starts from the state consistent with the record's first
+    # samples, its measured force included (it was 5.4 from rest)
+    s0 = m.record_start_state(held.t, held.v, F=held.F)
+    P = m.simulate(held.t, held.v, state0=s0)
+    assert abs(held.F[0] - P[0]) < 1e-6 * abs(spike)
     assert r.validation_nrmse == pytest.approx(
         np.sqrt(np.mean((held.F - P) ** 2)) / np.std(held.F), rel=1e-6)
     assert r.validation_nrmse < 1.0
+    assert np.max(np.abs(held.F - P)) < 3.0 * np.std(held.F)
 
 
 def _short_csv(tmp_path, n):

@@ -1182,7 +1182,7 @@ fmi2Status fmi2SetContinuousStates(fmi2Component comp, const fmi2Real x[], size_
     fl_inst *c = (fl_inst *)comp;
     size_t j;
     if (!c) return fmi2Error;
-    if (bad_mode(c, "fmi2SetContinuousStates", B(M_EVENT) | B(M_CONT) | B(M_INIT))) return fmi2Error;
+    if (bad_mode(c, "fmi2SetContinuousStates", B(M_EVENT) | B(M_CONT))) return fmi2Error;
     if ((int)nx != c->n_states)
         return ERR(c, "%s: fmi2SetContinuousStates: nx = %lu, this FMU has %d states", c->name,
                    (unsigned long)nx, c->n_states);

@@ -8,23 +8,26 @@ the machines of the seed papers, each taking any friction law of :mod:`friction`
 Layout (MSL roles): :mod:`plants.interfaces` (Flange, HydraulicPort, PartialCompliant),
 :mod:`plants.components` (mass, spring, damper, support, force/position sources),
 :mod:`plants.sources` (trajectories), :mod:`plants.sensors`, :mod:`plants.controllers`,
-:mod:`plants.motor`, :mod:`plants.base` (the plant contract), one module per machine, and
-:mod:`plants.experiments` (the seeds' protocols producing datasets).
+:mod:`plants.motor`, :mod:`plants.base` (the plant contract), :mod:`plants.stepper` (the
+fast fixed-step integrator, what FMUs run), :mod:`plants.reference` (the ``solve_ivp``
+reference integrator), :mod:`plants.law_stepper` (a friction law stepped on its own), one
+module per machine, and :mod:`plants.experiments` (the seeds' protocols producing datasets).
 """
 from __future__ import annotations
 
 import importlib
 
-from .base import (Experiment, FrictionComponent, FrictionStep, Plant, PlantParams,
-                   PlantStepper, structured)
+from .base import Experiment, Plant, PlantParams, structured
 from .components import (Damper, Fixed, ForceSource, Mass, PositionSource, Spring,
                          SpringDamper)
 from .controllers import (PID, DiscreteBlock, DiscreteStepper, LuGreFeedforward, PIDParams,
                           StateDependentPID)
 from .interfaces import Flange, HydraulicPort, PartialCompliant
+from .law_stepper import FrictionComponent, FrictionStep
 from .motor import LinearMotor
 from .sensors import AccelerationSensor, PositionSensor, VelocitySensor
 from .sources import PRBS, ColoredNoise, Sampled, SCurve, Sine, Triangle, VelocityPlateaus
+from .stepper import PlantStepper
 
 __all__ = ["PLANTS", "make_plant", "Plant", "PlantStepper", "PlantParams", "Experiment",
            "FrictionStep", "FrictionComponent", "structured", "Flange", "HydraulicPort",

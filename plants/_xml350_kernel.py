@@ -1,7 +1,7 @@
 """Numba kernel of the XML-350 closed loop for the classic LuGre law (fast path of
 :meth:`plants.xml350.XML350.simulate` on long runs).
 
-It is the same hybrid scheme as :class:`plants.base.PlantStepper` with the XML-350's
+It is the same hybrid scheme as :class:`plants.stepper.PlantStepper` with the XML-350's
 discrete part inlined: at each control instant the SD-PID (Eq. 15) and the LuGre
 feedforward (Eq. 16) run on the sampled encoder position, then the stage (mass, 400 Hz
 current loop, friction) advances over the control period in ``nsub`` Heun substeps with the

@@ -27,7 +27,7 @@ import numpy as np
 
 from friction.base import FrictionModel, FrictionParams, param
 
-from .base import FrictionStep
+from .law_stepper import FrictionStep
 
 __all__ = ["PIDParams", "PID", "StateDependentPID", "LuGreFeedforward", "DiscreteBlock",
            "DiscreteStepper"]
@@ -185,7 +185,7 @@ class LuGreFeedforward(DiscreteBlock):
 
 class DiscreteStepper:
     """FMU-facing wrapper of a :class:`DiscreteBlock` (same interface as
-    :class:`plants.base.PlantStepper`).
+    :class:`plants.stepper.PlantStepper`).
 
     Semantics: the block samples at ``start + k * sample_time``. ``set_inputs`` stores
     inputs; ``outputs()`` first runs a sample that is due at the current time with the

@@ -462,10 +462,10 @@ def loop_parts(*, distance: float = 1e-4, compensation: bool = True,
         LuGre feedforward stepper (inputs ``x_d, v_d, a_d``; output ``u_ff``);
         ``"mechanics"``: :class:`XML350Mechanics` stepper (input ``i_cmd`` [A], plus
         ``F_friction`` [N] when ``separate_friction``); ``"friction"`` (when
-        ``separate_friction``): :class:`plants.base.FrictionComponent` (input ``v``,
+        ``separate_friction``): :class:`plants.law_stepper.FrictionComponent` (input ``v``,
         output ``F``); ``"params"``: the :class:`XML350Params` (``i_cmd = M_ctrl u / Kf``).
     """
-    from .base import FrictionComponent
+    from .law_stepper import FrictionComponent
 
     p = params or XML350Params()
     law = friction or xml350_friction()

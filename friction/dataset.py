@@ -23,7 +23,8 @@ import numpy as np
 
 from ._validation import as_float_array, check_finite, check_same_length, check_time
 
-__all__ = ["Dataset", "DataError", "load_dataset", "load_csv", "load_mat", "parse_mapping"]
+__all__ = ["Dataset", "SteadyStateMap", "DataError", "load_dataset", "load_csv", "load_mat",
+           "parse_mapping"]
 
 COLUMNS = ("t", "x", "v", "a", "F", "load")
 
@@ -314,12 +315,94 @@ class Dataset:
                 w.writerow([repr(float(val)) for val in row])
 
 
+@dataclass
+class SteadyStateMap:
+    """A steady-state friction map: the friction force ``F`` [N] measured at constant
+    velocity ``v`` [m/s], one row per constant-velocity plateau, no time base.
+
+    The contract's map file has columns ``v`` and ``F`` and no ``t``
+    (:func:`load_dataset` returns this class for it). Identification fits the law's
+    steady-state curve to it (the static parameters; the first step of the seeds' two-step
+    method, :mod:`identification.steady_state`). Rows are kept sorted by velocity.
+
+    Attributes
+    ----------
+    v : ndarray
+        Plateau velocities [m/s] (rotary joints: rad/s), sorted.
+    F : ndarray
+        Friction force at each plateau [N] (rotary: N m).
+    name : str
+    extra : dict
+        Other per-plateau columns (e.g. the spread of each plateau), in the same order.
+    notes : tuple of str
+        How the source was read.
+    """
+    v: np.ndarray
+    F: np.ndarray
+    name: str = "steady state"
+    extra: dict = field(default_factory=dict)
+    notes: tuple = ()
+
+    def __post_init__(self):
+        v = as_float_array("v", self.v)
+        F = as_float_array("F", self.F)
+        check_same_length("v", v.size, F=F)
+        check_finite("v", v)
+        check_finite("F", F)
+        if v.size < 2:
+            raise DataError(f"steady-state map {self.name!r} has {v.size} row(s): need at "
+                            f"least 2 plateaus")
+        order = np.argsort(v, kind="stable")
+        self.v, self.F = v[order], F[order]
+        self.extra = {k: np.asarray(a, float).ravel()[order] for k, a in self.extra.items()
+                      if np.asarray(a).size == v.size}
+
+    def __len__(self) -> int:
+        return self.v.size
+
+    def side(self, sign: int) -> "SteadyStateMap":
+        """The plateaus of one direction (``sign`` > 0: v > 0; < 0: v < 0)."""
+        keep = self.v > 0 if sign > 0 else self.v < 0
+        return SteadyStateMap(self.v[keep], self.F[keep], name=f"{self.name} "
+                              f"(v {'>' if sign > 0 else '<'} 0)",
+                              extra={k: a[keep] for k, a in self.extra.items()},
+                              notes=self.notes)
+
+    def sliding(self, min_speed: float) -> "SteadyStateMap":
+        """The plateaus at ``|v| >= min_speed`` [m/s]: drops rows of presliding creep (a
+        force below the sliding level at a vanishing speed), which no steady-state
+        (Stribeck) curve describes."""
+        if not (math.isfinite(min_speed) and min_speed >= 0):
+            raise ValueError(f"min_speed = {min_speed!r}: must be >= 0 [m/s]")
+        keep = np.abs(self.v) >= min_speed
+        return SteadyStateMap(self.v[keep], self.F[keep], name=self.name,
+                              extra={k: a[keep] for k, a in self.extra.items()},
+                              notes=self.notes + (f"plateaus with |v| < {min_speed:g} m/s "
+                                                  f"dropped ({int((~keep).sum())})",))
+
+    def as_dataset(self) -> Dataset:
+        """The map as a quasi-static Dataset (``t`` = row index [s], a = 0): for code that
+        needs a time series; identification takes the map itself."""
+        t = np.arange(self.v.size, dtype=float)
+        return Dataset.from_arrays(t, self.F, v=self.v, a=np.zeros_like(self.v),
+                                   name=self.name, check_units=False)
+
+    def to_csv(self, path) -> None:
+        """Write the contract's map file (header ``v,F``, SI units)."""
+        with open(path, "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["v", "F"])
+            for a, b in zip(self.v, self.F):
+                w.writerow([repr(float(a)), repr(float(b))])
+
+
 def parse_mapping(text: str | None) -> dict[str, str]:
-    """Parse ``"t=time,x=pos"`` into ``{"t": "time", "x": "pos"}`` (CLI helper)."""
+    """Parse ``"t=time,x=pos"`` into ``{"t": "time", "x": "pos"}`` (CLI helper); a comma
+    inside brackets belongs to a column pick (``v=log[:,1],F=log[:,0]``)."""
     if not text:
         return {}
     out = {}
-    for item in text.split(","):
+    for item in re.split(r",(?![^\[]*\])", text):
         if "=" not in item:
             raise ValueError(f"bad mapping item {item!r}: expected NAME=COLUMN")
         k, v = item.split("=", 1)
@@ -348,9 +431,17 @@ def _apply(columns: dict[str, np.ndarray], mapping, scale, name, check_units,
                               f"{col!r}, which is not in the data (columns: "
                               f"{sorted(picked)})")
         picked[col] = picked[col] * float(factor)
+    if "t" not in picked and "v" in picked and "F" in picked and "x" not in picked:
+        # the contract's steady-state map: one row per constant-velocity plateau
+        return SteadyStateMap(picked["v"], picked["F"], name=name, notes=tuple(notes),
+                              extra={k: np.asarray(a, float).ravel() for k, a in
+                                     columns.items() if k not in (mapping.get("v", "v"),
+                                                                  mapping.get("F", "F"))
+                                     and np.asarray(a).size == picked["v"].size})
     if "t" not in picked:
         raise _data_error(lambda s: f"no time column 't' (available: {sorted(columns)}); "
-                          f"map it with {_map_hint('t', s)}")
+                          f"map it with {_map_hint('t', s)} (a steady-state map needs "
+                          f"columns v and F only)")
     if "F" not in picked:
         raise _data_error(lambda s: f"no friction-force column 'F' (available: "
                           f"{sorted(columns)}); map it with {_map_hint('F', s)}")
@@ -498,21 +589,60 @@ def _isfloat(c: str) -> bool:
         return False
 
 
-def load_mat(path, mapping=None, scale=None, check_units: bool = True) -> Dataset:
-    """Load a MATLAB ``.mat`` file; ``mapping`` names which variables are t, x, v, a, F, load."""
+def load_mat(path, mapping=None, scale=None, check_units: bool = True):
+    """Load a MATLAB ``.mat`` file; ``mapping`` names which variables are t, x, v, a, F, load.
+
+    A mapping value ``NAME[:,j]`` takes column ``j`` of a 2-D variable (``NAME[i,:]`` row
+    ``i``; indices from 0, negative from the end), e.g. ``{"v": "log[:,1]", "F":
+    "log[:,0]"}`` (CLI ``--map v=log[:,1],F=log[:,0]``). Returns a :class:`Dataset`, or a
+    :class:`SteadyStateMap` when v and F are given and no t.
+    """
     from scipy.io import loadmat
     path = os.fspath(path)
     if not os.path.exists(path):
         raise FileNotFoundError(f"no such data file: {path}")
-    raw = loadmat(path)
-    arrays = {k: np.asarray(v, dtype=float).ravel() for k, v in raw.items()
-              if not k.startswith("__") and np.asarray(v).dtype.kind in "fiu"
-              and np.asarray(v).size > 1}
+    raw = {k: np.asarray(v) for k, v in loadmat(path).items() if not k.startswith("__")}
+    numeric = {k: v for k, v in raw.items() if v.dtype.kind in "fiu" and v.size > 1}
+    arrays = {}
+    for k, v in numeric.items():
+        if v.ndim == 2 and min(v.shape) > 1:
+            continue  # a 2-D variable: only a column or row of it can be a signal
+        arrays[k] = np.asarray(v, dtype=float).ravel()
+    for col, src in (mapping or {}).items():
+        if src in arrays:
+            continue
+        m = _MAT_COLUMN.match(src)
+        if m is None:
+            if src in numeric:
+                shape = "x".join(map(str, numeric[src].shape))
+                raise _data_error(lambda s, src=src, shape=shape, col=col: (
+                    f"variable {src!r} is {shape}: pick one column or row of it, e.g. "
+                    + (f"--map {col}={src}[:,0]" if s == "cli"
+                       else f"mapping={{'{col}': '{src}[:,0]'}}")))
+            continue  # _apply names the missing column
+        var = m.group("var")
+        if var not in numeric:
+            raise DataError(f"{path}: no numeric variable {var!r} for {col}={src} "
+                            f"(variables: {sorted(numeric)})")
+        a = numeric[var]
+        a2 = a.reshape(a.shape[0], -1) if a.ndim >= 2 else a.reshape(1, -1)
+        axis = 1 if m.group("rows") is not None else 0
+        i = int(m.group("rows") if axis == 1 else m.group("cols"))
+        if not -a2.shape[axis] <= i < a2.shape[axis]:
+            raise DataError(f"{path}: {src}: index {i} out of range for a variable of shape "
+                            f"{'x'.join(map(str, a.shape))}")
+        arrays[src] = np.asarray(a2[:, i] if axis == 1 else a2[i, :], dtype=float).ravel()
     return _apply(arrays, mapping, scale, os.path.basename(path), check_units)
 
 
-def load_dataset(path, mapping=None, scale=None, check_units: bool = True) -> Dataset:
-    """Load CSV or ``.mat`` by extension."""
+#: ``NAME[:,j]`` (column j) or ``NAME[i,:]`` (row i) of a 2-D ``.mat`` variable in a mapping
+_MAT_COLUMN = re.compile(r"^\s*(?P<var>\w+)\s*\[\s*(?::\s*,\s*(?P<rows>-?\d+)|"
+                         r"(?P<cols>-?\d+)\s*,\s*:)\s*\]\s*$")
+
+
+def load_dataset(path, mapping=None, scale=None, check_units: bool = True):
+    """Load CSV or ``.mat`` by extension: a :class:`Dataset`, or a :class:`SteadyStateMap`
+    for a file with columns v and F and no t."""
     if os.fspath(path).lower().endswith(".mat"):
         return load_mat(path, mapping, scale, check_units)
     return load_csv(path, mapping, scale, check_units)

@@ -54,6 +54,17 @@ def build_parser() -> argparse.ArgumentParser:
                    "uninterrupted result; least_squares and static_ls refuse it")
     i.add_argument("--max-evals", type=int, default=None, help="evaluation budget "
                    "(simulations, a positive integer)")
+    i.add_argument("--fix", default=None, help="hold parameters at values NAME=VALUE,... "
+                   "(SI units), e.g. b=0 or Fs=10.2,Fs_neg=11.5")
+    i.add_argument("--static-from", dest="static_from", default=None,
+                   help="two-step method, step 2: hold the static parameters (Fc, Fs, vs, "
+                   "alpha, sigma2, b and their _neg twins) at the values of a JSON written by "
+                   "'identify MAP.csv --json', and identify the dynamic ones (sigma0, sigma1)")
+    i.add_argument("--bounds", default=None, help="search box NAME=LOW:HIGH,... (SI units), "
+                   "e.g. sigma1=0:2e4")
+    i.add_argument("--min-speed", dest="min_speed", type=float, default=None,
+                   help="steady-state maps: drop plateaus slower than this [m/s or rad/s] "
+                   "(presliding creep that no Stribeck curve describes)")
 
     g = sub.add_parser("diagnose", help="locate and name the sim-to-real gap of a model")
     _add_data_options(g, optional=True)

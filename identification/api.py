@@ -62,6 +62,7 @@ def _fitted_model(model: FrictionModel, params: dict) -> FrictionModel:
 def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_evals=None,
              validation=None, progress=None, checkpoint=None, *, objective=None,
              executor=None, method: str = "exact", checkpoint_every: int = 5,
+             fixed=None, identifiability=True, per_direction="auto",
              **options) -> IdentificationResult:
     """Identify friction-law parameters from measured motion and friction force.
 
@@ -103,26 +104,71 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     checkpoint_every : int
         ``os.fsync`` the checkpoint every this many logged records (each is flushed to the
         operating system at once, so an interrupt or a killed process loses nothing).
+    fixed : dict, optional
+        ``name -> value`` [parameter units] held fixed (set on the model and left out of the
+        identified names): e.g. the static parameters of a steady-state map in the
+        two-step method (:func:`identification.steady_state.identify_two_step`).
+    identifiability : bool or "fast"
+        Attach the identifiability report (:mod:`identification.identifiability`):
+        parameters at a bound, degenerate combinations, domain-respecting intervals (profile
+        likelihood where Gauss-Newton is not trustworthy) and excitation advice. ``"fast"``:
+        Gauss-Newton intervals only (no profiles; the default for co-simulation
+        objectives, whose evaluations are FMU runs). ``False``: none (``ci`` as before,
+        Gauss-Newton from the final least-squares Jacobian).
+    per_direction : "auto" or bool
+        Steady-state maps only: a level per direction when the map covers both
+        (:func:`identification.steady_state.prepare_static`).
     **options
         Algorithm options (e.g. ``pop_size``, ``max_iter``).
 
     Returns
     -------
     IdentificationResult
+        With ``identifiability`` (a dict, see
+        :func:`identification.identifiability.assess_identifiability`) and ``ci`` from it.
+
+    Notes
+    -----
+    A steady-state map (:class:`friction.dataset.SteadyStateMap`: pairs v, F without time,
+    one per constant-velocity plateau) is fitted through the law's steady-state curve
+    (:class:`identification.steady_state.SteadyStateObjective`): only the static
+    parameters are identified, per direction when the map covers both (see
+    :func:`identification.steady_state.identify_static`).
     """
     t_start = time.perf_counter()
     if isinstance(data, (str, os.PathLike)):
         data = load_dataset(data)
     if isinstance(validation, (str, os.PathLike)):
         validation = load_dataset(validation)
-    check_data(data)
-    if validation is not None:
-        check_data(validation, role="validation")
+    from friction.dataset import SteadyStateMap
+    is_map = isinstance(data, SteadyStateMap)
+    notes = []
+    if is_map:
+        from .steady_state import check_map, prepare_static
+        check_map(data)
+        if objective is not None:
+            raise ValueError("a steady-state map is fitted through the law's steady-state "
+                             "curve: objective= does not apply")
+        if validation is not None and not isinstance(validation, SteadyStateMap):
+            raise ValueError("a steady-state map is validated on another map (v, F), not "
+                             "on a time series")
+        if validation is not None:
+            check_map(validation, role="validation")
+        model, names, fixed, notes = prepare_static(data, model, names, fixed,
+                                                    per_direction)
+    else:
+        check_data(data)
+        if isinstance(validation, SteadyStateMap):
+            raise ValueError("a time series is validated on another time series, not on a "
+                             "steady-state map")
+        if validation is not None:
+            check_data(validation, role="validation")
     if isinstance(model, str):
         model = make_model(model)
     if not isinstance(model, FrictionModel):
         raise TypeError(f"model must be a registry name or a FrictionModel, got "
                         f"{type(model).__name__}")
+    model, names = apply_fixed(model, names, fixed)
     alg = get_algorithm(algorithm if algorithm is not None else DEFAULT_ALGORITHM, **options)
     if checkpoint is not None and not getattr(alg, "checkpointable", True):
         # refused, not ignored: a user who asked for a checkpoint must not lose the run
@@ -134,7 +180,10 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
                          f"positive integer")
     space = ParameterSpace.build(model, names, bounds, data)
 
-    if objective is None:
+    if is_map:
+        from .steady_state import SteadyStateObjective
+        obj = SteadyStateObjective(model, data, space.names)
+    elif objective is None:
         obj = InProcessObjective(model, data, space.names, method=method)
     elif objective in ("cosim", "cosim_native"):
         from .cosim import CoSimObjective
@@ -221,22 +270,54 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     F_fit = obj.predict(x_best[None, :])[0]
     fit = nrmse(data.F, F_fit)
     val = None
-    if validation is not None:
+    if validation is not None and is_map:
+        from .steady_state import SteadyStateObjective
+        F_val = SteadyStateObjective(model, validation, space.names).predict(
+            x_best[None, :])[0]
+        val = nrmse(validation.F, F_val)
+    elif validation is not None:
         # scored from the state consistent with the record's first samples: a held-out
         # record that starts in motion is not a start from rest
         F_val = InProcessObjective(model, validation, space.names, method=method,
                                    start="record").predict(x_best[None, :])[0]
         val = nrmse(validation.F, F_val)
     ci = None
+    jac = None
     if info.get("jac") is not None and info.get("u") is not None:
         u_ci = np.asarray(info["u"], float)
         if np.allclose(u_ci, u_best):
-            ci = confidence_intervals(space, u_ci, info["jac"], problem.best_cost, len(data))
+            jac = info["jac"]
+            ci = confidence_intervals(space, u_ci, jac, problem.best_cost, len(data))
+    report = None
+    deferred = None
+    if identifiability:
+        from .identifiability import assess_identifiability
+        fast = identifiability == "fast" or (identifiability is True and objective in
+                                              ("cosim", "cosim_native"))
+        best_cost = problem.best_cost
+
+        def deferred():
+            # post-processing, not part of the search: an instrumented in-process objective
+            # (a subclass counting simulations for a budget or a checkpoint test) is
+            # replaced by the plain one it specialises, which gives the same forces
+            target = obj
+            if isinstance(obj, InProcessObjective) and type(obj) is not InProcessObjective:
+                target = InProcessObjective(obj.model, obj.data, obj.names, method=obj.method,
+                                            start=obj.start)
+            rep, ci_ = assess_identifiability(target, space, u_best, best_cost, model=fitted,
+                                              data=data, jac=jac, profile=not fast)
+            rep["notes"] = list(notes) + rep["notes"]
+            return {"identifiability": rep, "ci": ci_}
+
+        if obj is not objective and hasattr(obj, "close"):
+            # an objective opened here (FMU instances) is closed below: assess it now
+            ready = deferred()
+            report, ci, deferred = ready["identifiability"], ready["ci"], None
     if obj is not objective and hasattr(obj, "close"):
         obj.close()  # FMU instances we opened are freed now, not at interpreter exit
     # a replay moves the problem's clock back to the original run's (problem._t0)
     wall = time.perf_counter() - t_start + (t_problem0 - problem._t0)
-    return IdentificationResult(
+    result = IdentificationResult(
         params=params, model=fitted, fit_nrmse=float(fit),
         validation_nrmse=None if val is None else float(val),
         cost_history=[float(c) for c in history], n_evals=int(problem.n_evals),
@@ -244,4 +325,41 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
         wall_time=float(wall), ci=ci, algorithm=alg.name, seed=seed,
         options=dict(alg.options), bounds=space.as_json(), resumed=resumed,
         message=str(info.get("message", "")), data=data.name,
-        executor=getattr(exe, "name", type(exe).__name__))
+        executor=getattr(exe, "name", type(exe).__name__), identifiability=report,
+        fixed=dict(fixed or {}))
+    if deferred is not None:
+        # computed when first read (result.identifiability, result.ci, summary, JSON): a
+        # caller that fits many laws and reads only the parameters (the diagnosis) does
+        # not pay for the profiles
+        result.defer(("identifiability", "ci"), deferred)
+    return result
+
+
+def apply_fixed(model: FrictionModel, names, fixed):
+    """Set ``fixed`` (``name -> value``) on ``model`` and drop those names from the
+    identified set (default: :func:`identification.space.default_names` of the model).
+
+    Returns
+    -------
+    (FrictionModel, list of str or None)
+    """
+    if not fixed:
+        return model, names
+    from .space import default_names
+    fixed = dict(fixed)
+    layout = set(model.Params.numeric_names())
+    unknown = [n for n in fixed if n not in layout]
+    if unknown:
+        raise KeyError(f"fixed parameter(s) {unknown} not in {model.name}; choose from "
+                       f"{sorted(layout)}")
+    try:
+        model = model.with_values(**{n: float(v) for n, v in fixed.items()})
+    except Exception as exc:
+        raise ValueError(f"fixed values not admissible for {model.name}: {exc}") from None
+    if names is None:
+        names = default_names(model)
+    names = [n for n in names if n not in fixed]
+    if not names:
+        raise ValueError(f"nothing left to identify: every parameter is fixed "
+                         f"({sorted(fixed)})")
+    return model, names

@@ -15,6 +15,9 @@ Sources (cite them with any figure):
 * Joint steady state: igricart/FrictionIdentification @ 449ef59d.
 * Rack and pinion: Mnich, Lodz University of Technology, KonradMnich/friction-identification
   @ 8b477df1.
+* CICESE two-link direct-drive arm: "A Novel Method for Obtaining the Friction Models of
+  Direct-Drive Robot Manipulators: Characterization and Quantitative Comparison" (under
+  review), jorgevchin/Friction-Identification @ d455ff83.
 """
 from __future__ import annotations
 
@@ -25,11 +28,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from friction.dataset import Dataset
+from friction.dataset import Dataset, SteadyStateMap
 
 __all__ = ["real_data_dir", "load_emps", "emps_baseline", "EMPS_PUBLISHED", "load_pneumatic",
            "load_franka", "franka_paper_rms", "load_joint_steady_state", "SteadyStateMap",
-           "PNEUMATIC_AREA", "load_rack_pinion"]
+           "PNEUMATIC_AREA", "load_rack_pinion", "CICESE_PUBLISHED", "load_cicese_run",
+           "cicese_runs", "cicese_test2_map", "cicese_breakaway", "load_cicese_presliding"]
 
 #: published inverse-dynamic-model baseline of the EMPS benchmark (README of emps/)
 EMPS_PUBLISHED = {"M": 95.1089, "Fv": 203.5034, "Fc": 20.3935, "OF": -3.1648}
@@ -273,20 +277,6 @@ def franka_paper_rms(case: int, speed: str, model: str = "LuGre") -> float:
 
 
 # ------------------------------------------------------------------------------ steady state
-@dataclass
-class SteadyStateMap:
-    """A steady-state friction map: effort ``F`` at constant velocity ``v`` (sorted by v)."""
-    v: np.ndarray
-    F: np.ndarray
-    name: str = "steady state"
-
-    def as_dataset(self) -> Dataset:
-        """The map as a quasi-static Dataset (``t`` = sample index [s], a = 0)."""
-        t = np.arange(self.v.size, dtype=float)
-        return Dataset.from_arrays(t, self.F, v=self.v, a=np.zeros_like(self.v),
-                                   name=self.name, check_units=False)
-
-
 def load_joint_steady_state() -> SteadyStateMap:
     """Steady-state friction map of a robot joint (``steadyState_friction.mat``).
 
@@ -334,3 +324,244 @@ def load_rack_pinion() -> Dataset:
                                name="rack and pinion stroke",
                                extra={"F_model_source": source, "drive_force": g["F"],
                                       "reduced_mass": np.full(n, g["reduced_mass"][0])})
+
+
+# ------------------------------------------------------------------------------ CICESE arm
+#: what the source documents (README of cicese_arm/): static friction per direction
+#: (+, -) [N m] by joint, from its Test 1 torque ramps; joint inertias [kg m^2] and viscous
+#: coefficients [N m s/rad] of its Test 3 analysis
+CICESE_PUBLISHED = {"static": {1: (10.75, -12.00), 2: (1.49, -1.45)},
+                    "inertia": {1: 2.519, 2: 0.102},
+                    "viscous": {1: 3.1465, 2: 0.1237}}
+#: torque limits of the drives [N m]
+CICESE_TORQUE_LIMIT = {1: 200.0, 2: 15.0}
+_DEG = np.pi / 180.0
+#: Test 1 torque-ramp runs per joint (README: +-0.5 N m/s joint 1, +-0.1 N m/s joint 2)
+_CICESE_RAMPS = {1: ("05_exp1", "05_exp2", "05_exp3", "05_exp4",
+                     "n05_exp1", "n05_exp2", "n05_exp3", "n05_exp4"),
+                 2: ("01_exp5", "01_exp6", "01_exp7", "01_exp8",
+                     "n01_exp1", "n01_exp2", "n01_exp3", "n01_exp4")}
+_CICESE_PREFIX = {1: "est", 2: "cin"}
+
+
+def _cicese_read(test: int, prefix: str, kind: str, tag: str) -> np.ndarray:
+    path = _file("cicese_arm", f"Test_{test}", f"{prefix}_{kind}_{tag}_gan.t")
+    raw = np.loadtxt(path)
+    if raw.ndim != 2 or raw.shape[1] != 2:
+        raise ValueError(f"{path.name}: expected two columns (time, value), got {raw.shape}")
+    return raw
+
+
+def _diff7(y: np.ndarray, h: float) -> np.ndarray:
+    """Seven-point central difference (sixth order) with step ``h`` [s], as the source
+    differentiates its positions; second-order differences at the three samples of each
+    end."""
+    d = np.gradient(y, h)
+    if y.size >= 7:
+        d[3:-3] = (-y[:-6] + 9 * y[1:-5] - 45 * y[2:-4] + 45 * y[4:-2] - 9 * y[5:-1]
+                   + y[6:]) / (60.0 * h)
+    return d
+
+
+def load_cicese_run(test: int, tag: str, joint: int, *, prefix: str | None = None,
+                    smooth_hz: float | None = None, inertia: bool = True) -> Dataset:
+    """One run of the CICESE two-link direct-drive arm, as the friction torque of one joint.
+
+    The six files of a run (``pos``, ``vel``, ``tau`` of both joints, 15 ms) are read; the
+    positions [deg] become rad, velocity and acceleration are seven-point central
+    differences of the position (the source's choice; the logged ``vel`` is the controller's
+    quantised signal and is not used), and the friction torque of the joint is the applied
+    torque minus the rigid two-link inverse dynamics with the source's numbers (README):
+    ``tau_f = tau - M(q) qdd - C(q, qd) qd - g(q)``.
+
+    Parameters
+    ----------
+    test : {1, 2, 3}
+        ``Test_1`` (torque ramps), ``Test_2`` (constant velocity), ``Test_3`` (presliding).
+    tag : str
+        The run's file tag between the signal name and ``_gan.t``: ``"05_exp1"`` (Test 1),
+        ``"40_exp"``, ``"n40_exp"``, ``"40_exp2"`` (Test 2), ``"6_exp1"`` (Test 3).
+    joint : {1, 2}
+    prefix : str, optional
+        File prefix (default ``est`` / ``cin``; Test 3: ``sig0`` or ``sig1``, required).
+    smooth_hz : float, optional
+        Zero-phase Butterworth low-pass (order 2) of both positions before differentiating
+        [Hz] (presliding records move a few encoder counts: their differentiated velocity is
+        mostly quantisation noise).
+    inertia : bool
+        Subtract the inertia torque ``M(q) qdd``. The constant-velocity analysis leaves it
+        out (the source's Test 2 script does): over a plateau the mean acceleration is zero,
+        and the twice-differentiated 15 ms position turns a few-hertz ripple of the speed
+        into +-10 N m of torque on joint 1 that the applied torque does not show.
+
+    Returns
+    -------
+    Dataset
+        ``t`` [s], ``x`` = q [rad], ``v`` [rad/s], ``a`` [rad/s^2], ``F`` = friction torque
+        [N m]; ``extra``: ``tau`` (applied) [N m], ``gravity`` [N m], ``exclude`` (1 where
+        either drive is at its torque limit). A run without the other joint's files (the
+        Test 1 ramps move one joint) takes that joint at rest at q = 0.
+    """
+    if joint not in (1, 2):
+        raise ValueError(f"joint = {joint!r}: must be 1 or 2")
+    if test not in (1, 2, 3):
+        raise ValueError(f"test = {test!r}: must be 1, 2 or 3")
+    if prefix is None:
+        if test == 3:
+            raise ValueError("Test 3 runs need prefix='sig0' (sine) or 'sig1' (step)")
+        prefix = _CICESE_PREFIX[test]
+    own, other = f"{joint}", f"{3 - joint}"
+    sig = {k: _cicese_read(test, prefix, k, tag) for k in ("pos" + own, "tau" + own)}
+    try:
+        for k in ("pos" + other, "tau" + other):
+            sig[k] = _cicese_read(test, prefix, k, tag)
+        other_logged = True
+    except FileNotFoundError:
+        # Test 1 ramps one joint at a time (the other's files carry other tags): the
+        # other joint is taken at rest at q = 0, as the source's analysis does
+        ref = sig["pos" + own]
+        for k in ("pos" + other, "tau" + other):
+            sig[k] = np.column_stack([ref[:, 0], np.zeros(ref.shape[0])])
+        other_logged = False
+    base = sig["pos" + own]
+    keep = np.concatenate([[True], np.diff(base[:, 0]) > 0])  # repeated stamps dropped
+    t = base[keep, 0]
+
+    def on_t(a):  # a file logged a few samples more or less: read on the position's clock
+        tt, y = a[:, 0], a[:, 1]
+        ok = np.concatenate([[True], np.diff(tt) > 0])
+        return np.interp(t, tt[ok], y[ok])
+
+    q1, q2 = on_t(sig["pos1"]) * _DEG, on_t(sig["pos2"]) * _DEG
+    tau1, tau2 = on_t(sig["tau1"]), on_t(sig["tau2"])
+    h = float(np.median(np.diff(t)))
+    if smooth_hz is not None:
+        from scipy import signal
+        b, a = signal.butter(2, smooth_hz / (0.5 / h))
+        q1, q2 = signal.filtfilt(b, a, q1), signal.filtfilt(b, a, q2)
+    qd1, qd2 = _diff7(q1, h), _diff7(q2, h)
+    qdd1, qdd2 = _diff7(qd1, h), _diff7(qd2, h)
+    w = 1.0 if inertia else 0.0
+    c2, s2 = np.cos(q2), np.sin(q2)
+    m11, m12, m22 = 2.351 + 0.168 * c2, 0.102 + 0.084 * c2, 0.102
+    g = 9.81
+    g1 = g * (3.921 * np.sin(q1) + 0.186 * np.sin(q1 + q2))
+    g2 = g * 0.186 * np.sin(q1 + q2)
+    if joint == 1:
+        tau, grav, q, qd, qdd = tau1, g1, q1, qd1, qdd1
+        F = tau1 - w * (m11 * qdd1 + m12 * qdd2) - (-0.168 * s2 * qd2 * qd1
+                                                 - 0.084 * s2 * qd2 * qd2) - g1
+    else:
+        tau, grav, q, qd, qdd = tau2, g2, q2, qd2, qdd2
+        F = tau2 - w * (m12 * qdd1 + m22 * qdd2) - 0.084 * s2 * qd1 * qd1 - g2
+    sat = (np.abs(tau1) >= 0.99 * CICESE_TORQUE_LIMIT[1]) | \
+        (np.abs(tau2) >= 0.99 * CICESE_TORQUE_LIMIT[2])
+    return Dataset.from_arrays(t, F, x=q, v=qd, a=qdd, check_units=False,
+                               name=f"CICESE test {test} {prefix} {tag} joint {joint}",
+                               extra={"tau": tau, "gravity": grav,
+                                      "exclude": sat.astype(float)})
+
+
+def cicese_runs(joint: int = 1) -> list[tuple[str, float]]:
+    """Test 2 constant-velocity runs: ``(tag, commanded velocity [rad/s])``, both
+    directions and the ``exp2`` repetitions, without the repetitions that are byte copies
+    of their first run (README: the ``exp2`` files at 0.2-0.4 deg/s)."""
+    import hashlib
+    folder = real_data_dir() / "cicese_arm" / "Test_2"
+    out, seen = [], set()
+    for path in sorted(folder.glob(f"cin_tau{joint}_*_gan.t")):
+        tag = path.name[len(f"cin_tau{joint}_"):-len("_gan.t")]
+        speed, rep = tag.split("_", 1)
+        sign = -1.0 if speed.startswith("n") else 1.0
+        digits = speed.lstrip("n")
+        deg = float(digits) / 10.0 if digits.startswith("0") else float(digits)
+        digest = hashlib.sha1(path.read_bytes()).hexdigest()
+        if digest in seen:
+            continue
+        seen.add(digest)
+        out.append((tag, sign * deg * _DEG))
+    out.sort(key=lambda tv: tv[1])
+    return out
+
+
+def cicese_test2_map(joint: int = 1, *, tolerance: float = 0.2, smooth: float = 0.3,
+                     min_speed: float = 0.0) -> SteadyStateMap:
+    """Steady-state friction map of one joint from Test 2 (one plateau per run, both
+    directions, the repetitions included).
+
+    Each run's plateau (:func:`identification.steady_state.plateau`): the longest stretch
+    whose velocity (moving average over ``smooth`` s) is within ``tolerance`` of the
+    commanded one, excluding samples at a torque limit (which also drops the fast runs'
+    braking at |q1| near 180 deg); the plateau's velocity is its mean position slope
+    [rad/s], its torque the median friction torque [N m] (``tau - C(q, qd) qd - g(q)``,
+    the inertia torque left out as the source does: see :func:`load_cicese_run`).
+
+    Parameters
+    ----------
+    joint : {1, 2}
+    tolerance, smooth : float
+        Plateau band (relative) and smoothing window [s].
+    min_speed : float
+        Commanded speeds below this [rad/s] are left out.
+    """
+    from .steady_state import plateau
+    v, F, rows = [], [], {"F_spread": [], "t0": [], "t1": [], "v_command": []}
+    skipped = 0
+    for tag, vt in cicese_runs(joint):
+        if abs(vt) < min_speed:
+            continue
+        run = load_cicese_run(2, tag, joint, inertia=False)
+        p = plateau(run, vt, tolerance=tolerance, smooth=smooth,
+                    exclude=run.extra["exclude"] > 0)
+        if p is None:
+            skipped += 1
+            continue
+        v.append(p["v"])
+        F.append(p["F"])
+        for k in ("F_spread", "t0", "t1"):
+            rows[k].append(p[k])
+        rows["v_command"].append(vt)
+    notes = (f"{skipped} run(s) without a plateau",) if skipped else ()
+    return SteadyStateMap(np.array(v), np.array(F), name=f"CICESE test 2 joint {joint}",
+                          extra={k: np.array(a) for k, a in rows.items()}, notes=notes)
+
+
+def cicese_breakaway(joint: int = 1, v_threshold: float = 0.2 * _DEG) -> dict:
+    """Static friction per direction from the Test 1 torque ramps
+    (:func:`identification.steady_state.breakaway` of each run).
+
+    ``v_threshold`` [rad/s]: the joint counts as sliding once its seven-point velocity
+    exceeds it (default 0.2 deg/s: above the presliding creep the ramps show, twice the
+    slowest Test 2 plateau).
+
+    Returns
+    -------
+    dict
+        ``"+"`` and ``"-"``: mean static friction [N m] per direction; ``"runs"``:
+        ``tag -> torque`` [N m] (None for a run that never slides).
+    """
+    from .steady_state import breakaway
+    runs = {}
+    for tag in _CICESE_RAMPS[joint]:
+        r = breakaway(load_cicese_run(1, tag, joint), v_threshold)
+        runs[tag] = None if r is None else r["F"]
+    pos = [f for tg, f in runs.items() if f is not None and not tg.startswith("n")]
+    neg = [f for tg, f in runs.items() if f is not None and tg.startswith("n")]
+    return {"+": float(np.mean(pos)) if pos else None,
+            "-": float(np.mean(neg)) if neg else None, "runs": runs}
+
+
+def load_cicese_presliding(joint: int = 1, run: int = 1, kind: str = "sig0",
+                           smooth_hz: float | None = 5.0) -> Dataset:
+    """A Test 3 presliding record of one joint: a 0.5 Hz torque sine of 6 N m (joint 1) /
+    0.8 N m (joint 2) (``sig0``) or a torque step to that level at 1.02 s (``sig1``), the
+    joint moving a few thousandths of a degree. Friction torque as
+    :func:`load_cicese_run` (at rest g(q) and the inertia torque are tiny: friction is
+    about the applied torque), positions low-passed at ``smooth_hz`` before
+    differentiating.
+    """
+    if kind not in ("sig0", "sig1"):
+        raise ValueError(f"kind = {kind!r}: must be 'sig0' or 'sig1'")
+    level = "6" if joint == 1 else "08"
+    return load_cicese_run(3, f"{level}_exp{int(run)}", joint, prefix=kind,
+                           smooth_hz=smooth_hz)

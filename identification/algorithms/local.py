@@ -93,6 +93,8 @@ def _run_least_squares(problem, u0, *, method, max_nfev, ftol, xtol, gtol, diff_
         return problem.jacobian(u, r0=r0, step=diff_step)
 
     u0 = np.clip(np.asarray(u0, float), 1e-9, 1 - 1e-9)
+    if u0.size == 1:
+        tr_solver = "exact"  # scipy's lsmr subproblem indexes a 2-D subspace: one parameter fails
     try:
         return least_squares(fun, u0, jac=jac, bounds=(0.0, 1.0), method=method,
                              x_scale="jac", ftol=ftol, xtol=xtol, gtol=gtol, max_nfev=max_nfev,

@@ -796,7 +796,7 @@ def assess_identifiability(objective, space, u, cost, *, model, data, jac=None,
         Jn = Jth[:, idx] / cn[idx]
         _, S, Vt = np.linalg.svd(Jn, full_matrices=False)
         th0 = np.where(logc, np.log(np.where(logc, x, 1.0)), x)
-        for i in range(S.size):
+        for i in range(S.size - 1, -1, -1):  # the flattest direction first
             if S[0] == 0:
                 break
             reach = z * math.sqrt(s2) / S[i] if S[i] > 0 else np.inf
@@ -804,7 +804,8 @@ def assess_identifiability(objective, space, u, cost, *, model, data, jac=None,
             rel = np.where(logc[idx], move, move / np.maximum(np.abs(th0[idx]), 1e-300))
             members = [names[idx[k]] for k in np.argsort(-np.abs(Vt[i]))
                        if rel[k] > 1.0 and abs(Vt[i, k]) > 0.2]
-            if len(members) < 2 or set(members) <= set(unident):
+            covered = set(unident) | {m for u_ in unident for m in u_.split("+")}
+            if len(members) < 2 or set(members) <= covered:
                 continue
             lab = "+".join(members)
             if lab not in unident:
@@ -843,6 +844,15 @@ def assess_identifiability(objective, space, u, cost, *, model, data, jac=None,
             f"{', '.join(which)} {'is' if len(which) == 1 else 'are'} not pinned: record "
             f"slower constant-velocity plateaus in each direction, from a tenth of the "
             f"Stribeck velocity to three times it{rng}{stick}.")
+    specific = {"sigma0", "sigma1", "vs", "vs_neg", "alpha", "Fs", "Fs_neg"} | in_combo
+    rest = [n for n in names if has(n) and n not in specific]
+    if rest:
+        what = "; ".join(f"{n}: {infos[n].description}" for n in rest if n in infos)
+        advice.append(
+            f"{', '.join(rest)} {'is' if len(rest) == 1 else 'are'} not pinned by this "
+            f"record: fix {'it' if len(rest) == 1 else 'them'} at known values (--fix) or "
+            f"record an experiment that varies what {'it acts' if len(rest) == 1 else 'they act'}"
+            f" on ({what}).")
     for j, n in enumerate(names):
         if n not in report["bounds"]:
             continue

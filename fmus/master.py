@@ -77,9 +77,12 @@ class FMUError(RuntimeError):
 
 @dataclass(frozen=True)
 class Connection:
-    """``source`` output ``"instance.variable"`` drives ``target`` input ``"instance.variable"``."""
+    """``source`` output ``"instance.variable"`` drives ``target`` input ``"instance.variable"``,
+    multiplied by ``factor`` (SSP's linear transformation without offset; ``-1.0`` turns a
+    friction force into the force a plant adds)."""
     source: str
     target: str
+    factor: float = 1.0
 
     @staticmethod
     def split(ref: str) -> tuple[str, str]:
@@ -273,8 +276,9 @@ class Master:
     fmus : mapping
         Instance name -> path of the ``.fmu`` file (one FMU file may back several instances).
     connections : iterable
-        :class:`Connection` objects or ``(source, target)`` pairs of ``"instance.variable"``;
-        sources are outputs, targets are inputs (each input driven at most once).
+        :class:`Connection` objects, ``(source, target)`` pairs of ``"instance.variable"``
+        or ``(source, target, factor)`` triples; sources are outputs, targets are inputs
+        (each input driven at most once); the target receives ``factor * source``.
     algorithm : {"gauss-seidel", "jacobi"}
     order : list of str, optional
         Stepping order of the instances (default: the order of ``fmus``).
@@ -290,6 +294,10 @@ class Master:
     record : list of str, optional
         ``"instance.variable"`` columns of the result (outputs or inputs); default every
         output of every instance.
+    inputs : list of str, optional
+        ``"instance.variable"`` inputs driven from outside per communication step (measured
+        signals): their values are given to :meth:`simulate` (``inputs=``), one per
+        communication point, and held over the step that starts there.
     loop : {"auto", "c", "python"}, optional
         Where the per-step loop runs: ``"c"`` the compiled loop of :mod:`fmus.master_loop`
         (the same calls on the same buffers, without a Python round trip per FMI call),
@@ -300,7 +308,7 @@ class Master:
     def __init__(self, fmus: Mapping[str, str], connections: Iterable = (), *,
                  algorithm: str = "gauss-seidel", order=None, iterations: int = 0,
                  tolerance: float = 1e-10, parameters=None, start_values=None, record=None,
-                 loop: str | None = None):
+                 loop: str | None = None, inputs=()):
         from fmpy import extract, read_model_description
         from fmpy.fmi2 import fmi2CallbackFunctions, fmi2CallbackLoggerTYPE, \
             fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE
@@ -356,8 +364,12 @@ class Master:
         # connections -> (dst, dst input slot, src, src output slot)
         self.connections = []
         driven = {}
+        factors = {}
         for c in connections:
             c = c if isinstance(c, Connection) else Connection(*c)
+            if not math.isfinite(float(c.factor)):
+                raise ValueError(f"connection {c.source} -> {c.target}: factor = {c.factor!r} "
+                                 f"is not finite")
             si, sv = Connection.split(c.source)
             di, dv = Connection.split(c.target)
             for inst in (si, di):
@@ -380,6 +392,26 @@ class Master:
             if dv not in dst.inputs:
                 dst.inputs.append(dv)
             self.connections.append((di, dv, si, sv))
+            factors[(di, dv)] = float(c.factor)
+        # inputs driven from outside (measured signals), per communication step
+        self.external = []
+        for ref in inputs or ():
+            inst, var = Connection.split(ref)
+            if inst not in self.instances:
+                raise ValueError(f"external input {ref!r}: unknown instance {inst!r}; "
+                                 f"instances: {list(self.instances)}")
+            v = self.instances[inst].var(var)
+            if v.causality != "input":
+                raise ValueError(f"external input {ref} is a {v.causality}, not an input")
+            if v.type != "Real":
+                raise ValueError(f"external input {ref}: only Real inputs can be driven, "
+                                 f"this is a {v.type}")
+            if ref in driven or ref in self.external:
+                raise ValueError(f"input {ref} is driven twice ("
+                                 f"{driven.get(ref, 'external')} and external)")
+            if var not in self.instances[inst].inputs:
+                self.instances[inst].inputs.append(var)
+            self.external.append(ref)
         # recorded inputs that are not connected still get a buffer slot
         self.record = list(record) if record is not None else \
             [f"{n}.{o}" for n in self.order for o in self.instances[n].outputs]
@@ -403,13 +435,20 @@ class Master:
         self._gather = {n: [] for n in self.instances}
         for di, dv, si, sv in self.connections:
             dst, src = self.instances[di], self.instances[si]
-            self._gather[di].append((dst.inputs.index(dv), src, src.outputs.index(sv)))
+            self._gather[di].append((dst.inputs.index(dv), src, src.outputs.index(sv),
+                                     factors[(di, dv)]))
         for inst in self.instances.values():
             inst.gather = self._gather[inst.name]
         self._feedthrough = [self.instances[n] for n in self.order
                              if self.instances[n].feedthrough]
         self._conn_src = [(self.instances[si].out_buf, self.instances[si].outputs.index(sv))
                           for _, _, si, sv in self.connections]
+        # where each external input's value goes: (instance, input slot)
+        self._ext_dst = []
+        for ref in self.external:
+            inst, var = Connection.split(ref)
+            obj = self.instances[inst]
+            self._ext_dst.append((obj, obj.inputs.index(var)))
         self._columns = []
         for ref in self.record:
             inst, var = Connection.split(ref)
@@ -497,16 +536,16 @@ class Master:
         buf = inst.in_buf
         if only_changed:
             same = True
-            for slot, src, k in inst.gather:
-                value = src.out_buf[k]
+            for slot, src, k, fac in inst.gather:
+                value = fac * src.out_buf[k]
                 if buf[slot] != value:
                     buf[slot] = value
                     same = False
             if same:
                 return False
         else:
-            for slot, src, k in inst.gather:
-                buf[slot] = src.out_buf[k]
+            for slot, src, k, fac in inst.gather:
+                buf[slot] = fac * src.out_buf[k]
         if inst.n_in:
             st = inst.raw_set(inst.cv, inst.in_vr, inst.n_in_c, buf)
             if st > 1:
@@ -568,13 +607,17 @@ class Master:
         return master_loop.CLoop(insts, jacobi=self.algorithm == "jacobi",
                                  iterations=self.iterations, tolerance=self.tolerance,
                                  feedthrough=self._feedthrough, conn_src=self._conn_src,
-                                 rec_src=srcs)
+                                 rec_src=srcs,
+                                 ext_dst=[(o.in_buf, j) for o, j in self._ext_dst])
 
-    def _run_c(self, cloop, t0, h, n, srcs, prog, chunk) -> np.ndarray:
+    def _run_c(self, cloop, t0, h, n, srcs, prog, chunk, table=None) -> np.ndarray:
         """Steps 1..n in the C loop, in chunks between progress reports; returns the
-        recorded values, one row per communication point."""
+        recorded values, one row per communication point. ``table``: the external inputs'
+        values, one row per communication point (row k - 1 is held over step k)."""
         out = np.empty((n + 1, len(srcs)))
         out[0] = [buf[slot] for buf, slot in srcs]
+        if table is not None:
+            cloop.set_table(table)
         k = 1
         while k <= n:
             end = min(n, ((k - 1) // chunk + 1) * chunk)
@@ -587,9 +630,11 @@ class Master:
             k = end + 1
         return out
 
-    def _run_python(self, insts, t0, h, n, srcs, prog, chunk) -> np.ndarray:
+    def _run_python(self, insts, t0, h, n, srcs, prog, chunk, table=None) -> np.ndarray:
         """Steps 1..n in Python (the reference of the C loop); returns the recorded values,
         one row per communication point."""
+        ext = [(o.in_buf, j) for o, j in self._ext_dst] if table is not None else []
+        rows = table.tolist() if ext else None
         # recorded values go straight from the ctypes buffers into a flat array of doubles
         flat = array.array("d")
         keep = flat.extend
@@ -598,7 +643,8 @@ class Master:
         iters = self.iterations
         # per instance, everything a step touches, unpacked once (the loop below is the
         # per-step overhead of the master: one fmi2SetReal, fmi2DoStep, fmi2GetReal each)
-        plan = [(inst, inst.cv, [(slot, src.out_buf, j) for slot, src, j in inst.gather],
+        plan = [(inst, inst.cv, [(slot, src.out_buf, j, fac) for slot, src, j, fac
+                                 in inst.gather],
                  inst.in_buf, inst.in_vr, inst.n_in and inst.n_in_c, inst.raw_set,
                  inst.raw_step, inst.out_buf, inst.out_vr, inst.n_out and inst.n_out_c,
                  inst.raw_get)
@@ -608,11 +654,14 @@ class Master:
         for k in range(1, n + 1):
             t = t0 + (k - 1) * h
             tc = c_double(t)
+            if ext:
+                for (buf, slot), value in zip(ext, rows[k - 1]):
+                    buf[slot] = value
             if gs:
                 for inst, c, gather, ibuf, ivr, nin, fset, fstep, obuf, ovr, nout, fget in plan:
                     if nin:
-                        for slot, src, j in gather:
-                            ibuf[slot] = src[j]
+                        for slot, src, j, fac in gather:
+                            ibuf[slot] = fac * src[j]
                         st = fset(c, ivr, nin, ibuf)
                         if st > 1:
                             check(inst, "fmi2SetReal", st, t)
@@ -641,12 +690,17 @@ class Master:
 
     # -- simulation -----------------------------------------------------------------------
     def simulate(self, stop_time: float | None = None, step_size: float | None = None,
-                 start_time: float | None = None, *, progress=None) -> np.ndarray:
+                 start_time: float | None = None, *, progress=None,
+                 inputs=None) -> np.ndarray:
         """Run the co-simulation; returns a structured array (``time`` first, then ``record``).
 
         ``None`` arguments are taken from the FMUs' DefaultExperiments. ``progress``: None
         (progress lines when the run has more than 20000 steps), True/False, or a callable
-        ``progress(n_steps_done)``.
+        ``progress(n_steps_done)``. ``inputs``: ``{"instance.variable": values}`` for every
+        external input declared at construction; ``values[k]`` (``n`` or ``n + 1`` of them
+        for ``n`` steps) is set at the communication point ``t_k`` (at initialization for
+        ``k = 0``) and held over the step from ``t_k``; a recorded external input shows the
+        value held over the step that ended at its row.
         """
         de = self.default_experiment()
         t0 = de["start_time"] if start_time is None else float(start_time)
@@ -663,6 +717,10 @@ class Master:
             raise ValueError(f"(stop_time - start_time) = {stop - t0!r} is not a multiple of "
                              f"step_size = {h!r}")
         insts = [self.instances[k] for k in self.order]
+        table = self._input_table(inputs, n)
+        if table is not None:
+            for (obj, slot), value in zip(self._ext_dst, table[0]):
+                obj.in_np[slot] = value
 
         # initialization
         for inst in insts:
@@ -694,9 +752,9 @@ class Master:
         chunk = max(1, n // 100)
         cloop = self._c_loop(insts, srcs)
         if cloop is not None:
-            out = self._run_c(cloop, t0, h, n, srcs, prog, chunk)
+            out = self._run_c(cloop, t0, h, n, srcs, prog, chunk, table)
         else:
-            out = self._run_python(insts, t0, h, n, srcs, prog, chunk)
+            out = self._run_python(insts, t0, h, n, srcs, prog, chunk, table)
         time = t0 + h * np.arange(n + 1)
         dtype = [("time", np.float64)] + [(c, np.float64) for c in self.record]
         res = np.empty(n + 1, dtype=dtype)
@@ -704,6 +762,32 @@ class Master:
         for j, c in enumerate(self.record):
             res[c] = out[:, j]
         return res
+
+    def _input_table(self, inputs, n):
+        """The external inputs' values as a C-contiguous ``(n, n_external)`` array (row
+        ``k`` held over step ``k + 1``), or None without external inputs."""
+        inputs = dict(inputs or {})
+        unknown = [r for r in inputs if r not in self.external]
+        if unknown:
+            raise ValueError(f"inputs given for {unknown}, which are not external inputs "
+                             f"of this master ({self.external or 'none declared'})")
+        if not self.external:
+            return None
+        missing = [r for r in self.external if r not in inputs]
+        if missing:
+            raise ValueError(f"no values given for the external input(s) {missing}")
+        cols = []
+        for ref in self.external:
+            col = np.asarray(inputs[ref], dtype=np.float64).ravel()
+            if col.size not in (n, n + 1):
+                raise ValueError(f"external input {ref}: {col.size} values for {n} steps "
+                                 f"(give {n} or {n + 1}, one per communication point)")
+            bad = ~np.isfinite(col[:n])
+            if bad.any():
+                raise ValueError(f"external input {ref}: value {int(np.argmax(bad))} is "
+                                 f"{col[int(np.argmax(bad))]!r}, not finite")
+            cols.append(col[:n])
+        return np.ascontiguousarray(np.column_stack(cols))
 
     def close(self) -> None:
         """Terminate and free all instances and delete the extracted FMU folders."""

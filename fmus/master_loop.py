@@ -115,7 +115,7 @@ class _Inst(ctypes.Structure):
     _fields_ = [("c", _P), ("set", _P), ("step", _P), ("get", _P),
                 ("in_vr", _P), ("n_in", ctypes.c_size_t), ("in_buf", _P),
                 ("out_vr", _P), ("n_out", ctypes.c_size_t), ("out_buf", _P),
-                ("n_gather", ctypes.c_int), ("g_slot", _P), ("g_src", _P)]
+                ("n_gather", ctypes.c_int), ("g_slot", _P), ("g_src", _P), ("g_fac", _P)]
 
 
 class _Plan(ctypes.Structure):
@@ -124,6 +124,7 @@ class _Plan(ctypes.Structure):
                 ("n_ft", ctypes.c_int), ("ft", _P),
                 ("n_conn", ctypes.c_int), ("conn_src", _P), ("prev", _P), ("cur", _P),
                 ("n_rec", ctypes.c_int), ("rec_src", _P),
+                ("n_tab", ctypes.c_int), ("tab_dst", _P), ("tab", _P),
                 ("t0", ctypes.c_double), ("h", ctypes.c_double),
                 ("err_inst", ctypes.c_int), ("err_call", ctypes.c_int),
                 ("err_status", ctypes.c_int), ("err_time", ctypes.c_double)]
@@ -153,10 +154,13 @@ class CLoop:
         Every connection's source value (the convergence test).
     rec_src : list of (buffer, slot)
         The recorded values.
+    ext_dst : list of (buffer, slot)
+        Where the external inputs' values go; :meth:`set_table` gives them, one row per
+        communication step (row k - 1 written before step k).
     """
 
     def __init__(self, insts, *, jacobi=False, iterations=0, tolerance=1e-10, feedthrough=(),
-                 conn_src=(), rec_src=()):
+                 conn_src=(), rec_src=(), ext_dst=()):
         self.lib = library()
         if self.lib is None:
             raise RuntimeError(f"the C master loop is not available: {UNAVAILABLE}")
@@ -164,28 +168,34 @@ class CLoop:
         keep = []  # every array the C side points into
         arr = (_Inst * max(len(self.insts), 1))()
         for i, inst in enumerate(self.insts):
-            slots = (ctypes.c_int * max(len(inst.gather), 1))(*[s for s, _, _ in inst.gather])
-            srcs = (_P * max(len(inst.gather), 1))(*[_addr(src.out_buf, j)
-                                                     for _, src, j in inst.gather])
-            keep += [slots, srcs]
+            gather = [g if len(g) == 4 else (*g, 1.0) for g in inst.gather]
+            slots = (ctypes.c_int * max(len(gather), 1))(*[g[0] for g in gather])
+            srcs = (_P * max(len(gather), 1))(*[_addr(g[1].out_buf, g[2]) for g in gather])
+            facs = (ctypes.c_double * max(len(gather), 1))(*[float(g[3]) for g in gather])
+            keep += [slots, srcs, facs]
             arr[i] = _Inst(inst.cv.value, function_address(inst.raw_set),
                            function_address(inst.raw_step), function_address(inst.raw_get),
                            ctypes.addressof(inst.in_vr), inst.n_in, _addr(inst.in_buf),
                            ctypes.addressof(inst.out_vr), inst.n_out, _addr(inst.out_buf),
-                           len(inst.gather), ctypes.addressof(slots), ctypes.addressof(srcs))
+                           len(gather), ctypes.addressof(slots), ctypes.addressof(srcs),
+                           ctypes.addressof(facs))
         index = {id(inst): i for i, inst in enumerate(self.insts)}
         ft = (ctypes.c_int * max(len(feedthrough), 1))(*[index[id(f)] for f in feedthrough])
         conn = (_P * max(len(conn_src), 1))(*[_addr(b, j) for b, j in conn_src])
         prev = (ctypes.c_double * max(len(conn_src), 1))()
         cur = (ctypes.c_double * max(len(conn_src), 1))()
         rec = (_P * max(len(rec_src), 1))(*[_addr(b, j) for b, j in rec_src])
-        keep += [arr, ft, conn, prev, cur, rec]
+        ext = (_P * max(len(ext_dst), 1))(*[_addr(b, j) for b, j in ext_dst])
+        keep += [arr, ft, conn, prev, cur, rec, ext]
         self._keep = keep
+        self.n_tab = len(ext_dst)
+        self._table = None
         self.plan = _Plan(len(self.insts), ctypes.addressof(arr), int(bool(jacobi)),
                           int(iterations), float(tolerance), len(feedthrough),
                           ctypes.addressof(ft), len(conn_src), ctypes.addressof(conn),
                           ctypes.addressof(prev), ctypes.addressof(cur), len(rec_src),
-                          ctypes.addressof(rec), 0.0, 0.0, -1, -1, 0, 0.0)
+                          ctypes.addressof(rec), 0, ctypes.addressof(ext), None,
+                          0.0, 0.0, -1, -1, 0, 0.0)
         self.n_rec = len(rec_src)
         self._plan_p = ctypes.addressof(self.plan)
 
@@ -193,6 +203,17 @@ class CLoop:
         """(instance, call name, status, time) of the failed call."""
         p = self.plan
         return self.insts[p.err_inst], CALLS[p.err_call], p.err_status, p.err_time
+
+    def set_table(self, table) -> None:
+        """The external inputs' values of the next runs: a C-contiguous float64 array of
+        ``(steps, len(ext_dst))``; row ``k - 1`` is written before step ``k``."""
+        import numpy as np
+        table = np.ascontiguousarray(table, dtype=np.float64)
+        if table.ndim != 2 or table.shape[1] != self.n_tab:
+            raise ValueError(f"table of shape {table.shape}: need (steps, {self.n_tab})")
+        self._table = table  # kept alive while the C side points into it
+        self.plan.n_tab = self.n_tab
+        self.plan.tab = table.ctypes.data
 
     def run(self, t0: float, h: float, k_from: int, k_to: int, rec_rows) -> bool:
         """Steps ``k_from..k_to``; ``rec_rows``: a C-contiguous float64 array of at least

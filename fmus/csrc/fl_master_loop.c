@@ -4,7 +4,8 @@
  *
  * Built by fmus/master_loop.py with the system C compiler (cached); the FMU functions are
  * called through the pointers the Python side took from each FMU's library. Nothing here
- * computes anything the Python loop does not: gathered inputs are copied, the communication
+ * computes anything the Python loop does not: gathered inputs are copied times their
+ * connection's factor, external inputs (measured signals) come from a table, the communication
  * time is t0 + (k - 1) h in double precision, and the fixed-point pass, its "only changed"
  * test and its relative tolerance are those of Master._settle. A call answering fmi2Discard
  * or worse stops the loop; the caller raises FMUError from the recorded instance, call,
@@ -38,6 +39,7 @@ typedef struct {
     int n_gather;
     const int *g_slot;        /* input slot of each gathered value */
     double *const *g_src;     /* address of the source output value */
+    const double *g_fac;      /* factor of each connection (1.0: the value as it is) */
 } flm_inst;
 
 /* the whole run (mirrors fmus.master_loop._Plan) */
@@ -54,6 +56,9 @@ typedef struct {
     double *prev, *cur;       /* scratch, n_conn each */
     int n_rec;
     double *const *rec_src;   /* recorded values */
+    int n_tab;                /* external inputs (measured signals) */
+    double *const *tab_dst;   /* where each goes (an input slot of an instance) */
+    const double *tab;        /* row k - 1 (n_tab values) is written before step k */
     double t0, h;
     /* the failed call: instance index, call (0 set, 1 doStep, 2 get), status, time */
     int err_inst, err_call, err_status;
@@ -74,7 +79,7 @@ static int fail(flm_plan *p, int i, int call, int status, double t)
 static void gather(flm_inst *s)
 {
     int g;
-    for (g = 0; g < s->n_gather; g++) s->in_buf[s->g_slot[g]] = *s->g_src[g];
+    for (g = 0; g < s->n_gather; g++) s->in_buf[s->g_slot[g]] = s->g_fac[g] * *s->g_src[g];
 }
 
 /* Master._gather_set(only_changed=True): 1 when an input changed (and was set) */
@@ -82,7 +87,7 @@ static int gather_changed(flm_inst *s)
 {
     int g, same = 1;
     for (g = 0; g < s->n_gather; g++) {
-        double value = *s->g_src[g];
+        double value = s->g_fac[g] * *s->g_src[g];
         if (s->in_buf[s->g_slot[g]] != value) {
             s->in_buf[s->g_slot[g]] = value;
             same = 0;
@@ -139,6 +144,7 @@ FLM_EXPORT int flm_run(flm_plan *p, long k_from, long k_to, double *rec)
     double h = p->h;
     for (k = k_from; k <= k_to; k++) {
         double t = p->t0 + (double)(k - 1) * h;
+        for (j = 0; j < p->n_tab; j++) *p->tab_dst[j] = p->tab[(k - 1) * p->n_tab + j];
         if (!p->jacobi) {
             for (i = 0; i < p->n_inst; i++) {
                 flm_inst *s = &p->inst[i];

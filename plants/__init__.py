@@ -5,9 +5,9 @@ the machines of the seed papers, each taking any friction law of :mod:`friction`
 >>> stage = make_plant("xml350")               # seed 003 XML-350 stage, its own LuGre
 >>> res = stage.simulate(method="fast")        # structured array, ``time`` first
 
-Layout (MSL roles): :mod:`plants.interfaces` (Flange, HydraulicPort, PartialCompliant),
-:mod:`plants.components` (mass, spring, damper, support, force/position sources),
-:mod:`plants.sources` (trajectories), :mod:`plants.sensors`, :mod:`plants.controllers`,
+Layout (MSL roles): :mod:`plants.interfaces` (HydraulicPort, PartialCompliant),
+:mod:`plants.components` (mass, spring, damper, position source: what the machines are
+built from), :mod:`plants.sources` (trajectories), :mod:`plants.sensors`, :mod:`plants.controllers`,
 :mod:`plants.motor`, :mod:`plants.base` (the plant contract), :mod:`plants.stepper` (the
 fast fixed-step integrator, what FMUs run), :mod:`plants.reference` (the ``solve_ivp``
 reference integrator), :mod:`plants.law_stepper` (a friction law stepped on its own), one
@@ -18,11 +18,10 @@ from __future__ import annotations
 import importlib
 
 from .base import Experiment, Plant, PlantParams, structured
-from .components import (Damper, Fixed, ForceSource, Mass, PositionSource, Spring,
-                         SpringDamper)
+from .components import Damper, Mass, PositionSource, Spring
 from .controllers import (PID, DiscreteBlock, DiscreteStepper, LuGreFeedforward, PIDParams,
                           StateDependentPID)
-from .interfaces import Flange, HydraulicPort, PartialCompliant
+from .interfaces import HydraulicPort, PartialCompliant
 from .law_stepper import FrictionComponent, FrictionStep
 from .motor import LinearMotor
 from .sensors import AccelerationSensor, PositionSensor, VelocitySensor
@@ -30,10 +29,9 @@ from .sources import PRBS, ColoredNoise, Sampled, SCurve, Sine, Triangle, Veloci
 from .stepper import PlantStepper
 
 __all__ = ["PLANTS", "make_plant", "Plant", "PlantStepper", "PlantParams", "Experiment",
-           "FrictionStep", "FrictionComponent", "structured", "Flange", "HydraulicPort",
-           "PartialCompliant", "Mass", "Spring", "Damper", "SpringDamper", "Fixed",
-           "ForceSource", "PositionSource", "PID", "PIDParams", "StateDependentPID",
-           "LuGreFeedforward", "DiscreteBlock", "DiscreteStepper", "LinearMotor",
+           "FrictionStep", "FrictionComponent", "structured", "HydraulicPort",
+           "PartialCompliant", "Mass", "Spring", "Damper", "PositionSource", "PID",
+           "PIDParams", "StateDependentPID", "LuGreFeedforward", "DiscreteBlock", "DiscreteStepper", "LinearMotor",
            "PositionSensor", "VelocitySensor", "AccelerationSensor", "Sine", "Triangle",
            "VelocityPlateaus", "PRBS", "ColoredNoise", "SCurve", "Sampled"]
 

@@ -32,7 +32,9 @@ external inputs, ``F`` friction force [N] on the contact, opposing the sliding v
   normal load [N] (``load`` may be ``None``) seen by the friction law;
 * ``contact_acceleration(t, s, ds, d, u) -> a`` [m/s^2] (default: ``ds`` of state ``"v"``);
 * ``discrete_update(t, s, d, u) -> d_new`` at each sample instant ``start + k/control_rate``;
-* ``output(t, s, d, F, u) -> dict`` of the outputs.
+* ``output(t, s, d, F, u) -> dict`` of the outputs;
+* optionally ``build_parts()``: the components (:mod:`plants.components`: masses, springs,
+  dampers, ...) built from the parameters, read back through :attr:`Plant.parts`.
 
 The base then provides :meth:`Plant.simulate` (``"fast"``: the fixed-step
 :class:`plants.stepper.PlantStepper`, numpy/numba only; ``"reference"``: the monolithic ODE
@@ -193,6 +195,10 @@ class Plant:
     def output(self, t, s, d, F, u) -> dict[str, float]:  # pragma: no cover - abstract
         raise NotImplementedError
 
+    def build_parts(self) -> tuple:
+        """The plant's components built from its parameters (default: none)."""
+        return ()
+
     # -- written once -------------------------------------------------------------------------
     def __repr__(self) -> str:
         law = "external" if self.external_friction else type(self.friction).__name__
@@ -242,6 +248,14 @@ class Plant:
         if c is None:
             c = self._cache = {}
         return c
+
+    @property
+    def parts(self) -> tuple:
+        """:meth:`build_parts`, built once per parameter set (copies rebuild it)."""
+        parts = self.cache.get("parts")
+        if parts is None:
+            parts = self.cache["parts"] = self.build_parts()
+        return parts
 
     def _experiment(self, stop_time, experiment_options) -> tuple[Experiment, dict]:
         exp_fields = {f.name for f in fields(Experiment)}

@@ -4,6 +4,12 @@ Each component is a frozen dataclass whose fields are parameters with unit, desc
 bounds (``friction.base.param``), validated on creation. Compliant elements derive from
 :class:`plants.interfaces.PartialCompliant` and add one constitutive line each.
 
+The machines are built from them: the valve (seed 000) is a :class:`Mass` on a preloaded
+:class:`Spring`; the damping rig's cylinder (seed 001) and the isolator's top plate
+(seed 002) are masses on the :class:`Spring` and :class:`Damper` of their force sensors, the
+rig's piston a :class:`Mass` or a :class:`PositionSource`; the XML-350 stage (seed 003) a
+:class:`Mass` driven by :class:`plants.motor.LinearMotor`.
+
 Examples
 --------
 >>> from plants.components import Mass, Spring, Damper
@@ -15,16 +21,14 @@ Examples
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Callable
 
 from friction.base import FrictionParams, param
 
-from .interfaces import Flange, PartialCompliant
+from .interfaces import PartialCompliant
 
-__all__ = ["Mass", "Spring", "Damper", "SpringDamper", "Fixed", "ForceSource",
-           "PositionSource", "STANDARD_GRAVITY"]
+__all__ = ["Mass", "Spring", "Damper", "PositionSource", "STANDARD_GRAVITY"]
 
 STANDARD_GRAVITY = 9.80665  # m/s^2
 
@@ -72,46 +76,15 @@ class Damper(FrictionParams, PartialCompliant):
 
 
 @dataclass(frozen=True)
-class SpringDamper(FrictionParams, PartialCompliant):
-    """Spring and damper in parallel: ``f = c (s_rel + preload) + d v_rel``."""
-    c: float = param(1e3, "N/m", "spring stiffness", lower=0)
-    d: float = param(0.0, "N.s/m", "damping coefficient", lower=0)
-    preload: float = param(0.0, "m", "pre-deflection at zero relative position")
-
-    def force(self, s_rel, v_rel):
-        return self.c * (s_rel + self.preload) + self.d * v_rel
-
-
-@dataclass(frozen=True)
-class Fixed(FrictionParams):
-    """Fixed support: a flange that stays at ``s0`` [m]."""
-    s0: float = param(0.0, "m", "support position")
-
-    def flange(self) -> Flange:
-        return Flange(s=self.s0, v=0.0, f=0.0)
-
-
-@dataclass(frozen=True)
-class ForceSource:
-    """Prescribed force f(t) [N] on a body (+s positive); ``f`` is a callable or a constant."""
-    f: Callable[[float], float] | float = 0.0
-
-    def force(self, t: float) -> float:
-        return float(self.f(t)) if callable(self.f) else float(self.f)
-
-
-@dataclass(frozen=True)
 class PositionSource:
-    """Prescribed motion of a flange from a trajectory ``traj(t) -> (s, v, a)`` [m, m/s, m/s^2].
+    """Prescribed motion (an ideal kinematic drive) from a trajectory
+    ``traj(t) -> (s, v, a)`` [m, m/s, m/s^2].
 
     ``traj`` is typically a :mod:`plants.sources` generator.
     """
     traj: Callable[[float], tuple[float, float, float]]
 
-    def flange(self, t: float) -> Flange:
-        s, v, _ = self.traj(t)
-        return Flange(s=float(s), v=float(v), f=math.nan)
-
     def kinematics(self, t: float) -> tuple[float, float, float]:
+        """Position [m], velocity [m/s] and acceleration [m/s^2] at time ``t`` [s]."""
         s, v, a = self.traj(t)
         return float(s), float(v), float(a)

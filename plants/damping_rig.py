@@ -36,6 +36,7 @@ import numpy as np
 from friction.base import FrictionModel, param
 
 from .base import Experiment, Plant, PlantParams
+from .components import Damper, Mass, PositionSource, Spring
 from .sources import Sine, Triangle
 
 __all__ = ["DampingRigParams", "DampingRig", "rig_friction", "Trapezoid", "TABLE_I",
@@ -168,9 +169,17 @@ class DampingRig(Plant):
                                  "(120 um travel)")
         if o["waveform"] == "sine":
             # start at the bottom of the stroke at rest (s = -A cos w t): no velocity jump
-            self._traj = Sine(A, f, phase=-0.5 * math.pi)
+            traj = Sine(A, f, phase=-0.5 * math.pi)
         else:
-            self._traj = {"triangle": Triangle, "trapezoid": Trapezoid}[o["waveform"]](A, f)
+            traj = {"triangle": Triangle, "trapezoid": Trapezoid}[o["waveform"]](A, f)
+        self._drive = PositionSource(traj)
+
+    # -- components ------------------------------------------------------------------------------
+    def build_parts(self) -> tuple[Mass, Spring, Damper, Mass]:
+        """(cylinder, sensors' stiffness, sensors' damping, piston): the cylinder hangs on
+        the force sensors (flange a: the frame, flange b: the cylinder)."""
+        p = self.params
+        return Mass(m=p.m_c), Spring(c=p.k_s), Damper(d=p.c_s), Mass(m=p.m_p)
 
     # -- plant contract -------------------------------------------------------------------------
     def _open(self) -> bool:
@@ -179,7 +188,7 @@ class DampingRig(Plant):
     def _piston(self, t, s):
         if self._open():
             return float(s[0]), float(s[1])
-        sp, vp, _ = self._traj(t)
+        sp, vp, _ = self._drive.kinematics(t)
         return sp, vp
 
     def motor_force(self, t) -> float:
@@ -191,11 +200,12 @@ class DampingRig(Plant):
         return np.zeros(4)
 
     def derivatives(self, t, s, d, F, u):
-        p = self.params
         _, vp, xc, vc = s
-        ac = (F - p.k_s * xc - p.c_s * vc) / p.m_c
+        cylinder, stiffness, damping, piston = self.parts
+        ac = cylinder.acceleration(F + stiffness.reaction_on_b(xc, vc)
+                                   + damping.reaction_on_b(xc, vc))
         if self._open():
-            ap = (self.motor_force(t) - F) / p.m_p      # Eq. (17): m a = u - F
+            ap = piston.acceleration(self.motor_force(t) - F)      # Eq. (17): m a = u - F
             return np.array([vp, ap, vc, ac])
         return np.array([0.0, 0.0, vc, ac])
 
@@ -204,16 +214,17 @@ class DampingRig(Plant):
         return sp - float(s[2]), vp - float(s[3]), None
 
     def contact_acceleration(self, t, s, ds, d, u):
-        ap = float(ds[1]) if self._open() else float(self._traj(t)[2])
+        ap = float(ds[1]) if self._open() else self._drive.kinematics(t)[2]
         return ap - float(ds[3])
 
     def output(self, t, s, d, F, u):
-        p = self.params
+        _, stiffness, damping, _ = self.parts
         ds = self.derivatives(t, s, d, F, u)
         sp, vp = self._piston(t, s)
-        return {"x": sp - float(s[2]), "v": vp - float(s[3]),
-                "a": self.contact_acceleration(t, s, ds, d, u), "x_p": sp, "x_c": float(s[2]),
-                "F_meas": p.k_s * float(s[2]) + p.c_s * float(s[3]),
+        xc, vc = float(s[2]), float(s[3])
+        return {"x": sp - xc, "v": vp - vc,
+                "a": self.contact_acceleration(t, s, ds, d, u), "x_p": sp, "x_c": xc,
+                "F_meas": stiffness.force(xc, vc) + damping.force(xc, vc),
                 "u": self.motor_force(t) if self._open() else 0.0}
 
 

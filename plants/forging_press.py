@@ -68,7 +68,8 @@ from numba import njit
 from friction.base import FrictionModel, param
 
 from .base import Experiment, Plant, PlantParams
-from .hydraulics import OIL_BULK_MODULUS, OIL_DENSITY, orifice_flow, valve_3way_flow
+from .hydraulics import (OIL_BULK_MODULUS, OIL_DENSITY, chamber_dpdt, orifice_flow,
+                         valve_3way_flow)
 
 __all__ = ["ForgingPressParams", "ForgingPress", "press_friction", "TABLE1",
            "schedule_reference", "shortened_schedule", "crawl_metrics", "steady_friction",
@@ -406,8 +407,8 @@ def _press_rhs(s, u_cmd, F, th, workpiece):
     out = np.empty(6)
     out[0] = v
     out[1] = (p1 * th[_A1] + th[_M] * th[_G] - Fs - p2 * th[_A2] - F) / th[_M]
-    out[2] = th[_BETA] / V1 * (q1 - th[_A1] * v)
-    out[3] = th[_BETA] / V2 * (th[_A2] * v - qo)
+    out[2] = chamber_dpdt(th[_BETA], V1, q1, th[_A1], v)
+    out[3] = chamber_dpdt(th[_BETA], V2, -qo, th[_A2], -v)  # stroke -x, outflow q_o
     out[4] = (th[_XMAX] * min(1.0, max(-1.0, u_cmd)) - xv) / th[_TAUV]
     out[5] = xp_dot
     return out

@@ -26,6 +26,7 @@ import numpy as np
 from friction.base import FrictionModel, param
 
 from .base import Experiment, Plant, PlantParams
+from .components import Damper, Mass, Spring
 
 __all__ = ["MREIsolatorParams", "MREIsolator", "isolator_law", "loop_metrics", "isolator_dataset",
            "SAMPLE_RATE", "AMPLITUDES", "CURRENTS", "demo_figures"]
@@ -113,6 +114,12 @@ class MREIsolator(Plant):
             x, v, a = r * x, r * v + dr * x, r * a + 2 * dr * v + ddr * x
         return x, v, a
 
+    def build_parts(self) -> tuple[Mass, Mass, Spring, Damper]:
+        """(table, top plate, load cell's stiffness, load cell's damping): the top plate sits
+        on the load cell (flange a: the reaction frame, flange b: the plate)."""
+        p = self.params
+        return Mass(m=p.m_t), Mass(m=p.m_top), Spring(c=p.k_lc), Damper(d=p.c_lc)
+
     def initial_state(self):
         x0, v0, _ = self.reference(0.0)
         return np.array([x0, v0, 0.0, 0.0])
@@ -120,10 +127,12 @@ class MREIsolator(Plant):
     def derivatives(self, t, s, d, F, u):
         p = self.params
         xt, vt, xtop, vtop = s
+        table, top, stiffness, damping = self.parts
         xr, vr, ar = self.reference(t)
-        f_act = p.m_t * ar + p.K_t * (xr - xt) + p.D_t * (vr - vt)
-        return np.array([vt, (f_act - F) / p.m_t, vtop,
-                         (F - p.k_lc * xtop - p.c_lc * vtop) / p.m_top])
+        f_act = p.m_t * ar + p.K_t * (xr - xt) + p.D_t * (vr - vt)   # the table's servo
+        return np.array([vt, table.acceleration(f_act - F), vtop,
+                         top.acceleration(F + stiffness.reaction_on_b(xtop, vtop)
+                                          + damping.reaction_on_b(xtop, vtop))])
 
     def contact(self, t, s, d, u):
         return float(s[0] - s[2]), float(s[1] - s[3]), None
@@ -132,11 +141,12 @@ class MREIsolator(Plant):
         return float(ds[1] - ds[3])
 
     def output(self, t, s, d, F, u):
-        p = self.params
+        _, _, stiffness, damping = self.parts
         ds = self.derivatives(t, s, d, F, u)
+        xtop, vtop = float(s[2]), float(s[3])
         return {"x": float(s[0] - s[2]), "v": float(s[1] - s[3]), "a": float(ds[1] - ds[3]),
                 "x_table": float(s[0]), "x_ref": self.reference(t)[0],
-                "F_meas": p.k_lc * float(s[2]) + p.c_lc * float(s[3])}
+                "F_meas": stiffness.force(xtop, vtop) + damping.force(xtop, vtop)}
 
 
 def loop_metrics(res, freq: float = 4.0, cycles: int = 1):

@@ -43,6 +43,7 @@ import numpy as np
 from friction.base import FrictionModel, param
 
 from .base import Experiment, Plant, PlantParams
+from .components import Mass, Spring
 from .tables import Table2D, bilinear, bilinear_inverse_y, make_fmag_table
 
 __all__ = ["ValveParams", "ValveActuator", "valve_friction", "classic_lugre_twin",
@@ -144,6 +145,18 @@ class ValveActuator(Plant):
     def default_friction(cls) -> FrictionModel:
         return valve_friction()
 
+    # -- components ----------------------------------------------------------------------------
+    def build_parts(self) -> tuple[Mass, Spring]:
+        """(moving mass, return spring): the valve is a mass on a spring preloaded by
+        ``const`` (tension ``k (S + const)``)."""
+        p = self.params
+        return Mass(m=p.m), Spring(c=p.k, preload=p.const)
+
+    @property
+    def spring(self) -> Spring:
+        """The return spring: tension ``k (S + const)`` with the 6 mm pre-deformation."""
+        return self.parts[1]
+
     # -- force table -------------------------------------------------------------------------
     @property
     def fmag(self) -> Table2D:
@@ -189,7 +202,7 @@ class ValveActuator(Plant):
         p = self.params
         S0 = self._start_lift()
         xg, yg, Z = self.fmag.arrays()
-        return float(bilinear_inverse_y(xg, yg, Z, S0, p.k * (S0 + p.const)))
+        return float(bilinear_inverse_y(xg, yg, Z, S0, self.spring.force(S0)))
 
     def initial_state(self):
         return np.array([self._start_lift(), 0.0, self._hold_current()])
@@ -201,9 +214,11 @@ class ValveActuator(Plant):
     def derivatives(self, t, s, d, F, u):
         p = self.params
         S, v, i = s
+        mass, spring = self.parts
         xg, yg, Z = self.fmag.arrays()
         fm = bilinear(xg, yg, Z, S, i)
-        return np.array([v, (fm - p.k * (S + p.const) - F) / p.m, (d[0] - i) / p.tau_i])
+        return np.array([v, mass.acceleration(fm + spring.reaction_on_b(S, v) - F),
+                         (d[0] - i) / p.tau_i])
 
     def contact(self, t, s, d, u):
         return float(s[0]), float(s[1]), None
@@ -218,7 +233,7 @@ class ValveActuator(Plant):
         v_raw = (S_m - S_prev) / Ts
         v_filt = v_filt + Ts / (p.tau_d + Ts) * (v_raw - v_filt)
         integ = integ + p.Ki * e * Ts
-        F_cmd = p.m * a_r + p.k * (S_r + p.const) + p.Kp * e + integ + p.Kd * (v_r - v_filt)
+        F_cmd = p.m * a_r + self.spring.force(S_r) + p.Kp * e + integ + p.Kd * (v_r - v_filt)
         xg, yg, Z = self.fmag.arrays()
         i_cmd = bilinear_inverse_y(xg, yg, Z, S_m, F_cmd)
         return np.array([i_cmd, integ, S_m, v_filt])
@@ -272,8 +287,7 @@ def recover_friction(res, plant: ValveActuator, *, cutoff: float = 1000.0, order
     i = filtfilt(b, a, i)
     v = filtfilt(b, a, np.gradient(S, t))
     acc = np.gradient(v, t)
-    p = plant.params
-    F = plant.fmag(S, i) - p.k * (S + p.const) - p.m * acc
+    F = plant.fmag(S, i) - plant.spring.force(S) - plant.params.m * acc
     return {"t": t, "x": S, "v": v, "a": acc, "i": i, "F": F}
 
 

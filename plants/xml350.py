@@ -53,6 +53,7 @@ from friction import make_model
 from friction.base import FrictionModel, param
 
 from .base import Experiment, Plant, PlantParams
+from .components import Mass
 from .controllers import (DiscreteBlock, DiscreteStepper, LuGreFeedforward, PID, PIDParams)
 from .motor import LinearMotor
 from .sensors import quantize
@@ -98,7 +99,12 @@ class XML350Params(PlantParams):
     beta: float = param(4e-4, "m", "SD-PID distance scale (Eq. 15)", lower=0, lower_open=True)
 
     def motor(self) -> LinearMotor:
+        """The PMLSM with its current loop."""
         return LinearMotor(Kf=self.Kf, f_current=self.f_current)
+
+    def stage(self) -> Mass:
+        """The moving mass ``M`` (Eq. 1: ``M x'' = f_e - f_r``)."""
+        return Mass(m=self.M)
 
     def pid(self, state_dependent: bool = True) -> PID:
         a = (self.alpha_p, self.alpha_i, self.alpha_d) if state_dependent else (0.0, 0.0, 0.0)
@@ -270,7 +276,7 @@ class XML350(_SubstepFromCurrentLoop, Plant):
             if law is None:
                 law = self.friction if self.friction is not None else self.default_friction()
             ff = LuGreFeedforward(law, mass=p.M_ctrl, sample_time=p.Ts)
-        blocks = dict(traj=traj, ref=ref, pid=pid, ff=ff, motor=p.motor())
+        blocks = dict(traj=traj, ref=ref, pid=pid, ff=ff, motor=p.motor(), stage=p.stage())
         self.cache["blocks"] = blocks
         return blocks
 
@@ -297,11 +303,11 @@ class XML350(_SubstepFromCurrentLoop, Plant):
         return d
 
     def derivatives(self, t, s, d, F, u):
-        p = self.params
-        motor = self._blocks()["motor"]
+        b = self._blocks()
+        motor = b["motor"]
         if self.external_friction:
             F = u["F_friction"]
-        return np.array([s[1], (motor.force(s[2]) - F) / p.M,
+        return np.array([s[1], b["stage"].acceleration(motor.force(s[2]) - F),
                          motor.current_derivative(s[2], d[0])])
 
     def contact(self, t, s, d, u):
@@ -334,11 +340,10 @@ class XML350(_SubstepFromCurrentLoop, Plant):
         return new
 
     def output(self, t, s, d, F, u):
-        p = self.params
-        motor = self._blocks()["motor"]
+        b = self._blocks()
         Fr = u["F_friction"] if self.external_friction else F
-        return {"x": s[0], "v": s[1], "a": (motor.force(s[2]) - Fr) / p.M, "x_meas": d[7],
-                "x_d": d[4], "v_d": d[5], "a_d": d[6], "e": d[4] - s[0], "i": s[2],
+        return {"x": s[0], "v": s[1], "a": b["stage"].acceleration(b["motor"].force(s[2]) - Fr),
+                "x_meas": d[7], "x_d": d[4], "v_d": d[5], "a_d": d[6], "e": d[4] - s[0], "i": s[2],
                 "u": d[1], "u_ff": d[3]}
 
     # -- fast path ----------------------------------------------------------------------------
@@ -427,12 +432,15 @@ class XML350Mechanics(_SubstepFromCurrentLoop, Plant):
     def initial_state(self):
         return np.zeros(3)
 
+    def build_parts(self) -> tuple[LinearMotor, Mass]:
+        """(motor with its current loop, moving mass)."""
+        return self.params.motor(), self.params.stage()
+
     def derivatives(self, t, s, d, F, u):
-        p = self.params
-        motor = self.cache.get("motor") or self.cache.setdefault("motor", p.motor())
+        motor, stage = self.parts
         if self.external_friction:
             F = u["F_friction"]
-        return np.array([s[1], (motor.force(s[2]) - F) / p.M,
+        return np.array([s[1], stage.acceleration(motor.force(s[2]) - F),
                          motor.current_derivative(s[2], u["i_cmd"])])
 
     def contact(self, t, s, d, u):
@@ -443,7 +451,7 @@ class XML350Mechanics(_SubstepFromCurrentLoop, Plant):
         f_e = p.Kf * s[2]
         Fr = u["F_friction"] if self.external_friction else F
         return {"x": s[0], "x_meas": quantize(float(s[0]), p.resolution), "v": s[1],
-                "a": (f_e - Fr) / p.M, "i": s[2], "f_e": f_e}
+                "a": self.parts[1].acceleration(f_e - Fr), "i": s[2], "f_e": f_e}
 
 
 def loop_parts(*, distance: float = 1e-4, compensation: bool = True,

@@ -16,7 +16,8 @@ def _add_data_options(p: argparse.ArgumentParser, optional: bool = False) -> Non
     # optional: the command has a mode without data (diagnose --benchmark); checked in _dispatch
     p.add_argument("data", nargs="*" if optional else "+", help="measurement file(s): CSV "
                    "(t,x,v,a,F[,load]) or .mat; the first is fitted, the others held out")
-    p.add_argument("--model", required=not optional,
+    # --model is checked in _dispatch: with --plant-fmu the connection file may name it
+    p.add_argument("--model", default=None,
                    help="friction law (registry name, e.g. lugre)")
     p.add_argument("--map", dest="mapping", default=None,
                    help="column mapping NAME=COLUMN,... e.g. t=time,x=qm,F=force")
@@ -24,6 +25,16 @@ def _add_data_options(p: argparse.ArgumentParser, optional: bool = False) -> Non
                    help="unit factors NAME=FACTOR,... e.g. x=1e-3 for a position in mm")
     p.add_argument("--json", dest="json_out", default=None, help="write the result as JSON here")
     p.add_argument("--quiet", action="store_true", help="no progress output")
+    p.add_argument("--plant-fmu", dest="plant_fmu", default=None,
+                   help="your plant as an FMI 2.0 co-simulation FMU: DATA are measured runs "
+                   "of it (the columns --connect names); the law is co-simulated with it")
+    p.add_argument("--connect", default=None,
+                   help="with --plant-fmu: the connection file (TOML) saying which plant "
+                   "input takes the friction force, which outputs feed the law, which "
+                   "measured columns drive and which are compared (see the README)")
+    p.add_argument("--law-fmu", dest="law_fmu", default="native",
+                   choices=("native", "pythonfmu"),
+                   help="with --plant-fmu: the friction-law FMU kind (default native C)")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -80,6 +91,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="trajectory level: experiment options KEY=VALUE,... of each DATA file "
                    "(once for all, or once per file), e.g. trajectory=sine:5e-5:5,controller=pid;"
                    " keys that are plant parameters (e.g. f_current=2000) set the plant model")
+    g.add_argument("--start", default=None,
+                   help="with --plant-fmu: start the base law and the plant parameters from "
+                   "the JSON 'identify --plant-fmu ... --json' wrote")
     g.add_argument("--engine", default="plant", choices=("plant", "fmu"),
                    help="trajectory level: in-process plant (default) or plant + friction FMUs")
     g.add_argument("--candidates", default=None,
@@ -103,14 +117,20 @@ def _dispatch(args) -> int:
         from fmus.build import build_all
         build_all(args.out, only=args.only.split(",") if args.only else None)
         return 0
+    if args.command in ("identify", "diagnose") and bool(getattr(args, "plant_fmu", None)) \
+            != bool(getattr(args, "connect", None)):
+        raise ValueError("--plant-fmu and --connect go together: the plant FMU and the "
+                         "connection file (TOML) that couples it")
     if args.command == "identify":
+        if not args.model and not args.plant_fmu:
+            raise ValueError("identify needs --model NAME (the friction law)")
         from identification.cli import run_identify_cli
         return run_identify_cli(args) or 0
     if args.command == "diagnose":
         if args.benchmark and args.plants:
             from diagnosis.benchmark import run_benchmark_cli
             return run_benchmark_cli(args)
-        if not args.benchmark and (not args.data or not args.model):
+        if not args.benchmark and (not args.data or not (args.model or args.plant_fmu)):
             raise ValueError("diagnose needs DATA and --model (or --benchmark)")
         from diagnosis.cli import run_diagnose_cli
         return run_diagnose_cli(args) or 0

@@ -101,6 +101,8 @@ def run_identify_cli(args) -> int:
         # refused before loading anything: a zero budget is not a data problem
         raise ValueError(f"--max-evals {max_evals}: the evaluation budget must be a positive "
                          f"integer (simulations)")
+    if getattr(args, "plant_fmu", None):
+        return _run_plant_fmu(args, max_evals)
     from friction import make_model
     from friction.dataset import SteadyStateMap
     mapping = parse_mapping(getattr(args, "mapping", None))
@@ -150,6 +152,55 @@ def run_identify_cli(args) -> int:
     if static_from:
         print(f"static from : {static_from} (held: {', '.join(sorted(fixed))})")
     print(result.summary())
+    out = getattr(args, "json_out", None)
+    if out:
+        result.to_json(out)
+        print(f"written     : {out}")
+    sys.stdout.flush()
+    return 0
+
+
+def _run_plant_fmu(args, max_evals) -> int:
+    """``identify DATA [VALIDATION...] --plant-fmu PLANT.fmu --connect RIG.toml``: the law
+    co-simulated with the user's plant FMU (:func:`identification.plant_fmu.
+    identify_plant_fmu`)."""
+    from fmus.connect import load_connection
+    from .plant_fmu import identify_plant_fmu, start_law
+    for opt, flag in (("mapping", "--map"), ("scale", "--scale"), ("checkpoint", "--checkpoint"),
+                      ("static_from", "--static-from"), ("min_speed", "--min-speed")):
+        if getattr(args, opt, None) is not None:
+            raise ValueError(f"{flag} does not apply with --plant-fmu (the connection file "
+                             f"names the columns and their scale)")
+    conn = load_connection(args.connect)
+    law = start_law(args.model, conn)
+    fixed = parse_fix(getattr(args, "fix", None))
+    if fixed:
+        try:
+            law = law.with_values(**fixed)
+        except (TypeError, ValueError, KeyError) as exc:
+            raise ValueError(f"--fix: {exc}") from None
+    names = None
+    if fixed:
+        from .plant_fmu import default_law_names
+        names = [n for n in (conn.law_names or default_law_names(law)) if n not in fixed] \
+            + conn.plant_names()
+    files = list(args.data)
+    quiet = getattr(args, "quiet", False)
+    result = identify_plant_fmu(files[0], args.plant_fmu, conn, law, names=names,
+                                bounds=parse_bounds(getattr(args, "bounds", None)),
+                                algorithm=getattr(args, "algorithm", None),
+                                seed=getattr(args, "seed", 0), max_evals=max_evals,
+                                validation=files[1:] or None, progress=not quiet,
+                                native=getattr(args, "law_fmu", "native") == "native")
+    print(f"plant FMU   : {args.plant_fmu} (connection {args.connect}; law FMU "
+          f"{result['law_fmu']})")
+    print(f"data        : {files[0]}")
+    for f in files[1:]:
+        print(f"validation  : {f}")
+    print(result.summary())
+    for rec, per in result["channels"].items():
+        if per:
+            print(f"NRMSE {rec:<6s}: " + ", ".join(f"{k} {v:.4g}" for k, v in per.items()))
     out = getattr(args, "json_out", None)
     if out:
         result.to_json(out)

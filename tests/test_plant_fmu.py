@@ -91,3 +91,181 @@ def test_master_connection_factor_and_external_inputs_c_loop_equals_python(nativ
             m.simulate(stop_time=1e-3, step_size=1e-4)
     with pytest.raises(ValueError, match="mass.x is a output, not an input"):
         Master({"mass": mass}, [], inputs=["mass.x"])
+
+
+# -- connection files ----------------------------------------------------------------------------
+README_TOML = '''
+step = 1e-4                 # communication step [s]
+time = "t"                  # time column of the measured files
+mass = "m"                  # the plant parameter that is the moving mass
+
+[friction]
+input = "F_c"               # the cart adds its input: the law's force negated
+sign = -1
+v = "vel"
+x = "pos"
+a = "acc"
+
+[inputs]
+u = { column = "volt", unit = "V", hold = "previous" }
+
+[compare]
+pos = { column = "x_mm", scale = 1e-3, unit = "m" }
+
+[parameters]
+k_u = 2.0
+m = 1.4
+
+[identify]
+m = { bounds = [0.5, 3.0], start = 1.4 }
+
+[law]
+model = "lugre"
+names = ["Fc", "Fs", "vs", "sigma2"]
+start = { Fc = 0.8, Fs = 1.2 }
+bounds = { Fc = [0.1, 5.0] }
+'''
+
+
+def test_connection_file_parses_and_checks_against_the_plant(tmp_path, cart):
+    from fmus.connect import check_plant
+    p = tmp_path / "rig.toml"
+    p.write_text(README_TOML)
+    conn = load_connection(p)
+    assert conn.sign == -1.0 and conn.friction_input == "F_c"
+    assert conn.law_inputs == {"v": "vel", "x": "pos", "a": "acc"}
+    assert conn.inputs[0].column == "volt" and conn.inputs[0].hold == "previous"
+    assert conn.compare[0].scale == 1e-3 and conn.identify[0].start == 1.4
+    assert conn.law_bounds == {"Fc": (0.1, 5.0)} and conn.law_names[0] == "Fc"
+    assert conn.columns == ["t", "volt", "x_mm"]
+    V = check_plant(conn, cart, make_model("lugre"))
+    assert V["pos"].causality == "output"
+    for raw, match in [({"friction": {"input": "F_c"}}, r"needs v ="),
+                       ({"friction": {"input": "F_c", "v": "vel", "sign": 2}}, "sign"),
+                       ({"friction": {"input": "F_c", "v": "vel"}}, r"\[compare\]: missing"),
+                       ({"friction": {"input": "F_c", "v": "vel"}, "compare": {"pos": "x"},
+                         "identify": {"m": [3, 1]}}, "HIGH must exceed LOW"),
+                       ({"friction": {"input": "F_c", "v": "vel"}, "compare": {"pos": "x"},
+                         "inputs": {"u": {"column": "v", "hold": "cubic"}}}, "hold"),
+                       ({"friction": {"input": "F_c", "v": "vel"}, "compare": {"pos": "x"},
+                         "stpe": 1e-3}, "unknown key")]:
+        with pytest.raises(ConnectError, match=match):
+            parse_connection(raw, "rig.toml")
+
+
+def test_builtin_mass_is_a_special_case_of_the_same_path(native_dir):
+    """The project's mass FMU through a connection = the mass + law master of the proofs
+    (fmus.proof.mass_master, ClosedLoopCoSimObjective's loop), bit for bit."""
+    from fmus.proof import mass_master, mass_scenario
+    law = make_model("lugre")
+    sc = mass_scenario("lugre")
+    conn = builtin_connection("mass", **{k: sc[k] for k in ("m", "u0", "u_amp", "u_freq",
+                                                           "v0")})
+    conn.step = 1e-4
+    rec = _record(1.0, x=np.zeros_like)
+    with PlantLoop(fmu_file(native_dir, "mass", True), conn, law, fmu_dir=native_dir) as pl:
+        run = pl.run(rec, law_parameters(law))
+    with mass_master(native_dir, "lugre", native=True) as m:
+        ref = m.simulate(stop_time=1.0, step_size=1e-4)
+    assert np.array_equal(run.values["x"], ref["mass.x"])
+    assert np.array_equal(run.values["friction.F"], ref["friction.F"])
+
+
+# -- bad input: one line each, naming the variable or the time --------------------------------
+def _cli(capsys, argv):
+    from frictionlab.cli import main
+    code = main(argv)
+    err = capsys.readouterr().err.strip()
+    return code, err
+
+
+def _write_run(path, t, volt, x):
+    np.savetxt(path, np.column_stack([t, volt, x]), delimiter=",", header="t,volt,x",
+               comments="")
+
+
+@pytest.mark.parametrize("edit, match", [
+    (lambda c: c["friction"].update(v="speed"),
+     r"\[friction\] v: cart.fmu has no variable 'speed' \(outputs: acc, pos, vel\)"),
+    (lambda c: c["friction"].update(input="pos"),
+     r"\[friction\] input: 'pos' is an output of cart.fmu, not an input"),
+    (lambda c: c["compare"].update(F_c="x"),
+     r"\[compare\] F_c: 'F_c' is an input of cart.fmu, not an output"),
+    (lambda c: c["friction"].update(input="F_kN"),
+     r"unit mismatch: cart.fmu declares 'F_kN' in 'kN', but the friction force is in 'N'"),
+    (lambda c: c["compare"].update(pos={"column": "x", "unit": "mm"}),
+     r"\[compare\] pos: unit mismatch: cart.fmu declares 'pos' in 'm', but column 'x' is in "
+     r"'mm'"),
+    (lambda c: c["inputs"].update(u="current"),
+     r"measured column 'current' not found \(named in rig.toml \[inputs\] u\); columns: t, "
+     r"volt, x"),
+    (lambda c: c["parameters"].update(m=0.0),
+     r"plant FMU cart.fmu failed to initialise: .*fmi2ExitInitializationMode returned error "
+     r"at t = 0 s: m = 0 is out of bounds: must be > 0 \[kg\]"),
+    (lambda c: c["parameters"].update(d=-3e4),
+     r"plant FMU cart.fmu diverged: output '(pos|vel)' is \S+ at t = 0\.0\d+ s"),
+])
+def test_bad_input_is_one_line_naming_the_variable_or_the_time(tmp_path, capsys, cart,
+                                                               native_dir, monkeypatch, edit,
+                                                               match):
+    import tomllib  # noqa: F401  (the connection file format)
+    raw = {"step": 1e-4, "friction": {"input": "F_c", "sign": -1, "v": "vel"},
+           "inputs": {"u": "volt"}, "compare": {"pos": "x"},
+           "parameters": {"k_u": 2.0, "m": 1.5}, "law": {"names": ["Fc"]}}
+    edit(raw)
+    (tmp_path / "rig.toml").write_text(_toml(raw))
+    t = np.arange(0, 0.3, 1e-3)
+    _write_run(tmp_path / "run.csv", t, np.sin(10 * t), 1e-3 * np.sin(10 * t))
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr("identification.cosim.fmu_dir_for",
+                        lambda laws, d=None, native=False: str(native_dir))
+    code, err = _cli(capsys, ["identify", "run.csv", "--plant-fmu", str(cart), "--connect",
+                              "rig.toml", "--quiet", "--max-evals", "3"])
+    assert code == 2
+    assert len(err.splitlines()) == 1, err
+    import re
+    assert re.search(match, err), err
+
+
+def _toml(raw) -> str:
+    """A small TOML writer for the tests' connection dicts."""
+    def val(v):
+        if isinstance(v, str):
+            return json.dumps(v)
+        if isinstance(v, bool):
+            return "true" if v else "false"
+        if isinstance(v, (list, tuple)):
+            return "[" + ", ".join(val(x) for x in v) + "]"
+        if isinstance(v, dict):
+            return "{ " + ", ".join(f"{k} = {val(x)}" for k, x in v.items()) + " }"
+        return repr(float(v))
+    top = [f"{k} = {val(v)}" for k, v in raw.items() if not isinstance(v, dict)]
+    tables = [f"[{k}]\n" + "\n".join(f"{kk} = {val(vv)}" for kk, vv in v.items())
+              for k, v in raw.items() if isinstance(v, dict)]
+    return "\n".join(top) + "\n\n" + "\n\n".join(tables) + "\n"
+
+
+def test_a_diverging_trial_point_costs_inf_and_the_run_goes_on(cart, native_dir):
+    """The plant's damping d identified in a box whose negative end makes the cart unstable:
+    those trial points cost inf (their residuals a large constant) and the identification
+    finishes at the truth."""
+    from identification.plant_fmu import PlantFMUObjective, identify_plant_fmu
+    law = make_model("lugre", Fc=1.0, Fs=1.5)
+    conn = parse_connection({**CART, "step": 2e-4,
+                             "identify": {"d": {"bounds": [-4e4, 20.0], "start": 5.0}},
+                             "parameters": {"k_u": 2.0, "m": 1.5, "d": 2.0}})
+    t = np.arange(0, 0.8 + 1e-9, 1e-3)
+    volt = 1.3 * np.sin(2 * np.pi * 1.5 * t)
+    truth = MeasuredRecord(t, {"u": volt, "x": np.zeros_like(t)}, "truth")
+    with PlantLoop(cart, conn, law, fmu_dir=native_dir) as pl:
+        x = pl.run(truth, law_parameters(law), {"d": 2.0}).at("pos", t)
+    rec = MeasuredRecord(t, {"u": volt, "x": x}, "run")
+    obj = PlantFMUObjective(law, rec, ["plant.d"], conn, cart, fmu_dir=native_dir)
+    costs = obj.costs(np.array([[2.0], [-4e4], [5.0]]))
+    assert costs[0] < 1e-9 and costs[1] == np.inf and 0 < costs[2] < 1
+    assert np.all(obj.residuals(np.array([-4e4])) > 0)
+    obj.close()
+    res = identify_plant_fmu(rec, cart, conn, law, names=["plant.d"], fmu_dir=native_dir,
+                             algorithm="multistart_ls", n_screen=12, n_starts=1,
+                             polish_nfev=30)
+    assert abs(res.params["plant.d"] - 2.0) < 1e-3, res.params

@@ -21,7 +21,8 @@ import os
 
 import numpy as np
 
-from plants.damping_rig import DampingRig, demo_figures
+from plants.damping_rig import DampingRig
+from plants.studies.damping_rig import demo_figures
 
 
 def run_example(show_plot: bool = False, out_dir: str = "damping_rig_out") -> dict:

@@ -25,7 +25,8 @@ import sys
 import numpy as np
 
 from frictionlab.progress import Progress
-from plants.forging_press import TABLE1, ForgingPress, crawl_metrics, demo_figures
+from plants.forging_press import TABLE1, ForgingPress
+from plants.studies.forging_press import crawl_metrics, demo_figures
 
 SWEEP = (0.01e-3, 0.03e-3, 0.05e-3, 0.1e-3, 0.15e-3, 0.3e-3, 0.6e-3, 1.2e-3)   # m/s
 

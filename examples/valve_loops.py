@@ -23,8 +23,8 @@ import os
 
 import numpy as np
 
+from plants.studies.valve import demo_figures, loop_features, loops_at, stribeck_points
 from plants.valve import (FREQUENCIES, MAGNITUDES, ValveActuator, classic_lugre_twin,
-                          demo_figures, loop_features, loops_at, stribeck_points,
                           valve_friction)
 
 

@@ -19,8 +19,9 @@ from __future__ import annotations
 import json
 import os
 
-from plants.demo import plot_compensation
-from plants.xml350 import MOVES, PAPER_REDUCTIONS, XML350, compensation_reduction, mismatch_table
+from plants.studies.xml350 import (MOVES, PAPER_REDUCTIONS, compensation_reduction,
+                                   mismatch_table, plot_compensation)
+from plants.xml350 import XML350
 
 
 def run_example(show_plot: bool = False, out_dir: str = "xml350_compensation_out",

@@ -1,7 +1,8 @@
 """``frictionlab demo``: every stage of the project end to end, into one folder.
 
-Each package contributes a stage ``<package>.demo.run_stage(out_dir, summary, quick)`` that
-writes its PNG/JSON files into ``out_dir`` and its figures into the shared ``summary`` dict.
+Each package contributes a stage, a module with ``run_stage(out_dir, summary, quick)`` that
+writes its PNG/JSON files into ``out_dir`` and its figures into the shared ``summary`` dict
+(:data:`STAGE_MODULES`: ``<package>.demo``, and for the plants ``plants.studies.demo``).
 Stages not yet available are listed under ``summary["stages_missing"]``.
 """
 from __future__ import annotations
@@ -13,9 +14,14 @@ import time
 
 from .progress import report
 
-__all__ = ["run_demo", "STAGES"]
+__all__ = ["run_demo", "STAGES", "STAGE_MODULES"]
 
 STAGES = ("friction", "plants", "fmus", "identification", "diagnosis")
+
+#: stage -> module holding its ``run_stage``
+STAGE_MODULES = {"friction": "friction.demo", "plants": "plants.studies.demo",
+                 "fmus": "fmus.demo", "identification": "identification.demo",
+                 "diagnosis": "diagnosis.demo"}
 
 
 #: stages whose full-length run is opt-in (``--full``): the co-simulation proofs take ~15 min
@@ -50,9 +56,9 @@ def run_demo(out: str = "frictionlab-demo", *, quick: bool = False, full: bool =
         raise ValueError(f"unknown demo stage(s) {sorted(unknown)}; choose from {STAGES}")
     for k, name in enumerate(stages, 1):
         try:
-            mod = importlib.import_module(f"{name}.demo")
+            mod = importlib.import_module(STAGE_MODULES[name])
         except ModuleNotFoundError as exc:
-            if exc.name not in (f"{name}.demo", name):
+            if exc.name not in (STAGE_MODULES[name], name):
                 raise
             summary["stages_missing"].append(name)
             report(f"[demo {k}/{len(stages)}] {name}: not available yet, skipped")

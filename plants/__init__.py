@@ -12,6 +12,8 @@ built from), :mod:`plants.sources` (trajectories), :mod:`plants.sensors`, :mod:`
 fast fixed-step integrator, what FMUs run), :mod:`plants.reference` (the ``solve_ivp``
 reference integrator), :mod:`plants.law_stepper` (a friction law stepped on its own), one
 module per machine, and :mod:`plants.experiments` (the seeds' protocols producing datasets).
+The seeds' studies (paper comparisons, stability analyses, figures and the ``plants`` demo
+stage) sit apart, in :mod:`plants.studies`; the library modules hold no plotting code.
 """
 from __future__ import annotations
 

@@ -40,7 +40,7 @@ from .components import Damper, Mass, PositionSource, Spring
 from .sources import Sine, Triangle
 
 __all__ = ["DampingRigParams", "DampingRig", "rig_friction", "Trapezoid", "TABLE_I",
-           "LINEAR_RATE", "PIEZO_RATE", "rig_dataset", "demo_figures"]
+           "LINEAR_RATE", "PIEZO_RATE", "rig_dataset"]
 
 LINEAR_RATE = 1000.0    # Hz, force sampling with the linear motor
 PIEZO_RATE = 50_000.0   # Hz, with the piezo motor
@@ -233,43 +233,3 @@ def rig_dataset(res, name: str = "damping_rig"):
     from friction.dataset import Dataset
     return Dataset.from_arrays(res["time"], res["F_meas"], x=res["x"], v=res["v"], a=res["a"],
                                name=name, extra={"F_true": np.asarray(res["F"])})
-
-
-def demo_figures(out, summary: dict, quick: bool = True):
-    """Rig figures: measured vs true friction at 4 Hz (linear) and 600 Hz (piezo), Eq. 17-18."""
-    import pathlib
-
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    out = pathlib.Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    rig = DampingRig()
-    lin = rig.simulate(0.5)
-    pz = DampingRig(rig_friction(600.0)).simulate(2.0 / 600.0, step=1.0 / PIEZO_RATE,
-                                                  drive="piezo", freq=600.0, amplitude=30e-6)
-    ol = rig.simulate(4.0 if quick else 8.0, drive="open_loop", step=1e-3)
-    fig, ax = plt.subplots(1, 3, figsize=(14, 4))
-    ax[0].plot(lin["time"], lin["F_meas"], label="sensors")
-    ax[0].plot(lin["time"], lin["F"], "--", label="ring friction")
-    ax[0].set(xlabel="t [s]", ylabel="force [N]", title="linear motor, sine 4 Hz (Fig. 3)")
-    ax[1].plot(pz["time"] * 1e3, pz["F_meas"], label="sensors")
-    ax[1].plot(pz["time"] * 1e3, pz["F"], "--", label="ring friction")
-    ax[1].set(xlabel="t [ms]", ylabel="force [N]", title="piezo, sine 600 Hz (Fig. 4)")
-    ax[2].plot(ol["time"], ol["x_p"] * 1e3)
-    ax[2].set(xlabel="t [s]", ylabel="s [mm]", title="open loop, u = 1.1 sin 5t (Eqs. 17-18)")
-    for a in ax[:2]:
-        a.legend(fontsize=7)
-    fig.tight_layout()
-    p1 = out / "damping_rig.png"
-    fig.savefig(p1, dpi=110)
-    plt.close(fig)
-
-    def rel(r):
-        return float(np.sqrt(np.mean((r["F_meas"] - r["F"]) ** 2)) / np.std(r["F"]))
-
-    summary.setdefault("figures", []).append(str(p1))
-    summary["damping_rig"] = {"sensor_error_4Hz": round(rel(lin), 5),
-                              "sensor_error_600Hz": round(rel(pz), 5)}
-    return [p1]

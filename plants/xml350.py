@@ -27,15 +27,15 @@ Two forms:
   velocity) so the loop can be assembled from separate steppers/FMUs with
   :class:`plants.controllers.StateDependentPID`, :class:`plants.controllers.LuGreFeedforward`,
   a :class:`TrajectoryBlock` and a friction component (:func:`loop_parts`);
-  :func:`run_assembled` connects them with a Gauss-Seidel master and reproduces
-  :class:`XML350` to round-off (friction inside the mechanics) or converges to it as the
-  exchanges per control period grow (friction as its own component).
+  :func:`plants.studies.xml350.run_assembled` connects them with a Gauss-Seidel master
+  and reproduces :class:`XML350` to round-off (friction inside the mechanics) or converges
+  to it as the exchanges per control period grow (friction as its own component).
 
 Stability note: with the nominal linear PID (Kp = 3e6 /s^2, Kd = 800 /s) the position
 loop crosses over near 290 Hz with about 10 deg of phase margin before any lag; a
 first-order 400 Hz current loop adds ~36 deg of lag there, so the LINEAR PID with a 400 Hz
 current loop is unstable (discrete closed-loop spectral radius 1.02, see
-:func:`loop_spectral_radius`). The paper's
+:func:`plants.studies.xml350.loop_spectral_radius`). The paper's
 compensation task uses the SD-PID, whose gains near the target (x0.34 Kp) keep the loop
 stable with the 400 Hz current loop; this module uses it by default. The identification
 experiments (linear PID) therefore run with a faster current loop (``f_current`` 2 kHz,
@@ -60,14 +60,8 @@ from .sensors import quantize
 from .sources import SCurve
 
 __all__ = ["XML350Params", "XML350", "XML350Mechanics", "TrajectoryBlock", "xml350_friction",
-           "run_assembled", "loop_parts", "tracking_metrics", "compensation_reduction",
-           "mismatch_table", "loop_spectral_radius", "PAPER_REDUCTIONS", "MOVES"]
+           "loop_parts"]
 
-#: seed 003 Table II: fractional tracking-error reductions by the LuGre feedforward
-PAPER_REDUCTIONS = {"100um": {"rms_reduction": 0.923, "peak_reduction": 0.939},
-                    "1um": {"rms_reduction": 0.873, "peak_reduction": 0.884}}
-#: the paper's point-to-point moves [m]
-MOVES = {"100um": 1e-4, "1um": 1e-6}
 
 
 def xml350_friction(**overrides) -> FrictionModel:
@@ -411,7 +405,7 @@ class XML350Mechanics(_SubstepFromCurrentLoop, Plant):
 
     Input ``i_cmd`` [A] (current command); outputs ``x, x_meas, v, a, i`` and the thrust
     ``f_e`` [N]. With ``external_friction=True`` the friction force is the input
-    ``F_friction``. Use with :func:`run_assembled` or as the stage FMU.
+    ``F_friction``. Use with :func:`plants.studies.xml350.run_assembled` or as the stage FMU.
     """
     name = "xml350_mechanics"
     Params = XML350Params
@@ -492,231 +486,3 @@ def loop_parts(*, distance: float = 1e-4, compensation: bool = True,
     else:
         parts["mechanics"] = XML350Mechanics(law, params=p).stepper()
     return parts
-
-
-def run_assembled(stop_time: float = 0.06, *, separate_friction: bool = False,
-                  exchanges: int = 1, **part_options) -> np.ndarray:
-    """The XML-350 loop assembled from the separate steppers of :func:`loop_parts`.
-
-    Gauss-Seidel order at each 10 kHz control instant: trajectory -> feedforward (fed
-    ``x_ff, v_ff, a_ff``) -> controller (fed the mechanics' encoder output and ``u_ff``; the
-    trajectory's ``a_ff`` is its ``a_d``) -> current command ``i_cmd = M_ctrl u / Kf``. The
-    mechanics then advance over the control period in ``exchanges`` communication steps;
-    with a separate friction component, friction and mechanics exchange ``v`` and
-    ``F_friction`` at each of them (force held over a step). With the law inside the
-    mechanics this reproduces :class:`XML350` to round-off.
-
-    Parameters
-    ----------
-    stop_time : float
-        End time [s].
-    separate_friction : bool
-        Friction as its own component (the friction FMU) instead of inside the mechanics.
-    exchanges : int
-        Communication steps per control period between friction and mechanics (the
-        coupling's zero-order hold error falls with their number).
-    **part_options
-        Passed to :func:`loop_parts` (distance, compensation, friction, compensator, ...).
-
-    Returns
-    -------
-    ndarray
-        Structured array ``time, x, x_d, e, i_cmd`` at the control rate.
-    """
-    parts = loop_parts(separate_friction=separate_friction, **part_options)
-    p = parts["params"]
-    Ts = p.Ts
-    hc = Ts / int(exchanges)
-    traj, pid, mech = parts["trajectory"], parts["controller"], parts["mechanics"]
-    ff, fric = parts.get("feedforward"), parts.get("friction")
-    n = int(round(stop_time / Ts))
-    rows = np.empty((n + 1, 5))
-
-    def couple():
-        if fric is not None:
-            fric.set_inputs({"v": mech.outputs()["v"]})
-            mech.set_inputs({"F_friction": fric.outputs()["F"]})
-
-    for k in range(n + 1):
-        t = k * Ts
-        ref = traj.outputs()
-        u_ff = 0.0
-        if ff is not None:
-            ff.set_inputs({"x_d": ref["x_ff"], "v_d": ref["v_ff"], "a_d": ref["a_ff"]})
-            u_ff = ff.outputs()["u_ff"]
-        couple()
-        mo = mech.outputs()
-        pid.set_inputs({"x_d": ref["x_d"], "v_d": ref["v_d"], "a_d": ref["a_ff"],
-                        "x_f": ref["x_f"], "x": mo["x_meas"], "u_ff": u_ff})
-        i_cmd = p.M_ctrl * pid.outputs()["u"] / p.Kf
-        mech.set_inputs({"i_cmd": i_cmd})
-        rows[k] = (t, mo["x"], ref["x_d"], ref["x_d"] - mo["x"], i_cmd)
-        if k == n:
-            break
-        for c in (traj, ff, pid):
-            if c is not None:
-                c.do_step(t, Ts)
-        for j in range(int(exchanges)):
-            if j > 0:
-                couple()
-            tj = t + j * hc
-            if fric is not None:
-                fric.do_step(tj, hc)
-            mech.do_step(tj, hc)
-    names = ("time", "x", "x_d", "e", "i_cmd")
-    out = np.empty(n + 1, dtype=[(nm, "f8") for nm in names])
-    for j, nm in enumerate(names):
-        out[nm] = rows[:, j]
-    return out
-
-
-def tracking_metrics(result: np.ndarray, window: tuple[float, float] | None = None
-                     ) -> dict[str, float]:
-    """RMS and peak of the tracking error ``e = x_d - x`` [m] over ``window`` [s]."""
-    t = result["time"]
-    sel = np.ones(t.size, bool) if window is None else (t >= window[0]) & (t <= window[1])
-    e = result["e"][sel]
-    return {"rms": float(np.sqrt(np.mean(e ** 2))), "peak": float(np.max(np.abs(e)))}
-
-
-def compensation_reduction(distance: float = 1e-4, *, compensator: FrictionModel | None = None,
-                           plant: XML350 | None = None, stop_time: float | None = None,
-                           method: str = "fast", baseline: np.ndarray | None = None,
-                           return_results: bool = False, **options) -> dict:
-    """Tracking-error reduction by the LuGre feedforward on one S-curve move.
-
-    Parameters
-    ----------
-    distance : float
-        Move length [m].
-    compensator : FrictionModel, optional
-        Feedforward law (default: the plant's own law, a perfect model).
-    plant : XML350, optional
-        Stage (default: seed 003 numbers and friction).
-    stop_time : float, optional
-        End of the run [s] (default experiment's stop). Errors are measured from the move
-        start to ``stop_time`` (move plus settling).
-    baseline : structured array, optional
-        An uncompensated run to reuse (saves one simulation in sweeps).
-    **options
-        Further XML-350 experiment options.
-
-    Returns
-    -------
-    dict
-        ``rms_reduction``, ``peak_reduction`` (1 - compensated / uncompensated), and the
-        ``rms``/``peak`` errors [m] of both runs (``*_off``, ``*_on``).
-    """
-    plant = plant or XML350()
-    kw = dict(distance=distance, **options)
-    off = baseline if baseline is not None else plant.simulate(stop_time, method=method,
-                                                               compensation=False, **kw)
-    on = plant.simulate(stop_time, method=method, compensation=True, compensator=compensator,
-                        **kw)
-    window = (plant.with_options(**kw).move_window()[0], float(on["time"][-1]))
-    m_off, m_on = tracking_metrics(off, window), tracking_metrics(on, window)
-    out = {"rms_reduction": 1.0 - m_on["rms"] / m_off["rms"],
-           "peak_reduction": 1.0 - m_on["peak"] / m_off["peak"],
-           "rms_off": m_off["rms"], "rms_on": m_on["rms"],
-           "peak_off": m_off["peak"], "peak_on": m_on["peak"]}
-    if return_results:
-        out["results"] = (off, on)
-    return out
-
-
-def mismatch_table(levels=(0.1, 0.2, 0.3), names=("Fc", "Fs", "sigma0", "sigma1", "sigma2",
-                                                   "vs", "all"),
-                   moves=None, signs=(1, -1), plant: XML350 | None = None,
-                   progress=None) -> list[dict]:
-    """How the feedforward's benefit falls when the compensator's parameters are off.
-
-    For each move, parameter (``"all"``: every listed parameter at once), level and sign,
-    the compensator is the plant's law with that parameter scaled by ``1 + sign * level``.
-
-    Returns
-    -------
-    list of dict
-        Rows ``{"move", "param", "error", "rms_reduction", "peak_reduction"}`` where
-        ``error`` is the signed relative parameter error (e.g. -0.2); the first rows per
-        move are the exact compensator (``param="exact"``, ``error=0``).
-    """
-    plant = plant or XML350()
-    law = plant.friction
-    moves = moves or MOVES
-    singles = [n for n in names if n != "all"]
-    rows = []
-    total = len(moves) * (1 + len(names) * len(levels) * len(signs))
-    done = 0
-    for label, dist in moves.items():
-        off = plant.simulate(compensation=False, distance=dist)
-        r = compensation_reduction(dist, plant=plant, baseline=off)
-        rows.append({"move": label, "param": "exact", "error": 0.0,
-                     "rms_reduction": r["rms_reduction"],
-                     "peak_reduction": r["peak_reduction"]})
-        done += 1
-        for name in names:
-            for level in levels:
-                for sg in signs:
-                    f = 1.0 + sg * level
-                    keys = singles if name == "all" else [name]
-                    comp = law.with_values(**{k: getattr(law.params, k) * f for k in keys})
-                    r = compensation_reduction(dist, plant=plant, baseline=off,
-                                               compensator=comp)
-                    rows.append({"move": label, "param": name, "error": sg * level,
-                                 "rms_reduction": r["rms_reduction"],
-                                 "peak_reduction": r["peak_reduction"]})
-                    done += 1
-                    if progress is not None:
-                        progress(1, f"{label} {name} {sg * level:+.0%}")
-    del total, done
-    return rows
-
-
-def loop_spectral_radius(params: XML350Params | None = None, *, controller: str = "pid",
-                         distance_to_target: float = math.inf,
-                         friction: FrictionModel | None = None,
-                         presliding: bool = False) -> float:
-    """Spectral radius of the linearised sampled position loop (< 1: stable).
-
-    The stage ``M x'' = K_f i - c v - k x`` (sliding: ``c = sigma2``, ``k = 0``;
-    pre-sliding: ``c = sigma1``, ``k = sigma0`` of the law), the first-order current loop,
-    the ZOH at ``Ts`` and the discrete (SD-)PID with frozen gains at the given distance to
-    the target (Eq. 15), the velocity error by backward difference as in
-    :class:`plants.controllers.PID`.
-
-    Parameters
-    ----------
-    params : XML350Params, optional
-    controller : {"pid", "sdpid"}
-    distance_to_target : float
-        ``|x_f - x|`` [m] at which the SD-PID gains are frozen (``inf``: nominal gains).
-    friction : FrictionModel, optional
-        LuGre-type law for the linearisation (default: the stage's).
-    presliding : bool
-        Linearise in pre-sliding (bristle spring) instead of sliding.
-    """
-    from scipy.linalg import expm  # analysis helper, not used by the simulation
-
-    p = params or XML350Params()
-    law = friction or xml350_friction()
-    pid = p.pid(state_dependent=controller == "sdpid")
-    d = distance_to_target
-    kp, ki, kd = pid.gains(0.0, d) if math.isfinite(d) else (p.Kp, p.Ki, p.Kd)
-    lp = law.params
-    k_f, c_f = (lp.sigma0, lp.sigma1 + lp.sigma2) if presliding else (0.0, lp.sigma2)
-    wc = 2 * math.pi * p.f_current
-    A = np.array([[0.0, 1.0, 0.0], [-k_f / p.M, -c_f / p.M, p.Kf / p.M], [0.0, 0.0, -wc]])
-    B = np.array([0.0, 0.0, wc])
-    Ts = p.Ts
-    # ZOH discretisation through the augmented matrix exponential
-    E = expm(np.block([[A, B[:, None]], [np.zeros((1, 4))]]) * Ts)
-    Ad, Bd = E[:3, :3], E[:3, 3]
-    # state [x, v, i, I, e_prev]; e = -x; I+ = I + Ts e; u = ki I+ + kp e + kd (e - e_prev)/Ts
-    g = p.M_ctrl / p.Kf
-    K = g * np.array([-(ki * Ts + kp + kd / Ts), 0.0, 0.0, ki, -kd / Ts])  # i_cmd = K @ state
-    Phi = np.zeros((5, 5))
-    Phi[:3, :3] = Ad
-    Phi[:3, :] += np.outer(Bd, K)
-    Phi[3, 0], Phi[3, 3] = -Ts, 1.0
-    Phi[4, 0] = -1.0
-    return float(np.max(np.abs(np.linalg.eigvals(Phi))))

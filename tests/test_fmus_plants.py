@@ -62,7 +62,8 @@ def test_plant_cosimulation_matches_the_reference(plant_fmu_dir, plant):
 def test_xml350_loop_from_part_fmus_matches_the_reference(plant_fmu_dir):
     if "xml350" not in plants.PLANTS:
         pytest.skip("XML-350 not available")
-    from plants.xml350 import XML350, run_assembled, xml350_friction
+    from plants.studies.xml350 import run_assembled
+    from plants.xml350 import XML350, xml350_friction
     from fmus.plant_fmus import xml350_loop_master
     with xml350_loop_master(plant_fmu_dir) as m:
         res = m.simulate(stop_time=0.03, step_size=1e-4)

@@ -3,8 +3,8 @@ import numpy as np
 import pytest
 
 from friction import MODELS, ParameterError
-from plants.forging_press import (TABLE1, ForgingPress, crawl_metrics, schedule_reference,
-                                  shortened_schedule, steady_friction)
+from plants.forging_press import TABLE1, ForgingPress, schedule_reference, shortened_schedule
+from plants.studies.forging_press import crawl_metrics, steady_friction
 
 
 def nrmse(a, b):

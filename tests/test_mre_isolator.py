@@ -4,7 +4,8 @@ import pytest
 
 from friction import ParameterError
 from friction.mre_lugre import parameters_at_current
-from plants.mre_isolator import AMPLITUDES, CURRENTS, SAMPLE_RATE, MREIsolator, loop_metrics
+from plants.mre_isolator import AMPLITUDES, CURRENTS, SAMPLE_RATE, MREIsolator
+from plants.studies.mre_isolator import loop_metrics
 
 
 def nrmse(a, b):

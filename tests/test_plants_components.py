@@ -239,8 +239,9 @@ def test_every_registered_plant_converges_to_a_finer_run(name):
 
 def test_public_names_are_documented_and_exported():
     import importlib
-    for mod in ("base", "interfaces", "components", "sources", "sensors", "controllers",
-                "motor", "xml350", "experiments", "demo"):
+    for mod in ("base", "stepper", "reference", "law_stepper", "interfaces", "components",
+                "sources", "sensors", "controllers", "motor", "xml350", "experiments",
+                "studies.xml350", "studies.demo"):
         m = importlib.import_module(f"plants.{mod}")
         assert m.__doc__ and len(m.__doc__) > 80, mod
         for name in m.__all__:

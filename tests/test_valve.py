@@ -6,9 +6,9 @@ import pytest
 
 from friction import MODELS
 from plants.tables import Table2D, make_fmag_table
+from plants.studies.valve import euler_observer, loop_features, loops_at
 from plants.valve import (FREQUENCIES, SAMPLE_RATE, ValveActuator, classic_lugre_twin,
-                          euler_observer, loop_features, loops_at, recover_friction,
-                          sine_reference, valve_friction)
+                          recover_friction, sine_reference, valve_friction)
 
 
 def nrmse(a, b):
@@ -195,7 +195,7 @@ def test_valve_takes_other_laws(name):
 
 def test_steady_state_tests_recover_stribeck_curve(plant):
     """Seed 000 Fig. 9: constant-speed strokes, friction by Eq. (1), on the law's Eq. (5)."""
-    from plants.valve import stribeck_points
+    from plants.studies.valve import stribeck_points
     pts = stribeck_points([-0.02, -0.005, 0.005, 0.02], plant=plant)
     Fss = plant.friction.steady_state(pts[:, 0])
     assert np.allclose(pts[:, 1], Fss, rtol=2e-3)

@@ -176,7 +176,6 @@ def run_stage(out: str, summary: dict, quick: bool = False) -> None:
 
     figures = ["friction_laws.png", "friction_velocity_loops.png"]
     entry = {"models": sorted(MODELS), "figures": figures, "laws": laws}
-    if "modified_lugre" in MODELS:
-        entry["modified_lugre"] = _modified_lugre_figure(out, plt)
-        figures.append("modified_lugre_loops.png")
+    entry["modified_lugre"] = _modified_lugre_figure(out, plt)
+    figures.append("modified_lugre_loops.png")
     summary["friction_laws"] = entry

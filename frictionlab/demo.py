@@ -3,7 +3,7 @@
 Each package contributes a stage, a module with ``run_stage(out_dir, summary, quick)`` that
 writes its PNG/JSON files into ``out_dir`` and its figures into the shared ``summary`` dict
 (:data:`STAGE_MODULES`: ``<package>.demo``, and for the plants ``plants.studies.demo``).
-Stages not yet available are listed under ``summary["stages_missing"]``.
+A stage that fails to import stops the demo with that error.
 """
 from __future__ import annotations
 
@@ -49,20 +49,13 @@ def run_demo(out: str = "frictionlab-demo", *, quick: bool = False, full: bool =
     if os.path.exists(path) and only:
         with open(path) as fh:  # keep other stages' results when re-running one stage
             summary = json.load(fh)
-    summary["stages_missing"] = []
+    summary.pop("stages_missing", None)   # written by earlier versions
     stages = [s for s in STAGES if not only or s in only]
     unknown = set(only or ()) - set(STAGES)
     if unknown:
         raise ValueError(f"unknown demo stage(s) {sorted(unknown)}; choose from {STAGES}")
     for k, name in enumerate(stages, 1):
-        try:
-            mod = importlib.import_module(STAGE_MODULES[name])
-        except ModuleNotFoundError as exc:
-            if exc.name not in (STAGE_MODULES[name], name):
-                raise
-            summary["stages_missing"].append(name)
-            report(f"[demo {k}/{len(stages)}] {name}: not available yet, skipped")
-            continue
+        mod = importlib.import_module(STAGE_MODULES[name])
         t0 = time.monotonic()
         report(f"[demo {k}/{len(stages)}] {name} ...")
         stage_quick = quick or (name in LONG_STAGES and not full)

@@ -17,55 +17,34 @@ stage) sit apart, in :mod:`plants.studies`; the library modules hold no plotting
 """
 from __future__ import annotations
 
-import importlib
-
 from .base import Experiment, Plant, PlantParams, structured
 from .components import Damper, Mass, PositionSource, Spring
 from .controllers import (PID, DiscreteBlock, DiscreteStepper, LuGreFeedforward, PIDParams,
                           StateDependentPID)
+from .damping_rig import DampingRig
+from .forging_press import ForgingPress
 from .interfaces import HydraulicPort, PartialCompliant
 from .law_stepper import FrictionComponent, FrictionStep
 from .motor import LinearMotor
+from .mre_isolator import MREIsolator
 from .sensors import AccelerationSensor, PositionSensor, VelocitySensor
 from .sources import PRBS, ColoredNoise, Sampled, SCurve, Sine, Triangle, VelocityPlateaus
 from .stepper import PlantStepper
+from .valve import ValveActuator
+from .xml350 import XML350
 
 __all__ = ["PLANTS", "make_plant", "Plant", "PlantStepper", "PlantParams", "Experiment",
            "FrictionStep", "FrictionComponent", "structured", "HydraulicPort",
            "PartialCompliant", "Mass", "Spring", "Damper", "PositionSource", "PID",
-           "PIDParams", "StateDependentPID", "LuGreFeedforward", "DiscreteBlock", "DiscreteStepper", "LinearMotor",
-           "PositionSensor", "VelocitySensor", "AccelerationSensor", "Sine", "Triangle",
-           "VelocityPlateaus", "PRBS", "ColoredNoise", "SCurve", "Sampled"]
+           "PIDParams", "StateDependentPID", "LuGreFeedforward", "DiscreteBlock",
+           "DiscreteStepper", "LinearMotor", "PositionSensor", "VelocitySensor",
+           "AccelerationSensor", "Sine", "Triangle", "VelocityPlateaus", "PRBS", "ColoredNoise",
+           "SCurve", "Sampled", "XML350", "ValveActuator", "DampingRig", "ForgingPress",
+           "MREIsolator"]
 
-#: registry name -> plant class (filled by the machine modules that exist)
-PLANTS: dict[str, type[Plant]] = {}
-
-# machine modules land one by one; each listed here registers once it exists
-_MACHINES = (("xml350", "XML350"), ("valve", "ValveActuator"), ("damping_rig", "DampingRig"),
-             ("forging_press", "ForgingPress"), ("mre_isolator", "MREIsolator"))
-
-
-def _register_machines():
-    for mod, cls in _MACHINES:
-        try:
-            m = importlib.import_module(f"{__name__}.{mod}")
-        except ModuleNotFoundError as exc:
-            if exc.name != f"{__name__}.{mod}":
-                raise
-            continue
-        except Exception as exc:  # a broken machine must not take the others down
-            import warnings
-            warnings.warn(f"plant module {mod!r} failed to import: {exc!r}")
-            continue
-        klass = getattr(m, cls, None)
-        if klass is None:  # the module may name its class differently: take the Plant subclass
-            found = [v for v in vars(m).values() if isinstance(v, type)
-                     and issubclass(v, Plant) and v is not Plant and v.__module__ == m.__name__
-                     and v.name]
-            if not found:
-                continue
-            klass = found[0]
-        PLANTS[klass.name or mod] = klass
+#: registry name -> plant class: the machines of the seed papers
+PLANTS: dict[str, type[Plant]] = {cls.name: cls for cls in (XML350, ValveActuator, DampingRig,
+                                                            ForgingPress, MREIsolator)}
 
 
 def make_plant(name: str, friction=None, **kwargs) -> Plant:
@@ -75,6 +54,3 @@ def make_plant(name: str, friction=None, **kwargs) -> Plant:
     except KeyError:
         raise ValueError(f"unknown plant {name!r}; choose from {sorted(PLANTS)}") from None
     return cls(friction, **kwargs)
-
-
-_register_machines()

@@ -122,17 +122,12 @@ class ForgingPressParams(PlantParams):
 
 
 def press_friction(**overrides) -> FrictionModel:
-    """Seed-004 friction of seals + guide: ``load_lugre`` (Tables 2, 3 per MN; lugre if absent)."""
-    from friction import MODELS, make_model
-    if "load_lugre" in MODELS:
-        base = dict(sigma0=2e10, k1_low=-0.87e-3, k2_low=0.33e-3, k3_low=0.04, k1_high=103.95e-3,
-                    k2_high=102.88e-3, k3_high=319.91)
-        base.update(overrides)
-        return make_model("load_lugre", **base)
-    base = dict(sigma0=1e9, sigma1=1e6, Fc=203.23e3, Fs=377.39e3, vs=0.076e-3,
-                sigma2=19.77e6)
+    """Seed-004 friction of seals + guide: ``load_lugre`` (Tables 2, 3 per MN)."""
+    from friction import make_model
+    base = dict(sigma0=2e10, k1_low=-0.87e-3, k2_low=0.33e-3, k3_low=0.04, k1_high=103.95e-3,
+                k2_high=102.88e-3, k3_high=319.91)
     base.update(overrides)
-    return make_model("lugre", **base)
+    return make_model("load_lugre", **base)
 
 
 def schedule_reference(t, schedule):

@@ -38,11 +38,8 @@ CURRENTS = (0.0, 1.0, 2.0, 3.0)   # A
 
 def isolator_law(current: float = 2.0) -> FrictionModel:
     """Seed-002 isolator law at coil current ``current`` [A] (simplified model, Eqs. 13-14)."""
-    from friction import MODELS, make_model
     if not 0.0 <= current <= 3.0:
         raise ValueError(f"current = {current!r} A is out of the tested range [0, 3] A")
-    if "mre_lugre" not in MODELS:
-        raise NotImplementedError("the mre_lugre law (friction/mre_lugre.py) is missing")
     from friction.mre_lugre import MRELuGre, parameters_at_current
     return MRELuGre.simplified(**parameters_at_current(current))
 

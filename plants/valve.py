@@ -70,22 +70,18 @@ class ValveParams(PlantParams):
 
 
 def valve_friction(**overrides) -> FrictionModel:
-    """Seed-000 friction of the valve guide: modified LuGre (or classic LuGre if absent).
+    """Seed-000 friction of the valve guide: modified LuGre.
 
     Fc / sigma0 = 1.235e-5 m (Euler critical velocity 0.247 m/s at 20 kHz, EQUATIONS.md A.7),
     mild asymmetry (the paper identifies two direction sets), switch band v1 = 0.1 m/s,
     v2 = 0.2 m/s below v_cr.
     """
-    from friction import MODELS, make_model
+    from friction import make_model
     base = dict(sigma0=4.86e5, sigma1=40.0, sigma2=20.0, Fc=6.0, Fs=6.5, vs=5e-3,
-                alpha=2.0, Fc_neg=5.6, Fs_neg=6.0, sigma2_neg=18.0)
-    if "modified_lugre" in MODELS:
-        base.update(f_a=2.0, a_s=20.0, v_c=0.5, beta=1.0, gamma=1.0, tau=5e-4,
-                    v1=0.1, v2=0.2)
-        base.update(overrides)
-        return make_model("modified_lugre", **base)
+                alpha=2.0, Fc_neg=5.6, Fs_neg=6.0, sigma2_neg=18.0, f_a=2.0, a_s=20.0,
+                v_c=0.5, beta=1.0, gamma=1.0, tau=5e-4, v1=0.1, v2=0.2)
     base.update(overrides)
-    return make_model("lugre", **base)
+    return make_model("modified_lugre", **base)
 
 
 def classic_lugre_twin(law: FrictionModel) -> FrictionModel:

@@ -9,18 +9,15 @@ import math
 import numpy as np
 import pytest
 
-plants = pytest.importorskip("plants")
-
-from friction import make_model  # noqa: E402
-from friction.dataset import Dataset  # noqa: E402
-from diagnosis import diagnose_trajectory  # noqa: E402
-from diagnosis.effects import CANDIDATES, make_context  # noqa: E402
-from diagnosis.trajectory import (EffectLaw, TrajectoryRecord, parse_experiment,  # noqa: E402
+import plants
+from diagnosis import diagnose_trajectory
+from diagnosis.effects import CANDIDATES, make_context
+from diagnosis.trajectory import (EffectLaw, TrajectoryRecord, parse_experiment,
                                   record_from_result, simulate_record)
-from plants.sources import Sine  # noqa: E402
-from plants.xml350 import XML350, xml350_friction  # noqa: E402
-
-pytestmark = pytest.mark.skipif("xml350" not in plants.PLANTS, reason="XML-350 not available")
+from friction import make_model
+from friction.dataset import Dataset
+from plants.sources import Sine
+from plants.xml350 import XML350, xml350_friction
 
 LUGRE_KEYS = ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "b", "shape")
 #: identification configuration of the stage: linear PID, 2 kHz current loop, no feedforward
@@ -249,8 +246,6 @@ def test_fmu_engine_agrees_with_the_in_process_plant():
     """Same equations: the plant FMU + friction FMU loop reproduces the in-process plant for
     a candidate expressed as friction-FMU parameters (direction twins and offset), far
     closer than the candidate's own effect on the trajectory."""
-    pytest.importorskip("fmpy")
-    pytest.importorskip("pythonfmu")
     opts = dict(distance=1e-4, compensation=False, controller="sdpid")
     stage = XML350(xml350_friction(), f_current=2000.0)
     rec = record_from_result(stage.simulate(0.03, **opts), opts, name="scurve")
@@ -268,8 +263,6 @@ def test_fmu_engine_runs_the_force_effects_in_the_effects_block():
     """acceleration, position and drift (EffectLaw) through the friction_effects FMU block
     between the law FMU and the plant FMU: the loop reproduces the in-process plant with the
     same EffectLaw far closer than the effects' own imprint on the trajectory."""
-    pytest.importorskip("fmpy")
-    pytest.importorskip("pythonfmu")
     opts = dict(distance=1e-4, compensation=False, controller="sdpid")
     stage = XML350(xml350_friction(), f_current=2000.0)
     rec = record_from_result(stage.simulate(0.03, **opts), opts, name="scurve")
@@ -345,7 +338,6 @@ def test_mass_error_is_named_on_the_compensated_scurve_moves():
 def test_fmu_engine_diagnosis_matches_the_plant_engine():
     """The whole diagnosis through plant FMU + friction FMU (the candidate as FMU
     parameters: the plant FMU's mass, the law FMU's twins and shape)."""
-    pytest.importorskip("fmpy")
     fit, val = _scurve_records()
     reps = {eng: diagnose_trajectory(fit, XML350(xml350_friction()), "lugre", validation=val,
                                      candidates=SCURVE_CANDIDATES, engine=eng)
@@ -361,8 +353,6 @@ def test_fmu_engine_diagnosis_matches_the_plant_engine():
 # -- the valve (seed 000): lift tracking with a frictional lag the classic LuGre lacks -------------
 @pytest.mark.slow
 def test_valve_frictional_lag_is_named():
-    if "valve" not in plants.PLANTS:
-        pytest.skip("valve not available")
     from plants.valve import ValveActuator, classic_lugre_twin, valve_friction
     truth_law = valve_friction(v1=0.3, v2=0.5)  # seed 000 law, switch band above the speeds
     truth = ValveActuator(truth_law)
@@ -392,8 +382,6 @@ def test_chronological_hold_out_of_one_record():
 
 
 def test_force_output_plants_are_sent_to_the_force_level():
-    if "damping_rig" not in plants.PLANTS:
-        pytest.skip("damping rig not available")
     rig = plants.make_plant("damping_rig")
     t = np.arange(200) * 1e-3
     with pytest.raises(ValueError, match="friction-force"):
@@ -435,7 +423,6 @@ def test_actuator_lag_outside_the_library_is_unexplained(candidates):
 def test_fmu_engine_carries_the_load_effect_on_the_press():
     """The load effect through the friction_effects block, fed by the press FMU's load
     output: the same trajectory as the in-process press with the same EffectLaw."""
-    pytest.importorskip("fmpy")
     from diagnosis.effects import Context
     from plants.forging_press import ForgingPress
     press = ForgingPress()

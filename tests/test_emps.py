@@ -20,9 +20,7 @@ import pytest
 from friction import make_model
 from plants.base import Experiment, Plant
 from plants.emps import EMPS, EMPSAxis, EMPSParams, force_error, position_metrics
-
-pytest.importorskip("scipy.io")
-studies = pytest.importorskip("plants.studies.emps")
+from plants.studies import emps as studies
 
 
 def _records():

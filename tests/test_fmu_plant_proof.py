@@ -12,12 +12,10 @@ import math
 import numpy as np
 import pytest
 
-plants = pytest.importorskip("plants")
-pytest.importorskip("pythonfmu")
-
-import friction  # noqa: E402
-from friction.metrics import nrmse  # noqa: E402
-from fmus.runtime import has_switch, law_linearisation, switch_linearisation  # noqa: E402
+import friction
+import plants
+from friction.metrics import nrmse
+from fmus.runtime import has_switch, law_linearisation, switch_linearisation
 
 
 def _lin(law, state, h, **inputs):

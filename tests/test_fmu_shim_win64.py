@@ -22,9 +22,7 @@ import zipfile
 
 import pytest
 
-pytest.importorskip("fmpy")
-
-from fmus import status_shim  # noqa: E402
+from fmus import status_shim
 
 try:
     WIN64_SHIM = status_shim.shim_library("win64")
@@ -112,7 +110,6 @@ def test_win64_shim_is_cached_by_source_hash_and_reproducible(tmp_path, monkeypa
 
 
 def test_without_mingw_the_build_warns_and_win64_keeps_pythonfmus_dll(tmp_path, monkeypatch):
-    pytest.importorskip("pythonfmu")
     import pythonfmu
     from fmus.build import build_fmu, catalogue, validate
 
@@ -397,7 +394,6 @@ def test_slave_knows_it_runs_behind_the_win64_shim(tmp_path, monkeypatch):
     # the slave keeps working after a rejected value only behind the shim (the call gives
     # fmi2Error); without it the next step is refused (fmi2Discard): on Windows it must look
     # for <id>_pythonfmu.dll in binaries/win64
-    pytest.importorskip("pythonfmu")
     import sys
     from fmus import runtime
     resources = tmp_path / "resources"

@@ -11,14 +11,11 @@ import shutil
 import textwrap
 import zipfile
 
+import fmpy
 import pytest
+from fmpy.fmi1 import FMICallException
 
-fmpy = pytest.importorskip("fmpy")
-pytest.importorskip("pythonfmu")
-
-from fmpy.fmi1 import FMICallException  # noqa: E402
-
-from fmus import status_shim  # noqa: E402
+from fmus import status_shim
 
 try:
     status_shim.shim_library()

@@ -9,9 +9,6 @@ import textwrap
 
 import pytest
 
-pytest.importorskip("fmpy")
-pytest.importorskip("pythonfmu")
-
 SCRIPT = textwrap.dedent('''
     import json, sys, glob, os
     from fmpy import simulate_fmu

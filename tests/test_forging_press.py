@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from friction import MODELS, ParameterError
+from friction import ParameterError
 from plants.forging_press import TABLE1, ForgingPress, schedule_reference, shortened_schedule
 from plants.studies.forging_press import crawl_metrics, steady_friction
 
@@ -78,8 +78,7 @@ def test_schedule_with_load_converges_in_substep(press):
 
 
 def test_default_friction_and_bad_input(press):
-    if "load_lugre" in MODELS:
-        assert press.friction.name == "load_lugre"
+    assert press.friction.name == "load_lugre"
     with pytest.raises(ParameterError, match="A1"):
         ForgingPress(A1=-1.0)
     with pytest.raises(ValueError, match="crushed"):   # a soft, thin workpiece

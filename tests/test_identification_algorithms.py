@@ -110,7 +110,7 @@ def test_process_executor_gives_the_inline_costs(data, start):
 
 
 def test_dask_local_cluster_executor(data, start):
-    distributed = pytest.importorskip("dask.distributed")
+    from dask import distributed
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
                                   dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:

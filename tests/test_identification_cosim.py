@@ -2,9 +2,6 @@
 import numpy as np
 import pytest
 
-pytest.importorskip("fmpy")
-pytest.importorskip("pythonfmu")
-
 from friction import make_model
 from friction.dataset import Dataset
 from friction.reference import simulate_mass

@@ -24,7 +24,6 @@ def test_second_order_fit_recovers_sigma0_sigma1_from_a_noisy_response():
 
 @pytest.mark.slow
 def test_xml350_protocol_end_to_end():
-    pytest.importorskip("plants.experiments")
     from identification.xml350_protocol import run_xml350_protocol
     out = run_xml350_protocol(quick=True)
     # static and dynamic steps land near the stage's own friction (Table I, final)

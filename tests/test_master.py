@@ -1,15 +1,13 @@
 """Co-simulation master: algorithms, proof against the reference, errors, external tools."""
 from __future__ import annotations
 
+import fmpy
 import numpy as np
 import pytest
 
-fmpy = pytest.importorskip("fmpy")
-pytest.importorskip("pythonfmu")
-
-from fmus.master import FMUError, Master  # noqa: E402
-from fmus.proof import mass_connections, mass_proof  # noqa: E402
-from fmus.testing import built_fmus  # noqa: E402
+from fmus.master import FMUError, Master
+from fmus.proof import mass_connections, mass_proof
+from fmus.testing import built_fmus
 
 REC = ["mass.x", "friction.F"]
 

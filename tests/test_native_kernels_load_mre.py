@@ -16,17 +16,14 @@ import sys
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, assume, event, example, given, settings
+from hypothesis import strategies as st
 
+from fmus.native import ckernels
+from fmus.native.ckernels import CLaw, NativeBuildError
 from friction._validation import ParameterError
 from friction.load_lugre import LoadLuGre, LoadLuGreParams
 from friction.mre_lugre import MRELuGre, MRELuGreParams
-
-hypothesis = pytest.importorskip("hypothesis")
-from hypothesis import HealthCheck, assume, event, example, given, settings  # noqa: E402
-from hypothesis import strategies as st  # noqa: E402
-
-from fmus.native import ckernels  # noqa: E402
-from fmus.native.ckernels import CLaw, NativeBuildError  # noqa: E402
 
 EPS = np.finfo(float).eps
 SETTINGS = settings(max_examples=60, deadline=None,

@@ -20,17 +20,14 @@ import tempfile
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, example, given, note, settings
+from hypothesis import strategies as st
 
+from fmus.native import ckernels
+from fmus.native.ckernels import CLaw, NativeBuildError, param_vector
 from friction.lugre import LuGre, LuGreParams
 from friction.modified_lugre import ModifiedLuGre, ModifiedLuGreParams
 from friction.stribeck import StaticStribeck, StribeckParams, stribeck_force
-
-hypothesis = pytest.importorskip("hypothesis")
-from hypothesis import HealthCheck, example, given, note, settings  # noqa: E402
-from hypothesis import strategies as st  # noqa: E402
-
-from fmus.native import ckernels  # noqa: E402
-from fmus.native.ckernels import CLaw, NativeBuildError, param_vector  # noqa: E402
 
 SETTINGS = settings(max_examples=50, deadline=None, database=None,
                     suppress_health_check=[HealthCheck.too_slow,

@@ -4,7 +4,6 @@ import math
 import numpy as np
 import pytest
 
-from friction import MODELS
 from plants.tables import Table2D, make_fmag_table
 from plants.studies.valve import euler_observer, loop_features, loops_at
 from plants.valve import (FREQUENCIES, SAMPLE_RATE, ValveActuator, classic_lugre_twin,
@@ -48,8 +47,7 @@ def test_table_rejects_bad_grids():
 
 def test_default_friction_is_seed_000_law_with_euler_critical_velocity():
     law = valve_friction()
-    if "modified_lugre" in MODELS:
-        assert law.name == "modified_lugre"
+    assert law.name == "modified_lugre"
     p = law.params
     assert p.Fc / p.sigma0 == pytest.approx(1.235e-5, rel=0.01)   # EQUATIONS.md A.7
     assert p.Fc / (p.sigma0 / SAMPLE_RATE) == pytest.approx(0.247, abs=0.002)
@@ -99,12 +97,11 @@ def test_euler_observer_oscillates_for_classic_lugre_not_modified(plant):
     e = o10["error"][:5]
     assert np.all(np.sign(e[1:]) == -np.sign(e[:-1]))            # flips every sample
     # modified LuGre: Gamma ~ 0 there, the error is frozen (no flip), the observer stays put
-    if "modified_lugre" in MODELS:
-        kw = {"a": a10} if "a" in law.extra_inputs else {}
-        m10 = euler_observer(law, t, v10, h_inject=t[o10["k0"]], **kw)
-        em = m10["error"][:40]
-        assert np.all(em > 0) and np.all(np.abs(em) <= abs(em[0]) * 1.0000001)
-        assert np.max(np.abs(m10["z"])) < 1.1 * law.params.Fs / law.params.sigma0
+    kw = {"a": a10} if "a" in law.extra_inputs else {}
+    m10 = euler_observer(law, t, v10, h_inject=t[o10["k0"]], **kw)
+    em = m10["error"][:40]
+    assert np.all(em > 0) and np.all(np.abs(em) <= abs(em[0]) * 1.0000001)
+    assert np.max(np.abs(m10["z"])) < 1.1 * law.params.Fs / law.params.sigma0
     # 20 Hz, 8 mm: above 2 v_cr the error grows (divergence) for the classic update
     _, v20, _ = sine_reference(t, 20.0, 8e-3)
     o20 = euler_observer(classic, t, v20)
@@ -140,10 +137,9 @@ def test_classic_lugre_has_no_vertical_loop():
     fm = loop_features(d["rec"]["v"], d["rec"]["F"], acc=d["rec"]["a"])
     assert abs(fe["vertical"]) < 0.05 and fm["horizontal"] > 0
     # the modified law's vertical loop at 10 Hz is an order of magnitude larger
-    if "modified_lugre" in MODELS:
-        dm = loops_at((10.0,), cycles=1.25)[10.0]
-        fmod = loop_features(dm["rec"]["v"], dm["true_F"], acc=dm["rec"]["a"])
-        assert fmod["vertical"] > 10 * abs(fe["vertical"])
+    dm = loops_at((10.0,), cycles=1.25)[10.0]
+    fmod = loop_features(dm["rec"]["v"], dm["true_F"], acc=dm["rec"]["a"])
+    assert fmod["vertical"] > 10 * abs(fe["vertical"])
 
 
 def test_vertical_loop_grows_with_magnitude(plant):

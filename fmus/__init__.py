@@ -1,7 +1,10 @@
 """FMI 2.0 co-simulation FMUs of the friction laws and plants, and an fmpy co-simulation master.
 
-Modules: :mod:`fmus.build` (``build_all``, the catalogue), :mod:`fmus.runtime` (the slave
-classes that travel inside the FMUs), :mod:`fmus.modeldescription` (complete
+Modules: :mod:`fmus.coupling` (the law-plant coupling: port names, units, linearisation),
+:mod:`fmus.variables` (the variables of both FMU kinds, from the parameter dataclasses),
+:mod:`fmus.recipes` (the catalogue of pythonfmu FMUs), :mod:`fmus.build` (``build_all``),
+:mod:`fmus.runtime` (the pythonfmu slave classes; travels inside the FMUs with coupling and
+variables), :mod:`fmus.native` (the C FMUs), :mod:`fmus.modeldescription` (complete
 ``modelDescription.xml``), :mod:`fmus.vendor` (unique package names inside FMUs),
 :mod:`fmus.status_shim` (the C shim in front of pythonfmu's binary: fmi2Error on bad input),
 :mod:`fmus.master` (the co-simulation master), :mod:`fmus.proof` and :mod:`fmus.plant_fmus`
@@ -12,5 +15,6 @@ container-FMU runs), :mod:`fmus.demo` (the demo stage).
 >>> paths = build_all("out/fmus")               # doctest: +SKIP
 >>> from fmus.master import Master, Connection  # doctest: +SKIP
 """
-__all__ = ["build", "master", "runtime", "modeldescription", "vendor", "proof", "plant_fmus",
+__all__ = ["coupling", "variables", "recipes", "build", "master", "runtime", "modeldescription",
+           "vendor", "proof", "plant_fmus",
            "external", "testing", "status_shim"]

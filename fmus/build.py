@@ -5,8 +5,10 @@ friction law in ``friction.MODELS``, the ``mass`` FMU of the mass+friction proof
 the ``plants`` package provides them, the plant and controller FMUs. Each FMU
 
 * carries the code it needs: ``friction`` (and ``plants``) vendored under a unique package
-  name (``_fl_<fmu>_friction``...), the slave runtime (``_fl_<fmu>_runtime``) and pythonfmu,
-  so it runs with numpy + numba only and any set of FMUs loads into one process;
+  name (``_fl_<fmu>_friction``...), the slave runtime with the coupling and the variable
+  schema (:mod:`fmus.runtime`, :mod:`fmus.coupling`, :mod:`fmus.variables` as the package
+  ``_fl_<fmu>_fmus``) and pythonfmu, so it runs with numpy + numba only and any set of FMUs
+  loads into one process;
 * has a complete ``modelDescription.xml`` (units, bounds, output dependencies,
   InitialUnknowns, DefaultExperiment; see :mod:`fmus.modeldescription`);
 * passes ``fmpy.validation.validate_fmu`` with zero problems (checked after each build).
@@ -26,109 +28,31 @@ binary for that platform as is; bad input there gives ``fmi2Discard`` at the nex
 """
 from __future__ import annotations
 
-import dataclasses
 import os
 import pathlib
 import sys
 import tempfile
-from typing import Callable
 
 from frictionlab.progress import report
 
-from . import runtime, status_shim
+from . import status_shim
 from .modeldescription import model_description_xml
+from .recipes import LAW_EXPERIMENT, FmuRecipe, catalogue  # noqa: F401 (re-exported)
 from .vendor import vendor_package
 
-__all__ = ["FmuRecipe", "catalogue", "build_fmu", "build_all", "validate", "REPO"]
+__all__ = ["FmuRecipe", "catalogue", "build_fmu", "build_all", "validate", "REPO",
+           "RUNTIME_MODULES"]
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
-
-#: default experiment of the friction-law and mass FMUs [s]
-LAW_EXPERIMENT = {"startTime": 0.0, "stopTime": 1.0, "stepSize": 1e-4}
-
-
-@dataclasses.dataclass
-class FmuRecipe:
-    """How to build one FMU.
-
-    Attributes
-    ----------
-    name : str
-        File stem (``<name>.fmu``) and the key used by ``build_all(only=...)``.
-    base : str
-        Slave base class in :mod:`fmus.runtime` (``LawSlave``, ``MassSlave``,
-        ``StepperSlave``, ``BlockSlave``).
-    variables : callable
-        Returns the :class:`fmus.runtime.Var` list (build-time, from the repository packages).
-    attributes : dict
-        Class attributes of the generated slave class; the string ``{pkg:friction}`` (or
-        ``{pkg:plants}``) is replaced by the FMU's unique vendored package name.
-    packages : tuple of str
-        Repository packages to vendor.
-    description : str
-    default_experiment : dict
-    """
-    name: str
-    base: str
-    variables: Callable[[], list]
-    attributes: dict
-    packages: tuple = ("friction",)
-    description: str = ""
-    default_experiment: dict = dataclasses.field(default_factory=lambda: dict(LAW_EXPERIMENT))
-
-    @property
-    def model_identifier(self) -> str:
-        return f"fl_{self.name}"
-
-    def package_name(self, pkg: str) -> str:
-        return f"_fl_{self.name}_{pkg}"
-
-
-def _law_recipes() -> list[FmuRecipe]:
-    import friction
-    out = []
-    for name, cls in friction.MODELS.items():
-        doc = (cls.__doc__ or name).strip().splitlines()[0]
-        out.append(FmuRecipe(
-            name=name, base="LawSlave",
-            variables=(lambda cls=cls: runtime.law_variables(cls, probe=True)),
-            attributes=dict(law=name, friction_package="{pkg:friction}"),
-            description=f"Friction law '{name}': {doc}"))
-    return out
-
-
-def _mass_recipe() -> FmuRecipe:
-    return FmuRecipe(name="mass", base="MassSlave", variables=runtime.mass_variables,
-                     attributes={}, packages=(),
-                     description="Rigid mass driven by a sinusoidal force against an "
-                                 "external friction force (mass+friction proof loop)")
-
-
-def _effects_recipe() -> FmuRecipe:
-    return FmuRecipe(name="friction_effects", base="EffectsSlave",
-                     variables=runtime.effects_variables,
-                     attributes=dict(friction_package="{pkg:friction}"),
-                     description="Friction effects block between a law FMU and a plant FMU: "
-                                 "acceleration-dependent part, load-, position- and "
-                                 "time-dependent levels (friction.extensions)")
-
-
-def _plant_recipes() -> list[FmuRecipe]:
-    try:
-        from . import plant_fmus
-    except ImportError:
-        return []
-    return plant_fmus.recipes()
-
-
-def catalogue() -> dict[str, FmuRecipe]:
-    """All FMUs this build knows, by name (laws, ``mass``, then plants and controllers)."""
-    recipes = _law_recipes() + [_mass_recipe(), _effects_recipe()] + _plant_recipes()
-    return {r.name: r for r in recipes}
-
+#: the modules of this package that travel inside every pythonfmu FMU (``_fl_<fmu>_fmus``):
+#: the slave runtime and what it imports (relative imports, so they work under any name)
+RUNTIME_MODULES = ("coupling.py", "variables.py", "runtime.py")
+def _log_categories() -> dict:
+    from pythonfmu import Fmi2Slave
+    return dict(Fmi2Slave.log_categories)
 
 def _script(recipe: FmuRecipe) -> str:
-    rt = recipe.package_name("runtime")
+    rt = recipe.package_name("fmus") + ".runtime"
     lines = [f'"""FMU slave {recipe.model_identifier} (generated by fmus.build)."""',
              f"from {rt} import {recipe.base}", "",
              "# pythonfmu <= 0.7 (issue NTNU-IHB/PythonFMU#228) re-executes this file and drops one",
@@ -161,18 +85,21 @@ def build_fmu(recipe: FmuRecipe, out: str | os.PathLike) -> pathlib.Path:
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
     dest = out / f"{recipe.name}.fmu"
-    renames = {p: recipe.package_name(p) for p in ("friction", "plants")}
+    renames = {p: recipe.package_name(p) for p in ("friction", "plants", "fmus")}
     with tempfile.TemporaryDirectory(prefix=f"flfmu_{recipe.name}_") as tmp:
         stage = pathlib.Path(tmp)
         files = []
         for pkg in recipe.packages:
             files.append(vendor_package(REPO / pkg, stage, recipe.package_name(pkg), renames))
-        rt = stage / f"{recipe.package_name('runtime')}.py"
-        rt.write_text((pathlib.Path(__file__).parent / "runtime.py").read_text())
+        rt = stage / recipe.package_name("fmus")
+        rt.mkdir()
+        (rt / "__init__.py").write_text('"""frictionlab FMU runtime (vendored by fmus.build)."""\n')
+        for module in RUNTIME_MODULES:
+            (rt / module).write_text((pathlib.Path(__file__).parent / module).read_text())
         files.append(rt)
         script = stage / f"{recipe.model_identifier}.py"
         script.write_text(_script(recipe))
-        prefixes = [recipe.model_identifier, recipe.package_name("runtime")] + \
+        prefixes = [recipe.model_identifier, recipe.package_name("fmus")] + \
             [recipe.package_name(p) for p in recipe.packages]
         path_before = list(sys.path)
         try:
@@ -184,7 +111,8 @@ def build_fmu(recipe: FmuRecipe, out: str | os.PathLike) -> pathlib.Path:
     xml = model_description_xml(recipe.variables(), model_identifier=recipe.model_identifier,
                                 guid=guid, description=recipe.description,
                                 default_experiment=recipe.default_experiment,
-                                log_categories=runtime.SlaveBase.log_categories)
+                                log_categories=_log_categories(),
+                                state=recipe.state)
     replace, rename = {"modelDescription.xml": xml}, {}
     for platform in status_shim.PLATFORMS:
         shim = status_shim.shim_or_warn(platform)

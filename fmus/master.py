@@ -132,14 +132,13 @@ def fmu_values(variables: Mapping, values: Mapping) -> dict:
     for either FMU kind; returns ``{variable name: value}`` typed for its FMI setter
     (``float`` for Real, ``int`` for Integer and Enumeration, ``bool``, ``str``).
 
-    ``variables``: name -> fmpy ``ScalarVariable`` of the FMU. Translated:
+    ``variables``: name -> fmpy ``ScalarVariable`` of the FMU. Both kinds declare the same
+    variables (:mod:`fmus.variables`), so the translation is the same. Translated:
 
-    * an option by name (``shape="lorentzian"``) -> its Enumeration code where the variable
-      is an Enumeration (native FMUs); a String variable (pythonfmu) keeps the name;
+    * an option by name (``shape="lorentzian"``) -> its Enumeration code (an integer code
+      passes as it is; a String variable, e.g. a plant's option, keeps the text);
     * an optional parameter (Python ``None``, e.g. a direction twin ``Fc_neg``): ``None`` ->
-      ``use_Fc_neg = False`` where the FMU has that Boolean flag (native), else the
-      variable's start value, which stands for "unset" there (pythonfmu); a number ->
-      ``use_Fc_neg = True`` and the number (native), the number (pythonfmu);
+      ``use_Fc_neg = False``; a number -> ``use_Fc_neg = True`` and the number;
     * Booleans (``True``, ``1``, ``"true"``), Integers and Reals by type.
 
     Raises ``ValueError`` naming an unknown variable or an untranslatable value.
@@ -152,14 +151,12 @@ def fmu_values(variables: Mapping, values: Mapping) -> dict:
         flag = variables.get(f"use_{name}")
         twin = flag is not None and flag.type == "Boolean" and var.type == "Real"
         if value is None:
-            if twin:
-                out[flag.name] = False
-                continue
-            if var.start in (None, ""):
-                raise ValueError(f"{name} = None: the FMU has neither a flag use_{name} nor an "
-                                 f"'unset' start value")
-            value = var.start  # the pythonfmu FMU's sentinel for None
-        elif twin:
+            if not twin:
+                raise ValueError(f"{name} = None: the FMU has no flag use_{name} (the "
+                                 f"parameter is not optional)")
+            out[flag.name] = False
+            continue
+        if twin:
             out[flag.name] = True
         t = var.type
         try:

@@ -2,11 +2,15 @@
 
 pythonfmu's own description has no units, no bounds and no output dependencies; tools then
 report false algebraic loops. This module writes the description from the same
-:class:`fmus.runtime.Var` list the slave registers (value reference = list index):
+:class:`fmus.variables.Var` list the slave registers (value reference = list index):
 
 * ``UnitDefinitions`` with SI ``BaseUnit`` exponents for every unit string used
   (``N.s/m``, ``m/s2``, ``m3/s`` ...);
-* ``Real`` attributes ``unit``, ``start``, ``min``/``max`` from the parameter bounds;
+* ``TypeDefinitions`` with the Enumerations of the options (``shape``: ``gaussian``,
+  ``lorentzian``), values 1..n;
+* ``Real`` attributes ``unit``, ``start``, ``min``/``max`` from the parameter bounds (an
+  exclusive bound as the next representable double, :func:`fmus.variables.fmi_min_max`);
+* ``canGetAndSetFMUstate`` / ``canSerializeFMUstate`` as the slave kind supports them;
 * ``ModelStructure``: every output with the inputs it depends on directly, and the
   ``InitialUnknowns`` (all outputs are ``initial="calculated"``) with their dependencies on
   inputs and parameters.
@@ -14,12 +18,13 @@ report false algebraic loops. This module writes the description from the same
 from __future__ import annotations
 
 import datetime
-import math
 import re
 from xml.dom.minidom import parseString
 from xml.etree.ElementTree import Element, SubElement, tostring
 
-__all__ = ["base_unit", "model_description_xml"]
+from .variables import fmi_min_max
+
+__all__ = ["base_unit", "model_description_xml", "add_unit_and_type_definitions"]
 
 # SI base-unit exponents (kg, m, s, A, K, mol, cd, rad) of the symbols we use
 _SYMBOLS = {
@@ -63,20 +68,48 @@ def _fmt(x: float) -> str:
     return repr(float(x))
 
 
+def add_unit_and_type_definitions(root, variables) -> None:
+    """``UnitDefinitions`` (SI ``BaseUnit`` exponents of every Real's unit) and
+    ``TypeDefinitions`` (the Enumerations, values 1..n) of either FMU kind's variables
+    (:class:`fmus.variables.Var` items, :class:`fmus.native.variables.NVar` enum)."""
+    units = sorted({v.unit for v in variables if v.type == "Real" and v.unit})
+    if units:
+        ud = SubElement(root, "UnitDefinitions")
+        for u in units:
+            el = SubElement(ud, "Unit", dict(name=u))
+            bu = base_unit(u)
+            if bu is not None:
+                SubElement(el, "BaseUnit", {k: str(e) for k, e in bu.items()})
+    enums = {}
+    for v in variables:
+        if v.type == "Enumeration":
+            enums.setdefault(v.enum_type, getattr(v, "items", None) or v.enum)
+    if enums:
+        td = SubElement(root, "TypeDefinitions")
+        for name, items in enums.items():
+            en = SubElement(SubElement(td, "SimpleType", dict(name=name)), "Enumeration")
+            for k, item in enumerate(items, 1):
+                SubElement(en, "Item", dict(name=item, value=str(k)))
+
+
 def model_description_xml(variables, *, model_identifier: str, guid: str, description: str = "",
                           default_experiment: dict | None = None, log_categories=None,
-                          generation_tool: str = "frictionlab (pythonfmu runtime)") -> bytes:
+                          generation_tool: str = "frictionlab (pythonfmu runtime)",
+                          state: bool = False) -> bytes:
     """Return the ``modelDescription.xml`` bytes for ``variables`` (a list of ``Var``).
 
     Parameters
     ----------
-    variables : list of fmus.runtime.Var
+    variables : list of fmus.variables.Var
         In value-reference order.
     model_identifier, guid, description : str
     default_experiment : dict, optional
         ``startTime``, ``stopTime``, ``stepSize`` (and ``tolerance``) [s].
     log_categories : dict, optional
         name -> description.
+    state : bool
+        The slave saves and restores its whole state, also serialized
+        (``canGetAndSetFMUstate``, ``canSerializeFMUstate``).
     """
     now = datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")
     root = Element("fmiModelDescription", dict(
@@ -87,16 +120,10 @@ def model_description_xml(variables, *, model_identifier: str, guid: str, descri
         modelIdentifier=model_identifier, needsExecutionTool="true",
         canHandleVariableCommunicationStepSize="true", canInterpolateInputs="false",
         canBeInstantiatedOnlyOncePerProcess="false", canNotUseMemoryManagementFunctions="true",
-        canGetAndSetFMUstate="false", canSerializeFMUstate="false"))
+        canGetAndSetFMUstate=str(bool(state)).lower(),
+        canSerializeFMUstate=str(bool(state)).lower()))
 
-    units = sorted({v.unit for v in variables if v.type == "Real" and v.unit})
-    if units:
-        ud = SubElement(root, "UnitDefinitions")
-        for u in units:
-            el = SubElement(ud, "Unit", dict(name=u))
-            bu = base_unit(u)
-            if bu is not None:
-                SubElement(el, "BaseUnit", {k: str(e) for k, e in bu.items()})
+    add_unit_and_type_definitions(root, variables)
     if log_categories:
         lc = SubElement(root, "LogCategories")
         for name, desc in log_categories.items():
@@ -121,16 +148,18 @@ def model_description_xml(variables, *, model_identifier: str, guid: str, descri
         if v.type == "Real":
             if v.unit:
                 tattrs["unit"] = v.unit
-            if v.unset is None:  # an "unset" sentinel lies outside the bounds on purpose
-                if math.isfinite(v.lower):
-                    tattrs["min"] = _fmt(v.lower)
-                if math.isfinite(v.upper):
-                    tattrs["max"] = _fmt(v.upper)
+            if v.causality == "parameter":
+                tattrs.update({k: _fmt(x) for k, x in fmi_min_max(
+                    v.lower, v.upper, v.lower_open, v.upper_open).items()})
+        elif v.type == "Enumeration":
+            tattrs["declaredType"] = v.enum_type
         if v.causality != "output":
             if v.type == "Real":
                 tattrs["start"] = _fmt(v.start)
             elif v.type == "Boolean":
                 tattrs["start"] = "true" if v.start else "false"
+            elif v.type in ("Integer", "Enumeration"):
+                tattrs["start"] = str(int(v.start))
             else:
                 tattrs["start"] = str(v.start)
         SubElement(sv, v.type, tattrs)

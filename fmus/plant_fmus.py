@@ -7,14 +7,14 @@ load the law needs). A friction-law FMU closes the loop::
 
     plant.v -> friction.v, plant.a -> friction.a, plant.x -> friction.x,
     plant.<load> -> friction.load, friction.F -> plant.F_friction
-    friction.<c> -> plant.<c> for c in runtime.COUPLING_OUTPUTS          (coupling "linearised")
+    friction.<c> -> plant.<c> for c in COUPLING_OUTPUTS          (coupling "linearised")
 
 Coupling. Holding the friction force over a communication step (``"hold"``) destabilises a
 stiff contact (the press bristle on 80 t at the 100 Hz data rate) or, where the friction
 reverses within a data period, rings a stiff, lightly damped sensor mode (the rig's 1.1 kHz
 force sensors, the isolator's 225 Hz load cell), unless the step is far below the data
 period. The default ``"linearised"`` coupling is linearly implicit: the law FMU also outputs
-its local linearisation over the coming step (``runtime.law_linearisation``; parameter
+its local linearisation over the coming step (``fmus.coupling.law_linearisation``; parameter
 ``h_lin`` = the communication step):
 
 * ``dF_dx`` [N/m], ``dF_dv`` [N.s/m]: slopes of its step map against the travel and the end
@@ -26,7 +26,7 @@ its local linearisation over the coming step (``runtime.law_linearisation``; par
   step, the residual is piecewise linear instead, with this change of slope there (|v|);
 * a law whose coefficients jump at |v| = vc (``load_lugre``): ``v_switch`` [m/s] and the
   other side's force and slopes (``dF_switch``, ``dF_dx_switch``, ``dF_dv_switch``;
-  ``runtime.switch_linearisation``). The plant's substeps hold the side of their own
+  ``fmus.coupling.switch_linearisation``). The plant's substeps hold the side of their own
   velocity, cut at the crossing and slide along |v| = vc (Filippov) where both sides push
   onto it; the plant's output ``low_share`` (share of the step below vc, a sliding stretch
   with its Filippov weight) goes back to the law, whose bristle state advances with that mix
@@ -54,9 +54,9 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from . import runtime
+from .coupling import COUPLING_OUTPUTS, MEAN_INPUT, SHARE_INPUT, SWITCH_OUTPUTS, has_switch
 
-__all__ = ["recipes", "plant_connections", "classic_lugre_for", "plant_laws",
+__all__ = ["plant_connections", "classic_lugre_for", "plant_laws",
            "plant_master", "plant_proof", "coupling_step", "data_step", "MAX_COUPLING_STEP",
            "COUPLINGS", "LOAD_SIGNALS", "XML350_ORDER", "XML350_CONNECTIONS",
            "xml350_loop_master"]
@@ -66,56 +66,6 @@ COUPLINGS = ("linearised", "hold")
 
 #: plant output carrying the friction law's load input, in order of preference
 LOAD_SIGNALS = ("load", "F_sigma", "F_N")
-
-
-def recipes():
-    """Build recipes of the plant FMUs (one per registered plant)."""
-    from .build import FmuRecipe
-    import plants
-    out = []
-    for name, cls in plants.PLANTS.items():
-        de = cls.default_experiment
-        doc = (cls.__doc__ or name).strip().splitlines()[0]
-        out.append(FmuRecipe(
-            name=name, base="StepperSlave",
-            variables=(lambda cls=cls: runtime.plant_variables(cls, probe=True)),
-            attributes=dict(plant=name, plants_package="{pkg:plants}"),
-            packages=("friction", "plants"),
-            description=f"Plant '{name}' with external friction (input F_friction): {doc}",
-            default_experiment={"startTime": float(de.start), "stopTime": float(de.stop),
-                                "stepSize": float(de.step)}))
-    out += _xml350_part_recipes()
-    return out
-
-
-def _xml350_part_recipes():
-    """The XML-350 loop from parts: stage mechanics, SD-PID, LuGre feedforward, trajectory."""
-    from .build import FmuRecipe
-    try:
-        from plants import xml350
-    except ImportError:
-        return []
-    mech = xml350.XML350Mechanics
-    de = {"startTime": 0.0, "stopTime": float(mech.default_experiment.stop),
-          "stepSize": float(mech.default_experiment.step)}
-    out = [FmuRecipe(
-        name="xml350_mechanics", base="StepperSlave",
-        variables=lambda: runtime.plant_variables(mech, probe=True),
-        attributes=dict(plant="xml350:XML350Mechanics", plants_package="{pkg:plants}"),
-        packages=("friction", "plants"), default_experiment=dict(de),
-        description="XML-350 stage mechanics (current loop, mass, encoder) with external "
-                    "friction: inputs i_cmd [A], F_friction [N]")]
-    descs = {"sdpid": "State-dependent PID of seed 003 Eq. (15) (acceleration units) with "
-                      "current command output i_cmd = M_ctrl u / Kf",
-             "lugre_feedforward": "LuGre friction feedforward of seed 003 Eq. (16)",
-             "xml350_trajectory": "S-curve point-to-point trajectory of the XML-350 tests"}
-    for kind, desc in descs.items():
-        out.append(FmuRecipe(
-            name=kind, base="BlockSlave",
-            variables=(lambda kind=kind: runtime.block_variables(kind, "plants")),
-            attributes=dict(block=kind, plants_package="{pkg:plants}"),
-            packages=("friction", "plants"), default_experiment=dict(de), description=desc))
-    return out
 
 
 #: the XML-350 loop from part FMUs: Gauss-Seidel order and connections (the controller
@@ -159,12 +109,12 @@ def plant_connections(plant_cls, law_cls, coupling: str = "hold") -> list[tuple[
     outs = plant_cls(external_friction=True).all_output_names
     conns = [("plant.v", "friction.v"), ("friction.F", "plant.F_friction")]
     if coupling == "linearised":
-        conns += [(f"friction.{n}", f"plant.{n}") for n in runtime.COUPLING_OUTPUTS]
+        conns += [(f"friction.{n}", f"plant.{n}") for n in COUPLING_OUTPUTS]
         if law_cls.state_names:   # the law's state follows the plant's travel
-            conns.append((f"plant.{runtime.MEAN_INPUT}", f"friction.{runtime.MEAN_INPUT}"))
-        if runtime.has_switch(law_cls):   # coefficients jump at |v| = v_switch
-            conns += [(f"friction.{n}", f"plant.{n}") for n in runtime.SWITCH_OUTPUTS]
-            conns.append((f"plant.{runtime.SHARE_INPUT}", f"friction.{runtime.SHARE_INPUT}"))
+            conns.append((f"plant.{MEAN_INPUT}", f"friction.{MEAN_INPUT}"))
+        if has_switch(law_cls):   # coefficients jump at |v| = v_switch
+            conns += [(f"friction.{n}", f"plant.{n}") for n in SWITCH_OUTPUTS]
+            conns.append((f"plant.{SHARE_INPUT}", f"friction.{SHARE_INPUT}"))
     if "a" in law_cls.extra_inputs:
         conns.append(("plant.a", "friction.a"))
     if "x" in law_cls.extra_inputs:
@@ -250,7 +200,7 @@ def plant_master(fmu_dir, plant_name: str, law, *, algorithm: str = "gauss-seide
             "friction": fmu_file(fmu_dir, law.name, native)}
     main = cls.main_output
     params = _law_params(law)
-    if runtime.has_switch(type(law)) and "vc" not in params and \
+    if has_switch(type(law)) and "vc" not in params and \
             "vc" in {f.name for f in dataclasses.fields(law.params)}:
         # the regime-split velocity the law derives (load_lugre: Eq. 13's root), passed as
         # the very double the reference uses: a root finder of the FMU's own may land an ulp
@@ -262,14 +212,11 @@ def plant_master(fmu_dir, plant_name: str, law, *, algorithm: str = "gauss-seide
         params["inputs_at_step_end"] = algorithm == "gauss-seidel"
         if law.state_names:  # plant.v_mean of the same step (Gauss-Seidel, plant first)
             params["use_v_mean"] = algorithm == "gauss-seidel"
+        if has_switch(type(law)):  # plant.low_share of the same step, likewise
+            params["use_low_share"] = algorithm == "gauss-seidel"
     m = Master(fmus, plant_connections(cls, type(law), coupling), algorithm=algorithm,
                parameters={"friction": params}, iterations=iterations,
                record=record or [f"plant.{main}", "friction.F"])
-    if coupling == "linearised" and runtime.has_switch(type(law)) and \
-            "use_low_share" in m.instances["friction"].vars:
-        # the native law reads plant.low_share only when told to (the pythonfmu law whenever
-        # it is >= 0 with inputs_at_step_end, which the plant's output always is)
-        m.parameters["friction"]["use_low_share"] = algorithm == "gauss-seidel"
     return m
 
 

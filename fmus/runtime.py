@@ -1,45 +1,59 @@
-"""FMU-side runtime: the ``Fmi2Slave`` classes that every frictionlab FMU runs.
+"""The pythonfmu slave runtime: the ``Fmi2Slave`` classes that every pythonfmu FMU runs.
 
-This module travels inside each FMU (vendored under a unique name such as
-``_fl_lugre_runtime``); it needs only ``pythonfmu`` (bundled by the builder), numpy, and the
-vendored ``friction`` / ``plants`` copies whose module names the generated slave script
-passes in. It must not import frictionlab, scipy or matplotlib.
+This module travels inside each pythonfmu FMU with :mod:`fmus.coupling` and
+:mod:`fmus.variables` (vendored as the package ``_fl_<fmu>_fmus``, see :mod:`fmus.build`); it
+needs only ``pythonfmu`` (bundled by the builder), numpy, and the vendored ``friction`` /
+``plants`` copies whose module names the generated slave script passes in. It must not import
+frictionlab, scipy or matplotlib.
 
-Three slave kinds share one base:
+Five slave kinds share one base (:class:`SlaveBase`):
 
 * :class:`LawSlave` - a friction law from ``friction.MODELS``. Inputs ``v`` [m/s] (and
   ``a``, ``load``, ``x`` when the law needs them), outputs ``F`` [N] (direct feedthrough
-  of the inputs) and the law's states. Parameters come from the law's ``Params`` metadata.
+  of the inputs), the coupling outputs (:mod:`fmus.coupling`) and the law's states.
 * :class:`MassSlave` - a rigid mass driven by a built-in force signal plus the inputs
   ``F_ext`` and ``F_friction`` (the mass+friction proof loop).
+* :class:`EffectsSlave` - the ``friction_effects`` block (``friction.extensions``).
 * :class:`StepperSlave` - a plant of the ``plants`` package in external-friction mode through
   its ``stepper()`` (numpy/numba only);
 * :class:`BlockSlave` - a discrete block of the XML-350 loop (state-dependent PID, LuGre
   feedforward, S-curve trajectory) through ``plants.controllers.DiscreteStepper``.
 
-The variable list of a slave (:func:`law_variables`, :func:`mass_variables`, ...) is the single
-source for both the runtime and the ``modelDescription.xml`` written by ``fmus.build``: the
-value reference of a variable is its index in that list.
+The variable list of a slave (:mod:`fmus.variables`) is the single source for both the runtime
+and the ``modelDescription.xml`` written by ``fmus.build``: the value reference of a variable
+is its index in that list. Options are Enumerations (set with ``fmi2SetInteger``, codes
+1..n), an optional parameter is used when its Boolean ``use_<name>`` is true.
 
-Bad input: a NaN/inf on any input or parameter, or a parameter outside its bounds, is never
-stored: ``set_real`` logs it at error level naming the variable and its bound and keeps the
-previous value, so ``fmi2SetReal`` returns ``fmi2Error`` and the instance keeps working. The
-status comes from the FMU's status shim (``fmus/shim``, in front of pythonfmu's binary on
-linux64 and win64): a call during which the slave logged an error returns ``fmi2Error``. The
-slaves never raise, because pythonfmu 0.7 turns an exception into ``fmi2Fatal`` and destroys
-the instance (and leaves the embedding interpreter corrupt: a later garbage collection
-segfaults). An inadmissible parameter combination (found when the model is built), a failed
-output evaluation or a step that would produce a non-finite output is logged at error level by
-the call that finds it, and every later ``fmi2DoStep`` is refused (``do_step`` returns False)
-with the message again; these give ``fmi2Error`` too. Without the shim (an FMU built without
-a C compiler for linux64 or without MinGW-w64 for win64) the statuses are pythonfmu's: the
-call that logs answers ``fmi2OK``, so a rejected value also refuses the next ``fmi2DoStep``,
-with ``fmi2Discard``.
+Bad input: a NaN/inf on any input or parameter, a parameter outside its bounds or an
+Enumeration code that is not an item is never stored: the setter logs it at error level
+naming the variable and its bound and keeps the previous value, so the call returns
+``fmi2Error`` and the instance keeps working. ``fmi2DoStep`` with a step size that is not
+finite and > 0 is refused the same way. The status comes from the FMU's status shim
+(``fmus/shim``, in front of pythonfmu's binary on linux64 and win64): a call during which the
+slave logged an error returns ``fmi2Error``. The slaves never raise, because pythonfmu 0.7
+turns an exception into ``fmi2Fatal`` and destroys the instance (and leaves the embedding
+interpreter corrupt: a later garbage collection segfaults). An inadmissible parameter
+combination (found when the model is built), a failed output evaluation or a step that would
+produce a non-finite output is logged at error level by the call that finds it, and every
+later ``fmi2DoStep`` is refused (``do_step`` returns False) with the message again; these give
+``fmi2Error`` too. Without the shim (an FMU built without a C compiler for linux64 or without
+MinGW-w64 for win64) the statuses are pythonfmu's: the call that logs answers ``fmi2OK``, so a
+rejected value also refuses the next ``fmi2DoStep``, with ``fmi2Discard``.
+
+FMU state: ``fmi2GetFMUstate`` / ``fmi2SetFMUstate`` (pythonfmu calls ``_get_fmu_state`` /
+``_set_fmu_state``) save and restore everything a step depends on - the variable values, the
+time, the law's state and input history, the parameters the model was built from - so a
+rollback and redo repeats the first run bit for bit; the state serializes to JSON (exact
+floats) and restores into another instance of the same FMU. A kind that cannot save its state
+(:attr:`SlaveBase.can_get_state` false: the plants and loop blocks, whose steppers hold
+numba-compiled state) answers ``fmi2Error`` with a message instead, and its model description
+says ``canGetAndSetFMUstate="false"``.
 """
 from __future__ import annotations
 
 import dataclasses
 import importlib
+import json
 import math
 import operator
 import os
@@ -50,483 +64,17 @@ from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability
 from pythonfmu.enums import Fmi2Status
 from pythonfmu.variables import Boolean, Integer, Real, String
 
-__all__ = ["Var", "law_variables", "mass_variables", "plant_variables", "block_variables",
-           "SlaveBase", "LawSlave", "MassSlave", "StepperSlave", "BlockSlave", "INPUT_INFO",
-           "behind_status_shim",
-           "BLOCKS"]
+from .coupling import (COUPLING_OUTPUTS, INPUT_INFO, MEAN_INPUT, SHARE_INPUT,  # noqa: F401
+                       SWITCH_OUTPUTS, has_switch, law_inputs, law_linearisation,
+                       switch_linearisation)
+from .variables import (BLOCKS, EFFECTS_INPUTS, Var, block_variables,  # noqa: F401
+                        effects_variables, law_variables, mass_variables, plant_variables)
 
-#: unit and description of the kinematic inputs a law may need
-INPUT_INFO = {
-    "v": ("m/s", "sliding velocity"),
-    "a": ("m/s2", "acceleration"),
-    "load": ("N", "normal / deformation load"),
-    "x": ("m", "displacement"),
-}
+__all__ = ["SlaveBase", "LawSlave", "MassSlave", "StepperSlave", "BlockSlave", "EffectsSlave",
+           "behind_status_shim", "STATE_FORMAT"]
 
-
-@dataclasses.dataclass
-class Var:
-    """One FMU variable (what the model description lists and the runtime stores)."""
-    name: str
-    causality: str                  # "parameter" | "input" | "output"
-    type: str = "Real"              # "Real" | "Integer" | "Boolean" | "String"
-    start: object = 0.0
-    unit: str = ""
-    description: str = ""
-    lower: float = -math.inf
-    upper: float = math.inf
-    lower_open: bool = False
-    upper_open: bool = False
-    #: optional parameter (Python ``None``): this start value stands for "unset"
-    unset: float | None = None
-    #: outputs: names of the inputs they depend on directly (feedthrough)
-    depends: tuple = ()
-
-    def bound_text(self) -> str:
-        parts = []
-        if self.lower > -math.inf:
-            parts.append(f"{'>' if self.lower_open else '>='} {self.lower:g}")
-        if self.upper < math.inf:
-            parts.append(f"{'<' if self.upper_open else '<='} {self.upper:g}")
-        return " and ".join(parts) or "finite"
-
-    def admissible(self, value: float) -> bool:
-        if self.unset is not None and value == self.unset:
-            return True
-        if not math.isfinite(value):
-            return False
-        if value < self.lower or (self.lower_open and value == self.lower):
-            return False
-        if value > self.upper or (self.upper_open and value == self.upper):
-            return False
-        return True
-
-
-# -- variable lists ------------------------------------------------------------------------
-
-def _param_vars(params_cls) -> list[Var]:
-    """FMU parameters from a frozen parameter dataclass (``friction.base.param`` metadata)."""
-    out = []
-    for f in dataclasses.fields(params_cls):
-        if f.name.startswith("_"):
-            continue
-        md = f.metadata
-        default = f.default
-        if default is dataclasses.MISSING:
-            if f.default_factory is not dataclasses.MISSING:  # type: ignore[misc]
-                default = f.default_factory()  # type: ignore[misc]
-            else:
-                continue
-        desc = md.get("description", f"{f.name} (see {params_cls.__name__})")
-        unit = md.get("unit", "")
-        if isinstance(default, bool):
-            out.append(Var(f.name, "parameter", "Boolean", bool(default), "", desc))
-            continue
-        if isinstance(default, str):
-            out.append(Var(f.name, "parameter", "String", default, "", desc))
-            continue
-        if isinstance(default, int) and not md:
-            out.append(Var(f.name, "parameter", "Integer", int(default), "", desc))
-            continue
-        if default is not None and not isinstance(default, (int, float)):
-            continue  # arrays, nested objects: not an FMU scalar
-        lower, upper = md.get("lower", -math.inf), md.get("upper", math.inf)
-        v = Var(f.name, "parameter", "Real", None, unit, desc, lower, upper,
-                md.get("lower_open", False), md.get("upper_open", False))
-        if default is None:
-            # optional value (e.g. a direction-dependent twin): a start value outside the
-            # admissible range stands for Python None
-            v.unset = (lower - 1.0) if math.isfinite(lower) else (upper + 1.0 if math.isfinite(upper) else 0.0)
-            v.start = v.unset
-            v.description = f"{desc} [FMU: {v.unset:g} = None]"
-        else:
-            v.start = float(default)
-        if unit and "[" not in v.description:
-            v.description = f"{v.description} [{unit}]"
-        v.description += f" ({v.bound_text()})" if v.bound_text() != "finite" else ""
-        out.append(v)
-    return out
-
-
-#: probe point of the feedthrough test (typical magnitudes; perturbed by 10 % each)
-_PROBE = {"v": 1e-3, "a": 0.5, "load": 1e3, "x": 1e-4}
-
-
-def law_feedthrough(model_cls, inputs) -> tuple:
-    """Inputs the force output depends on directly, probed at the default parameters.
-
-    ``F`` is evaluated by the law's ``force(state, v, **inputs)`` at a probe point and with
-    each input perturbed; an input that changes ``F`` is a direct dependency. (A law whose
-    structure changes with a parameter, e.g. modified LuGre with tau = 0 where F_d becomes
-    algebraic in ``a``, is described at its defaults.)
-    """
-    try:
-        model = model_cls()
-        state = np.asarray(model.initial_state(), dtype=float)
-        base = {n: _PROBE[n] for n in inputs}
-
-        def F(vals):
-            kw = {k: vals[k] for k in inputs if k != "v"}
-            return float(model.force(state, vals["v"], **kw))
-
-        f0 = F(base)
-        deps = []
-        for n in inputs:
-            pert = dict(base)
-            pert[n] = base[n] * 1.1 + 1e-9
-            if abs(F(pert) - f0) > 1e-12 * (1.0 + abs(f0)):
-                deps.append(n)
-        return tuple(deps)
-    except Exception:  # noqa: BLE001 - cannot probe: declare every input (safe side)
-        return tuple(inputs)
-
-
-def law_variables(model_cls, probe: bool = False) -> list[Var]:
-    """Parameters, inputs and outputs of the FMU of a friction law class.
-
-    ``probe=True`` (build time) narrows the declared dependencies of ``F`` to the inputs
-    it really depends on (:func:`law_feedthrough`); otherwise all inputs are declared.
-    """
-    vs = _param_vars(model_cls.Params)
-    inputs = ["v"] + [n for n in ("a", "load", "x") if n in model_cls.extra_inputs]
-    for n in inputs:
-        unit, desc = INPUT_INFO[n]
-        vs.append(Var(n, "input", "Real", 0.0, unit, f"{desc} [{unit}]"))
-    switching = has_switch(model_cls)
-    if model_cls.state_names:
-        vs.append(Var(MEAN_INPUT, "input", "Real", 0.0, "m/s",
-                      "mean velocity over the last step, travel / step (connect plant.v_mean; "
-                      "used with use_v_mean) [m/s]"))
-        vs.append(Var("use_v_mean", "parameter", "Boolean", False, "",
-                      "advance the state over a step with the input v_mean (the plant's "
-                      "travel) instead of the velocities at both ends"))
-    if switching:
-        vs.append(Var(SHARE_INPUT, "input", "Real", -1.0, "1",
-                      "share of the last step the plant spent below v_switch (connect "
-                      "plant.low_share; with inputs_at_step_end the bristle state advances "
-                      "with that mix of both regimes; negative: not connected, the regime of "
-                      "the mid-step velocity) [1] (<= 1)", upper=1.0))
-    deps = law_feedthrough(model_cls, inputs) if probe else tuple(inputs)
-    vs.append(Var("F", "output", "Real", None, "N", "friction force [N]", depends=deps))
-    vs += coupling_variables(inputs, switching)
-    units = getattr(model_cls, "state_units", None)
-    for j, s in enumerate(model_cls.state_names):
-        unit = units[j] if units else ("m" if j == 0 else "N" if s.startswith("F") else "")
-        desc = "bristle deflection" if j == 0 else f"internal state {s}"
-        vs.append(Var(s, "output", "Real", None, unit,
-                      f"{desc}" + (f" [{unit}]" if unit else ""), depends=()))
-    return vs
-
-
-#: outputs of a law FMU for the linearly implicit coupling (see :func:`law_linearisation`)
-COUPLING_OUTPUTS = ("dF_dx", "dF_dv", "dF_dt", "d2F_dt2", "t_kink", "dF_dt_kink")
-#: extra coupling outputs of a law whose coefficients jump at |v| = v_switch
-#: (:func:`switch_linearisation`), and the plant output / law input of the share of a step
-#: spent below it
-SWITCH_OUTPUTS = ("v_switch", "dF_switch", "dF_dx_switch", "dF_dv_switch")
-SHARE_INPUT = "low_share"
-#: law input / plant output: mean velocity over the last step (the plant's travel / step)
-MEAN_INPUT = "v_mean"
-
-
-def has_switch(model_cls) -> bool:
-    """Whether the law's coefficients jump at a switching speed (``regimes()``)."""
-    return callable(getattr(model_cls, "regimes", None))
-
-
-def coupling_variables(inputs, switching: bool = False) -> list[Var]:
-    """Parameters ``h_lin``, ``inputs_at_step_end`` and outputs ``dF_dx``, ``dF_dv``,
-    ``dF_dt``, ``d2F_dt2`` of a law FMU: the local linearisation of the law over the coming
-    step (computed from the current inputs, so they depend directly on every input); with
-    ``switching`` also ``v_switch``, ``dF_switch``, ``dF_dx_switch``, ``dF_dv_switch``."""
-    def out(name, unit, description):
-        return Var(name, "output", "Real", None, unit, f"{description} [{unit}]",
-                   depends=tuple(inputs))
-
-    extra = [] if not switching else [
-        out("v_switch", "m/s", "speed |v| at which the law's coefficients jump (0: none)"),
-        out("dF_switch", "N", "force of the other side of v_switch minus this side's, at "
-                              "the current state and inputs"),
-        out("dF_dx_switch", "N/m", "dF_dx of the other side of v_switch minus this side's"),
-        out("dF_dv_switch", "N.s/m", "dF_dv of the other side of v_switch minus this side's"),
-    ]
-    return extra + [
-        Var("h_lin", "parameter", "Real", 0.0, "s",
-            "horizon of the coupling linearisation dF_dx, dF_dv, dF_dt, normally the "
-            "communication step [s] (0: not computed, the outputs stay 0) (>= 0)", 0.0),
-        Var("inputs_at_step_end", "parameter", "Boolean", False, "",
-            "the inputs set before fmi2DoStep are the values at the end of the step "
-            "(Gauss-Seidel after the plant): the state advances with the inputs at both "
-            "ends (first-order hold) instead of holding them"),
-        out("dF_dx", "N/m", "slope of F against the travel over the coming step (h_lin)"),
-        out("dF_dv", "N.s/m", "slope of F against the end velocity of the coming step (h_lin)"),
-        out("dF_dt", "N/s", "rate of F over the coming step (h_lin) along the motion "
-                            "extrapolated from the last two input samples, beyond dF_dx and "
-                            "dF_dv"),
-        out("d2F_dt2", "N/s2", "curvature of that rate over the coming step (h_lin)"),
-        out("t_kink", "s", "time into the coming step at which the extrapolated velocity "
-                           "reverses (0: no reversal)"),
-        out("dF_dt_kink", "N/s", "change of dF_dt at t_kink (the force's kink where |v| "
-                                 "turns)"),
-    ]
-
-
-def law_linearisation(kernel, theta, state, inputs: dict, h: float,
-                      dv_dt: float | None = None, d2v_dt2: float = 0.0) -> tuple:
-    """Local linearisation ``(dF_dx, dF_dv[, dF_dt, d2F_dt2])`` of a law over a step ``h`` [s].
-
-    The law's own step map (its kernel over ``[0, h]``: state update with the velocity at
-    both ends, force at the end) is differentiated by finite differences around the nominal
-    step (velocity ``v`` held, or ``v -> v + dv_dt h`` when ``dv_dt`` is given; other inputs
-    held): ``dF_dv`` shifts the end velocity at equal travel, ``dF_dx`` the travel (both
-    velocities shifted). A plant that
-    integrates its step with ``F(t) = F_k + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k)
-    + dF_dt (t - t_k)`` then sees the law's stiffness (sticking: about ``sigma0`` and
-    ``sigma1 + sigma2``; sliding: the relaxed bristle and the viscous slope) inside its own
-    integrator. Where the law is not differentiable (``|v|`` at rest, a regime switch), the
-    one-sided pair of smaller size is taken (a jump is not a slope).
-
-    With ``dv_dt`` [m/s^2] (the motion's expected acceleration) the residual ``R(t)`` of
-    the slopes along the extrapolated motion ``v(t) = v + dv_dt t`` is returned too: the
-    step map gives the force at ``h/2`` and ``h``, ``R = F - F_0 - dF_dx dx - dF_dv dv``
-    (``F_0``: the force now) there, and ``R(t) = dF_dt t + d2F_dt2 t^2 / 2`` through both
-    points carries what the slopes miss, e.g. the velocity reversing inside the step.
-
-    Parameters
-    ----------
-    kernel : callable
-        The law's ``_kernel(t, v, a, load, x, theta, method, state0)``.
-    theta, state : ndarray
-        Packed parameters and current state.
-    inputs : dict
-        Current inputs ``v`` and whichever of ``a``, ``load``, ``x`` the law takes.
-    h : float
-        Horizon [s] (> 0).
-    dv_dt : float, optional
-        Expected acceleration over the step [m/s^2].
-    """
-    v = float(inputs["v"])
-    x = float(inputs.get("x", 0.0))
-    t2 = np.array([0.0, h])
-    empty = np.zeros(0)
-    a2 = np.full(2, float(inputs["a"])) if "a" in inputs else empty
-    l2 = np.full(2, float(inputs["load"])) if "load" in inputs else empty
-
-    def f_end(v0, v1, x1):
-        x2 = np.array([x, x1]) if "x" in inputs else empty
-        F, _ = kernel(t2, np.array([v0, v1]), a2, l2, x2, theta, 0, state)
-        return float(F[1])
-
-    # nominal step: velocity v -> v1 (held, or along the extrapolated motion)
-    v1 = v if dv_dt is None else v + (dv_dt + 0.5 * d2v_dt2 * h) * h
-    trav = 0.5 * (v + v1) * h
-    dv = 1e-6 * max(abs(v), abs(v1)) + 1e-9
-    F0 = f_end(v, v1, x + trav)
-    best = None
-    for d in (dv, -dv):
-        D = (f_end(v - d, v1 + d, x + trav) - F0) / d          # end velocity, same travel
-        K = (f_end(v + d, v1 + d, x + trav + d * h) - F0 - D * d) / (d * h)   # travel
-        size = abs(K) * h + abs(D)
-        if best is None or size < best[0]:
-            best = (size, K, D)
-    K, D = best[1], best[2]
-    if dv_dt is None:
-        return K, D
-    one = np.zeros(1)
-    F_now, _ = kernel(one, np.array([v]), a2[:1], l2[:1],
-                      np.array([x]) if "x" in inputs else empty, theta, 0, state)
-    F_now = float(F_now[0])
-
-    def v_at(tau):
-        return v + (dv_dt + 0.5 * d2v_dt2 * tau) * tau
-
-    def residual(tau):
-        vt = v_at(tau)
-        travel = 0.5 * (v + vt) * tau
-        t2[1] = tau
-        return f_end(v, vt, x + travel) - F_now - K * travel - D * (vt - v)
-
-    t_kink = _reversal_time(v, dv_dt, d2v_dt2, h)
-    if t_kink is not None:
-        # the velocity reverses inside the step: |v| kinks the force there, so the
-        # residual is piecewise linear through 0, t_kink and h
-        r_k, r_end = residual(t_kink), residual(h)
-        t2[1] = h
-        s1 = r_k / t_kink
-        s2 = (r_end - r_k) / (h - t_kink)
-        return K, D, s1, 0.0, t_kink, s2 - s1
-    r_mid, r_end = residual(0.5 * h), residual(h)
-    t2[1] = h
-    curv = 4.0 * (r_end - 2.0 * r_mid) / (h * h)       # R'' (R quadratic through 0, mid, end)
-    return K, D, (r_end - 0.5 * curv * h * h) / h, curv, 0.0, 0.0
-
-
-def _reversal_time(v, a, b, h):
-    """First time in (0.02 h, 0.98 h) at which v + a t + b t^2 / 2 changes sign, or None."""
-    if v == 0.0:
-        return None
-    roots = []
-    if b == 0.0:
-        if a != 0.0:
-            roots.append(-v / a)
-    else:
-        disc = a * a - 2.0 * b * v
-        if disc >= 0.0:
-            q = math.sqrt(disc)
-            roots += [(-a - q) / b, (-a + q) / b]
-    inside = [t for t in roots if 0.02 * h < t < 0.98 * h]
-    return min(inside) if inside else None
-
-
-def switch_linearisation(kernel, thetas: dict, vc: float, state, inputs: dict, h: float,
-                         dv_dt: float | None = None, d2v_dt2: float = 0.0) -> tuple:
-    """Coupling outputs of a law whose coefficients jump at |v| = ``vc`` [m/s].
-
-    Each side of the switch is a smooth law (``thetas["low"]``, ``thetas["high"]``: the
-    packed parameters of :func:`friction.regimes.regime_split`). The side of the current
-    velocity gives :func:`law_linearisation` (so no finite difference straddles the jump);
-    the other side adds ``(vc, dF_switch, dF_dx_switch, dF_dv_switch)``: its force at the
-    current state and inputs minus this side's, and the differences of its slopes. A plant
-    that holds the side of its own velocity in each substep then sees the jump where it
-    happens inside the step (``plants.base.PlantStepper``).
-    """
-    side = "low" if abs(float(inputs["v"])) < vc else "high"
-    other = "high" if side == "low" else "low"
-    lin = law_linearisation(kernel, thetas[side], state, inputs, h, dv_dt, d2v_dt2)
-    K2, D2 = law_linearisation(kernel, thetas[other], state, inputs, h)[:2] if dv_dt is None \
-        else law_linearisation(kernel, thetas[other], state, inputs, h, dv_dt, d2v_dt2)[:2]
-    empty = np.zeros(0)
-    one = np.zeros(1)
-    args = [np.array([float(inputs[n])]) if n in inputs else empty
-            for n in ("v", "a", "load", "x")]
-    F_side = float(kernel(one, *args, thetas[side], 0, state)[0][0])
-    F_other = float(kernel(one, *args, thetas[other], 0, state)[0][0])
-    return tuple(lin) + (vc, F_other - F_side, K2 - lin[0], D2 - lin[1])
-
-
-__all__ += ["COUPLING_OUTPUTS", "SWITCH_OUTPUTS", "SHARE_INPUT", "MEAN_INPUT", "has_switch",
-            "coupling_variables", "law_linearisation", "switch_linearisation",
-            "plant_coupling_inputs"]
-
-
-def mass_variables() -> list[Var]:
-    """A rigid mass on a line, driven by u(t) = u0 + u_amp sin(2 pi u_freq t) + F_ext - F_friction."""
-    return [
-        Var("m", "parameter", "Real", 1.0, "kg", "moving mass [kg] (> 0)", 0.0, math.inf, True),
-        Var("x0", "parameter", "Real", 0.0, "m", "initial position [m]"),
-        Var("v0", "parameter", "Real", 0.0, "m/s", "initial velocity [m/s]"),
-        Var("u0", "parameter", "Real", 0.0, "N", "constant drive force [N]"),
-        Var("u_amp", "parameter", "Real", 2.0, "N", "amplitude of the sinusoidal drive force [N]"),
-        Var("u_freq", "parameter", "Real", 1.0, "Hz", "frequency of the drive force [Hz] (>= 0)",
-            0.0),
-        Var("F_friction", "input", "Real", 0.0, "N", "friction force opposing the motion [N]"),
-        Var("F_ext", "input", "Real", 0.0, "N", "additional external force along +x [N]"),
-        Var("x", "output", "Real", None, "m", "position [m]"),
-        Var("v", "output", "Real", None, "m/s", "velocity [m/s]"),
-        Var("a", "output", "Real", None, "m/s2", "acceleration [m/s2]",
-            depends=("F_friction", "F_ext")),
-    ]
-
-
-def _option_vars(options: dict) -> list[Var]:
-    """Scalar experiment options of a plant as FMU parameters (None/tuples are not exposed)."""
-    out = []
-    for k, v in options.items():
-        desc = f"experiment option {k} (see the plant's options)"
-        if isinstance(v, bool):
-            out.append(Var(k, "parameter", "Boolean", v, "", desc))
-        elif isinstance(v, str):
-            out.append(Var(k, "parameter", "String", v, "", desc))
-        elif isinstance(v, (int, float)):
-            out.append(Var(k, "parameter", "Real", float(v), "", desc))
-    return out
-
-
-def plant_feedthrough(plant_cls) -> dict:
-    """Outputs of the external-friction plant that change at once with ``F_friction``."""
-    try:
-        st = plant_cls(external_friction=True).stepper()
-        st.set_inputs({"F_friction": 0.0})
-        o0 = st.outputs()
-        st.set_inputs({"F_friction": 1.0})
-        o1 = st.outputs()
-        return {n: ("F_friction",) for n in st.output_names
-                if abs(o1[n] - o0[n]) > 1e-12 * (1.0 + abs(o0[n]))}
-    except Exception:  # noqa: BLE001 - cannot probe: every output depends (safe side)
-        return {n: tuple(plant_cls(external_friction=True).all_input_names)
-                for n in plant_cls(external_friction=True).all_output_names}
-
-
-def plant_variables(plant_cls, probe: bool = False) -> list[Var]:
-    """Parameters (plant ``Params`` and scalar options), inputs and outputs of the FMU of a
-    plant in external-friction mode (input ``F_friction``)."""
-    plant = plant_cls(external_friction=True)
-    numeric = set(plant.parameter_names)
-    vs = [v for v in _param_vars(plant_cls.Params) if v.name in numeric or v.type != "Real"]
-    names = {v.name for v in vs}
-    vs += [v for v in _option_vars(dict(plant_cls.options)) if v.name not in names]
-    signals = dict(getattr(plant_cls, "signals", {}) or {})
-    signals.setdefault("F_friction", ("N", "friction force on the contact, opposing the "
-                                             "sliding velocity"))
-    deps = plant_feedthrough(plant_cls) if probe else \
-        {n: tuple(plant.all_input_names) for n in plant.all_output_names}
-    for n in plant.all_input_names:
-        unit, desc = signals.get(n, ("", n))
-        vs.append(Var(n, "input", "Real", 0.0, unit, desc + (f" [{unit}]" if unit else "")))
-    vs += plant_coupling_inputs(plant)
-    signals.setdefault(SHARE_INPUT, ("1", "share of the last communication step spent below "
-                                          "the friction law's v_switch (a sliding stretch "
-                                          "with its Filippov weight; connect to "
-                                          "friction.low_share)"))
-    signals.setdefault(MEAN_INPUT, ("m/s", "mean contact velocity over the last communication "
-                                          "step, travel / step (connect to friction.v_mean)"))
-    outs = plant.all_output_names + tuple(
-        n for n in getattr(plant.stepper(), "output_names", ()) if n in (SHARE_INPUT,
-                                                                         MEAN_INPUT))
-    for n in outs:
-        unit, desc = signals.get(n, ("", n))
-        vs.append(Var(n, "output", "Real", None, unit, desc + (f" [{unit}]" if unit else ""),
-                      depends=tuple(deps.get(n, ()))))
-    return vs
-
-
-#: unit and description of a plant FMU's coupling inputs (``PlantStepper.coupling_names``)
-_COUPLING_INPUT_INFO = {
-    "dF_dx": ("N/m", "friction law's slope against the travel over the step (connect "
-                     "friction.dF_dx; 0: friction held over the step)"),
-    "dF_dv": ("N.s/m", "friction law's slope against the velocity over the step (connect "
-                       "friction.dF_dv; 0: friction held over the step)"),
-    "dF_dt": ("N/s", "friction law's rate over the step beyond the slopes (connect "
-                     "friction.dF_dt; 0: none)"),
-    "d2F_dt2": ("N/s2", "friction law's curvature of that rate over the step (connect "
-                        "friction.d2F_dt2; 0: none)"),
-    "t_kink": ("s", "time into the step at which the friction law's extrapolated velocity "
-                    "reverses (connect friction.t_kink)"),
-    "dF_dt_kink": ("N/s", "friction law's change of rate at t_kink (connect "
-                          "friction.dF_dt_kink; 0: none)"),
-    "v_switch": ("m/s", "speed at which the friction law's coefficients jump (connect "
-                        "friction.v_switch; 0: none)"),
-    "dF_switch": ("N", "friction law's force jump to the other side of v_switch (connect "
-                       "friction.dF_switch)"),
-    "dF_dx_switch": ("N/m", "change of dF_dx on the other side of v_switch (connect "
-                            "friction.dF_dx_switch)"),
-    "dF_dv_switch": ("N.s/m", "change of dF_dv on the other side of v_switch (connect "
-                              "friction.dF_dv_switch)"),
-}
-
-
-def plant_coupling_inputs(plant) -> list[Var]:
-    """Inputs ``dF_dx``, ``dF_dv`` of a plant FMU in external-friction mode (the linearly
-    implicit coupling of ``PlantStepper``); none if its stepper does not take them."""
-    names = getattr(plant.stepper(), "coupling_names", ()) if plant.external_friction else ()
-    out = []
-    for n in names:
-        unit, desc = _COUPLING_INPUT_INFO[n]
-        out.append(Var(n, "input", "Real", 0.0, unit, f"{desc} [{unit}]"))
-    return out
-
-
-# -- slaves ---------------------------------------------------------------------------------
+#: tag of a saved FMU state (``_get_fmu_state``), checked when it is restored
+STATE_FORMAT = "frictionlab-pythonfmu-state-1"
 
 #: binaries folder and file name suffix of pythonfmu's library behind the status shim
 #: (fmus.status_shim), by host platform
@@ -546,7 +94,9 @@ def behind_status_shim(resources, model_identifier: str) -> bool:
 
 _CAUS = {"parameter": Fmi2Causality.parameter, "input": Fmi2Causality.input,
          "output": Fmi2Causality.output}
-_TYPES = {"Real": Real, "Integer": Integer, "Boolean": Boolean, "String": String}
+# an Enumeration is set and read with fmi2SetInteger / fmi2GetInteger
+_TYPES = {"Real": Real, "Integer": Integer, "Boolean": Boolean, "String": String,
+          "Enumeration": Integer}
 
 
 class SlaveBase(Fmi2Slave):
@@ -558,6 +108,8 @@ class SlaveBase(Fmi2Slave):
     """
     model_identifier = "frictionlab"
     fmu_description = ""
+    #: the kind can save and restore its whole state (fmi2GetFMUstate / fmi2SetFMUstate)
+    can_get_state = True
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
@@ -567,6 +119,9 @@ class SlaveBase(Fmi2Slave):
         self.values = [v.start for v in self.variables]
         self.index = {v.name: i for i, v in enumerate(self.variables)}
         self.roles = [v.causality for v in self.variables]
+        self.param_idx = [i for i, r in enumerate(self.roles) if r == "parameter"]
+        #: the parameter values the model was last built from (None: not built)
+        self._built = None
         self.output_idx = [i for i, r in enumerate(self.roles) if r == "output"]
         #: the output values as a tuple (one C call: do_step's finiteness test)
         idx = self.output_idx
@@ -637,12 +192,28 @@ class SlaveBase(Fmi2Slave):
             self.log(f"{msg} ({what})", Fmi2Status.error)
 
     def param_values(self) -> dict:
+        """Every parameter as a Python value: an Enumeration as its item name, an optional
+        parameter as None while its ``use_<name>`` flag is off (the flags as Booleans)."""
         out = {}
-        for v, value in zip(self.variables, self.values):
-            if v.causality != "parameter":
-                continue
-            out[v.name] = None if (v.unset is not None and value == v.unset) else value
+        vals = self.values
+        flags = {v.twin_of: vals[i] for i, v in enumerate(self.variables) if v.twin_of}
+        for i in self.param_idx:
+            v, value = self.variables[i], vals[i]
+            if v.type == "Enumeration":
+                value = v.items[int(value) - 1]
+            elif v.type == "Boolean":
+                value = bool(value)
+            elif v.name in flags and not flags[v.name]:
+                value = None
+            out[v.name] = value
         return out
+
+    def field_values(self) -> dict:
+        """The parameters that are fields of the slave's Params dataclass
+        (:meth:`param_values` without the flags and the FMU's own parameters)."""
+        pv = self.param_values()
+        return {v.name: pv[v.name] for v in self.variables
+                if v.causality == "parameter" and v.field >= 0 and not v.twin_of}
 
     def value(self, name: str):
         return self.values[self.index[name]]
@@ -656,6 +227,7 @@ class SlaveBase(Fmi2Slave):
                 return False
             self.failed.pop("parameters", None)
             self.params_dirty = False
+            self._built = [self.values[i] for i in self.param_idx]
             self.outputs_dirty = True
         return "parameters" not in self.failed
 
@@ -681,7 +253,18 @@ class SlaveBase(Fmi2Slave):
             self.report("initialization")
 
     def do_step(self, current_time, step_size):
-        if self.failed or self.pending or (self.params_dirty and not self._ensure_model()):
+        if not (step_size > 0.0 and step_size - step_size == 0.0) or \
+                current_time - current_time != 0.0:
+            # h <= 0, NaN or inf (or a non-finite communication point): refused, the
+            # instance stays where it was (fmi2Error behind the status shim)
+            self.log(f"{self.instance_name}: fmi2DoStep refused: the communication step "
+                     f"size (communicationStepSize) h = {step_size!r} at t = "
+                     f"{current_time!r} must be finite and > 0 (and the communication point "
+                     f"finite); the instance stays at t = {self.time!r}", Fmi2Status.error)
+            return False
+        if self.params_dirty:
+            self._ensure_model()  # a fixed parameter clears its failure here
+        if self.failed or self.pending:
             what = f"step at t = {current_time:g} refused"
             self.report(what)
             for msg in self.pending.values():
@@ -717,7 +300,17 @@ class SlaveBase(Fmi2Slave):
         if role == "output":
             self.reject(v.name, f"{v.name} is an output and cannot be set; {value!r} ignored")
             return
-        if v.type == "Real":
+        if v.type == "Enumeration":
+            if isinstance(value, float) and value == int(value):
+                value = int(value)
+            if not v.admissible(value):
+                self.reject(v.name, f"{role} {v.name} = {value!r} is out of bounds: must be "
+                                    f"{v.bound_text()} ({v.description}); value rejected, "
+                                    f"{v.name} keeps {self.values[vr]!r}")
+                return
+        elif v.type == "Boolean":
+            value = bool(value)
+        elif v.type == "Real":
             value = float(value)
             if not math.isfinite(value):
                 self.reject(v.name, f"{role} {v.name} = {value!r} is not finite "
@@ -800,6 +393,90 @@ class SlaveBase(Fmi2Slave):
     def get_string(self, vrs):
         return self._get_as("fmi2GetString", str, vrs, "")
 
+    # FMU state (pythonfmu 0.7 calls these for fmi2GetFMUstate / fmi2SetFMUstate and the
+    # class's _fmu_state_to_bytes / _fmu_state_from_bytes for (de)serialization) ----------
+    def dynamic_state(self):
+        """What a step changes beyond the variable values and the time, as JSON-able data
+        (a copy); None while no model was built. Subclasses extend it."""
+        return None if self._built is None else {}
+
+    def restore_dynamic(self, data) -> None:
+        """Restore :meth:`dynamic_state` data (None: as before the first build)."""
+
+    def _state_refused(self, call: str) -> None:
+        self.log(f"{self.instance_name}: {call} refused: this FMU ({self.model_identifier}) "
+                 f"cannot save and restore its state (canGetAndSetFMUstate = false)",
+                 Fmi2Status.error)
+
+    def _get_fmu_state(self):
+        if not self.can_get_state:
+            self._state_refused("fmi2GetFMUstate")
+            return {"format": STATE_FORMAT, "invalid": "no state saved (not supported)"}
+        try:
+            return {"format": STATE_FORMAT, "fmu": self.model_identifier,
+                    "values": list(self.values), "time": self.time,
+                    "failed": dict(self.failed), "pending": dict(self.pending),
+                    "params_dirty": self.params_dirty, "outputs_dirty": self.outputs_dirty,
+                    "built": None if self._built is None else list(self._built),
+                    "dynamic": self.dynamic_state()}
+        except Exception as exc:  # noqa: BLE001 - never raise into pythonfmu
+            msg = f"fmi2GetFMUstate failed: {type(exc).__name__}: {exc}"
+            self.log(f"{self.instance_name}: {msg}", Fmi2Status.error)
+            return {"format": STATE_FORMAT, "invalid": msg}
+
+    def _set_fmu_state(self, state):
+        if not self.can_get_state:
+            self._state_refused("fmi2SetFMUstate")
+            return
+        try:
+            why = None
+            if not isinstance(state, dict) or state.get("format") != STATE_FORMAT or \
+                    "invalid" in state:
+                why = (f"not a state saved by a frictionlab FMU "
+                       f"({isinstance(state, dict) and state.get('invalid') or 'unknown format'})")
+            elif state.get("fmu") != self.model_identifier or \
+                    len(state["values"]) != len(self.variables):
+                why = (f"the state was saved by another FMU ({state.get('fmu')!r}), not by "
+                       f"{self.model_identifier!r}")
+            if why is not None:
+                self.log(f"{self.instance_name}: fmi2SetFMUstate refused: {why}; the instance "
+                         f"is unchanged", Fmi2Status.error)
+                return
+            built = state["built"]
+            if built is not None and built != self._built:
+                # the model the state was stepped with: build it from those parameters
+                values = list(state["values"])
+                for i, val in zip(self.param_idx, built):
+                    values[i] = val
+                self.values = values
+                self.rebuild(True)
+            self.values = list(state["values"])
+            self._built = None if built is None else list(built)
+            self.time = state["time"]
+            self.failed = dict(state["failed"])
+            self.pending = dict(state["pending"])
+            self.params_dirty = state["params_dirty"]
+            self.outputs_dirty = state["outputs_dirty"]
+            self.restore_dynamic(state["dynamic"])
+        except Exception as exc:  # noqa: BLE001 - never raise into pythonfmu
+            self.fail("state", f"fmi2SetFMUstate failed: {type(exc).__name__}: {exc}")
+            self.report("the instance refuses further steps")
+
+    @staticmethod
+    def _fmu_state_to_bytes(state) -> bytes:
+        # JSON writes a float as its shortest round-trip repr (NaN/inf too): exact
+        return json.dumps(state, default=float).encode("utf-8")
+
+    @staticmethod
+    def _fmu_state_from_bytes(data: bytes):
+        try:
+            state = json.loads(data.decode("utf-8"))
+        except Exception:  # noqa: BLE001 - never raise into pythonfmu
+            state = None
+        if not isinstance(state, dict):
+            return {"format": STATE_FORMAT, "invalid": "not a serialized frictionlab state"}
+        return state
+
 
 class LawSlave(SlaveBase):
     """FMU of one friction law (``law`` = registry name in ``<friction_package>.MODELS``).
@@ -825,16 +502,13 @@ class LawSlave(SlaveBase):
 
     def rebuild(self, initial):
         cls = self.model_class()
-        values = self.param_values()
-        for name in ("h_lin", "inputs_at_step_end", "use_v_mean"):  # the coupling's
-            values.pop(name, None)
-        model = cls(cls.Params(**values))
+        model = cls(cls.Params(**self.field_values()))
         self.model = model
         self.theta = np.ascontiguousarray(model.theta, dtype=np.float64)
         self.kernel = model._kernel
         if initial or not hasattr(self, "state"):
             self.state = np.asarray(model.initial_state(), dtype=np.float64).copy()
-        ins = ["v"] + [n for n in ("a", "load", "x") if n in cls.extra_inputs]
+        ins = law_inputs(cls)
         self.in_idx = [self.index[n] for n in ins]
         self.F_idx = self.index["F"]
         self.state_idx = [self.index[s] for s in cls.state_names]
@@ -858,6 +532,7 @@ class LawSlave(SlaveBase):
                             for r in ("low", "high")})
             self.lin_idx += [self.index[n] for n in SWITCH_OUTPUTS]
             self.share_idx = self.index[SHARE_INPUT]
+            self.use_share = bool(self.values[self.index["use_low_share"]])
         self.lin_zeroed = False  # h_lin = 0: the coupling outputs are written once
         self.h_lin = float(self.values[self.index["h_lin"]])
         self.foh = bool(self.values[self.index["inputs_at_step_end"]])
@@ -869,6 +544,25 @@ class LawSlave(SlaveBase):
             self.curv_v = 0.0      # d2v/dt2 of the last three input samples [m/s^3]
             self.dv_last = None    # last backward difference of v [m/s]
             self.stepped = False
+
+    def dynamic_state(self):
+        if self._built is None or not hasattr(self, "state"):
+            return None
+        return {"state": self.state.tolist(),
+                "last_in": None if self.last_in is None else list(self.last_in),
+                "slope_v": self.slope_v, "curv_v": self.curv_v, "dv_last": self.dv_last,
+                "stepped": self.stepped, "lin_zeroed": self.lin_zeroed}
+
+    def restore_dynamic(self, data):
+        if data is None:  # as before the first build: the next build starts afresh
+            for name in ("state", "last_in"):
+                self.__dict__.pop(name, None)
+            return
+        self.state = np.array(data["state"], dtype=np.float64)
+        self.last_in = None if data["last_in"] is None else list(data["last_in"])
+        self.slope_v, self.curv_v = data["slope_v"], data["curv_v"]
+        self.dv_last, self.stepped = data["dv_last"], data["stepped"]
+        self.lin_zeroed = data["lin_zeroed"]
 
     def _inputs(self) -> list:
         vals = self.values
@@ -936,8 +630,8 @@ class LawSlave(SlaveBase):
             v_end = vbuf[1]
             vbuf.fill(self.values[self.mean_idx])
         # the plant's low_share describes this step only when it stepped first (Gauss-Seidel)
-        share = self.values[self.share_idx] if self.switch is not None and self.foh else -1.0
-        if share >= 0.0:
+        if self.switch is not None and self.foh and self.use_share:
+            share = self.values[self.share_idx]
             # the plant says which share of the step lay below v_switch (sliding along it
             # with its Filippov weight): the state advances with that mix of both regimes
             thetas = self.switch[1]
@@ -962,6 +656,8 @@ class LawSlave(SlaveBase):
         vals[self.F_idx] = F.item(1)
         self._linearise()
         return True
+
+
 
 
 class MassSlave(SlaveBase):
@@ -989,6 +685,17 @@ class MassSlave(SlaveBase):
         self.slots = (ix["x"], ix["v"], ix["a"], ix["F_ext"], ix["F_friction"])
         if initial or not hasattr(self, "x"):
             self.x, self.v = float(p["x0"]), float(p["v0"])
+
+    def dynamic_state(self):
+        if self._built is None or not hasattr(self, "x"):
+            return None
+        return {"x": self.x, "v": self.v}
+
+    def restore_dynamic(self, data):
+        if data is None:
+            self.__dict__.pop("x", None)
+            return
+        self.x, self.v = data["x"], data["v"]
 
     def drive(self, t):
         return self.u0 + self.u_amp * math.sin(self.w * t)
@@ -1029,6 +736,8 @@ class StepperSlave(SlaveBase):
     """
     plant = "xml350"
     plants_package = "plants"
+    #: the plant's stepper (numba-compiled state) is not saved: fmi2Get/SetFMUstate refused
+    can_get_state = False
 
     @classmethod
     def plant_class(cls):
@@ -1074,82 +783,8 @@ class StepperSlave(SlaveBase):
         return False
 
 
+
 # -- discrete blocks of the XML-350 loop (controllers, feedforward, trajectory) -------------
-
-#: units of the loop signals (those not in the plant's ``signals``)
-_LOOP_UNITS = {"x_d": ("m", "desired position"), "v_d": ("m/s", "desired velocity"),
-               "a_d": ("m/s^2", "desired acceleration"), "x": ("m", "measured position"),
-               "x_f": ("m", "target position of the move"),
-               "u_ff": ("m/s^2", "friction feedforward (acceleration)"),
-               "u": ("m/s^2", "acceleration command"),
-               "u_sd": ("m/s^2", "feedback + acceleration feedforward"),
-               "e": ("m", "position error x_d - x"), "i_cmd": ("A", "current command M_ctrl u / Kf"),
-               "F_ff": ("N", "feedforward friction force estimate"),
-               "x_ff": ("m", "feedforward position"), "v_ff": ("m/s", "feedforward velocity"),
-               "a_ff": ("m/s^2", "feedforward acceleration")}
-
-BLOCKS = ("sdpid", "pid", "lugre_feedforward", "xml350_trajectory")
-
-
-def _block_parts(kind: str, plants_package: str):
-    """(parameter Var list, input names, output names) of a loop block."""
-    xml = importlib.import_module(f"{plants_package}.xml350")
-    ctrl = importlib.import_module(f"{plants_package}.controllers")
-    P = xml.XML350Params()
-    if kind in ("sdpid", "pid"):
-        pid = P.pid(state_dependent=kind == "sdpid")
-        pv = _param_vars(ctrl.PIDParams)
-        for v in pv:
-            v.start = float(getattr(pid.params, v.name))
-        pv += [Var("M_ctrl", "parameter", "Real", P.M_ctrl, "kg",
-                   "mass converting acceleration to force in i_cmd [kg] (> 0)", 0.0, math.inf,
-                   True),
-               Var("Kf", "parameter", "Real", P.Kf, "N/A",
-                   "motor force constant converting force to current in i_cmd [N/A] (> 0)",
-                   0.0, math.inf, True)]
-        return pv, list(ctrl.PID.input_names), list(ctrl.PID.output_names) + ["i_cmd"]
-    if kind == "lugre_feedforward":
-        law = xml.xml350_friction()
-        pv = _param_vars(type(law.params))
-        for v in pv:
-            val = getattr(law.params, v.name)
-            v.start = v.unset if val is None else val
-        pv += [Var("mass", "parameter", "Real", P.M_ctrl, "kg",
-                   "mass converting the friction force to acceleration [kg] (> 0)", 0.0,
-                   math.inf, True),
-               Var("Ts", "parameter", "Real", P.Ts, "s", "sample time [s] (> 0)", 0.0,
-                   math.inf, True)]
-        return pv, list(ctrl.LuGreFeedforward.input_names), \
-            list(ctrl.LuGreFeedforward.output_names)
-    if kind == "xml350_trajectory":
-        pv = [Var("distance", "parameter", "Real", 1e-4, "m", "S-curve move distance [m]"),
-              Var("t_move", "parameter", "Real", 1e-3, "s", "start time of the move [s] (>= 0)",
-                  0.0),
-              Var("Ts", "parameter", "Real", P.Ts, "s", "sample time [s] (> 0)", 0.0,
-                  math.inf, True),
-              Var("f_current", "parameter", "Real", P.f_current, "Hz",
-                  "current-loop bandwidth used to time the feedforward [Hz] (> 0)", 0.0,
-                  math.inf, True),
-              Var("ff_mode", "parameter", "String", "invert", "",
-                  "feedforward timing: invert, lead or none")]
-        return pv, [], list(xml.TrajectoryBlock.output_names)
-    raise ValueError(f"unknown block {kind!r}; choose from {BLOCKS}")
-
-
-def block_variables(kind: str, plants_package: str = "plants") -> list[Var]:
-    """Variables of a loop block FMU; outputs depend directly on every input (a block
-    samples at the communication point with the inputs just set)."""
-    pv, ins, outs = _block_parts(kind, plants_package)
-    vs = list(pv)
-    for n in ins:
-        unit, desc = _LOOP_UNITS.get(n, ("", n))
-        vs.append(Var(n, "input", "Real", 0.0, unit, desc + (f" [{unit}]" if unit else "")))
-    for n in outs:
-        unit, desc = _LOOP_UNITS.get(n, ("", n))
-        vs.append(Var(n, "output", "Real", None, unit, desc + (f" [{unit}]" if unit else ""),
-                      depends=tuple(ins)))
-    return vs
-
 
 class BlockSlave(SlaveBase):
     """FMU of a discrete block of the XML-350 loop (state-dependent PID of seed 003 Eq. 15,
@@ -1159,6 +794,8 @@ class BlockSlave(SlaveBase):
     runs the samples inside it with the inputs held."""
     block = "sdpid"
     plants_package = "plants"
+    #: the block's stepper is not saved: fmi2Get/SetFMUstate refused
+    can_get_state = False
 
     def make_variables(self):
         return block_variables(self.block, self.plants_package)
@@ -1219,39 +856,8 @@ class BlockSlave(SlaveBase):
         return False
 
 
+
 # -- friction effects block ------------------------------------------------------------------
-#: inputs of the friction_effects block: (name, unit, description)
-EFFECTS_INPUTS = (("F_law", "N", "friction force of the law FMU"),
-                  ("v", "m/s", "sliding velocity"),
-                  ("a", "m/s2", "acceleration"),
-                  ("x", "m", "position"),
-                  ("load", "N", "normal load"))
-#: parameters that must be > 0
-_EFFECTS_POSITIVE = ("a_s", "v_c", "T", "L0")
-
-
-def effects_variables(friction_package: str = "friction") -> list[Var]:
-    """Variables of the ``friction_effects`` block: the law's force in, the force with the
-    extensions of ``friction.extensions`` out (switches ``use_*`` = 0 or 1)."""
-    ext = importlib.import_module(f"{friction_package}.extensions")
-    vs = []
-    for name, start, unit, desc in ext.EXTENSION_PARAMS:
-        if name.startswith("use_"):
-            vs.append(Var(name, "parameter", "Real", start, unit, f"{desc} [-] (0 or 1)",
-                          0.0, 1.0))
-        elif name in _EFFECTS_POSITIVE:
-            vs.append(Var(name, "parameter", "Real", start, unit, f"{desc} [{unit}]", 0.0,
-                          math.inf, True))
-        else:
-            vs.append(Var(name, "parameter", "Real", start, unit, f"{desc} [{unit}]"))
-    ins = tuple(n for n, _, _ in EFFECTS_INPUTS)
-    for name, unit, desc in EFFECTS_INPUTS:
-        vs.append(Var(name, "input", "Real", 1.0 if name == "load" else 0.0, unit,
-                      f"{desc} [{unit}]"))
-    vs.append(Var("F", "output", "Real", None, "N",
-                  "friction force with the switched-on extensions [N]", depends=ins))
-    return vs
-
 
 class EffectsSlave(SlaveBase):
     """FMU block between a friction-law FMU and a plant FMU: ``F = extension_force(F_law, v,

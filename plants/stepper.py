@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from friction.regimes import filippov, regime_split, side, surface_regime
+from fmus.coupling import MEAN_INPUT, PLANT_INPUTS, SHARE_INPUT
 
 from .law_stepper import FrictionStep
 
@@ -83,15 +84,15 @@ class PlantStepper:
     sample by sample (chattering) does not.
     """
 
-    #: inputs of the linearly implicit coupling (external friction mode)
-    COUPLING_INPUTS = ("dF_dx", "dF_dv", "dF_dt", "d2F_dt2", "t_kink", "dF_dt_kink",
-                       "v_switch", "dF_switch", "dF_dx_switch", "dF_dv_switch")
+    #: inputs of the linearly implicit coupling (external friction mode; the port names of
+    #: fmus.coupling, shared with the law FMUs and the master)
+    COUPLING_INPUTS = PLANT_INPUTS
     #: output of the coupling (external friction mode): share of the last step spent on the
     #: low side of |v| = v_switch (a sliding stretch counts with its Filippov weight)
-    SHARE_OUTPUT = "low_share"
+    SHARE_OUTPUT = SHARE_INPUT
     #: output of the coupling (external friction mode): mean contact velocity over the last
     #: step, travel / step [m/s] (the law advances its state with the plant's real travel)
-    MEAN_OUTPUT = "v_mean"
+    MEAN_OUTPUT = MEAN_INPUT
 
     def __init__(self, plant: Plant, *, substep: float | None = None, start: float = 0.0,
                  friction_method: str = "exact"):

@@ -225,16 +225,116 @@ def test_percent_in_a_message_is_safe_for_a_formatting_logger(fmu_dir, capfd):
 
 
 @needs_shim
-def test_inadmissible_combination_is_an_error_at_initialization_and_refuses_steps(fmu_dir):
+def test_an_option_code_that_is_no_item_is_refused_naming_the_items(fmu_dir):
     s = LoggedSlave(fmu_dir / "lugre.fmu", "fr")
     try:
-        s.s.setString([s.vr["shape"]], ["bogus"])  # a string the law does not know
+        assert s.set("shape", 3) == fmi2Error  # shape: 1 gaussian, 2 lorentzian
+        assert any("shape = 3" in m and "2 (lorentzian)" in m for m in s.errors()), s.messages
+        assert s.s.getInteger([s.vr["shape"]]) == [1]  # rejected: the default stays
+        assert s.set("shape", 2) == fmi2OK
+        s.init()
+        assert s.set("v", 1e-3) == fmi2OK and s.step(0.0, 1e-4) == fmi2OK
+    finally:
+        s.close()
+
+
+@needs_shim
+def test_inadmissible_combination_is_an_error_at_initialization_and_refuses_steps(tmp_path):
+    path = build_fmu(catalogue()["modified_lugre"], tmp_path)
+    s = LoggedSlave(path, "fr")
+    try:
+        assert s.set("v1", 0.3) == fmi2OK  # v1 alone is admissible; v2 = 0.2 is below it
         with pytest.raises(FMICallException) as exc:
             s.init()
         assert exc.value.status == fmi2Error
-        assert any("shape" in m and "bogus" in m for m in s.errors()), s.messages
+        assert any("v2" in m and "v1" in m for m in s.errors()), s.messages
         assert s.step(0.0, 1e-4) == fmi2Error  # no model: every step refused, loudly
         assert "refused" in s.errors()[-1]
+        assert s.set("v2", 0.5) == fmi2OK and s.step(0.0, 1e-4) == fmi2OK  # fixed: it runs
+    finally:
+        s.close()
+
+
+@needs_shim
+@pytest.mark.parametrize("h", [0.0, -1e-4, NAN, INF])
+def test_a_step_size_that_is_not_finite_and_positive_is_refused(fmu_dir, h):
+    s = LoggedSlave(fmu_dir / "lugre.fmu", "fr")
+    try:
+        s.init()
+        assert s.set("v", 1e-3) == fmi2OK
+        assert s.step(0.0, 1e-4) == fmi2OK
+        before = s.get("F")
+        assert s.step(1e-4, h) == fmi2Error
+        msg = s.errors()[-1]
+        assert "communicationStepSize" in msg and repr(h) in msg and "> 0" in msg, msg
+        assert s.get("F") == before  # the instance stayed where it was
+        assert s.step(1e-4, 1e-4) == fmi2OK and s.errors() == [msg]
+    finally:
+        s.close()
+
+
+@needs_shim
+def test_rollback_and_redo_is_bit_for_bit_and_restores_in_another_instance(fmu_dir):
+    """fmi2GetFMUstate / fmi2SetFMUstate restore the law's whole state (the bristle, the
+    input history of the coupling outputs, the time): a redo repeats the first run bit for
+    bit, also in another instance through fmi2SerializeFMUstate."""
+    md = fmpy.read_model_description(str(fmu_dir / "lugre.fmu"))
+    assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
+    h = 1e-4
+    t = h * np.arange(501)
+    v = 2e-3 * np.sin(2 * np.pi * 10 * t) + 5e-4
+
+    def series(s, k0, k1):
+        out = []
+        for k in range(k0, k1):
+            assert s.set("v", float(v[k])) == fmi2OK
+            out.append(s.s.getReal([s.vr[n] for n in ("F", "z", "dF_dx", "dF_dt")]))
+            assert s.step(t[k], h) == fmi2OK
+        return np.array(out)
+
+    s, other = LoggedSlave(fmu_dir / "lugre.fmu", "a"), LoggedSlave(fmu_dir / "lugre.fmu", "b")
+    try:
+        s.init(h_lin=h, inputs_at_step_end=True)
+        series(s, 0, 100)
+        state = s.s.getFMUstate()
+        first = series(s, 100, 500)
+        s.s.setFMUstate(state)
+        redo = series(s, 100, 500)
+        assert np.array_equal(first, redo)  # was 3.5e-2 N off before the fix
+        blob = s.s.serializeFMUstate(state)
+        s.s.freeFMUstate(state)
+        other.init()  # other parameters (h_lin = 0): the state brings the stepped ones
+        restored = other.s.deSerializeFMUstate(blob)
+        other.s.setFMUstate(restored)
+        other.s.freeFMUstate(restored)
+        assert np.array_equal(series(other, 100, 500), first)
+        assert s.errors() == [] and other.errors() == []
+    finally:
+        s.close()
+        other.close()
+    m = LoggedSlave(fmu_dir / "mass.fmu", "m")  # a state of another FMU is refused
+    try:
+        m.init()
+        restored = m.s.deSerializeFMUstate(blob)
+        with pytest.raises(FMICallException) as exc:
+            m.s.setFMUstate(restored)
+        assert exc.value.status == fmi2Error and "another FMU" in m.errors()[-1]
+    finally:
+        m.close()
+
+
+@needs_shim
+def test_a_plant_fmu_refuses_state_get_and_set_as_it_declares(fmu_dir):
+    md = fmpy.read_model_description(str(fmu_dir / "damping_rig.fmu"))
+    assert not md.coSimulation.canGetAndSetFMUstate
+    s = LoggedSlave(fmu_dir / "damping_rig.fmu", "rig")
+    try:
+        s.init()
+        with pytest.raises(FMICallException) as exc:
+            s.s.getFMUstate()
+        assert exc.value.status == fmi2Error
+        assert "canGetAndSetFMUstate = false" in s.errors()[-1]
+        assert s.step(0.0, 1e-4) == fmi2OK  # and the instance goes on
     finally:
         s.close()
 

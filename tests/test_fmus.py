@@ -12,7 +12,9 @@ pytest.importorskip("pythonfmu")
 import friction  # noqa: E402
 from friction.metrics import nrmse  # noqa: E402
 from fmus.build import catalogue, validate  # noqa: E402
+from fmus.coupling import fmi_unit  # noqa: E402
 from fmus.modeldescription import base_unit  # noqa: E402
+from fmus.variables import exclusive_min  # noqa: E402
 from fmus.testing import LoggedSlave, built_fmus  # noqa: E402
 
 
@@ -62,10 +64,21 @@ def test_law_fmu_parameters_carry_unit_description_bounds(fmu_dir):
         for info in cls.Params.info():
             v = vars_[info.name]
             assert v.causality == "parameter" and v.variability == "tunable", info.name
-            assert v.unit == info.unit and v.unit in units, (name, info.name)
+            assert v.unit == fmi_unit(info.unit) and v.unit in units, (name, info.name)
             assert info.description.split(" (")[0] in v.description, (name, info.name)
-            if info.default is not None and math.isfinite(info.lower):
-                assert float(v.min) == info.lower, (name, info.name)
+            if math.isfinite(info.lower):  # an exclusive bound: the next double inside it
+                want = exclusive_min(info.lower) if info.lower_open else info.lower
+                assert float(v.min) == want, (name, info.name)
+            if info.default is None:  # optional: a Boolean flag, no sentinel
+                flag = vars_[f"use_{info.name}"]
+                assert flag.type == "Boolean" and flag.start in ("false", False)
+        # options are Enumerations (no Strings in any law FMU)
+        assert not [v for v in md.modelVariables if v.type == "String"], name
+        for opt, codes in getattr(cls.Params, "OPTIONS", {}).items():
+            assert vars_[opt].type == "Enumeration"
+            items = [i.name for t in md.typeDefinitions if t.name == vars_[opt].declaredType.name
+                     for i in t.items]
+            assert items == sorted(codes, key=codes.get), (name, opt)
         assert vars_["F"].unit == "N" and vars_["v"].unit == "m/s"
 
 
@@ -162,12 +175,13 @@ def test_load_input_changes_the_force(fmu_dir):
 
 
 def test_optional_twin_parameter_makes_the_law_asymmetric(fmu_dir):
-    # Fc_neg = -1 means "same as Fc"; setting it changes only the negative branch
+    # use_Fc_neg = false means "same as Fc"; Fc_neg set with its flag changes only the
+    # negative branch
     res = {}
     for fc_neg in (-1.0, 2.0):
         s = LoggedSlave(fmu_dir / "lugre.fmu")
         try:
-            s.init(Fc_neg=fc_neg)
+            s.init(**({} if fc_neg < 0 else {"use_Fc_neg": True, "Fc_neg": fc_neg}))
             vals = []
             for v in (0.05, -0.05):
                 s.s.setReal([s.vr["v"]], [v])

@@ -237,7 +237,7 @@ def law_io(law: str, md_vars: dict) -> tuple[list[str], list[str]]:
 
 
 def case_settings(law: str) -> tuple[dict, dict]:
-    """(Python parameter values, extra native-only settings) of a law's case."""
+    """(Python parameter values, extra settings: the coupling flags) of a law's case."""
     case = CASES[law]
     params = dict(case["params"])
     extra = {}
@@ -249,13 +249,16 @@ def case_settings(law: str) -> tuple[dict, dict]:
 
 
 def step_pythonfmu(path, params: dict, inputs, outputs, U: np.ndarray) -> np.ndarray:
-    """Step the pythonfmu FMU through fmpy: options as Strings, twins as values; per step set
-    the inputs, doStep, get the outputs (row 0: after initialization)."""
+    """Step the pythonfmu FMU through fmpy: the parameters translated as for a native FMU
+    (options as Enumeration codes, twins with their use_ flags: ``fmus.master.fmu_values``);
+    per step set the inputs, doStep, get the outputs (row 0: after initialization)."""
+    from fmus.master import fmu_values
     from fmus.testing import LoggedSlave
     sl = LoggedSlave(path)
     try:
         s = sl.s
-        for name, value in params.items():
+        values = fmu_values({v.name: v for v in sl.md.modelVariables}, params)
+        for name, value in values.items():
             vr = [sl.vr[name]]
             kind = sl.types[name]
             if kind == "String":
@@ -297,7 +300,7 @@ def compare_host_with_pythonfmu(law, steps, host, native, pythonfmu, tmp_path) -
     wall = time.perf_counter() - t0
     assert res.returncode == 0, res.stderr
     Yc = np.fromfile(tmp_path / "out.bin").reshape(steps + 1, len(outputs))
-    Yp = step_pythonfmu(pythonfmu(law), params, inputs, outputs, U)
+    Yp = step_pythonfmu(pythonfmu(law), {**params, **extra}, inputs, outputs, U)
     report = {"law": law, "steps": steps, "host_wall_s": round(wall, 4)}
     for j, name in enumerate(outputs):
         scale = max(np.max(np.abs(Yp[:, j])), 1e-300)

@@ -51,10 +51,14 @@ def test_python_values_are_translated_for_either_kind(dirs):
     assert n == {"shape": 2, "use_Fc_neg": True, "Fc_neg": 0.8, "use_Fs_neg": False,
                  "sigma0": 2e5, "inputs_at_step_end": True}
     assert type(n["shape"]) is int and type(n["inputs_at_step_end"]) is bool
+    # the pythonfmu FMU declares the same Enumerations and use_ flags: the same values
     p = fmu_values(py, values)
-    assert p["shape"] == "lorentzian" and p["Fc_neg"] == 0.8
-    assert p["Fs_neg"] == float(py["Fs_neg"].start)   # the pythonfmu FMU's "unset" value
-    assert "use_Fc_neg" not in p and p["inputs_at_step_end"] is True
+    assert p == n and type(p["shape"]) is int
+    assert py["shape"].type == "Enumeration" and py["use_Fs_neg"].type == "Boolean"
+    with pytest.raises(ValueError, match="gaussian, lorentzian"):
+        fmu_values(py, {"shape": "cosine"})
+    with pytest.raises(ValueError, match="no flag use_sigma0"):
+        fmu_values(py, {"sigma0": None})
     # an enumeration also takes its code, and refuses what is neither
     assert fmu_values(nat, {"shape": 1}) == {"shape": 1}
     with pytest.raises(ValueError, match="gaussian, lorentzian"):
@@ -210,7 +214,7 @@ def press_dirs():
 
 def test_press_with_the_native_load_law_equals_the_pythonfmu_law(press_dirs):
     # the switching law reads plant.low_share (use_low_share set by the recipe): without it
-    # the native law's bristle would advance in one regime and the force differ by ~1e4 N
+    # the law's bristle would advance in one regime and the force differ by ~1e4 N
     import shutil
     import tempfile
     from fmus.plant_fmus import plant_laws, plant_master
@@ -224,8 +228,8 @@ def test_press_with_the_native_load_law_equals_the_pythonfmu_law(press_dirs):
         rec = ["plant.x", "friction.F", "plant.low_share", "friction.z"]
         for native in (False, True):
             with plant_master(d, "forging_press", law, native=native, record=rec) as m:
-                assert m.parameters["friction"].get("use_low_share", True) is True
-                assert ("use_low_share" in m.parameters["friction"]) == native
+                # both kinds read plant.low_share only with use_low_share (no special case)
+                assert m.parameters["friction"]["use_low_share"] is True
                 res[native] = m.simulate(stop_time=0.4, step_size=0.01, progress=False)
     for c in rec:
         scale = np.max(np.abs(res[False][c]))

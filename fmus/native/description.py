@@ -9,12 +9,12 @@ layout later FMI versions standardise), and never sets ``needsExecutionTool``.
 from __future__ import annotations
 
 import datetime
-import math
 from xml.dom.minidom import parseString
 from xml.etree.ElementTree import Element, SubElement, tostring
 
-from ..modeldescription import base_unit
-from .variables import NVar, exclusive_max, exclusive_min
+from ..modeldescription import add_unit_and_type_definitions
+from ..variables import fmi_min_max
+from .variables import NVar
 
 __all__ = ["model_description", "build_description", "LOG_CATEGORIES"]
 
@@ -28,12 +28,8 @@ def _fmt(x: float) -> str:
 
 
 def _bounds(v: NVar) -> dict:
-    out = {}
-    if math.isfinite(v.lower):
-        out["min"] = _fmt(exclusive_min(v.lower) if v.lower_open else v.lower)
-    if math.isfinite(v.upper):
-        out["max"] = _fmt(exclusive_max(v.upper) if v.upper_open else v.upper)
-    return out
+    return {k: _fmt(x) for k, x in fmi_min_max(v.lower, v.upper, v.lower_open,
+                                                v.upper_open).items()}
 
 
 def model_description(variables: list[NVar], *, model_identifier: str, guid: str,
@@ -75,25 +71,7 @@ def model_description(variables: list[NVar], *, model_identifier: str, guid: str
     for s in sources:
         SubElement(sf, "File", dict(name=s))
 
-    units = sorted({v.unit for v in variables if v.type == "Real" and v.unit})
-    if units:
-        ud = SubElement(root, "UnitDefinitions")
-        for u in units:
-            el = SubElement(ud, "Unit", dict(name=u))
-            bu = base_unit(u)
-            if bu is not None:
-                SubElement(el, "BaseUnit", {k: str(e) for k, e in bu.items()})
-    enums = {}
-    for v in variables:
-        if v.type == "Enumeration":
-            enums.setdefault(v.enum_type, v.enum)
-    if enums:
-        td = SubElement(root, "TypeDefinitions")
-        for name, items in enums.items():
-            st = SubElement(td, "SimpleType", dict(name=name))
-            en = SubElement(st, "Enumeration")
-            for k, item in enumerate(items, 1):
-                SubElement(en, "Item", dict(name=item, value=str(k)))
+    add_unit_and_type_definitions(root, variables)
     lc = SubElement(root, "LogCategories")
     for name, desc in LOG_CATEGORIES.items():
         SubElement(lc, "Category", dict(name=name, description=desc))

@@ -1,23 +1,20 @@
 """Variables of the native FMUs, generated from the Python parameter dataclasses.
 
-One source of truth: a law's FMU parameters (names, units, bounds, defaults, descriptions,
-options) come from its ``Params`` dataclass (``friction.base.param`` metadata and the
-``OPTIONS`` of its option fields), the effects block's from
-``friction.extensions.EXTENSION_PARAMS``, the mass's from ``fmus.runtime.mass_variables``.
-The same list becomes the C table (``fl_model.h``, :func:`c_table`) and the
-``modelDescription.xml`` (:mod:`fmus.native.description`).
-
-Compared with the pythonfmu FMUs: an option is an FMI ``Enumeration`` (not a String); an
-optional parameter (Python ``None``) has a ``Boolean`` flag ``use_<name>`` instead of a
-sentinel value; an exclusive bound (``sigma0 > 0``) is written as the next representable
-double (``min = 5e-324``), so a host that checks ``min`` checks the law's own bound.
+One source of truth for both FMU kinds: the variable lists of :mod:`fmus.variables` (a law's
+parameters from its ``Params`` dataclass, options as ``Enumeration``, optional values with a
+``Boolean`` flag ``use_<name>``, exclusive bounds as the next representable double), here with
+each variable's role in the C runtime. The same list becomes the C table (``fl_model.h``,
+:func:`c_table`) and the ``modelDescription.xml`` (:mod:`fmus.native.description`).
 """
 from __future__ import annotations
 
 import dataclasses
 import math
 
-from .. import runtime
+from .. import coupling
+from .. import variables as shared
+from ..coupling import law_inputs  # noqa: F401 (re-exported)
+from ..variables import Var, exclusive_max, exclusive_min  # noqa: F401 (re-exported)
 
 __all__ = ["NVar", "law_variables", "effects_variables", "mass_variables", "c_table",
            "exclusive_min", "exclusive_max", "law_inputs"]
@@ -52,127 +49,54 @@ class NVar:
         return " and ".join(parts)
 
 
-def exclusive_min(lower: float) -> float:
-    """The smallest double admissible under ``x > lower``."""
-    return math.nextafter(lower, math.inf)
+def _native(v: Var, role: str, idx: int = 0, **kw) -> NVar:
+    """A shared :class:`fmus.variables.Var` with its C role."""
+    t = v.type
+    start = kw.pop("start", None)
+    if start is None:
+        start = 0.0 if v.start is None else \
+            int(v.start) if t == "Enumeration" else float(v.start)
+    return NVar(v.name, t, v.causality, role, idx, start=start,
+                lower=kw.pop("lower", v.lower if t == "Real" else
+                             (1 if t == "Enumeration" else -math.inf)),
+                upper=kw.pop("upper", v.upper if t == "Real" else
+                             (len(v.items) if t == "Enumeration" else math.inf)),
+                lower_open=v.lower_open, upper_open=v.upper_open, unit=v.unit,
+                description=v.description, depends=tuple(v.depends), enum=tuple(v.items),
+                enum_type=v.enum_type, **kw)
 
 
-def exclusive_max(upper: float) -> float:
-    """The largest double admissible under ``x < upper``."""
-    return math.nextafter(upper, -math.inf)
-
-
-def law_inputs(model_cls) -> list[str]:
-    """Kinematic inputs of a law's FMU: ``v`` and whichever of ``a``, ``load``, ``x``."""
-    return ["v"] + [n for n in ("a", "load", "x") if n in model_cls.extra_inputs]
-
-
-def _unit(u: str) -> str:
-    # one spelling of the units in every FMU (m/s2, not m/s^2)
-    return u.replace("^", "")
-
-
-def _optional_start(f, md, fields) -> float:
-    """Start value of an optional parameter's Real (its flag is off): the '+' twin's default,
-    else the middle of its search range, else a value inside its bounds."""
-    if f.name.endswith("_neg"):
-        plus = f.name[:-4]
-        for g in fields:
-            if g.name == plus and isinstance(g.default, (int, float)):
-                return float(g.default)
-    if md.get("search"):
-        lo, hi = md["search"]
-        return math.sqrt(lo * hi) if md.get("log") and lo > 0 else 0.5 * (lo + hi)
-    lower = md.get("lower", -math.inf)
-    return lower + 1.0 if math.isfinite(lower) else 0.0
+_INPUT_ROLES = {"v": "IN_V", "a": "IN_A", "load": "IN_LOAD", "x": "IN_X",
+                coupling.MEAN_INPUT: "IN_VMEAN", coupling.SHARE_INPUT: "IN_SHARE"}
+_PARAM_ROLES = {"use_v_mean": "USE_VMEAN", "use_low_share": "USE_SHARE", "h_lin": "H_LIN",
+                "inputs_at_step_end": "FOH"}
 
 
 def law_variables(model_cls) -> list[NVar]:
-    """Variables of the native FMU of a friction law class (``friction.MODELS`` entry)."""
-    P = model_cls.Params
-    options = getattr(P, "OPTIONS", {})
-    fields = dataclasses.fields(P)
+    """Variables of the native FMU of a friction law class (``friction.MODELS`` entry): the
+    shared list (:func:`fmus.variables.law_variables`, feedthrough probed) with the C roles,
+    plus the states' derivatives (Model Exchange)."""
+    switching = coupling.has_switch(model_cls)
+    lin_names = coupling.COUPLING_OUTPUTS + (coupling.SWITCH_OUTPUTS if switching else ())
     out: list[NVar] = []
-    flags: list[NVar] = []
-    for k, f in enumerate(fields):
-        md = f.metadata
-        desc = md.get("description", f.name)
-        if f.name in options:
-            items = tuple(sorted(options[f.name], key=options[f.name].get))
-            if [options[f.name][i] for i in items] != list(range(len(items))):
-                raise ValueError(f"{P.__name__}.OPTIONS[{f.name!r}] codes must be 0..n-1")
-            out.append(NVar(f.name, "Enumeration", "parameter", "PARAM", k,
-                            start=items.index(f.default) + 1, lower=1, upper=len(items),
-                            description=f"{f.name}: one of {', '.join(items)}",
-                            enum=items, enum_type=f"{model_cls.name}.{f.name}"))
-            continue
-        if isinstance(f.default, bool):
-            out.append(NVar(f.name, "Boolean", "parameter", "PARAM", k, start=float(f.default),
-                            description=f.name.replace("_", " ")))
-            continue
-        if "unit" not in md:
-            raise ValueError(f"{P.__name__}.{f.name} has no unit metadata and is no option")
-        lower, upper = md["lower"], md["upper"]
-        unit = _unit(md["unit"])
-        v = NVar(f.name, "Real", "parameter", "PARAM", k, lower=lower, upper=upper,
-                 lower_open=md["lower_open"], upper_open=md["upper_open"], unit=unit)
-        if f.default is None:
-            v.start = _optional_start(f, md, fields)
-            short = desc.split(" (None")[0]
-            v.description = f"{short} [{unit}], used when use_{f.name} is true"
-            flags.append(NVar(f"use_{f.name}", "Boolean", "parameter", "TWIN_FLAG", k,
-                              start=0.0, description=f"use {f.name} ({desc})"))
-        else:
-            v.start = float(f.default)
-            v.description = f"{desc} [{unit}]"
-        bt = v.bound_text()
-        if bt:
-            v.description += f" ({bt})"
-        out.append(v)
-    out += flags
-    ins = law_inputs(model_cls)
-    roles = {"v": "IN_V", "a": "IN_A", "load": "IN_LOAD", "x": "IN_X"}
-    for n in ins:
-        unit, desc = runtime.INPUT_INFO[n]
-        out.append(NVar(n, "Real", "input", roles[n], unit=unit, description=f"{desc} [{unit}]"))
-    switching = runtime.has_switch(model_cls)
-    if model_cls.state_names:
-        out.append(NVar(runtime.MEAN_INPUT, "Real", "input", "IN_VMEAN", unit="m/s",
-                        description="mean velocity over the last step, travel / step "
-                                    "(connect plant.v_mean; used with use_v_mean) [m/s]"))
-        out.append(NVar("use_v_mean", "Boolean", "parameter", "USE_VMEAN",
-                        description="advance the state over a step with the input v_mean (the "
-                                    "plant's travel) instead of the velocities at both ends"))
-    if switching:
-        out.append(NVar(runtime.SHARE_INPUT, "Real", "input", "IN_SHARE", unit="1",
-                        description="share of the last step the plant spent below v_switch "
-                                    "(connect plant.low_share; used with use_low_share and "
-                                    "inputs_at_step_end) [1]"))
-        out.append(NVar("use_low_share", "Boolean", "parameter", "USE_SHARE",
-                        description="advance the state with the mix of both regimes the "
-                                    "input low_share gives (Gauss-Seidel, plant first)"))
-    deps = runtime.law_feedthrough(model_cls, ins)
-    out.append(NVar("F", "Real", "output", "OUT_F", unit="N", description="friction force [N]",
-                    depends=deps))
-    lin_names = runtime.COUPLING_OUTPUTS + (runtime.SWITCH_OUTPUTS if switching else ())
-    for v in runtime.coupling_variables(ins, switching):
+    deps = ()
+    for v in shared.law_variables(model_cls, probe=True):
         if v.causality == "parameter":
-            role = "H_LIN" if v.name == "h_lin" else "FOH"
-            nv = NVar(v.name, v.type, "parameter", role, start=float(v.start), unit=v.unit,
-                      description=v.description, lower=v.lower)
-            out.append(nv)
+            if v.field >= 0:
+                out.append(_native(v, "TWIN_FLAG" if v.twin_of else "PARAM", v.field))
+            else:
+                out.append(_native(v, _PARAM_ROLES[v.name]))
+        elif v.causality == "input":
+            out.append(_native(v, _INPUT_ROLES[v.name]))
+        elif v.name == "F":
+            deps = tuple(v.depends)
+            out.append(_native(v, "OUT_F"))
+        elif v.name in lin_names:
+            out.append(_native(v, "OUT_LIN", lin_names.index(v.name)))
         else:
-            out.append(NVar(v.name, "Real", "output", "OUT_LIN", lin_names.index(v.name),
-                            unit=_unit(v.unit), description=v.description.replace("^", ""),
-                            depends=tuple(v.depends)))
-    units = getattr(model_cls, "state_units", None)
+            out.append(_native(v, "STATE", model_cls.state_names.index(v.name)))
     for j, s in enumerate(model_cls.state_names):
-        unit = units[j] if units else ("m" if j == 0 else "N" if s.startswith("F") else "")
-        desc = "bristle deflection" if j == 0 else f"internal state {s}"
-        out.append(NVar(s, "Real", "output", "STATE", j, unit=unit,
-                        description=f"{desc}" + (f" [{unit}]" if unit else "")))
-    for j, s in enumerate(model_cls.state_names):
-        unit = units[j] if units else ("m" if j == 0 else "N" if s.startswith("F") else "")
+        unit = shared.state_unit(model_cls, j)
         out.append(NVar(f"der({s})", "Real", "local", "DER", j,
                         unit=f"{unit}/s" if unit else "1/s",
                         description=f"time derivative of {s} (Model Exchange)",
@@ -180,37 +104,20 @@ def law_variables(model_cls) -> list[NVar]:
     return out
 
 
-#: effects block: parameters that must be > 0 (the others are free or switches)
-_EFFECTS_POSITIVE = ("a_s", "v_c", "T", "L0")
-_EFFECTS_INPUTS = (("F", "IN_F", "N", "force of the friction law"),
-                   ("v", "IN_V", "m/s", "sliding velocity"),
-                   ("a", "IN_A", "m/s2", "acceleration"),
-                   ("x", "IN_X", "m", "position"),
-                   ("load", "IN_LOAD", "N", "normal load"))
+_EFFECTS_ROLES = {"F_law": "IN_F", "v": "IN_V", "a": "IN_A", "x": "IN_X", "load": "IN_LOAD"}
 
 
 def effects_variables() -> list[NVar]:
-    """Variables of the native ``friction_effects`` block (``friction.extensions``)."""
-    from friction import extensions as ext
+    """Variables of the native ``friction_effects`` block (``friction.extensions``): the
+    shared list (:func:`fmus.variables.effects_variables`) with the C roles."""
     out = []
-    for k, (name, start, unit, desc) in enumerate(ext.EXTENSION_PARAMS):
-        unit = _unit(unit)
-        if name.startswith("use_"):
-            out.append(NVar(name, "Boolean", "parameter", "EXT", k, start=float(start),
-                            description=desc.replace(" on (1) or off (0)", " on")))
-        elif name in _EFFECTS_POSITIVE:
-            out.append(NVar(name, "Real", "parameter", "EXT", k, start=float(start), lower=0.0,
-                            lower_open=True, unit=unit, description=f"{desc} [{unit}]"))
+    for v in shared.effects_variables():
+        if v.causality == "parameter":
+            out.append(_native(v, "EXT", v.field))
+        elif v.causality == "input":
+            out.append(_native(v, _EFFECTS_ROLES[v.name]))
         else:
-            out.append(NVar(name, "Real", "parameter", "EXT", k, start=float(start), unit=unit,
-                            description=f"{desc} [{unit}]"))
-    for name, role, unit, desc in _EFFECTS_INPUTS:
-        out.append(NVar(name if name != "F" else "F_law", "Real", "input", role,
-                        start=1.0 if name == "load" else 0.0, unit=unit,
-                        description=f"{desc} [{unit}]"))
-    out.append(NVar("F", "Real", "output", "OUT_F", unit="N",
-                    description="friction force with the switched-on extensions [N]",
-                    depends=("F_law", "v", "a", "x", "load")))
+            out.append(_native(v, "OUT_F"))
     return out
 
 
@@ -218,20 +125,14 @@ def mass_variables() -> list[NVar]:
     """Variables of the native rigid mass (the pythonfmu mass's, plus its derivatives)."""
     out = []
     k = 0
-    for v in runtime.mass_variables():
+    for v in shared.mass_variables():
         if v.causality == "parameter":
-            out.append(NVar(v.name, "Real", "parameter", "MASS_PARAM", k, start=float(v.start),
-                            lower=v.lower, upper=v.upper, lower_open=v.lower_open,
-                            upper_open=v.upper_open, unit=v.unit, description=v.description))
+            out.append(_native(v, "MASS_PARAM", k))
             k += 1
         elif v.causality == "input":
-            out.append(NVar(v.name, "Real", "input",
-                            "IN_FEXT" if v.name == "F_ext" else "IN_FFRIC", start=float(v.start),
-                            unit=v.unit, description=v.description))
+            out.append(_native(v, "IN_FEXT" if v.name == "F_ext" else "IN_FFRIC"))
         else:
-            role = {"x": "OUT_X", "v": "OUT_V", "a": "OUT_A"}[v.name]
-            out.append(NVar(v.name, "Real", "output", role, unit=_unit(v.unit),
-                            description=v.description, depends=tuple(v.depends)))
+            out.append(_native(v, {"x": "OUT_X", "v": "OUT_V", "a": "OUT_A"}[v.name]))
     names = [v.name for v in out]
     if names[:6] != ["m", "x0", "v0", "u0", "u_amp", "u_freq"]:
         raise ValueError(f"mass parameters changed order: {names[:6]} (fl_fmi2.c reads them "

@@ -34,7 +34,7 @@ import tempfile
 import warnings
 import zipfile
 
-__all__ = ["SOURCE", "INNER_SUFFIX", "PLATFORM", "PLATFORMS", "MINGW_CC", "shim_library",
+__all__ = ["SOURCE", "INNER_SUFFIX", "PLATFORM", "PLATFORMS", "MINGW_CC", "shim_library", "libpython",
            "inner_name", "library_name", "fmi2_header_dir", "ShimUnavailable", "shim_or_warn",
            "shim_members", "rewrite_fmu", "install"]
 
@@ -111,6 +111,24 @@ def _mingw_compiler() -> list[str]:
 
 
 _FLAGS = ["-shared", "-fPIC", "-O2", "-fvisibility=hidden", "-Wall"]
+
+
+def libpython() -> tuple[str, str]:
+    """(path, soname) of the libpython the linux64 shim loads in a host without Python
+    (from this Python's ``sysconfig``: ``LIBDIR`` / ``INSTSONAME``); ``("", "")`` for a Python
+    without a shared libpython. A host overrides it with ``$FRICTIONLAB_LIBPYTHON``."""
+    name = sysconfig.get_config_var("INSTSONAME") or ""
+    libdir = sysconfig.get_config_var("LIBDIR") or ""
+    if not sysconfig.get_config_var("Py_ENABLE_SHARED") or not name.endswith(
+            tuple(f".so{x}" for x in ("", ".1", ".1.0"))):
+        return "", ""
+    path = os.path.join(libdir, name)
+    return (path if os.path.isfile(path) else ""), name
+
+
+def _libpython_flags() -> list[str]:
+    path, name = libpython()
+    return [f'-DFL_LIBPYTHON="{path}"', f'-DFL_LIBPYTHON_NAME="{name}"']
 _LIBS = ["-ldl", "-lpthread"]
 # win64: the fmi2 functions are exported by the header's FMI2_Export (__declspec(dllexport));
 # libgcc linked in, so the DLL needs only KERNEL32 and msvcrt (present on every Windows);
@@ -142,7 +160,7 @@ def shim_library(platform: str = PLATFORM) -> pathlib.Path:
                                                                                 "AMD64")):
             raise ShimUnavailable(f"the shim is built for {PLATFORM} on a linux x86_64 host "
                                   f"only (this host: {sys.platform} {platform_mod.machine()})")
-        flags, libs = _FLAGS, _LIBS
+        flags, libs = _FLAGS + _libpython_flags(), _LIBS
     else:
         flags, libs = _WIN64_FLAGS, _WIN64_LIBS
     headers = fmi2_header_dir()

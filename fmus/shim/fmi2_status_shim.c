@@ -25,6 +25,25 @@
  *
  * Only the loading differs (#ifdef _WIN32 below); the forwarding is the same code.
  *
+ * Python (linux64): pythonfmu's library needs the CPython API but does not link libpython.
+ * A Python host (fmpy, PyFMI) has it; a plain C host does not, so before loading the inner
+ * library the shim loads libpython with RTLD_GLOBAL when Py_IsInitialized is not yet
+ * visible: the path in $FRICTIONLAB_LIBPYTHON, else the build machine's (FL_LIBPYTHON, from
+ * Python's sysconfig at build time), else its soname (FL_LIBPYTHON_NAME) on the loader's
+ * search path. pythonfmu then initializes that Python; numpy and numba must be importable
+ * by it (its site-packages or PYTHONPATH).
+ *
+ * Exit (linux64): pythonfmu 0.7 keeps its interpreter guard in a static std::shared_ptr and
+ * resets it from an ELF destructor (finalizePythonInterpreter). Its library cannot be
+ * unloaded (it has STB_GNU_UNIQUE symbols), so both run at process exit, the C++ static
+ * destructor first (exit handlers run before the ELF destructors): the ELF destructor then
+ * resets a destroyed shared_ptr and frees its control block a second time - the "corrupted
+ * double-linked list" abort seen at exit of about one fresh FMU process in 30 (valgrind:
+ * invalid read in finalizePythonInterpreter of a block freed by __run_exit_handlers). The
+ * shim registers its own exit handler right after loading the inner library, so it runs
+ * before that static destructor, and calls finalizePythonInterpreter there: the guard is
+ * released once, while it is alive, and the later resets find it empty.
+ *
  * Logging: pythonfmu 0.7 drops every message unless logging is on, so the inner instance
  * always runs with logging on (all categories) and the shim applies the importer's
  * loggingOn / categories itself. Messages with status fmi2Error or fmi2Fatal are always
@@ -186,8 +205,56 @@ static int load_inner_path(void) {
 #else
 /* -- linux64: dlopen / dlsym ----------------------------------------------------------- */
 
+#ifndef FL_LIBPYTHON
+#define FL_LIBPYTHON ""                  /* build machine's libpython (fmus.status_shim) */
+#endif
+#ifndef FL_LIBPYTHON_NAME
+#define FL_LIBPYTHON_NAME ""             /* its soname, e.g. libpython3.11.so.1.0 */
+#endif
+
 static void *inner_handle = NULL;
+static void *python_handle = NULL;
 static pthread_once_t inner_once = PTHREAD_ONCE_INIT;
+
+/* Make the CPython API visible to the inner library (a C host has none). */
+static int load_libpython(void) {
+    const char *env = getenv("FRICTIONLAB_LIBPYTHON");
+    const char *tried[3];
+    int n = 0, i;
+    if (dlsym(RTLD_DEFAULT, "Py_IsInitialized") != NULL)
+        return 1;                        /* a Python host, or libpython preloaded */
+    if (env != NULL && env[0] != '\0')
+        tried[n++] = env;                /* the user's choice only */
+    else {
+        if (FL_LIBPYTHON[0] != '\0') tried[n++] = FL_LIBPYTHON;
+        if (FL_LIBPYTHON_NAME[0] != '\0') tried[n++] = FL_LIBPYTHON_NAME;
+    }
+    for (i = 0; i < n && python_handle == NULL; i++)
+        python_handle = dlopen(tried[i], RTLD_NOW | RTLD_GLOBAL);
+    if (python_handle == NULL) {
+        snprintf(inner_error, sizeof inner_error, "fmi2 status shim: this pythonfmu FMU needs "
+                 "libpython (Python %s with numpy and numba importable) and could not load "
+                 "it (%s%s%s): %s; set FRICTIONLAB_LIBPYTHON to the path of the "
+                 "libpython3.x.so of a Python that has numpy and numba",
+                 FL_LIBPYTHON_NAME[0] ? FL_LIBPYTHON_NAME : "3",
+                 n > 0 ? tried[0] : "no path known", n > 1 ? ", " : "", n > 1 ? tried[1] : "",
+                 n > 0 ? dlerror() : "FRICTIONLAB_LIBPYTHON is not set");
+        return 0;
+    }
+    return 1;
+}
+
+/* pythonfmu's exit-time reset of its interpreter guard, called before its static
+ * destructor runs (see the header: the exit-time heap corruption) */
+typedef void finalize_fn(void);
+static finalize_fn *inner_finalize = NULL;
+
+static void release_python_guard(void) {
+    finalize_fn *f = inner_finalize;
+    inner_finalize = NULL;
+    if (f != NULL)
+        f();
+}
 
 static void *sym(const char *name) {
     void *p = dlsym(inner_handle, name);
@@ -215,6 +282,8 @@ static int load_inner_path(void) {
     }
     memcpy(path, info.dli_fname, n - 3);
     memcpy(path + n - 3, INNER_SUFFIX, sizeof INNER_SUFFIX);
+    if (!load_libpython())
+        return 0;
     /* RTLD_NOW | RTLD_LOCAL: what ctypes and most importers use for an FMU binary */
     inner_handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
     if (inner_handle == NULL) {
@@ -222,6 +291,11 @@ static int load_inner_path(void) {
                  path, dlerror());
         return 0;
     }
+    /* registered after the inner library's static constructors: runs before its static
+     * destructors (at exit, or when this shim is unloaded) */
+    inner_finalize = (finalize_fn *)dlsym(inner_handle, "finalizePythonInterpreter");
+    if (inner_finalize != NULL)
+        atexit(release_python_guard);
     return 1;
 }
 #endif

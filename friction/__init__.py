@@ -24,7 +24,9 @@ def _register_optional():
     for mod, cls, name in (("stribeck", "StaticStribeck", "stribeck"),
                            ("modified_lugre", "ModifiedLuGre", "modified_lugre"),
                            ("load_lugre", "LoadLuGre", "load_lugre"),
-                           ("mre_lugre", "MRELuGre", "mre_lugre")):
+                           ("mre_lugre", "MRELuGre", "mre_lugre"),
+                           ("gms", "GMS", "gms"),
+                           ("backlash", "BacklashLuGre", "backlash_lugre")):
         try:
             m = importlib.import_module(f"{__name__}.{mod}")
         except ModuleNotFoundError as exc:
@@ -50,7 +52,7 @@ def make_model(name: str, params: FrictionParams | None = None, **kwargs) -> Fri
     ----------
     name : str
         One of ``MODELS`` (``lugre``, ``modified_lugre``, ``load_lugre``, ``mre_lugre``,
-        ``stribeck``).
+        ``stribeck``, ``gms``, ``backlash_lugre``).
     params : FrictionParams, optional
         A parameter dataclass instance; keyword arguments override its fields.
     **kwargs

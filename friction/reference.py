@@ -93,7 +93,12 @@ def simulate_prescribed(model: FrictionModel, t, v, *, a=None, load=None, x=None
 
 
 def _state_scale(model: FrictionModel) -> np.ndarray:
-    """Typical magnitude of each state (the bristle deflection is ~Fc/sigma0, tiny)."""
+    """Typical magnitude of each state (the bristle deflection is ~Fc/sigma0, tiny): the
+    law's ``state_scales()`` where it has one (several small states: the GMS blocks, the
+    backlash gap), else ``z_max()`` for the first state and 1 for the others."""
+    scales = getattr(model, "state_scales", None)
+    if callable(scales):
+        return np.asarray(scales(), dtype=float)
     zmax = getattr(model, "z_max", None)
     z = zmax() if callable(zmax) else 1e-5
     sc = np.full(len(model.state_names), 1.0)

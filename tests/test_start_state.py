@@ -98,7 +98,14 @@ def test_a_record_cut_while_speeding_up_starts_where_the_whole_record_was(name):
         assert abs(ss[0] - S[1, 0]) > 0.5 * abs(ss[0])
 
 
-@pytest.mark.parametrize("name", sorted(n for n in MODELS if n != "stribeck"))
+#: laws whose first measured force cannot pin their state: the GMS has four block deflections
+#: and the backlash the place in the gap besides the bristle, so the force selects a state
+#: on a one-parameter family only (tests/test_gms.py and tests/test_backlash.py check theirs);
+#: the record below started from an undeflected contact at speed (k = 0) is not on it
+_HIDDEN_STATE = ("stribeck", "gms", "backlash_lugre")
+
+
+@pytest.mark.parametrize("name", sorted(n for n in MODELS if n not in _HIDDEN_STATE))
 def test_the_measured_first_force_gives_the_bristle_state_a_record_has(name):
     # a record cut anywhere (speeding up, slowing down before a reversal, at a reversal):
     # the first measured force gives back the state the whole record's simulation had

@@ -64,5 +64,7 @@ extern const fl_law_def fl_law_stribeck;
 extern const fl_law_def fl_law_modified_lugre;
 extern const fl_law_def fl_law_load_lugre;
 extern const fl_law_def fl_law_mre_lugre;
+extern const fl_law_def fl_law_gms;
+extern const fl_law_def fl_law_backlash_lugre;
 
 #endif

@@ -1,0 +1,397 @@
+"""Generalized Maxwell-slip (GMS) friction: presliding hysteresis with nonlocal memory.
+
+The contact is N = 4 elementary slip-blocks in parallel (after Al-Bender, Lampaert and
+Swevers, IEEE Trans. Autom. Control 50 (2005) 1883, written here from the model's
+description). Block i is tied to the moving body by a spring of stiffness k_i; its
+deflection z_i [m] carries the force F_i = k_i z_i. The block can carry at most its share
+of the Stribeck curve, w_i g(v) with w_i = 1/N, i.e. a deflection
+
+    d_i(v) = w_i g(v) / k_i,      g(v) = Fc + (Fs - Fc) exp(-|v/vs|^alpha)   (or lorentzian).
+
+Each block either sticks or slips, and it does whichever is slower. Sticking, it moves
+with the body: its force grows at the elastic rate k_i |v|. Slipping, its force is attracted
+to its share of the Stribeck curve at the attraction rate C [N/s]:
+dF_i/dt = C (w_i s - F_i / g(v)), s = sgn(v). With u_i = s z_i (the deflection in the
+direction of motion) and lam = C / g(v) [1/s]:
+
+    du_i/dt = min(|v|, lam (d_i(v) - u_i)),      dz_i/dt = s du_i/dt   (0 at v = 0).
+
+So a block sticks while it is far below its saturation (and after every reversal, where
+u_i <= 0), starts slipping once the attraction is the slower rate, at
+u_i = d_i - |v| / lam, just below its break-away deflection, and then settles on d_i;
+beyond d_i (the curve fell under it) it relaxes down at the rate lam. The friction force is
+
+    F = sum_i k_i z_i + sigma2 v + b.
+
+At a constant speed every block ends at d_i(v) and F = g(v) sgn(v) + sigma2 v + b: the
+Stribeck curve. The slipping blocks follow a changing curve with the lag g/C both when
+speeding up (friction above the curve) and when slowing down (below it): the frictional
+lag. Slow presliding (|v| g / C << d_i) makes every block an ideal elastoplastic element
+(stiffness k_i, yield force w_i g): the presliding force is rate-independent and has the
+nonlocal memory of a Maxwell-slip model: an inner loop closes where it started and the
+motion then continues on the branch it left (return-point memory and wiping-out), and a
+branch started at a reversal (x_r, F_r) follows Masing's rule F - F_r = 2 F_v((x - x_r)/2),
+F_v the virgin curve.
+
+Compact parametrisation: the stiffnesses are geometric, k_i = sigma0 c_i / sum(c) with
+c_i = spread^(-(i-1)/(N-1)), so ``sigma0`` is the stiffness right after a reversal (every
+block sticking; LuGre's sigma0) and ``spread`` the ratio of the stiffest to the softest
+block: 1 makes the four blocks one elastoplastic element (a sharp corner at F = g), a large
+spread a gradual presliding curve. The blocks break away at the deflections d_i, from
+g / (N sigma0) (the stiffest block at ``spread`` = 1) up to the presliding distance
+:meth:`GMS.presliding_distance`.
+
+Inputs: the velocity only (``extra_inputs`` is empty). As a candidate: ``sigma0``,
+``spread`` and ``C`` describe the presliding and the lag; ``Fc, Fs, vs, alpha, sigma2, b``
+the steady-state curve (:meth:`GMS.steady_state`), shared with the LuGre law.
+
+Difference from the published GMS: there a block sticks until its force reaches w_i g
+exactly and then slips until the velocity reverses; the mode is a memory of its own. Here
+the mode is a function of the state (the slower of the two rates), which the
+continuous-time reference and a Model Exchange FMU need (their states are the four
+deflections, no mode flags), and it makes the state equation continuous (Lipschitz in z),
+so a stiff integrator follows it. The two agree except that a block starts slipping a
+deflection |v| g / C before its break-away: the presliding corners are rounded by that
+much (vanishing for slow motion or a fast attraction), and after a reversal faster than
+2 C d_i / g a block reloads at the attraction rate rather than elastically.
+
+Numerics (``method="exact"``): a step whose velocity changes sign is cut at the reversal
+(:func:`friction.steps.split_step`); over each piece the velocity is frozen at the
+piece's midpoint value (exact for the travel of a linearly interpolated velocity) and each
+block's equation is solved exactly: a translation at |v_p| until the switch
+u* = d_i - |v_p| / lam, then u = d_i - (|v_p| / lam) e^{-lam (T - tau)}; from beyond the
+switch u = d_i + (u - d_i) e^{-lam T}. Every update is a translation clipped by a
+contraction, stable at any step and stiffness. Explicit Euler of the same equations is
+``method="euler"`` (it overshoots the break-away and oscillates once h C / g > 2).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+from numba import njit, prange
+
+from ._validation import ParameterError
+from .base import FrictionModel, FrictionParams, param
+from .lugre import _em1
+from .shapes import SHAPES, stribeck_g, stribeck_g_np
+from .steps import split_step
+
+__all__ = ["GMSParams", "GMS", "N_ELEMENTS", "gms_run", "element_stiffness"]
+
+#: number of slip-blocks (fixed: a native FMU holds at most four continuous states)
+N_ELEMENTS = 4
+
+
+@dataclass(frozen=True)
+class GMSParams(FrictionParams):
+    """Parameters of the GMS law (defaults: a small precision-stage contact like LuGre's)."""
+    OPTIONS: ClassVar[dict] = {"shape": SHAPES}
+    sigma0: float = param(1e5, "N/m", "total stiffness of the slip-blocks, the presliding "
+                          "stiffness right after a reversal", lower=0, lower_open=True,
+                          upper=1e9, search=(1e3, 1e7), log=True)
+    spread: float = param(10.0, "1", "stiffness ratio of the stiffest to the softest "
+                          "slip-block (geometric; 1: one elastoplastic element)", lower=1.0,
+                          upper=1e6, search=(1.0, 1e3), log=True)
+    C: float = param(1e4, "N/s", "attraction rate of a slipping block's force to its share "
+                     "of the Stribeck curve (frictional lag g/C)", lower=0, lower_open=True,
+                     upper=1e12, search=(1.0, 1e6), log=True)
+    sigma2: float = param(0.4, "N.s/m", "viscous coefficient", lower=0, search=(0.0, 50.0))
+    Fc: float = param(1.0, "N", "Coulomb friction level", lower=0, lower_open=True,
+                      search=(1e-2, 50.0))
+    Fs: float = param(1.5, "N", "static (break-away) friction level", lower=0,
+                      lower_open=True, search=(1e-2, 60.0))
+    vs: float = param(1e-3, "m/s", "Stribeck velocity", lower=0, lower_open=True,
+                      search=(1e-5, 0.1), log=True)
+    alpha: float = param(2.0, "1", "Stribeck shape exponent (gaussian shape)", lower=0,
+                         lower_open=True, upper=10, search=(0.3, 4.0))
+    b: float = param(0.0, "N", "constant force offset", search=(-5.0, 5.0))
+    shape: str = "gaussian"
+
+    def _check_relations(self):
+        if self.shape not in SHAPES:
+            raise ParameterError(f"shape = {self.shape!r}: must be one of {sorted(SHAPES)}")
+
+
+_LAYOUT = ("sigma0", "spread", "C", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape")
+S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE = range(len(_LAYOUT))
+_W = 1.0 / N_ELEMENTS  # share of the Stribeck curve each block carries
+
+
+@njit(cache=True, inline="always")
+def element_stiffness(sigma0, spread, k):
+    """Fill ``k[0..3]`` with the blocks' stiffnesses [N/m]: geometric, summing to sigma0."""
+    r = spread ** (-1.0 / 3.0)
+    c1 = r
+    c2 = r * r
+    c3 = c2 * r
+    tot = 1.0 + c1 + c2 + c3
+    k[0] = sigma0 / tot
+    k[1] = sigma0 * c1 / tot
+    k[2] = sigma0 * c2 / tot
+    k[3] = sigma0 * c3 / tot
+
+
+@njit(cache=True, inline="always")
+def _block_piece(z, vp, T, d, lam):
+    """Exact update of one block over a piece of duration T [s] at the frozen velocity
+    ``vp`` [m/s], break-away deflection ``d`` [m] and attraction rate ``lam`` = C/g [1/s]:
+    du/dt = min(|vp|, lam (d - u)) for u = sgn(vp) z."""
+    if vp > 0.0:
+        s = 1.0
+    elif vp < 0.0:
+        s = -1.0
+    else:
+        return z
+    u = s * z
+    sp = s * vp
+    ustar = d - sp / lam  # where the attraction becomes the slower rate
+    if u < ustar:
+        u1 = u + sp * T  # sticking: moves with the body
+        if u1 <= ustar:
+            u = u1
+        else:  # reaches the switch inside the piece, then slips for the rest of it
+            tau = (ustar - u) / sp
+            u = d - (sp / lam) * math.exp(-lam * (T - tau))
+    else:
+        u = u + (u - d) * _em1(lam * T)  # slipping: relaxes onto d
+    return s * u
+
+
+@njit(cache=True, inline="always")
+def _block_rate(z, v, d, lam):
+    """dz/dt [m/s] of one block at velocity ``v``: sgn(v) min(|v|, lam (d - sgn(v) z)),
+    with d = w g / k [m] and lam = C / g [1/s]."""
+    if v > 0.0:
+        r = lam * (d - z)
+        return v if v < r else r
+    if v < 0.0:
+        r = lam * (d + z)
+        return v if -v < r else -r
+    return 0.0
+
+
+@njit(cache=True)
+def gms_run(t, v, th, method, z0, F, Z):
+    """Simulate one parameter set along (t, v); writes F[k] and Z[k, :] in place."""
+    n = t.size
+    k = np.empty(N_ELEMENTS)
+    element_stiffness(th[S0], th[SPREAD], k)
+    wk = np.empty(N_ELEMENTS)
+    for i in range(N_ELEMENTS):
+        wk[i] = _W / k[i]
+    C = th[CA]
+    s2 = th[S2]
+    b = th[B]
+    fc, fs, vs, alpha, shape = th[FC], th[FS], th[VS], th[ALPHA], th[SHAPE]
+    z = np.empty(N_ELEMENTS)
+    for i in range(N_ELEMENTS):
+        z[i] = z0[i]
+    for j in range(n):
+        vj = v[j]
+        f = 0.0
+        for i in range(N_ELEMENTS):
+            f += k[i] * z[i]
+            Z[j, i] = z[i]
+        F[j] = f + s2 * vj + b
+        if j + 1 < n:
+            h = t[j + 1] - t[j]
+            if method == 1:
+                g = stribeck_g(vj, fc, fs, vs, alpha, shape)
+                lam = C / g
+                for i in range(N_ELEMENTS):
+                    z[i] = z[i] + h * _block_rate(z[i], vj, g * wk[i], lam)
+            else:
+                T1, a1, b1, T2, a2, b2 = split_step(vj, v[j + 1], h)
+                for piece in range(2):
+                    if piece == 0:
+                        T, vp = T1, 0.5 * (a1 + b1)
+                    else:
+                        T, vp = T2, 0.5 * (a2 + b2)
+                    if T <= 0.0 or vp == 0.0:
+                        continue
+                    g = stribeck_g(vp, fc, fs, vs, alpha, shape)
+                    lam = C / g
+                    for i in range(N_ELEMENTS):
+                        z[i] = _block_piece(z[i], vp, T, g * wk[i], lam)
+
+
+@njit(cache=True)
+def _kernel(t, v, a, load, x, th, method, state0):
+    F = np.empty(t.size)
+    Z = np.empty((t.size, N_ELEMENTS))
+    gms_run(t, v, th, method, state0, F, Z)
+    return F, Z
+
+
+@njit(cache=True, parallel=True)
+def _population_kernel(t, v, a, load, x, Theta, method):
+    npop = Theta.shape[0]
+    F = np.empty((npop, t.size))
+    for i in prange(npop):
+        Z = np.empty((t.size, N_ELEMENTS))
+        gms_run(t, v, Theta[i], method, np.zeros(N_ELEMENTS), F[i], Z)
+    return F
+
+
+class GMS(FrictionModel):
+    """Generalized Maxwell-slip law with four slip-blocks; see the module docstring.
+
+    Examples
+    --------
+    >>> from friction import make_model
+    >>> m = make_model("gms", sigma0=1e5, spread=10.0, C=1e4, Fc=1.0, Fs=1.5, vs=1e-3)
+    >>> float(m.steady_state([1e-2])[0])   # doctest: +ELLIPSIS
+    1.004...
+    """
+    name = "gms"
+    Params = GMSParams
+    state_names = tuple(f"z{i + 1}" for i in range(N_ELEMENTS))
+    state_units = ("m",) * N_ELEMENTS
+    theta_layout = _LAYOUT
+    twins: ClassVar[dict] = {}
+
+    _kernel = staticmethod(_kernel)
+    _population_kernel = staticmethod(_population_kernel)
+
+    def _pack(self, p: GMSParams) -> np.ndarray:
+        return np.array([p.sigma0, p.spread, p.C, p.sigma2, p.Fc, p.Fs, p.vs, p.alpha, p.b,
+                         SHAPES[p.shape]], dtype=np.float64)
+
+    # -- pieces of the law --------------------------------------------------------------
+    def element_stiffness(self) -> np.ndarray:
+        """Stiffnesses k_i of the four blocks [N/m] (stiffest first; they sum to sigma0)."""
+        k = np.empty(N_ELEMENTS)
+        element_stiffness(self.params.sigma0, self.params.spread, k)
+        return k
+
+    def g(self, v) -> np.ndarray:
+        """Stribeck curve g(v) [N]."""
+        p = self.params
+        return stribeck_g_np(v, p.Fc, p.Fs, p.vs, p.alpha, p.shape)
+
+    def saturation(self, v) -> np.ndarray:
+        """Break-away deflections d_i(v) = g(v) / (N k_i) of the blocks [m] at velocity v."""
+        return float(self.g(float(v))) * (_W / self.element_stiffness())
+
+    def presliding_distance(self, level: float | None = None) -> float:
+        """Travel from a state of rest without history until every block slips [m]: the
+        softest block's break-away deflection at the level ``level`` [N] (default Fs, the
+        level at rest). After a reversal from sliding the transition takes twice that."""
+        level = self.params.Fs if level is None else float(level)
+        return float(level * _W / self.element_stiffness()[-1])
+
+    def virgin_force(self, x, level: float | None = None) -> np.ndarray:
+        """Presliding force [N] of a first loading from rest without history by the
+        displacement ``x`` [m] at the constant level ``level`` [N] (default Fs):
+        F_v(x) = sum_i k_i clip(x, -d_i, d_i), d_i = level / (N k_i). Rate terms
+        (sigma2, b) not included."""
+        level = self.params.Fs if level is None else float(level)
+        k = self.element_stiffness()
+        d = level * (_W / k)
+        x = np.asarray(x, dtype=float)
+        return np.sum(k * np.clip(x[..., None], -d, d), axis=-1)
+
+    def z_max(self) -> float:
+        """Bound of every block's deflection [m]: the softest block's break-away deflection
+        at the larger level max(Fc, Fs) (from a start within the bounds)."""
+        return self.presliding_distance(max(self.params.Fc, self.params.Fs))
+
+    def state_scales(self) -> np.ndarray:
+        """Typical magnitude of each state [m]: each block's largest break-away deflection
+        (the reference integrator's absolute tolerance scales with it)."""
+        return max(self.params.Fc, self.params.Fs) * (_W / self.element_stiffness())
+
+    # -- analytic pieces ----------------------------------------------------------------
+    def steady_state(self, v, **inputs) -> np.ndarray:
+        """Steady-state (Stribeck) force F_ss(v) = g(v) sgn(v) + sigma2 v + b [N]."""
+        v = np.asarray(v, dtype=float)
+        p = self.params
+        return self.g(v) * np.sign(v) + p.sigma2 * v + p.b
+
+    def derivatives(self, state, v, **inputs) -> np.ndarray:
+        """dz_i/dt [m/s] of the four blocks at velocity ``v`` [m/s] (module docstring)."""
+        p = self.params
+        v = float(v)
+        g = float(self.g(v))
+        k = self.element_stiffness()
+        lam = p.C / g
+        out = np.empty(N_ELEMENTS)
+        for i in range(N_ELEMENTS):
+            out[i] = _block_rate(float(state[i]), v, g * (_W / k[i]), lam)
+        return out
+
+    def force(self, state, v, **inputs) -> float:
+        """F = sum_i k_i z_i + sigma2 v + b [N]."""
+        p = self.params
+        k = self.element_stiffness()
+        f = 0.0
+        for i in range(N_ELEMENTS):
+            f += k[i] * float(state[i])
+        return f + p.sigma2 * float(v) + p.b
+
+    def steady_state_state(self, v0, **inputs) -> np.ndarray:
+        """Every block at its break-away deflection in the direction of ``v0``:
+        z_i = sgn(v0) d_i(v0) [m] (zeros at rest); the slip rates vanish there."""
+        v0 = float(v0)
+        if v0 == 0.0 or not math.isfinite(v0):
+            return np.zeros(N_ELEMENTS)
+        k = self.element_stiffness()
+        g = float(self.g(v0))
+        d = np.array([g * (_W / k[i]) for i in range(N_ELEMENTS)])
+        return d if v0 > 0 else -d
+
+    def _start_from(self, t, v, a, load, x, F0=None) -> np.ndarray:
+        """:meth:`record_start_state`; with a measured first force the four deflections
+        come from the one-parameter family of states the force can tell apart:
+
+        * at rest (``v[0] = 0``): a first loading from rest without history,
+          z_i = clip(u, -d_i, d_i) at the level Fs;
+        * in motion with sign s: a branch started at a reversal from sliding the other
+          way, z_i = s clip(u - d_i, -d_i, d_i), u >= 0, at the level g(v[0]) (the state
+          a record cut in the presliding after a reversal has; u >= 2 d_i: sliding).
+
+        u solves F(z(u)) = F[0] (monotone in u, by bisection); a force beyond the law's
+        reach gives the saturated end of the family. The force cannot tell the four
+        deflections apart in general (a record started from an undeflected contact at
+        speed is not in this family): it picks the state of the common cases.
+        """
+        s = self._motion_start(t, v, a, load, x, {})
+        if F0 is None or not math.isfinite(F0):
+            return s
+        p = self.params
+        v0 = float(v[0])
+        k = self.element_stiffness()
+        target = F0 - p.sigma2 * v0 - p.b
+        if v0 == 0.0:
+            d = p.Fs * (_W / k)
+            sgn, lo, hi = 1.0, -float(np.max(d)), float(np.max(d))
+
+            def state(u):
+                return np.clip(u, -d, d)
+        else:
+            d = float(self.g(v0)) * (_W / k)
+            sgn, lo, hi = math.copysign(1.0, v0), 0.0, 2.0 * float(np.max(d))
+
+            def state(u):
+                return sgn * np.clip(u - d, -d, d)
+
+        def f(u):
+            return float(np.sum(k * state(u))) * sgn  # increasing in u
+
+        want = target * sgn
+        if want <= f(lo):
+            return state(lo)
+        if want >= f(hi):
+            return state(hi)
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if mid <= lo or mid >= hi:
+                break
+            if f(mid) < want:
+                lo = mid
+            else:
+                hi = mid
+        return state(0.5 * (lo + hi))

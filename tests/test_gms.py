@@ -1,0 +1,222 @@
+"""The generalized Maxwell-slip law (friction/gms.py): presliding hysteresis with nonlocal
+memory, the transition to the Stribeck curve, frictional lag, stable numerics and the
+kernel against the continuous-time reference."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from friction import MODELS, make_model
+from friction.gms import GMS, GMSParams, N_ELEMENTS
+from friction.reference import simulate_prescribed
+
+#: rate-independent presliding: the attraction so fast that the corner rounding |v| g / C
+#: is below rounding of the deflections
+FAST = dict(C=1e12, sigma2=0.0)
+
+
+def legs(points, unit, n_unit=80, V=1e-5):
+    """A drive moving at speed V from point to point (positions [m], multiples of ``unit``),
+    coming to rest for one sample at each turning point. ``n_unit`` steps per ``unit`` of
+    travel. Returns t, v, the drive's displacement x (the trapezoid of v: the travel the
+    kernel sees) and the sample indices of the turning points (v = 0 there)."""
+    h = unit / (V * n_unit)
+    v, turns = [0.0], []
+    for a, b in zip(points[:-1], points[1:]):
+        m = int(round(abs(b - a) / unit)) * n_unit  # travel m V h: 0 -> V, V ... V, V -> 0
+        v += [float(np.sign(b - a)) * V] * m + [0.0]
+        turns.append(len(v) - 1)
+    v = np.asarray(v)
+    t = h * np.arange(v.size)
+    x = np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * h)))
+    return t, v, x, turns
+
+
+def test_registered_with_units_bounds_and_search_ranges():
+    assert MODELS["gms"] is GMS
+    m = make_model("gms")
+    assert m.state_names == ("z1", "z2", "z3", "z4") and m.extra_inputs == ()
+    for info in GMSParams.info():
+        assert info.unit and info.description and info.search is not None, info.name
+        assert info.admissible(getattr(m.params, info.name)), info.name
+    k = m.element_stiffness()
+    assert k.sum() == pytest.approx(m.params.sigma0, rel=1e-14)
+    assert k[0] / k[-1] == pytest.approx(m.params.spread, rel=1e-12)
+    assert np.all(np.diff(k) < 0)
+    np.testing.assert_allclose(make_model("gms", spread=1.0).element_stiffness(),
+                               np.full(N_ELEMENTS, 2.5e4), rtol=1e-14)
+
+
+@pytest.mark.parametrize("kw", [{}, {"shape": "lorentzian"}, {"alpha": 0.8, "b": 0.3},
+                                {"C": 50.0, "spread": 300.0}])
+@pytest.mark.parametrize("speed", [2e-4, 1e-3, 5e-3, 0.1])
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_sliding_at_a_constant_speed_settles_on_the_stribeck_curve(kw, speed, sign):
+    m = make_model("gms", **kw)
+    T = 30 * m.params.Fs / m.params.C + 20 * m.presliding_distance() / speed
+    t = np.linspace(0.0, T, 4001)
+    v = np.full(t.size, sign * speed)
+    F, S = m.simulate(t, v, return_state=True)
+    Fss = float(m.steady_state([sign * speed])[0])
+    assert F[-1] == pytest.approx(Fss, rel=1e-9)
+    np.testing.assert_allclose(S[-1], m.steady_state_state(sign * speed), rtol=1e-9)
+    assert np.all(np.abs(m.derivatives(S[-1], sign * speed)) <= 1e-9 * speed)
+
+
+def test_virgin_curve_and_the_transition_to_sliding():
+    """A first loading from rest follows the virgin curve sum k_i clip(x, d_i) (every block
+    elastic, then slipping one after the other: the stiffest first) and reaches the
+    sliding force g at the presliding distance, Stribeck level at rest Fs."""
+    m = make_model("gms", Fc=1.5, Fs=1.5, **FAST)
+    d = m.presliding_distance()
+    t, v, x, _ = legs([0.0, 1.5 * d], 1.5 * d, 600)
+    F = m.simulate(t, v)
+    np.testing.assert_allclose(F, m.virgin_force(x), rtol=0, atol=1e-12)
+    k = m.element_stiffness()
+    # slope sigma0 at the start, falling by k_i as each block breaks away
+    assert (F[1] - F[0]) / (x[1] - x[0]) == pytest.approx(m.params.sigma0, rel=1e-9)
+    assert F[-1] == pytest.approx(1.5, rel=1e-12)
+    brk = 1.5 / (N_ELEMENTS * k)
+    np.testing.assert_allclose(brk[-1], d, rtol=1e-14)
+    inside = x < 0.999 * brk[0]
+    np.testing.assert_allclose(F[inside], m.params.sigma0 * x[inside], rtol=1e-9)
+
+
+def test_presliding_hysteresis_has_nonlocal_memory():
+    """Outer loop +-A with inner loops: each inner loop closes where it left the outer one
+    (return-point memory), the motion then continues on the outer branch as if the inner
+    loop had not been (wiping-out), and every branch obeys Masing's rule
+    F - F_r = +-2 F_v((x - x_r) / 2) from its reversal point (x_r, F_r)."""
+    m = make_model("gms", Fc=1.0, Fs=1.0, spread=30.0, **FAST)
+    A = 0.8 * m.presliding_distance(1.0)
+    # outer loop, then a descending branch interrupted by two nested inner loops
+    plain = [0.0, A, -A, A, -A]
+    nested = [0.0, A, -A, A, 0.2 * A, 0.6 * A, 0.4 * A, 0.6 * A, 0.2 * A, A, -A]
+    tp, vp, xp, turns_p = legs(plain, 0.2 * A)
+    tn, vn, xn, turns_n = legs(nested, 0.2 * A)
+    Fp, Sp = m.simulate(tp, vp, return_state=True)
+    Fn, Sn = m.simulate(tn, vn, return_state=True)
+    scale = np.max(np.abs(Sp), axis=0)
+    # return points (turns_n[j] is where the drive stops at nested[j + 1]): the inner loop
+    # 0.6A -> 0.4A -> 0.6A closes at 0.6A, the loop 0.2A -> ... -> 0.2A at 0.2A, and back
+    # at A the state is the outer loop's at A
+    for i, j in ((turns_n[4], turns_n[6]), (turns_n[3], turns_n[7]), (turns_n[2], turns_n[8])):
+        assert xn[i] == pytest.approx(xn[j], abs=1e-15)
+        np.testing.assert_allclose(Sn[i] / scale, Sn[j] / scale, rtol=0, atol=1e-12)
+    # wiping-out: the last descending branch A -> -A equals the plain loop's
+    last_n = slice(turns_n[8], turns_n[9] + 1)
+    last_p = slice(turns_p[2], turns_p[3] + 1)
+    np.testing.assert_allclose(Fn[last_n], Fp[last_p], rtol=0, atol=1e-12)
+    # Masing: the descending branch from (A, F_A) is F_A - 2 F_v((A - x) / 2), the
+    # ascending one from (-A, F_-A) is F_-A + 2 F_v((x + A) / 2); inner branches likewise
+    for i0, i1 in zip(turns_n[1:-1], turns_n[2:]):
+        seg = slice(i0, i1 + 1)
+        xr, Fr = xn[i0], Fn[i0]
+        sgn = np.sign(xn[i1] - xr)
+        expect = Fr + sgn * 2.0 * m.virgin_force(np.abs(xn[seg] - xr) / 2.0, level=1.0)
+        np.testing.assert_allclose(Fn[seg], expect, rtol=0, atol=1e-11)
+    # the loop is a hysteresis: it encloses area (the energy dissipated, F along the motion
+    # above F against it) and is point-symmetric
+    assert np.trapezoid(Fp[turns_p[1]:turns_p[3] + 1], xp[turns_p[1]:turns_p[3] + 1]) > 0
+    up = slice(turns_p[2], turns_p[3] + 1)
+    down = slice(turns_p[1], turns_p[2] + 1)
+    np.testing.assert_allclose(Fp[up], -Fp[down], rtol=0, atol=1e-12)
+
+
+def test_presliding_is_rate_independent_in_the_limit_of_a_fast_attraction():
+    """With a finite attraction rate a block starts slipping |v| g / C before its
+    break-away deflection: the virgin curve is rounded at each break-away by at most
+    sigma0 |v| g / C, which vanishes as the attraction gets faster (or the motion slower)."""
+    devs = []
+    for C in (1e3, 1e4, 1e5):
+        m = make_model("gms", Fc=1.0, Fs=1.0, spread=30.0, C=C, sigma2=0.0)
+        V = 1e-4
+        d = m.presliding_distance()
+        t, v, x, _ = legs([0.0, 1.5 * d], 1.5 * d, 1000, V=V)
+        dev = np.max(np.abs(m.simulate(t, v) - m.virgin_force(x, level=1.0)))
+        assert 0.0 < dev <= m.params.sigma0 * V * 1.0 / C
+        devs.append(dev)
+    assert devs[1] < 0.2 * devs[0] and devs[2] < 0.2 * devs[1], devs
+
+
+def test_frictional_lag_above_the_curve_speeding_up_and_below_slowing_down():
+    m = make_model("gms", C=200.0, vs=5e-3, shape="lorentzian")
+    t = np.linspace(0.0, 0.2, 20001)
+    v = 8e-3 * (1.2 - np.cos(2 * np.pi * 5 * t))  # always forward, speeding up and down
+    F = m.simulate(t, v, state0=m.steady_state_state(v[0]))
+    Fss = m.steady_state(v)
+    acc = np.gradient(v, t)
+    late = t > 0.05
+    # the Stribeck curve falls with speed: speeding up the blocks lag above it, slowing
+    # down below it
+    assert np.all((F - Fss)[late & (acc > 0.3 * acc.max())] > 0)
+    assert np.all((F - Fss)[late & (acc < 0.3 * acc.min())] < 0)
+    lag = m.params.Fs / m.params.C
+    assert 1e-3 < lag < 1e-2
+    # a much faster attraction follows the curve
+    fast = m.with_values(C=1e7).simulate(t, v, state0=m.steady_state_state(v[0]))
+    assert np.max(np.abs(fast - Fss)[late]) < 2e-3 * np.max(np.abs(F - Fss)[late])
+
+
+@pytest.mark.parametrize("h", [1e-6, 1e-4, 1e-2])
+def test_exact_update_is_stable_at_any_step_and_stiffness(h):
+    m = make_model("gms", sigma0=1e9, C=1e12, spread=1e6, Fc=0.1, Fs=5.0)
+    t = h * np.arange(3000)
+    rng = np.random.default_rng(0)
+    v = np.repeat(rng.standard_normal(300), 10) * 10.0 ** rng.uniform(-6, 0, 3000)
+    F, S = m.simulate(t, v, return_state=True)
+    assert np.all(np.isfinite(F))
+    dmax = max(m.params.Fc, m.params.Fs) / (N_ELEMENTS * m.element_stiffness())
+    assert np.all(np.abs(S) <= dmax * (1 + 1e-12))
+    assert np.max(np.abs(F)) <= m.params.Fs * (1 + 1e-9) + m.params.sigma2 * np.max(np.abs(v))
+    # explicit Euler of the same equations overshoots the break-away and oscillates once
+    # h C / g > 2 (the sticking rate |v| bounds it from below)
+    t = 1e-3 * np.arange(200)
+    m = make_model("gms", C=1e5)
+    Fe = m.simulate(t, np.full(t.size, 1e-2), method="euler")
+    assert np.max(np.abs(Fe)) > 10 * m.params.Fs
+    F = m.simulate(t, np.full(t.size, 1e-2))
+    assert np.max(np.abs(F)) <= m.params.Fs
+
+
+def test_kernel_converges_to_the_continuous_time_reference():
+    """Max force error of the kernel against simulate_prescribed (Radau, rtol 1e-10) on a
+    motion with reversals, presliding and sliding, Stribeck curve and lag on: second order
+    in the step."""
+    m = make_model("gms", C=2e3)
+    T = 0.1
+    tr = np.linspace(0.0, T, 201)
+    vr = 3e-3 * np.sin(2 * np.pi * 20 * tr) + 1e-3 * np.sin(2 * np.pi * 73 * tr)
+    Fr = simulate_prescribed(m, tr, vr, rtol=1e-10, atol=1e-10 * m.state_scales())
+    errs = []
+    for n in (201, 801, 3201):
+        t = np.linspace(0.0, T, n)
+        F = m.simulate(t, np.interp(t, tr, vr))[::(n - 1) // 200]
+        errs.append(np.max(np.abs(F - Fr)))
+    assert errs[-1] < 1e-4 * np.max(np.abs(Fr))
+    assert errs[0] / errs[1] > 6 and errs[1] / errs[2] > 6, errs  # ~16: second order
+
+
+def test_steady_start_and_the_force_family_of_a_record_start():
+    m = make_model("gms")
+    for v0 in (3e-2, -1e-3):
+        s = m.steady_state_state(v0)
+        np.testing.assert_allclose(s, np.sign(v0) * m.saturation(v0), rtol=1e-15)
+        assert np.all(m.derivatives(s, v0) == 0.0)
+        assert m.force(s, v0) == pytest.approx(float(m.steady_state([v0])[0]), rel=1e-14)
+    assert np.all(m.steady_state_state(0.0) == 0.0)
+    # a record cut in the presliding after a reversal from sliding (rate-independent
+    # limit: the reversal family holds exactly) and cut in sliding
+    m = make_model("gms", Fc=1.2, Fs=1.2, **FAST)
+    t = np.linspace(0.0, 0.2, 4001)
+    v = 2e-2 * np.sin(2 * np.pi * 7.0 * t + 0.3)  # strokes 10 x the presliding distance
+    F, S = m.simulate(t, v, return_state=True)
+    rev = int(np.flatnonzero(np.diff(np.sign(v)) != 0)[0]) + 1
+    for k in (rev + 3, rev + 100, rev + 300, 300, 1500):
+        s = m.record_start_state(t[k:], v[k:], F=F[k:])
+        np.testing.assert_allclose(s, S[k], rtol=0, atol=1e-9 * m.z_max())
+    # at rest under a load: the first loading from rest, within the law's reach
+    s = m.record_start_state(t[:50], np.zeros(50), F=np.full(50, 0.3))
+    assert m.force(s, 0.0) == pytest.approx(0.3, rel=1e-12)
+    s = m.record_start_state(t[:50], np.zeros(50), F=np.full(50, 1e9))
+    np.testing.assert_allclose(s, m.params.Fs / (N_ELEMENTS * m.element_stiffness()))

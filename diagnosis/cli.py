@@ -33,6 +33,8 @@ def run_diagnose_cli(args) -> int:
             with open(args.json_out, "w") as fh:
                 json.dump(res, fh, indent=2, default=float)
         return 0
+    if getattr(args, "plant_fmu", None):
+        return _run_plant_fmu(args, quiet)
     if getattr(args, "plant", None):
         return _run_trajectory(args, quiet)
     mapping = parse_mapping(args.mapping)
@@ -106,5 +108,26 @@ def _run_trajectory(args, quiet) -> int:
     rep = diagnose_trajectory(recs[0], plant, args.model, validation=recs[1:] or None,
                               candidates=_candidates(args), engine=args.engine,
                               progress=None if quiet else say)
+    from .trajectory_report import write_trajectory_html
+    return _emit(rep, args, write_trajectory_html)
+
+
+def _run_plant_fmu(args, quiet) -> int:
+    """Trajectory level through the user's plant FMU: DATA are measured runs (the first
+    fitted, the others held out), coupled as ``--connect`` says."""
+    from .plant_fmu import diagnose_plant_fmu
+    if getattr(args, "plant", None):
+        raise ValueError("give --plant (a built-in plant model) or --plant-fmu (your plant "
+                         "FMU), not both")
+    for opt, flag in (("mapping", "--map"), ("scale", "--scale"),
+                      ("experiment", "--experiment"), ("load_column", "--load-column")):
+        if getattr(args, opt, None):
+            raise ValueError(f"{flag} does not apply with --plant-fmu (the connection file "
+                             f"names the columns, their scale and the plant's inputs)")
+    rep = diagnose_plant_fmu(args.data[0], args.data[1:] or None, args.plant_fmu,
+                             args.connect, args.model, candidates=_candidates(args),
+                             native=getattr(args, "law_fmu", "native") == "native",
+                             start=getattr(args, "start", None),
+                             progress=None if quiet else say)
     from .trajectory_report import write_trajectory_html
     return _emit(rep, args, write_trajectory_html)

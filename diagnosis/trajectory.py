@@ -241,6 +241,10 @@ class _FMUEngine:
 
 
 def _make_engine(engine, plant, fmu_dir=None, fmu_step=None):
+    if hasattr(plant, "trajectory_engine"):
+        # a plant that brings its own co-simulation (the user's plant FMU,
+        # diagnosis.plant_fmu.FMUPlantModel)
+        return plant.trajectory_engine(engine)
     if engine == "plant":
         return _PlantEngine(plant)
     if engine == "fmu":
@@ -365,7 +369,8 @@ class _Setup:
         force = {k: p for k, p in force.items() if any(p[n] != 0.0 for n in _LEVELS[k])}
         if force:
             law = EffectLaw(law, force, ctx)
-        pp = {}
+        pp = {c.name[len("plant."):]: vals[c.name] for c in self.coords
+              if c.target == "plant"}
         if self.mass_name is not None:
             pp[self.mass_name] = self.mass0 + vals.get("dm", 0.0)
         return law, pp, vals.get("delay", 0.0), vals
@@ -549,7 +554,7 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                         engine: str = "plant", fit_names=None, fit_fraction: float = 0.7,
                         max_sims: int = 24, max_sims_base: int = 60, spread: float = 3.0,
                         greedy: bool = True, fmu_dir=None, fmu_step: float | None = None,
-                        progress=None) -> DiagnosisReport:
+                        fit_plant=None, progress=None) -> DiagnosisReport:
     """Locate and name the sim-to-real gap of a plant model from measured trajectories.
 
     Parameters
@@ -589,6 +594,12 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         Folder with the built FMUs (engine ``"fmu"``; default: built once into a temporary
         folder). ``fmu_step`` [s]: communication step (default a quarter of
         :func:`fmus.plant_fmus.coupling_step`).
+    fit_plant : dict, optional
+        Plant parameters re-fitted with the base law and with every candidate, ``name ->
+        (low, high)`` or ``(low, high, log)``, started from the plant's value (coordinates
+        ``plant.<name>`` in the report): what an identification fitted together with the
+        law, which would otherwise stay at values that compensated for the missing effect.
+        The ``inertia`` candidate is skipped when the mass is among them.
     progress : callable, bool or None
         ``callable(message)`` for stage lines; ``True``: lines on stderr. Simulation counts
         go to a :class:`frictionlab.progress.Progress` when progress is on.
@@ -630,7 +641,7 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         raise ValueError(f"plant {plant.name} has no output {sig!r}; outputs: "
                          f"{list(plant.all_output_names)}")
     unit = (getattr(plant, "signals", {}) or {}).get(sig, ("m",))[0]
-    if unit != "m":
+    if unit != "m" and not getattr(plant, "any_signal", False):
         raise ValueError(f"plant {plant.name}: the compared output {sig!r} is in {unit!r}, not "
                          f"a position; a force measurement is diagnosed at the friction-force "
                          f"level (diagnosis.diagnose)")
@@ -747,17 +758,34 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         if bad:
             raise ValueError(f"fit_names {bad} are not parameters of {law0.name}")
     fit_names = list(fit_names)
-    say(f"[diagnose-trajectory] base fit of {fit_names}")
-    base_setup = _Setup(law0, [_law_coordinate(law0, n, ctx, spread) for n in fit_names])
+
+    def plant_coords():
+        """Fresh coordinates of the plant parameters fitted with every setup."""
+        out = []
+        for n, box in (fit_plant or {}).items():
+            lo, hi = float(box[0]), float(box[1])
+            log = bool(box[2]) if len(box) > 2 and box[2] is not None else \
+                bool(lo > 0 and hi / lo > 20)
+            x0 = float(getattr(plant.params, n))
+            out.append(_P(f"plant.{n}", "plant", lo, hi, log, min(max(x0, lo), hi)))
+        return out
+
+    unknown = [n for n in (fit_plant or {}) if n not in plant.parameter_names]
+    if unknown:
+        raise ValueError(f"fit_plant {unknown} are not parameters of plant {plant.name}")
+    say(f"[diagnose-trajectory] base fit of {fit_names + [c.name for c in plant_coords()]}")
+    base_setup = _Setup(law0, [_law_coordinate(law0, n, ctx, spread) for n in fit_names]
+                        + plant_coords())
     u_base, base_fit, _ = fit(base_setup, base_setup.unit0(), max_sims_base)
-    base_law, _, _, base_vals = base_setup.build(u_base, ctx)
+    base_law, base_pp, _, base_vals = base_setup.build(u_base, ctx)
     before, r_val = score(base_setup, u_base)
     if r_val is None:
         raise ValueError("the fitted base model cannot run the held-out record(s) (see the "
                          "message above); check the records' experiment options")
 
     # -- 2. where (held-out residual by regime, band, frequency)
-    val_data = [_kinematics(plant, base_law, c.record) for c in val_cases]
+    kin_plant = plant.with_params(**base_pp) if base_pp else plant
+    val_data = [_kinematics(kin_plant, base_law, c.record) for c in val_cases]
     parts = []
     for c, d, r in zip(val_cases, val_data, r_val):
         m = c.mask
@@ -788,7 +816,8 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     freq = frequency_split(parts[0][0], parts[0][1])
 
     # -- 3. which: each candidate re-identified on the fit record, scored held out
-    mass_name = next((n for n in MASS_PARAMETERS if n in plant.parameter_names), None)
+    mass_name = getattr(plant, "mass_parameter", None) or \
+        next((n for n in MASS_PARAMETERS if n in plant.parameter_names), None)
 
     def setups_for(effs, law, base_coords_vals):
         """Model setups (variants) with the effects ``effs`` on top of ``law``."""
@@ -808,6 +837,7 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
             coords = [_law_coordinate(lw, n, ctx, spread) if n in base_coords_vals
                       or n in fit_names or n in ASYMMETRY_NAMES
                       else _wide_coordinate(lw, n, fit_data) for n in dict.fromkeys(nm)]
+            coords += plant_coords()
             extra_mass = None
             for name in effs:
                 if name == "asymmetry":
@@ -817,12 +847,15 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                         if all(c.name != n for c in coords):
                             coords.append(_law_coordinate(lw, n, ctx, spread))
                 elif name in FORCE_EFFECTS:
-                    for ex in CANDIDATES[name].extras(ctx):
+                    for ex in CANDIDATES[name].trajectory_extras(ctx):
                         coords.append(_P(ex.name, "extra", ex.lo, ex.hi, False, ex.x0, name))
                 elif name == "inertia":
                     if mass_name is None:
                         raise _NotApplicable(f"plant {plant.name} has no mass parameter "
                                              f"{MASS_PARAMETERS}")
+                    if mass_name in (fit_plant or {}):
+                        raise _NotApplicable(f"the mass {mass_name} is fitted with the base "
+                                             f"(fit_plant)")
                     M0 = float(getattr(plant.params, mass_name))
                     coords.append(_P("dm", "mass", -0.5 * M0, 0.5 * M0, False, 0.0, name))
                     extra_mass = (mass_name, M0)
@@ -892,7 +925,7 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         after, _ = score(s, u)
         cost_sims = {"simulations": tm.sims - sims0, "seconds": tm.sim_seconds - secs0}
         fitted[name] = (s, u)
-        n_par = sum(1 for c in s.coords if c.name not in fit_names)
+        n_par = sum(1 for c in s.coords if c.name not in fit_names and c.target != "plant")
         effects.append({"name": name, "validation_before": before, "validation_after": after,
                         "gap_closed": (before - after) / before if before > 0 else 0.0,
                         "excess_closed": (before - after) / max(before - floor, 1e-12),

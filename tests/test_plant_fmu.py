@@ -269,3 +269,198 @@ def test_a_diverging_trial_point_costs_inf_and_the_run_goes_on(cart, native_dir)
                              algorithm="multistart_ls", n_screen=12, n_starts=1,
                              polish_nfev=30)
     assert abs(res.params["plant.d"] - 2.0) < 1e-3, res.params
+
+
+# -- identification through the user's plant: recovers law and plant parameters ----------------
+TRUTH = dict(sigma0=1e5, sigma1=300.0, sigma2=0.4, Fc=1.0, Fs=1.5, vs=1e-3)
+M_TRUE, K_U = 1.5, 2.0
+
+
+def _drive(t, A=2.2, f1=0.7, f2=2.3, bias=0.0):
+    return A * np.sin(2 * np.pi * f1 * t) + 0.6 * np.sin(2 * np.pi * f2 * t) + bias
+
+
+def _measured(model, T, dt, force, seed, name, noise=1e-6, volt=True):
+    """A measured run made by the reference integrator (Radau, monolithic mass + law states,
+    friction.reference.simulate_mass) at the data interval, white position noise added: a
+    different integrator and coupling than the co-simulation that fits it."""
+    from friction.reference import simulate_mass
+    t = np.arange(0.0, T + 1e-9, dt)
+    ref = simulate_mass(model, M_TRUE, t, force, rtol=1e-6)
+    x = ref["x"] + np.random.default_rng(seed).normal(0.0, noise, t.size)
+    drive = force(t) / K_U if volt else force(t)
+    return MeasuredRecord(t, {"u" if volt else "F": drive, "x": x}, name)
+
+
+@pytest.fixture(scope="module")
+def lugre_run():
+    return _measured(make_model("lugre", **TRUTH), 2.5, 1e-3, _drive, 1, "stick-slip")
+
+
+def test_identification_through_a_c_plant_fmu_recovers_law_and_mass(cart, native_dir,
+                                                                     lugre_run):
+    """Synthetic stick-slip run of a 1.5 kg cart (2.5 s at 1 kHz, 1 um noise) from the
+    reference integrator; the law FMU (native LuGre) co-simulated with the C cart at 0.1 ms
+    recovers Fc, Fs, vs, sigma2 and the cart's mass from a start 30-100 % off."""
+    from identification.plant_fmu import identify_plant_fmu
+    rec = lugre_run
+    conn = parse_connection({**CART, "parameters": {"k_u": K_U, "m": 1.0},
+                             "law": {"start": {"Fc": 0.7, "Fs": 1.1, "vs": 2e-3,
+                                               "sigma2": 0.8}}}, "rig.toml")
+    res = identify_plant_fmu(rec, cart, conn, "lugre",
+                             names=["Fc", "Fs", "vs", "sigma2", "plant.m"],
+                             algorithm="least_squares", fmu_dir=native_dir)
+    p = res.params
+    assert abs(p["Fc"] / TRUTH["Fc"] - 1) < 0.01, p
+    assert abs(p["Fs"] / TRUTH["Fs"] - 1) < 0.02, p
+    assert abs(p["vs"] / TRUTH["vs"] - 1) < 0.05, p
+    assert abs(p["sigma2"] / TRUTH["sigma2"] - 1) < 0.03, p
+    assert abs(p["plant.m"] / M_TRUE - 1) < 0.005, p
+    assert res.fit_nrmse < 2e-4 and res.plant_params == {"m": p["plant.m"]}
+    assert res.identifiability["at_bound"] == [] and set(res.ci) == set(p)
+    json.loads(res.to_json())
+
+
+def test_identification_through_a_pythonfmu_plant_fmu(py_cart, native_dir):
+    """The same through a pythonfmu cart written for the test (m dv/dt = F_drive -
+    F_friction, friction subtracted: sign +1; measured force drives it; no units
+    declared): Fc, sigma2 and the mass."""
+    from identification.plant_fmu import identify_plant_fmu
+    law = make_model("lugre", **{**TRUTH, "sigma0": 1e4, "sigma1": 100.0})
+    rec = _measured(law, 1.5, 2e-3, _drive, 3, "py", volt=False)
+    conn = parse_connection({
+        "step": 1e-3, "friction": {"input": "F_friction", "v": "v"},
+        "inputs": {"F_drive": "F"}, "compare": {"x": "x"}, "parameters": {"m": 1.0},
+        "identify": {"m": [0.5, 3.0]}}, "py.toml")
+    res = identify_plant_fmu(rec, py_cart, conn, law.with_values(Fc=0.7, sigma2=0.8),
+                             names=["Fc", "sigma2", "plant.m"], algorithm="least_squares",
+                             fmu_dir=native_dir)
+    p = res.params
+    assert abs(p["Fc"] - 1.0) < 0.01 and abs(p["sigma2"] - 0.4) < 0.02, p
+    assert abs(p["plant.m"] - M_TRUE) < 0.015, p
+
+
+# -- trajectory-level diagnosis through the user's plant ----------------------------------------
+class TrackLuGre:
+    """The 'real' contact: LuGre whose Coulomb and static levels change along the stroke
+    (a worn track, 1 + c sin(2 pi x / lam) inside the Stribeck curve, so the bristle dynamics
+    see it) - not the candidate's form (the whole force times a piecewise-linear map)."""
+    name = "lugre_track"
+    state_names = ("z",)
+    extra_inputs = ("x",)
+
+    def __init__(self, c=0.4, lam=0.8, **p):
+        self.c, self.lam, self.p = c, lam, {**TRUTH, **p}
+
+    def initial_state(self):
+        return np.zeros(1)
+
+    def _dz(self, s, v, x):
+        p = self.p
+        g = (1 + self.c * math.sin(2 * math.pi * x / self.lam)) * (
+            p["Fc"] + (p["Fs"] - p["Fc"]) * math.exp(-(v / p["vs"]) ** 2))
+        return v - p["sigma0"] * abs(v) * s[0] / g
+
+    def derivatives(self, s, v, x=0.0):
+        return np.array([self._dz(s, v, x)])
+
+    def force(self, s, v, x=0.0):
+        p = self.p
+        return p["sigma0"] * s[0] + p["sigma1"] * self._dz(s, v, x) + p["sigma2"] * v
+
+
+@pytest.fixture(scope="module")
+def track_runs():
+    truth = TrackLuGre()
+    fit = _measured(truth, 3.0, 1e-3, lambda t: _drive(t, 2.5, 0.7, 2.3), 1, "fit")
+    held = _measured(truth, 3.0, 1e-3, lambda t: _drive(t, 2.5, 0.56, 3.0), 2, "held-out")
+    return fit, held
+
+
+TRACK_CONN = {**CART, "step": 2e-4, "identify": {},
+              "law": {"start": {"Fc": 1.05, "Fs": 1.5, "vs": 1e-3, "sigma2": 0.4}}}
+
+
+def test_diagnosis_through_the_plant_fmu_names_the_withheld_position_effect(cart, native_dir,
+                                                                            track_runs):
+    """The fit and held-out runs come from a cart whose friction levels change along the
+    track; the model the user has is plain LuGre (Coulomb level 5 % off) in their plant FMU.
+    Every candidate runs through the friction_effects block between the law FMU and the C
+    cart; position is named."""
+    from diagnosis.plant_fmu import diagnose_plant_fmu
+    fit, held = track_runs
+    conn = parse_connection(TRACK_CONN, "rig.toml")
+    rep = diagnose_plant_fmu(fit, [held], cart, conn, "lugre", max_sims=40,
+                             candidates=["position", "asymmetry", "inertia", "acceleration",
+                                         "drift"], fmu_dir=native_dir)
+    assert rep["verdict"]["cause"] == "position", rep.summary()
+    assert rep["verdict"]["gap_closed"] > 0.5, rep.summary()
+    assert rep["engine"] == "fmu" and rep["plant"] == "cart" and rep["level"] == "trajectory"
+    assert rep["effect_details"]["position"]["effects"] == ["position"]
+    json.loads(rep.to_json())
+
+
+def test_diagnosis_refits_the_identified_plant_parameters(cart, native_dir, lugre_run):
+    """Plain LuGre truth, the user's mass 20 % off but declared identified ([identify] m):
+    the base fit re-fits it with the law (no effect is needed: verdict none) and the
+    inertia candidate is skipped as already fitted."""
+    from diagnosis.plant_fmu import diagnose_plant_fmu
+    conn = parse_connection({**CART, "parameters": {"k_u": K_U, "m": 1.2},
+                             "law": {"start": {"Fc": 1.05}}}, "rig.toml")
+    rep = diagnose_plant_fmu(lugre_run, None, cart, conn, "lugre", fmu_dir=native_dir,
+                             candidates=["inertia", "asymmetry"], fit_names=["Fc"],
+                             max_sims=8, max_sims_base=30, greedy=False)
+    assert abs(rep["base"]["params"]["plant.m"] - M_TRUE) < 0.02, rep["base"]
+    assert "fitted with the base" in rep["skipped"]["inertia"]
+    assert rep["verdict"]["cause"] == "none", rep.summary()
+
+
+def test_diagnosis_lists_what_the_connection_cannot_express(cart, native_dir, track_runs):
+    from diagnosis.plant_fmu import diagnose_plant_fmu
+    fit, _ = track_runs
+    raw = {**TRACK_CONN, "friction": {"input": "F_c", "sign": -1, "v": "vel"}}
+    conn = parse_connection(raw, "rig.toml")
+    with pytest.raises(ValueError, match=r"'position' cannot run through cart: no plant "
+                                         r"output gives the position"):
+        diagnose_plant_fmu(fit, None, cart, conn, "lugre", candidates=["position"],
+                           fmu_dir=native_dir)
+    rep = diagnose_plant_fmu(fit, None, cart, conn, "lugre", fmu_dir=native_dir,
+                             max_sims=4, max_sims_base=6, fit_names=["Fc"], greedy=False)
+    for c in ("position", "acceleration", "load"):
+        assert "[friction]" in rep["skipped"][c], rep["skipped"]
+    assert {e["name"] for e in rep["effects"]} >= {"asymmetry", "inertia", "delay"}
+
+
+# -- the command line ----------------------------------------------------------------------------
+def test_cli_identify_then_diagnose_through_the_plant_fmu(tmp_path, capsys, cart, native_dir,
+                                                          track_runs, monkeypatch):
+    """identify FIT --plant-fmu --connect --json (params, ci, identifiability, plant_params),
+    then diagnose FIT HELDOUT --plant-fmu --connect --start ID.json --json --html."""
+    fit, held = track_runs
+    for rec in (fit, held):  # as a user's logger writes them: ';', volts, position in mm
+        np.savetxt(tmp_path / f"{rec.name}.csv",
+                   np.column_stack([rec.t, rec.columns["u"], rec.columns["x"] * 1e3]),
+                   delimiter=";", header="time;volt;x_mm", comments="")
+    raw = {**TRACK_CONN, "time": "time", "inputs": {"u": "volt"},
+           "compare": {"pos": {"column": "x_mm", "scale": 1e-3, "unit": "m"}},
+           "law": {"names": ["Fc"]}}
+    (tmp_path / "rig.toml").write_text(_toml(raw))
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr("identification.cosim.fmu_dir_for",
+                        lambda laws, d=None, native=False: str(native_dir))
+    from frictionlab.cli import main
+    assert main(["identify", "fit.csv", "--plant-fmu", str(cart), "--connect", "rig.toml",
+                 "--quiet", "--algorithm", "least_squares", "--json", "id.json"]) == 0
+    out = capsys.readouterr().out
+    assert "Fc" in out and "NRMSE fit" in out
+    d = json.loads((tmp_path / "id.json").read_text())
+    assert set(d["params"]) == {"Fc"} and set(d["ci"]) == {"Fc"}
+    assert {"at_bound", "unidentified", "advice"} <= set(d["identifiability"])
+    assert d["plant_params"] == {} and d["connection"] == "rig.toml"
+    assert main(["diagnose", "fit.csv", "held-out.csv", "--plant-fmu", str(cart),
+                 "--connect", "rig.toml", "--start", "id.json", "--quiet",
+                 "--candidates", "position,inertia", "--json", "gap.json",
+                 "--html", "gap.html"]) == 0
+    rep = json.loads((tmp_path / "gap.json").read_text())
+    assert rep["verdict"]["cause"] == "position", rep
+    assert rep["plant_fmu"] == "cart.fmu" and (tmp_path / "gap.html").stat().st_size > 1e4

@@ -217,28 +217,34 @@ def law_feedthrough(model_cls, inputs) -> tuple:
     """Inputs the force output depends on directly, probed at the default parameters.
 
     ``F`` is evaluated by the law's ``force(state, v, **inputs)`` at a probe point and with
-    each input perturbed; an input that changes ``F`` is a direct dependency. (A law whose
-    structure changes with a parameter, e.g. modified LuGre with tau = 0 where F_d becomes
-    algebraic in ``a``, is described at its defaults.)
+    each input perturbed; an input that changes ``F`` is a direct dependency. The probe is
+    made at the rest state and at the law's steady sliding state at the probe velocity (a
+    backlash law's force does not depend on the velocity while the drive crosses its gap,
+    as at rest, but does once the contact slides). (A law whose structure changes with a
+    parameter, e.g. modified LuGre with tau = 0 where F_d becomes algebraic in ``a``, is
+    described at its defaults.)
     """
     import numpy as np
     try:
         model = model_cls()
-        state = np.asarray(model.initial_state(), dtype=float)
         base = {n: _PROBE[n] for n in inputs}
+        rest = np.asarray(model.initial_state(), dtype=float)
+        sliding = np.asarray(model.steady_state_state(
+            base["v"], **{k: base[k] for k in inputs if k != "v"}), dtype=float)
+        deps = set()
+        for state in (rest, sliding):
 
-        def F(vals):
-            kw = {k: vals[k] for k in inputs if k != "v"}
-            return float(model.force(state, vals["v"], **kw))
+            def F(vals):
+                kw = {k: vals[k] for k in inputs if k != "v"}
+                return float(model.force(state, vals["v"], **kw))
 
-        f0 = F(base)
-        deps = []
-        for n in inputs:
-            pert = dict(base)
-            pert[n] = base[n] * 1.1 + 1e-9
-            if abs(F(pert) - f0) > 1e-12 * (1.0 + abs(f0)):
-                deps.append(n)
-        return tuple(deps)
+            f0 = F(base)
+            for n in inputs:
+                pert = dict(base)
+                pert[n] = base[n] * 1.1 + 1e-9
+                if abs(F(pert) - f0) > 1e-12 * (1.0 + abs(f0)):
+                    deps.add(n)
+        return tuple(n for n in inputs if n in deps)
     except Exception:  # noqa: BLE001 - cannot probe: declare every input (safe side)
         return tuple(inputs)
 

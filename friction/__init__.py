@@ -8,41 +8,23 @@ from __future__ import annotations
 from ._validation import ParameterError
 from .base import METHODS, FrictionModel, FrictionParams, ParamInfo, param
 from .dataset import Dataset, load_csv, load_dataset, load_mat
+from .backlash import BacklashLuGre
+from .gms import GMS
+from .load_lugre import LoadLuGre
 from .lugre import LuGre, LuGreParams
+from .modified_lugre import ModifiedLuGre
+from .mre_lugre import MRELuGre
+from .stribeck import StaticStribeck
 
 __all__ = ["MODELS", "make_model", "FrictionModel", "FrictionParams", "ParamInfo", "param",
            "ParameterError", "METHODS", "LuGre", "LuGreParams", "Dataset", "load_csv",
-           "load_mat", "load_dataset"]
+           "load_mat", "load_dataset", "StaticStribeck", "ModifiedLuGre", "LoadLuGre",
+           "MRELuGre", "GMS", "BacklashLuGre"]
 
-#: registry name -> model class
-MODELS: dict[str, type[FrictionModel]] = {"lugre": LuGre}
-
-
-def _register_optional():
-    # laws land module by module; each registers itself here once it exists
-    import importlib
-    for mod, cls, name in (("stribeck", "StaticStribeck", "stribeck"),
-                           ("modified_lugre", "ModifiedLuGre", "modified_lugre"),
-                           ("load_lugre", "LoadLuGre", "load_lugre"),
-                           ("mre_lugre", "MRELuGre", "mre_lugre"),
-                           ("gms", "GMS", "gms"),
-                           ("backlash", "BacklashLuGre", "backlash_lugre")):
-        try:
-            m = importlib.import_module(f"{__name__}.{mod}")
-        except ModuleNotFoundError as exc:
-            if exc.name != f"{__name__}.{mod}":
-                raise
-            continue
-        except Exception as exc:  # a broken law must not take the others down; tests catch it
-            import warnings
-            warnings.warn(f"friction law module {mod!r} failed to import: {exc!r}")
-            continue
-        MODELS[name] = getattr(m, cls)
-        globals()[cls] = MODELS[name]
-        __all__.append(cls)
-
-
-_register_optional()
+#: registry name -> model class (a law module that fails to import fails ``import friction``)
+MODELS: dict[str, type[FrictionModel]] = {
+    "lugre": LuGre, "stribeck": StaticStribeck, "modified_lugre": ModifiedLuGre,
+    "load_lugre": LoadLuGre, "mre_lugre": MRELuGre, "gms": GMS, "backlash_lugre": BacklashLuGre}
 
 
 def make_model(name: str, params: FrictionParams | None = None, **kwargs) -> FrictionModel:

@@ -248,3 +248,24 @@ def test_public_names_are_documented_and_exported():
             obj = getattr(m, name)   # every exported name exists
             if callable(obj) and not isinstance(obj, dict):
                 assert obj.__doc__, f"plants.{mod}.{name} has no docstring"
+
+
+@pytest.mark.parametrize("package,module", [("friction", "friction.gms"),
+                                            ("plants", "plants.valve")])
+def test_a_broken_law_or_machine_module_fails_the_import(package, module):
+    # the registries import every law and machine plainly: no warning, no silent gap
+    import pathlib
+    import subprocess
+    import sys
+    code = (
+        "import importlib.abc, sys\n"
+        "class Broken(importlib.abc.MetaPathFinder):\n"
+        "    def find_spec(self, name, path, target=None):\n"
+        f"        if name == {module!r}:\n"
+        "            raise RuntimeError('broken on purpose')\n"
+        "sys.meta_path.insert(0, Broken())\n"
+        f"import {package}\n")
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         cwd=pathlib.Path(__file__).resolve().parents[1])
+    assert run.returncode != 0
+    assert "RuntimeError: broken on purpose" in run.stderr, run.stderr[-500:]

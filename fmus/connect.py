@@ -156,6 +156,11 @@ _TOP = {"step", "time", "mass", "algorithm", "friction", "inputs", "compare", "p
         "identify", "law"}
 
 
+def _a(word: str) -> str:
+    """``word`` with its indefinite article (an input, a parameter)."""
+    return f"{'an' if word[:1] in 'aeiou' else 'a'} {word}"
+
+
 def _err(src, where, msg) -> ConnectError:
     return ConnectError(f"{src}: {where}: {msg}")
 
@@ -387,11 +392,9 @@ def check_plant(conn: PlantConnection, plant_fmu, law=None) -> dict:
             raise _err(src, where, f"{fmu} has no variable {name!r} ({causality}s: "
                                    f"{listing(causality)})")
         if var.causality != causality:
-            hint = (f"; {what} must be {'an' if causality[0] in 'aeiou' else 'a'} {causality} "
-                    f"({causality}s: {listing(causality)})")
-            raise _err(src, where, f"{name!r} is {'an' if var.causality[0] in 'aeiou' else 'a'}"
-                                   f" {var.causality} of {fmu}, not {'an' if causality[0] in 'aeiou' else 'a'} "
-                                   f"{causality}{hint}")
+            raise _err(src, where, f"{name!r} is {_a(var.causality)} of {fmu}, not "
+                                   f"{_a(causality)}; {what} must be {_a(causality)} "
+                                   f"({causality}s: {listing(causality)})")
         if causality in ("input", "output") and var.type != "Real":
             raise _err(src, where, f"{name!r} is a {var.type} {causality}; only Real "
                                    f"variables can be connected")
@@ -426,10 +429,9 @@ def check_plant(conn: PlantConnection, plant_fmu, law=None) -> dict:
             raise _err(src, f"[parameters] {name}", f"{fmu} has no variable {name!r} "
                                                     f"(parameters: {listing('parameter')})")
         if var.causality not in ("parameter", "input"):
-            raise _err(src, f"[parameters] {name}", f"{name!r} is {'an' if var.causality[0] in 'aeiou' else 'a'} "
-                                                    f"{var.causality} of {fmu}; only "
-                                                    f"parameters (and input start values) "
-                                                    f"can be set")
+            raise _err(src, f"[parameters] {name}", f"{name!r} is {_a(var.causality)} of "
+                                                    f"{fmu}; only parameters (and input "
+                                                    f"start values) can be set")
         if var.causality == "input" and name in seen:
             raise _err(src, f"[parameters] {name}", f"input {name!r} is driven by "
                                                     f"{seen[name]}; it has no value to set")

@@ -13,7 +13,7 @@ import pytest
 pytest.importorskip("fmpy")
 
 from friction import make_model  # noqa: E402
-from fmus.connect import (ConnectError, MeasuredRecord, PlantLoop, PlantRunError,  # noqa: E402
+from fmus.connect import (ConnectError, MeasuredRecord, PlantLoop,  # noqa: E402
                           builtin_connection, load_connection, parse_connection)
 from fmus.master import Master, fmu_file, law_parameters  # noqa: E402
 
@@ -94,43 +94,20 @@ def test_master_connection_factor_and_external_inputs_c_loop_equals_python(nativ
 
 
 # -- connection files ----------------------------------------------------------------------------
-README_TOML = '''
-step = 1e-4                 # communication step [s]
-time = "t"                  # time column of the measured files
-mass = "m"                  # the plant parameter that is the moving mass
+def _readme_toml() -> str:
+    """The complete connection file of the README's "Your own plant FMU" section."""
+    import pathlib
+    text = (pathlib.Path(__file__).resolve().parents[1] / "README.md").read_text()
+    sec = text[text.index("### Your own plant FMU"):]
+    return sec[sec.index("```toml") + len("```toml"):sec.index("```", sec.index("```toml") + 7)]
 
-[friction]
-input = "F_c"               # the cart adds its input: the law's force negated
-sign = -1
-v = "vel"
-x = "pos"
-a = "acc"
 
-[inputs]
-u = { column = "volt", unit = "V", hold = "previous" }
-
-[compare]
-pos = { column = "x_mm", scale = 1e-3, unit = "m" }
-
-[parameters]
-k_u = 2.0
-m = 1.4
-
-[identify]
-m = { bounds = [0.5, 3.0], start = 1.4 }
-
-[law]
-model = "lugre"
-names = ["Fc", "Fs", "vs", "sigma2"]
-start = { Fc = 0.8, Fs = 1.2 }
-bounds = { Fc = [0.1, 5.0] }
-'''
 
 
 def test_connection_file_parses_and_checks_against_the_plant(tmp_path, cart):
     from fmus.connect import check_plant
     p = tmp_path / "rig.toml"
-    p.write_text(README_TOML)
+    p.write_text(_readme_toml())
     conn = load_connection(p)
     assert conn.sign == -1.0 and conn.friction_input == "F_c"
     assert conn.law_inputs == {"v": "vel", "x": "pos", "a": "acc"}
@@ -171,6 +148,31 @@ def test_builtin_mass_is_a_special_case_of_the_same_path(native_dir):
     assert np.array_equal(run.values["friction.F"], ref["friction.F"])
 
 
+@pytest.mark.slow
+def test_builtin_plant_fmu_is_a_special_case_of_the_same_path(native_dir):
+    """A plant FMU of the plant library (valve, external friction) through its connection
+    = fmus.plant_fmus.plant_master with the force held over a step, bit for bit."""
+    import shutil
+    import plants
+    from fmus.plant_fmus import classic_lugre_for, plant_master
+    from fmus.testing import built_fmus
+    d = built_fmus(("valve",))
+    shutil.copy(fmu_file(native_dir, "lugre", True), fmu_file(d, "lugre", True))
+    cls = plants.PLANTS["valve"]
+    law = classic_lugre_for(cls)
+    h = 0.25 / cls.data_rate
+    with plant_master(d, "valve", law, coupling="hold", native=True,
+                      record=["plant.x", "friction.F"]) as m:
+        ref = m.simulate(stop_time=0.05, step_size=h)
+    conn = builtin_connection("valve", law)
+    conn.step = h
+    t = np.arange(0.0, 0.05 + 1e-12, 1.0 / cls.data_rate)
+    with PlantLoop(fmu_file(d, "valve"), conn, law, fmu_dir=d) as pl:
+        run = pl.run(MeasuredRecord(t, {"x": np.zeros_like(t)}), law_parameters(law))
+    assert np.ptp(ref["plant.x"]) > 1e-3
+    assert np.array_equal(run.values["x"], ref["plant.x"])
+
+
 # -- bad input: one line each, naming the variable or the time --------------------------------
 def _cli(capsys, argv):
     from frictionlab.cli import main
@@ -208,7 +210,6 @@ def _write_run(path, t, volt, x):
 def test_bad_input_is_one_line_naming_the_variable_or_the_time(tmp_path, capsys, cart,
                                                                native_dir, monkeypatch, edit,
                                                                match):
-    import tomllib  # noqa: F401  (the connection file format)
     raw = {"step": 1e-4, "friction": {"input": "F_c", "sign": -1, "v": "vel"},
            "inputs": {"u": "volt"}, "compare": {"pos": "x"},
            "parameters": {"k_u": 2.0, "m": 1.5}, "law": {"names": ["Fc"]}}
@@ -219,12 +220,14 @@ def test_bad_input_is_one_line_naming_the_variable_or_the_time(tmp_path, capsys,
     monkeypatch.chdir(tmp_path)
     monkeypatch.setattr("identification.cosim.fmu_dir_for",
                         lambda laws, d=None, native=False: str(native_dir))
-    code, err = _cli(capsys, ["identify", "run.csv", "--plant-fmu", str(cart), "--connect",
-                              "rig.toml", "--quiet", "--max-evals", "3"])
-    assert code == 2
-    assert len(err.splitlines()) == 1, err
     import re
-    assert re.search(match, err), err
+    for argv in (["identify", "run.csv", "--max-evals", "3"],
+                 ["diagnose", "run.csv", "run.csv", "--candidates", "delay"]):
+        code, err = _cli(capsys, argv + ["--plant-fmu", str(cart), "--connect", "rig.toml",
+                                         "--quiet"])
+        assert code == 2, argv
+        assert len(err.splitlines()) == 1, err
+        assert re.search(match, err), err
 
 
 def _toml(raw) -> str:

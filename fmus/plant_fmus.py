@@ -70,7 +70,7 @@ LOAD_SIGNALS = ("load", "F_sigma", "F_N")
 
 #: the XML-350 loop from part FMUs: Gauss-Seidel order and connections (the controller
 #: samples after the stage has advanced, the stage uses the friction of the previous
-#: communication point; reproduces ``plants.xml350.run_assembled(separate_friction=True)``)
+#: communication point; reproduces ``plants.studies.xml350.run_assembled(separate_friction=True)``)
 XML350_ORDER = ["trajectory", "feedforward", "mechanics", "friction", "controller"]
 XML350_CONNECTIONS = [
     ("trajectory.x_ff", "feedforward.x_d"), ("trajectory.v_ff", "feedforward.v_d"),

@@ -189,7 +189,6 @@ def test_native_fmu_reproduces_the_law_first_order_in_step():
     With sigma1 or sigma2 > 0 the force jumps by (sigma1 + sigma2) v when the contact
     engages, and a held input moves that instant by up to a step: the error at the jump
     does not shrink with the step (tests/test_fmus.py's first-order check cannot apply)."""
-    pytest.importorskip("fmpy")
     from fmus.native.build import SUFFIX
     from fmus.testing import LoggedSlave, built_native_fmus
     from friction.metrics import nrmse

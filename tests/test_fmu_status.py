@@ -10,19 +10,16 @@ import math
 import shutil
 import zipfile
 
+import fmpy
 import numpy as np
 import pytest
+from fmpy.fmi1 import FMICallException
+from fmpy.fmi2 import fmi2Error, fmi2OK
 
-fmpy = pytest.importorskip("fmpy")
-pytest.importorskip("pythonfmu")
-
-from fmpy.fmi1 import FMICallException  # noqa: E402
-from fmpy.fmi2 import fmi2Error, fmi2OK  # noqa: E402
-
-from fmus import status_shim  # noqa: E402
-from fmus.build import build_fmu, catalogue, validate  # noqa: E402
-from fmus.master import FMUError, Master  # noqa: E402
-from fmus.testing import LoggedSlave  # noqa: E402
+from fmus import status_shim
+from fmus.build import build_fmu, catalogue, validate
+from fmus.master import FMUError, Master
+from fmus.testing import LoggedSlave
 
 try:
     status_shim.shim_library()

@@ -3,19 +3,17 @@ from __future__ import annotations
 
 import math
 
+import fmpy
 import numpy as np
 import pytest
 
-fmpy = pytest.importorskip("fmpy")
-pytest.importorskip("pythonfmu")
-
-import friction  # noqa: E402
-from friction.metrics import nrmse  # noqa: E402
-from fmus.build import catalogue, validate  # noqa: E402
-from fmus.coupling import fmi_unit  # noqa: E402
-from fmus.modeldescription import base_unit  # noqa: E402
-from fmus.variables import exclusive_min  # noqa: E402
-from fmus.testing import LoggedSlave, built_fmus  # noqa: E402
+import friction
+from friction.metrics import nrmse
+from fmus.build import catalogue, validate
+from fmus.coupling import fmi_unit
+from fmus.modeldescription import base_unit
+from fmus.variables import exclusive_min
+from fmus.testing import LoggedSlave, built_fmus
 
 
 @pytest.fixture(scope="session")

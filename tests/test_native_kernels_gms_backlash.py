@@ -20,17 +20,14 @@ import tempfile
 
 import numpy as np
 import pytest
+from hypothesis import given, note
+from hypothesis import strategies as st
 
 from friction.backlash import BacklashLuGre
 from friction.gms import GMS
-
-hypothesis = pytest.importorskip("hypothesis")
-from hypothesis import given, note  # noqa: E402
-from hypothesis import strategies as st  # noqa: E402
-
-from fmus.native import ckernels  # noqa: E402
-from fmus.native.ckernels import CLaw, NativeBuildError, param_vector  # noqa: E402
-from test_native_kernels_lugre import (SETTINGS, _bounded_prefix, assert_close, motions,  # noqa: E402
+from fmus.native import ckernels
+from fmus.native.ckernels import CLaw, NativeBuildError, param_vector
+from test_native_kernels_lugre import (SETTINGS, _bounded_prefix, assert_close, motions,
                                        params_of)
 
 OWN_SOURCES = ("gms.c", "backlash_lugre.c")

@@ -6,14 +6,11 @@ import math
 import numpy as np
 import pytest
 
-pytest.importorskip("fmpy")
-pytest.importorskip("pythonfmu")
-
-import friction  # noqa: E402
-from fmus import master_loop  # noqa: E402
-from fmus.master import FMUError, Master, fmu_file, fmu_values, law_parameters  # noqa: E402
-from fmus.native.ckernels import NativeBuildError, compiler  # noqa: E402
-from fmus.proof import mass_connections, mass_master  # noqa: E402
+import friction
+from fmus import master_loop
+from fmus.master import FMUError, Master, fmu_file, fmu_values, law_parameters
+from fmus.native.ckernels import NativeBuildError, compiler
+from fmus.proof import mass_connections, mass_master
 
 try:
     compiler()

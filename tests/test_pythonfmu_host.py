@@ -18,18 +18,16 @@ import subprocess
 import sys
 import textwrap
 
+import fmpy
 import numpy as np
 import pytest
 
-fmpy = pytest.importorskip("fmpy")
-pytest.importorskip("pythonfmu")
+import test_native_hosts as nh
+from test_native_hosts import host  # noqa: F401 (the compiled C host: a fixture)
 
-import test_native_hosts as nh  # noqa: E402
-from test_native_hosts import host  # noqa: E402,F401 (the compiled C host: a fixture)
-
-from fmus import status_shim  # noqa: E402
-from fmus.master import fmu_values  # noqa: E402
-from fmus.testing import built_fmus  # noqa: E402
+from fmus import status_shim
+from fmus.master import fmu_values
+from fmus.testing import built_fmus
 
 try:
     status_shim.shim_library()

@@ -9,7 +9,9 @@ Runs each study's figures into ``out`` and its numbers into ``summary``:
   simulated stage);
 * then the machines' studies (:data:`MACHINE_DEMOS`): :mod:`plants.studies.valve`,
   :mod:`plants.studies.damping_rig`, :mod:`plants.studies.forging_press`,
-  :mod:`plants.studies.mre_isolator`.
+  :mod:`plants.studies.mre_isolator`, and the real EMPS axis in closed and open loop
+  (:mod:`plants.studies.emps`: ``emps_trajectory.png`` / ``.json``,
+  ``summary["emps_trajectory"]``).
 """
 from __future__ import annotations
 
@@ -17,14 +19,14 @@ import os
 
 from frictionlab.progress import report
 
-from . import damping_rig, forging_press, mre_isolator, valve, xml350
+from . import damping_rig, emps, forging_press, mre_isolator, valve, xml350
 
 __all__ = ["run_stage", "MACHINE_DEMOS"]
 
 #: machine -> its study's ``demo_figures(out, summary, quick)``, run after the XML-350 part
 MACHINE_DEMOS = {"valve": valve.demo_figures, "damping_rig": damping_rig.demo_figures,
                  "forging_press": forging_press.demo_figures,
-                 "mre_isolator": mre_isolator.demo_figures}
+                 "mre_isolator": mre_isolator.demo_figures, "emps": emps.demo_figures}
 
 
 def run_stage(out: str, summary: dict, quick: bool = False) -> None:

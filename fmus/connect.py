@@ -37,7 +37,28 @@ Modelica, Simulink, C...)::
     bounds = {Fc = [0.2, 5.0]}
 
 Keys of ``[inputs]``, ``[compare]``, ``[parameters]`` and ``[identify]`` are variables of
-the plant FMU; values name columns of the measured file. ``hold`` of an input: ``"linear"``
+the plant FMU; values name columns of the measured file.
+
+Further FMUs on the plant's side (a controller, a sensor...) join with ``[fmus]`` (instance
+name = path, relative to the connection file) and ``[connections]`` (``"inst.output" =
+"inst.input"``, the plant being ``plant``); anywhere else a variable ``inst.name`` of such an
+instance is named with its instance prefix (a bare name is the plant's), and ``order`` lists
+the stepping order (default: plant, the further FMUs as listed, then the law)::
+
+    order = ["controller", "plant", "friction"]
+
+    [fmus]
+    controller = "pid.fmu"
+
+    [connections]
+    "plant.pos" = "controller.y"
+    "controller.u" = "plant.F_drive"
+
+    [inputs]
+    "controller.r" = "ref"        # the measured reference drives the controller
+
+    [compare]
+    "controller.u" = "F_motor"    # and its output is compared with the measured command ``hold`` of an input: ``"linear"``
 (default; the signal linearly interpolated at the middle of each communication step, its
 mean over the step) or ``"previous"`` (the last sample at or before the step's start: a
 sampled command held by a digital controller). ``scale`` converts a column to the plant
@@ -137,6 +158,30 @@ class PlantConnection:
     law_start: dict = field(default_factory=dict)
     law_bounds: dict = field(default_factory=dict)
     source: str = "<connection>"
+    fmus: dict = field(default_factory=dict)                # further instance -> FMU path
+    links: list = field(default_factory=list)               # [(source key, target key)]
+    order: list | None = None
+
+    def split(self, key: str) -> tuple[str, str]:
+        """(instance, variable) of a variable key: ``inst.name`` of a further FMU, else the
+        plant's ``name``."""
+        inst, dot, var = key.partition(".")
+        if dot and inst in self.fmus:
+            return inst, var
+        return "plant", key
+
+    def key(self, ref: str) -> str:
+        """The key of a variable reference: ``plant.name`` -> ``name`` (the plant's),
+        ``inst.name`` of a further FMU as it is, a bare name as it is."""
+        inst, dot, var = ref.partition(".")
+        if dot and inst == "plant" and "plant" not in self.fmus:
+            return var
+        return ref
+
+    def ref(self, key: str) -> str:
+        """``instance.variable`` of a key, for the master."""
+        inst, var = self.split(key)
+        return f"{inst}.{var}"
 
     @property
     def columns(self) -> list[str]:
@@ -153,7 +198,21 @@ class PlantConnection:
 
 
 _TOP = {"step", "time", "mass", "algorithm", "friction", "inputs", "compare", "parameters",
-        "identify", "law"}
+        "identify", "law", "fmus", "connections", "order"}
+#: instance names the master uses itself
+RESERVED = ("plant", "friction", "effects")
+
+
+def _flat(table, prefix="") -> dict:
+    """A TOML table with dotted keys written unquoted (nested tables) flattened back to
+    ``"a.b" = value``."""
+    out = {}
+    for k, v in table.items():
+        if isinstance(v, dict):
+            out.update(_flat(v, f"{prefix}{k}."))
+        else:
+            out[f"{prefix}{k}"] = v
+    return out
 
 
 def _a(word: str) -> str:
@@ -196,14 +255,58 @@ def _entry(src, where, value, allowed, defaults) -> dict:
     return {**defaults, **value}
 
 
-def parse_connection(raw: dict, source: str = "<connection>") -> PlantConnection:
+def parse_connection(raw: dict, source: str = "<connection>",
+                     base_dir: str | None = None) -> PlantConnection:
     """A :class:`PlantConnection` from the parsed TOML (a dict); one-line
-    :class:`ConnectError` naming the key on a malformed file."""
+    :class:`ConnectError` naming the key on a malformed file. ``base_dir``: where the paths
+    of ``[fmus]`` are relative to (default: the working folder)."""
     src = source
     unknown = set(raw) - _TOP
     if unknown:
         raise _err(src, "top level", f"unknown key(s) {sorted(unknown)}; allowed: "
                                      f"{sorted(_TOP)}")
+    fmus = {}
+    for name, path in _table(src, raw, "fmus").items():
+        if not isinstance(path, str):
+            raise _err(src, f"[fmus] {name}", f"{path!r}: give the FMU's path")
+        if name in RESERVED or not name.isidentifier():
+            raise _err(src, f"[fmus] {name}", f"instance name {name!r} must be an identifier "
+                                              f"other than {', '.join(RESERVED)}")
+        fmus[name] = path if os.path.isabs(path) or base_dir is None else \
+            os.path.join(base_dir, path)
+    probe = PlantConnection(friction_input="", fmus=fmus)
+    norm = probe.key
+    raw = dict(raw)
+    for t in ("inputs", "compare", "parameters", "identify"):
+        if isinstance(raw.get(t), dict):
+            # a key "inst.name" written without quotes reads as a nested table
+            flat = {}
+            for k, v in raw[t].items():
+                if isinstance(v, dict) and k in (*fmus, "plant") and not (
+                        set(v) & {"column", "bounds"}):
+                    flat.update({f"{k}.{kk}": vv for kk, vv in v.items()})
+                else:
+                    flat[k] = v
+            raw[t] = {norm(k): v for k, v in flat.items()}
+    links = []
+    for a, b in _flat(_table(src, raw, "connections")).items():
+        if not isinstance(b, str):
+            raise _err(src, f"[connections] {a}", f"{b!r}: give the input it drives as "
+                                                  f"\"instance.variable\"")
+        for end in (a, b):
+            inst = end.partition(".")[0]
+            if "." not in end or inst not in (*fmus, "plant"):
+                raise _err(src, f"[connections] {a}", f"{end!r}: name an instance "
+                                                      f"(plant, {', '.join(fmus) or '...'}) "
+                                                      f"and its variable: \"instance.name\"")
+        links.append((norm(a), norm(b)))
+    order = raw.get("order")
+    if order is not None:
+        if not (isinstance(order, list) and all(isinstance(o, str) for o in order)):
+            raise _err(src, "order", f"{order!r}: give a list of instance names")
+        want = {"plant", "friction", *fmus}
+        if set(order) - {"effects"} != want or len(set(order)) != len(order):
+            raise _err(src, "order", f"{order!r} must list each of {sorted(want)} once")
     fr = _table(src, raw, "friction")
     if not fr:
         raise _err(src, "[friction]", "missing: say which plant input takes the friction "
@@ -224,7 +327,7 @@ def parse_connection(raw: dict, source: str = "<connection>") -> PlantConnection
         if k in fr:
             if not isinstance(fr[k], str):
                 raise _err(src, f"[friction] {k}", f"{fr[k]!r}: give the plant output's name")
-            law_inputs[k] = fr[k]
+            law_inputs[k] = norm(fr[k])
     if "v" not in law_inputs:
         raise _err(src, "[friction]", "needs v = \"NAME\" (the plant output giving the "
                                       "sliding velocity)")
@@ -314,11 +417,12 @@ def parse_connection(raw: dict, source: str = "<connection>") -> PlantConnection
     if model is not None and not isinstance(model, str):
         raise _err(src, "[law] model", f"{model!r} must be a registry name")
     return PlantConnection(
-        friction_input=fr["input"], sign=sign, law_inputs=law_inputs, inputs=inputs,
+        friction_input=norm(fr["input"]), sign=sign, law_inputs=law_inputs, inputs=inputs,
         compare=compare, parameters=params, identify=ident, step=step,
-        time=raw.get("time", "t"), mass=raw.get("mass"), algorithm=algorithm,
-        law_model=model, law_names=list(names) if names else None, law_start=dict(start),
-        law_bounds=bounds, source=src)
+        time=raw.get("time", "t"), mass=None if raw.get("mass") is None else norm(raw["mass"]),
+        algorithm=algorithm, law_model=model, law_names=list(names) if names else None,
+        law_start=dict(start), law_bounds=bounds, source=src, fmus=fmus, links=links,
+        order=list(order) if order is not None else None)
 
 
 def load_connection(path) -> PlantConnection:
@@ -336,7 +440,8 @@ def load_connection(path) -> PlantConnection:
             raw = tomllib.load(fh)
     except tomllib.TOMLDecodeError as exc:
         raise ConnectError(f"{os.path.basename(path)}: not valid TOML: {exc}") from None
-    return parse_connection(raw, os.path.basename(path))
+    return parse_connection(raw, os.path.basename(path),
+                            os.path.dirname(os.path.abspath(path)))
 
 
 # -- the plant FMU against the connection -------------------------------------------------------
@@ -376,25 +481,37 @@ def _plant_info(plant_fmu) -> _PlantInfo:
 
 
 def check_plant(conn: PlantConnection, plant_fmu, law=None) -> dict:
-    """Check every variable the connection names against the plant FMU (and the law's
-    inputs); returns ``{name: fmpy ScalarVariable}`` of the plant. One-line
+    """Check every variable the connection names against the plant FMU and the further
+    FMUs of ``[fmus]`` (and the law's inputs); returns ``{key: fmpy ScalarVariable}`` (the
+    plant's variables by name, a further FMU's as ``inst.name``). One-line
     :class:`ConnectError` naming the table and the variable otherwise."""
-    info = _plant_info(plant_fmu)
-    V, src, fmu = info.variables, conn.source, info.label
+    infos = {"plant": _plant_info(plant_fmu)}
+    for inst, path in conn.fmus.items():
+        if not os.path.isfile(path):
+            raise FileNotFoundError(f"{conn.source}: [fmus] {inst}: no such FMU: {path}")
+        infos[inst] = _plant_info(path)
+    src = conn.source
 
-    def listing(causality):
+    def listing(inst, causality):
+        V = infos[inst].variables
         names = sorted(n for n, v in V.items() if v.causality == causality)
         return ", ".join(names[:12]) + (" ..." if len(names) > 12 else "") or "none"
 
-    def need(where, name, causality, unit=None, what=""):
-        var = V.get(name)
+    def lookup(where, key, causality):
+        inst, name = conn.split(key)
+        info = infos[inst]
+        var = info.variables.get(name)
         if var is None:
-            raise _err(src, where, f"{fmu} has no variable {name!r} ({causality}s: "
-                                   f"{listing(causality)})")
+            raise _err(src, where, f"{info.label} has no variable {name!r} ({causality}s: "
+                                   f"{listing(inst, causality)})")
+        return inst, name, var, info.label
+
+    def need(where, key, causality, unit=None, what=""):
+        inst, name, var, fmu = lookup(where, key, causality)
         if var.causality != causality:
             raise _err(src, where, f"{name!r} is {_a(var.causality)} of {fmu}, not "
                                    f"{_a(causality)}; {what} must be {_a(causality)} "
-                                   f"({causality}s: {listing(causality)})")
+                                   f"({causality}s: {listing(inst, causality)})")
         if causality in ("input", "output") and var.type != "Real":
             raise _err(src, where, f"{name!r} is a {var.type} {causality}; only Real "
                                    f"variables can be connected")
@@ -414,6 +531,17 @@ def check_plant(conn: PlantConnection, plant_fmu, law=None) -> dict:
                                           f"name the plant output(s) giving them "
                                           f"({', '.join(f'{k} = NAME' for k in missing)})")
     seen = {conn.friction_input: "[friction] input"}
+    for a, b in conn.links:
+        where = f"[connections] {conn.ref(a)}"
+        va, vb = need(where, a, "output", what="a connection's source"), \
+            need(where, b, "input", what="a connection's target")
+        ua, ub = _declared_unit(va), _declared_unit(vb)
+        if ua and ub and _norm_unit(ua) != _norm_unit(ub):
+            raise _err(src, where, f"unit mismatch: {conn.ref(a)} is in {ua!r}, "
+                                   f"{conn.ref(b)} in {ub!r}")
+        if b in seen:
+            raise _err(src, where, f"input {conn.ref(b)} is already driven by {seen[b]}")
+        seen[b] = where
     for s in conn.inputs:
         where = f"[inputs] {s.variable}"
         need(where, s.variable, "input", s.unit, f"column {s.column!r}")
@@ -424,12 +552,9 @@ def check_plant(conn: PlantConnection, plant_fmu, law=None) -> dict:
     for s in conn.compare:
         need(f"[compare] {s.variable}", s.variable, "output", s.unit, f"column {s.column!r}")
     for name in conn.parameters:
-        var = V.get(name)
-        if var is None:
-            raise _err(src, f"[parameters] {name}", f"{fmu} has no variable {name!r} "
-                                                    f"(parameters: {listing('parameter')})")
+        inst, vname, var, fmu = lookup(f"[parameters] {name}", name, "parameter")
         if var.causality not in ("parameter", "input"):
-            raise _err(src, f"[parameters] {name}", f"{name!r} is {_a(var.causality)} of "
+            raise _err(src, f"[parameters] {name}", f"{vname!r} is {_a(var.causality)} of "
                                                     f"{fmu}; only parameters (and input "
                                                     f"start values) can be set")
         if var.causality == "input" and name in seen:
@@ -442,7 +567,11 @@ def check_plant(conn: PlantConnection, plant_fmu, law=None) -> dict:
                                                     f"parameters can be identified")
     if conn.mass is not None:
         need("mass", conn.mass, "parameter", what="the moving mass")
-    return V
+    out = dict(infos["plant"].variables)
+    for inst, info in infos.items():
+        if inst != "plant":
+            out.update({f"{inst}.{n}": v for n, v in info.variables.items()})
+    return out
 
 
 # -- measured data --------------------------------------------------------------------------------
@@ -623,30 +752,42 @@ class PlantLoop:
         from identification.cosim import fmu_dir_for
         names = [self.law_cls.name] + (["friction_effects"] if effects else [])
         d = fmu_dir_for(names, fmu_dir, self.native)
-        fmus = {"plant": self.plant_fmu, "friction": fmu_file(d, self.law_cls.name, native)}
+        fmus = {"plant": self.plant_fmu, **conn.fmus,
+                "friction": fmu_file(d, self.law_cls.name, native)}
         law_needs = ("v",) + tuple(self.law_cls.extra_inputs)
-        conns = [(f"plant.{conn.law_inputs[k]}", f"friction.{k}") for k in law_needs]
-        into_plant = f"plant.{conn.friction_input}"
+        conns = [(conn.ref(conn.law_inputs[k]), f"friction.{k}") for k in law_needs]
+        conns += [(conn.ref(a), conn.ref(b)) for a, b in conn.links]
+        into_plant = conn.ref(conn.friction_input)
         if effects:
             fmus["effects"] = fmu_file(d, "friction_effects", native)
             conns.append(("friction.F", "effects.F_law"))
             conns.append(("effects.F", into_plant, conn.sign))
             for k, src in conn.law_inputs.items():
-                conns.append((f"plant.{src}", f"effects.{k}"))
+                conns.append((conn.ref(src), f"effects.{k}"))
         else:
             conns.append(("friction.F", into_plant, conn.sign))
         self.kinematics = dict(conn.law_inputs)
-        rec = [f"plant.{s.variable}" for s in conn.compare]
-        rec += [f"plant.{n}" for n in conn.law_inputs.values()]
-        rec += [f"plant.{n}" for n in record]
-        rec.append("friction.F")
-        self.record = list(dict.fromkeys(rec))
-        self.master = Master(fmus, conns, algorithm=conn.algorithm,
-                             order=[k for k in ("plant", "friction", "effects") if k in fmus],
-                             parameters={"plant": dict(conn.parameters)},
-                             inputs=[f"plant.{s.variable}" for s in conn.inputs],
+        keys = [s.variable for s in conn.compare] + list(conn.law_inputs.values()) + \
+            [conn.key(n) for n in record]
+        self.record = list(dict.fromkeys([conn.ref(k) for k in keys] + ["friction.F"]))
+        order = list(conn.order) if conn.order else ["plant", *conn.fmus, "friction"]
+        if effects and "effects" not in order:
+            order.insert(order.index("friction") + 1, "effects")
+        if not effects and "effects" in order:
+            order.remove("effects")
+        self.master = Master(fmus, conns, algorithm=conn.algorithm, order=order,
+                             parameters=self._grouped(conn.parameters),
+                             inputs=[conn.ref(s.variable) for s in conn.inputs],
                              record=self.record)
         self._grid_cache = {}
+
+    def _grouped(self, values: dict) -> dict:
+        """``{key: value}`` -> ``{instance: {variable: value}}``."""
+        out = {"plant": {}, **{inst: {} for inst in self.conn.fmus}}
+        for k, v in values.items():
+            inst, var = self.conn.split(k)
+            out[inst][var] = v
+        return out
 
     def step_for(self, record: MeasuredRecord) -> float:
         return float(self.conn.step) if self.conn.step else record.dt
@@ -671,7 +812,7 @@ class PlantLoop:
                 vals = col[idx]
             else:
                 vals = np.interp(tk + 0.5 * h, record.t, col)
-            inputs[f"plant.{s.variable}"] = vals
+            inputs[self.conn.ref(s.variable)] = vals
         if len(self._grid_cache) > 8:
             self._grid_cache.clear()
         self._grid_cache[key] = (record, t0, h, n, inputs)
@@ -691,7 +832,7 @@ class PlantLoop:
         from .master import FMUError
         t0, h, n, inputs = self._grid(record, start, stop)
         m = self.master
-        m.parameters["plant"] = {**self.conn.parameters, **(plant_values or {})}
+        m.parameters.update(self._grouped({**self.conn.parameters, **(plant_values or {})}))
         m.parameters["friction"] = dict(law_params)
         if self.effects:
             m.parameters["effects"] = dict(effects or {})
@@ -710,6 +851,7 @@ class PlantLoop:
         values = {}
         for ref in self.record:
             inst, var = ref.split(".", 1)
+            key = var if inst == "plant" else ref
             y = np.asarray(res[ref], float)
             bad = ~np.isfinite(y) | (np.abs(y) > DIVERGED)
             if bad.any():
@@ -718,7 +860,7 @@ class PlantLoop:
                     f"{self._label(inst)} diverged: output {var!r} is {y[k]!r} at t = "
                     f"{res['time'][k]:.9g} s (communication step {h:.3g} s)",
                     float(res["time"][k]), var)
-            values[var if inst == "plant" else ref] = y
+            values[key] = y
         return PlantRun(np.asarray(res["time"], float), values)
 
     def _diverged_input(self, exc) -> str | None:
@@ -730,8 +872,8 @@ class PlantLoop:
         for msg in reversed(exc.messages):
             m = re.search(r"input (\w+) = (\S+) is not finite", msg)
             if m and m.group(1) in self.kinematics:
-                return (f"{self._label('plant')} diverged: output "
-                        f"{self.kinematics[m.group(1)]!r} is {m.group(2)} at t = "
+                inst, var = self.conn.split(self.kinematics[m.group(1)])
+                return (f"{self._label(inst)} diverged: output {var!r} is {m.group(2)} at t = "
                         f"{exc.time:.9g} s (the {exc.instance} FMU refused it as its input "
                         f"{m.group(1)})")
         return None
@@ -739,6 +881,8 @@ class PlantLoop:
     def _label(self, inst) -> str:
         if inst == "plant":
             return f"plant FMU {os.path.basename(self.plant_fmu)}"
+        if inst in self.conn.fmus:
+            return f"{inst} FMU {os.path.basename(self.conn.fmus[inst])}"
         return f"{inst} FMU"
 
     def close(self):

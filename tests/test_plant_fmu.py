@@ -173,6 +173,82 @@ def test_builtin_plant_fmu_is_a_special_case_of_the_same_path(native_dir):
     assert np.array_equal(run.values["x"], ref["plant.x"])
 
 
+def test_further_plant_side_fmus_close_the_loop_through_the_connection(tmp_path, cart,
+                                                                        native_dir):
+    """A controller FMU beside the plant ([fmus], [connections], qualified names): the
+    measured reference drives the controller, the controller the cart; the loop equals a
+    Master of the same three FMUs built by hand bit for bit, and the law's Fc and the
+    cart's mass are identified against position and command together."""
+    from identification.plant_fmu import identify_plant_fmu
+    from user_plants import build_c_pd
+    pd = build_c_pd(tmp_path)
+    text = f"""
+step = 1e-4
+order = ["plant", "pd", "friction"]
+
+[fmus]
+pd = "{pd.name}"
+
+[connections]
+"plant.pos" = "pd.y"
+"plant.vel" = "pd.ydot"
+pd.u = "plant.u"
+
+[friction]
+input = "F_c"
+sign = -1
+v = "vel"
+
+[inputs]
+"pd.r" = "ref"
+
+[compare]
+pos = "x"
+"pd.u" = {{ column = "cmd", unit = "V", weight = 0.5 }}
+
+[parameters]
+k_u = 2.0
+m = 1.5
+pd.kp = 40.0
+
+[identify]
+m = [0.5, 3.0]
+"""
+    (tmp_path / "loop.toml").write_text(text)
+    conn = load_connection(tmp_path / "loop.toml")
+    assert conn.links == [("pos", "pd.y"), ("vel", "pd.ydot"), ("pd.u", "u")]
+    assert conn.parameters == {"k_u": 2.0, "m": 1.5, "pd.kp": 40.0}
+    law = make_model("lugre")
+    t = np.arange(0.0, 2.0 + 1e-9, 1e-3)
+    ref = 0.05 * (1 - np.cos(2 * np.pi * 0.5 * t))
+    probe = MeasuredRecord(t, {"ref": ref, "x": ref, "cmd": ref}, "probe")
+    with PlantLoop(cart, conn, law, fmu_dir=native_dir) as pl:
+        run = pl.run(probe, law_parameters(law))
+    n = 20000
+    r_mid = np.interp(1e-4 * np.arange(n + 1) + 0.5e-4, t, ref)  # "linear" hold
+    with Master({"plant": str(cart), "pd": str(pd),
+                 "friction": fmu_file(native_dir, "lugre", True)},
+                [("plant.pos", "pd.y"), ("plant.vel", "pd.ydot"), ("pd.u", "plant.u"),
+                 ("plant.vel", "friction.v"), ("friction.F", "plant.F_c", -1.0)],
+                parameters={"plant": {"k_u": 2.0, "m": 1.5}, "pd": {"kp": 40.0},
+                            "friction": law_parameters(law)},
+                inputs=["pd.r"], record=["plant.pos", "pd.u"]) as m:
+        hand = m.simulate(stop_time=2.0, step_size=1e-4, inputs={"pd.r": r_mid})
+    assert np.array_equal(run.values["pos"], hand["plant.pos"])
+    assert np.array_equal(run.values["pd.u"], hand["pd.u"])
+    assert np.ptp(hand["plant.pos"]) > 0.05
+
+    truth = law.with_values(Fc=1.3)
+    with PlantLoop(cart, conn, truth, fmu_dir=native_dir) as pl:
+        r2 = pl.run(probe, law_parameters(truth), {"m": 1.8})
+    rec = MeasuredRecord(t, {"ref": ref, "x": r2.at("pos", t), "cmd": r2.at("pd.u", t)},
+                         "loop")
+    res = identify_plant_fmu(rec, cart, conn, law, names=["Fc", "plant.m"],
+                             algorithm="least_squares", fmu_dir=native_dir)
+    assert abs(res.params["Fc"] - 1.3) < 1e-4 and abs(res.params["plant.m"] - 1.8) < 1e-4
+    assert set(res.channels["fit"]) == {"pos", "pd.u"}
+
+
 # -- bad input: one line each, naming the variable or the time --------------------------------
 def _cli(capsys, argv):
     from frictionlab.cli import main

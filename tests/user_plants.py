@@ -7,6 +7,8 @@
   negative ``d`` makes it unstable), integrated with classical RK4 substeps, outputs ``pos``,
   ``vel``, ``acc``; ``m <= 0`` fails fmi2ExitInitializationMode with a logged message. An
   input ``F_kN`` declared in kN serves the unit-mismatch test.
+* :func:`build_c_pd`: a stateless PD position controller as a second C FMU (a further
+  plant-side FMU of a connection's ``[fmus]``).
 * :func:`build_python_cart`: the same kind of plant as a pythonfmu FMU written only for the
   tests (``m dv/dt = F_drive - F_friction``, semi-implicit Euler substeps), no units declared.
 """
@@ -153,6 +155,9 @@ fmi2Status fmi2DoStep(fmi2Component comp, fmi2Real t, fmi2Real h, fmi2Boolean ns
     return fmi2OK;
 }
 
+"""
+
+C_STUBS = r"""
 #define UNSUPPORTED return fmi2Error
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Integer v[]) { (void)c; (void)vr; (void)v; return n ? fmi2Error : fmi2OK; }
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Boolean v[]) { (void)c; (void)vr; (void)v; return n ? fmi2Error : fmi2OK; }
@@ -191,11 +196,14 @@ _C_VARIABLES = [  # name, vr, causality, unit, start, description
 ]
 
 
-def _c_model_description(guid: str) -> str:
-    units = sorted({u for _, _, _, u, _, _ in _C_VARIABLES})
+def _c_model_description(guid: str, ident: str = "cart", variables=None,
+                         deps=None) -> str:
+    variables = _C_VARIABLES if variables is None else variables
+    deps = {"acc": ("u", "F_c")} if deps is None else deps
+    units = sorted({u for _, _, _, u, _, _ in variables})
     udefs = "\n".join(f'    <Unit name="{u}"/>' for u in units)
     rows = []
-    for name, vr, caus, unit, start, desc in _C_VARIABLES:
+    for name, vr, caus, unit, start, desc in variables:
         if caus == "output":
             rows.append(f'    <ScalarVariable name="{name}" valueReference="{vr}" '
                         f'causality="output" variability="continuous" initial="calculated" '
@@ -205,14 +213,15 @@ def _c_model_description(guid: str) -> str:
             rows.append(f'    <ScalarVariable name="{name}" valueReference="{vr}" '
                         f'causality="{caus}" variability="{var}" description="{desc}">'
                         f'<Real unit="{unit}" start="{start!r}"/></ScalarVariable>')
-    index = {name: k + 1 for k, (name, *_r) in enumerate(_C_VARIABLES)}
-    outs = (f'      <Unknown index="{index["pos"]}" dependencies=""/>\n'
-            f'      <Unknown index="{index["vel"]}" dependencies=""/>\n'
-            f'      <Unknown index="{index["acc"]}" dependencies="{index["u"]} {index["F_c"]}"/>')
+    index = {name: k + 1 for k, (name, *_r) in enumerate(variables)}
+    outs = "\n".join(
+        f'      <Unknown index="{index[name]}" dependencies="'
+        f'{" ".join(str(index[d]) for d in deps.get(name, ()))}"/>'
+        for name, _, caus, *_r in variables if caus == "output")
     head = (f'<?xml version="1.0" encoding="UTF-8"?>\n'
-            f'<fmiModelDescription fmiVersion="2.0" modelName="cart" guid="{guid}" '
+            f'<fmiModelDescription fmiVersion="2.0" modelName="{ident}" guid="{guid}" '
             f'generationTool="frictionlab tests" numberOfEventIndicators="0">\n'
-            f'  <CoSimulation modelIdentifier="cart" '
+            f'  <CoSimulation modelIdentifier="{ident}" '
             f'canHandleVariableCommunicationStepSize="true"/>\n'
             f'  <UnitDefinitions>\n{udefs}\n  </UnitDefinitions>\n'
             f'  <DefaultExperiment startTime="0" stopTime="1" stepSize="1e-3"/>\n')
@@ -222,26 +231,98 @@ def _c_model_description(guid: str) -> str:
             "  </ModelStructure>\n</fmiModelDescription>\n")
 
 
-def build_c_cart(out_dir) -> pathlib.Path:
-    """Compile the C cart into ``out_dir/cart.fmu`` (linux64 binary; needs a C compiler)."""
+def _build_c_fmu(out_dir, ident, source, md) -> pathlib.Path:
     from fmus.status_shim import fmi2_header_dir
     out = pathlib.Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    src = out / "cart.c"
-    src.write_text(C_SOURCE)
-    so = out / "cart.so"
+    src = out / f"{ident}.c"
+    src.write_text(source)
+    so = out / f"{ident}.so"
     cc = shutil.which("cc") or shutil.which("gcc")
     if cc is None:
         raise RuntimeError("no C compiler")
     subprocess.run([cc, "-std=c99", "-O2", "-shared", "-fPIC", "-Wall", "-Wextra",
                     f"-I{fmi2_header_dir()}", str(src), "-o", str(so), "-lm"], check=True,
                    capture_output=True, text=True)
-    fmu = out / "cart.fmu"
+    fmu = out / f"{ident}.fmu"
     with zipfile.ZipFile(fmu, "w", zipfile.ZIP_DEFLATED) as z:
-        z.writestr("modelDescription.xml", _c_model_description("{" + str(uuid.uuid4()) + "}"))
-        z.write(so, "binaries/linux64/cart.so")
-        z.write(src, "sources/cart.c")
+        z.writestr("modelDescription.xml", md)
+        z.write(so, f"binaries/linux64/{ident}.so")
+        z.write(src, f"sources/{ident}.c")
     return fmu
+
+
+def build_c_cart(out_dir) -> pathlib.Path:
+    """Compile the C cart into ``out_dir/cart.fmu`` (linux64 binary; needs a C compiler)."""
+    return _build_c_fmu(out_dir, "cart", C_SOURCE + C_STUBS,
+                        _c_model_description("{" + str(uuid.uuid4()) + "}"))
+
+
+PD_SOURCE = r"""
+#include <stdlib.h>
+#include <string.h>
+#include "fmi2Functions.h"
+
+/* a PD position controller without state: u = kp (r - y) - kd ydot [V] */
+enum { VR_KP, VR_KD, VR_R, VR_Y, VR_YD, VR_U, N_VR };
+static const double START[N_VR] = {20.0, 2.0, 0.0, 0.0, 0.0, 0.0};
+typedef struct { double r[N_VR]; } Pd;
+
+const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
+const char *fmi2GetVersion(void) { return fmi2Version; }
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean on, size_t n, const fmi2String cat[])
+{ (void)c; (void)on; (void)n; (void)cat; return fmi2OK; }
+fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid, fmi2String res,
+                              const fmi2CallbackFunctions *cb, fmi2Boolean vis, fmi2Boolean log)
+{
+    Pd *c;
+    (void)name; (void)guid; (void)res; (void)cb; (void)vis; (void)log;
+    if (type != fmi2CoSimulation) return NULL;
+    c = (Pd *)calloc(1, sizeof(Pd));
+    if (c) memcpy(c->r, START, sizeof(START));
+    return c;
+}
+void fmi2FreeInstance(fmi2Component c) { free(c); }
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean a, fmi2Real b, fmi2Real t0, fmi2Boolean d, fmi2Real e)
+{ (void)c; (void)a; (void)b; (void)t0; (void)d; (void)e; return fmi2OK; }
+fmi2Status fmi2EnterInitializationMode(fmi2Component c) { (void)c; return fmi2OK; }
+fmi2Status fmi2ExitInitializationMode(fmi2Component c) { (void)c; return fmi2OK; }
+fmi2Status fmi2Terminate(fmi2Component c) { (void)c; return fmi2OK; }
+fmi2Status fmi2Reset(fmi2Component comp) { memcpy(((Pd *)comp)->r, START, sizeof(START)); return fmi2OK; }
+fmi2Status fmi2GetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t n, fmi2Real v[])
+{
+    Pd *c = (Pd *)comp;
+    size_t i;
+    c->r[VR_U] = c->r[VR_KP] * (c->r[VR_R] - c->r[VR_Y]) - c->r[VR_KD] * c->r[VR_YD];
+    for (i = 0; i < n; i++) { if (vr[i] >= N_VR) return fmi2Error; v[i] = c->r[vr[i]]; }
+    return fmi2OK;
+}
+fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t n, const fmi2Real v[])
+{
+    Pd *c = (Pd *)comp;
+    size_t i;
+    for (i = 0; i < n; i++) { if (vr[i] >= VR_U) return fmi2Error; c->r[vr[i]] = v[i]; }
+    return fmi2OK;
+}
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real t, fmi2Real h, fmi2Boolean nsp)
+{ (void)c; (void)t; (void)h; (void)nsp; return fmi2OK; }
+"""
+
+_PD_VARIABLES = [
+    ("kp", 0, "parameter", "V/m", 20.0, "proportional gain"),
+    ("kd", 1, "parameter", "V.s/m", 2.0, "derivative gain"),
+    ("r", 2, "input", "m", 0.0, "reference position"),
+    ("y", 3, "input", "m", 0.0, "measured position"),
+    ("ydot", 4, "input", "m/s", 0.0, "measured velocity"),
+    ("u", 5, "output", "V", None, "command"),
+]
+
+
+def build_c_pd(out_dir) -> pathlib.Path:
+    """Compile a PD position controller (``u = kp (r - y) - kd ydot``) into
+    ``out_dir/pd.fmu``: a second plant-side FMU for the connection's ``[fmus]``."""
+    return _build_c_fmu(out_dir, "pd", PD_SOURCE + C_STUBS, _c_model_description(
+        "{" + str(uuid.uuid4()) + "}", "pd", _PD_VARIABLES, {"u": ("r", "y", "ydot")}))
 
 
 PY_SOURCE = '''

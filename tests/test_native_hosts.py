@@ -36,12 +36,13 @@ import pytest
 fmpy = pytest.importorskip("fmpy")
 
 from fmus.native.build import build_native, native_catalogue  # noqa: E402
-from fmus.proof import MASS_SCENARIOS, mass_connections, mass_reference  # noqa: E402
+from fmus.proof import mass_connections, mass_reference, mass_scenario  # noqa: E402
 
 HERE = pathlib.Path(__file__).resolve().parent
 HOST_SRC = HERE / "native_host" / "host.c"
 H = 1e-4
-LAWS = ("lugre", "stribeck", "modified_lugre", "load_lugre", "mre_lugre")
+LAWS = ("lugre", "stribeck", "modified_lugre", "load_lugre", "mre_lugre", "gms",
+        "backlash_lugre")
 ENV = shutil.which("env") or "/usr/bin/env"
 
 
@@ -194,6 +195,12 @@ CASES = {
     # around the critical velocity vc ~ 1.9e-4 m/s: both regimes and the switch outputs
     "load_lugre": dict(vscale=5e-4, load=500.0, coupling=True, share=True, params={}),
     "mre_lugre": dict(vscale=0.06, params=dict(swap_alpha_eps=True)),
+    # presliding with lag (a slow attraction) and a Lorentzian curve
+    "gms": dict(vscale=5e-3, coupling=True,
+                params=dict(spread=30.0, C=3e3, shape="lorentzian", b=0.05)),
+    # the drive crosses the gap (2 delta = 1e-4 m; strokes 2.4e-4 m) with nothing felt
+    "backlash_lugre": dict(vscale=5e-3, coupling=True,
+                           params=dict(delta=5e-5, gap="free", Fc_neg=0.8, b=0.05)),
 }
 
 
@@ -353,13 +360,13 @@ REC = ["mass.x", "mass.v", "friction.F"]
 
 
 def mass_params(law: str) -> dict:
-    sc = MASS_SCENARIOS[law]
+    sc = mass_scenario(law)
     return {k: sc[k] for k in ("m", "u0", "u_amp", "u_freq", "v0")}
 
 
 def friction_start(law: str) -> dict:
     """Start values of the law's unconnected inputs in the mass loop (the load)."""
-    sc = MASS_SCENARIOS[law]
+    sc = mass_scenario(law)
     return {"load": sc["load"]} if "load" in sc else {}
 
 

@@ -75,7 +75,9 @@ def start_law(model, conn) -> FrictionModel:
 
 class _Stacked:
     """What :class:`identification.problem.Problem` reads as ``objective.data``: the compared
-    channels stacked, each scaled by sqrt(weight share) / its spread."""
+    channels stacked, each scaled by sqrt(weight / mean weight) / its spread, so that the
+    RMS of the stacked residual is the root of the weighted mean square NRMSE (channels
+    of equal length)."""
 
     def __init__(self, t, F, name):
         self.t, self.F, self.name = t, F, name
@@ -124,7 +126,7 @@ class PlantFMUObjective(_MasterHolder, Objective):
             raise KeyError(f"{bad}: not parameters of {model.name} nor plant parameters in "
                            f"{self.conn.source} [identify] ({sorted(plant_names) or 'none'})")
         weights = np.array([s.weight for s in self.conn.compare], float)
-        self._chan = []
+        self.channels = []
         parts = []
         for s, w in zip(self.conn.compare, weights / weights.mean()):
             y = record.column(s.column) * s.scale
@@ -132,8 +134,8 @@ class PlantFMUObjective(_MasterHolder, Objective):
             if not sd > 0:
                 raise ValueError(f"{record.name}: compared column {s.column!r} is constant; "
                                  f"its NRMSE is undefined")
-            k = math.sqrt(w / len(weights)) / sd
-            self._chan.append((s, k, y))
+            k = math.sqrt(w) / sd
+            self.channels.append((s, k, y))
             parts.append(y * k)
         self.data = _Stacked(record.t, np.concatenate(parts), record.name)
         self._master = None
@@ -145,7 +147,7 @@ class PlantFMUObjective(_MasterHolder, Objective):
 
     @property
     def _rscale(self) -> float:
-        return 1.0 / math.sqrt(len(self.data.F) / len(self._chan))
+        return 1.0 / math.sqrt(len(self.data.F))
 
     def _open(self):
         if self._master is None:
@@ -175,7 +177,7 @@ class PlantFMUObjective(_MasterHolder, Objective):
 
     def stacked(self, run, record=None) -> np.ndarray:
         rec = record or self.record
-        return np.concatenate([run.at(s.variable, rec.t) * k for s, k, _ in self._chan])
+        return np.concatenate([run.at(s.variable, rec.t) * k for s, k, _ in self.channels])
 
     def predict(self, X) -> np.ndarray:
         X = np.atleast_2d(np.asarray(X, float))

@@ -247,6 +247,15 @@ m = [0.5, 3.0]
                              algorithm="least_squares", fmu_dir=native_dir)
     assert abs(res.params["Fc"] - 1.3) < 1e-4 and abs(res.params["plant.m"] - 1.8) < 1e-4
     assert set(res.channels["fit"]) == {"pos", "pd.u"}
+    # the cost: root of the weighted (1 : 0.5) mean square of the channels' NRMSE
+    from identification.plant_fmu import PlantFMUObjective
+    obj = PlantFMUObjective(law, rec, ["Fc", "plant.m"], conn, cart, fmu_dir=native_dir)
+    x = np.array([1.2, 1.7])
+    per = obj.channel_nrmse(x)
+    want = math.sqrt((1.0 * per["pos"] ** 2 + 0.5 * per["pd.u"] ** 2) / 1.5)
+    assert obj.costs(x[None, :])[0] == pytest.approx(want, rel=1e-12)
+    assert float(np.sum(obj.residuals(x) ** 2)) == pytest.approx(want ** 2, rel=1e-12)
+    obj.close()
 
 
 # -- bad input: one line each, naming the variable or the time --------------------------------
@@ -343,6 +352,10 @@ def test_a_diverging_trial_point_costs_inf_and_the_run_goes_on(cart, native_dir)
     costs = obj.costs(np.array([[2.0], [-4e4], [5.0]]))
     assert costs[0] < 1e-9 and costs[1] == np.inf and 0 < costs[2] < 1
     assert np.all(obj.residuals(np.array([-4e4])) > 0)
+    import pickle  # what a process pool or a dask worker receives: opens its own FMUs
+    twin = pickle.loads(pickle.dumps(obj))
+    assert np.array_equal(twin.costs(np.array([[5.0]])), costs[2:])
+    twin.close()
     obj.close()
     res = identify_plant_fmu(rec, cart, conn, law, names=["plant.d"], fmu_dir=native_dir,
                              algorithm="multistart_ls", n_screen=12, n_starts=1,

@@ -99,6 +99,30 @@ def _apply_effects(F, effects, extras, data, ctx, law=None):
     return F
 
 
+def _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx):
+    """Start values of the extras of effects with a ``start`` hook (their time scales,
+    wavelengths and positions chosen on the data, :meth:`diagnosis.effects.Candidate.
+    start`), from the residual of ``law`` at its current values with the other effects at
+    their starts; extras given in ``extras0`` are kept."""
+    given = extras0 or {}
+    starters = [eff for eff in effects if eff.start is not None
+                and any(e.name not in given for e in eff.force_extras(ctx))]
+    if not starters:
+        return x_ex0
+    names = [e.name for e in ex]
+    Fl = Composite(law, list(base_names), [], {}, ctx).predict(fit)
+    Ff = Fl - law.conservative_force(fit.x)
+    others = [eff for eff in effects if eff not in starters]
+    F = _apply_effects(Fl, others, dict(zip(names, x_ex0)), fit, ctx, law)
+    r = fit.F - F
+    x_ex0 = x_ex0.copy()
+    for eff in starters:
+        for k, val in eff.start(fit, Ff, r, ctx).items():
+            if k in names and k not in given:
+                x_ex0[names.index(k)] = val
+    return x_ex0
+
+
 def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, *,
                   extras0: dict | None = None, max_nfev: int = 60) -> tuple[Composite, float]:
     """Jointly re-identify the base law's parameters and the effects' extras on ``fit``.
@@ -117,6 +141,7 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     lo = np.array([e.lo for e in ex])
     hi = np.array([e.hi for e in ex])
     x_ex0 = np.array([(extras0 or {}).get(e.name, e.x0) for e in ex])
+    x_ex0 = _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx)
     u_ex0 = (x_ex0 - lo) / (hi - lo) if ex else np.zeros(0)
     u0 = np.concatenate([u_law0, np.clip(u_ex0, 0.0, 1.0)])
     # kernel inputs validated once; each evaluation only repacks theta
@@ -139,12 +164,25 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         except (ValueError, TypeError):  # values the law rejects (NaN cost below)
             return None
 
+    # the law's force depends on the law's parameters only: a step in an effect's extras
+    # (most columns of a finite-difference Jacobian) reuses the last simulation
+    memo = {}
+
+    def law_force(xl):
+        key = xl.tobytes()
+        if key not in memo:
+            theta = law.population_theta(base_names, xl[None, :])[0]
+            trial = trial_law(xl) if nb else law
+            s0 = (law.initial_state() if trial is None
+                  else trial._start_from(t, v, a, load, x, F0))
+            F, _ = kern(t, v, a, load, x, theta, 0, s0)
+            memo.clear()
+            memo[key] = (F, trial)
+        return memo[key]
+
     def residual(u):
         xl, extras = unpack(u)
-        theta = law.population_theta(base_names, xl[None, :])[0]
-        trial = trial_law(xl) if nb else law
-        s0 = law.initial_state() if trial is None else trial._start_from(t, v, a, load, x, F0)
-        F, _ = kern(t, v, a, load, x, theta, 0, s0)
+        F, trial = law_force(xl)
         F = _apply_effects(F, effects, extras, fit, ctx,
                            (trial or law.with_values(**dict(zip(base_names, xl))))
                            if elastic else None)

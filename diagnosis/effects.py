@@ -27,7 +27,8 @@ from scipy.signal import lfilter
 
 from friction import make_model
 from friction.dataset import Dataset
-from friction.extensions import POSITION_NAMES, position_map
+from friction.extensions import (DRIFT_NAMES, POSITION_FORM_NAMES, POSITION_NAMES,
+                                 drift_change, pack_extensions, position_change)
 
 __all__ = ["Candidate", "CANDIDATES", "EFFECT_NAMES", "Context", "make_context"]
 
@@ -100,6 +101,12 @@ class Candidate:
         :class:`diagnosis.effect_law.EffectLaw` implements exactly these)."""
         return []
 
+    def trajectory_extras(self, ctx: Context) -> list[Extra]:
+        """The parameters the trajectory level fits (each evaluation a plant simulation):
+        :meth:`extras` by default; a candidate whose further forms need a start chosen on
+        the data (:attr:`start`, a force-level residual) offers only its first form there."""
+        return self.extras(ctx)
+
     def force_extras(self, ctx: Context) -> list[Extra]:
         """All parameters fitted at the force level: :meth:`extras` plus those only measured
         friction data need (their zero, the default of :meth:`apply`, is the plain formula)."""
@@ -108,10 +115,22 @@ class Candidate:
     def apply(self, F, p: dict, data, ctx: Context) -> np.ndarray:
         return F
 
+    #: ``start(fit, Ff, r, ctx) -> dict``: start values of extras chosen on the data (time
+    #: scales, wavelengths, positions a gradient cannot find from a zero amplitude), given
+    #: the base's friction part ``Ff`` [N] and residual ``r`` [N] on the fit record
+    #: (:func:`diagnosis.composite.fit_composite`); ``None``: the extras' ``x0``
+    start = None
+
     #: ``undo(data, p, ctx) -> Dataset``: the data with the effect at ``p`` taken out, for
     #: effects the base fit absorbs in a distorted way (see :func:`diagnosis.composite.
     #: fit_composite`); ``None``: no such start
     undo = None
+
+    def practical(self, p: dict, ctx: Context) -> str:
+        """Why the fitted parameters ``p`` are too small to be this effect in practice,
+        whatever the held-out scores ('' when they are not; see
+        :func:`diagnosis.core.practical_size`)."""
+        return ""
 
     def specialise(self, law) -> "Candidate":
         """The form of this effect for ``law`` (default: the same for every law)."""
@@ -213,12 +232,91 @@ class Load(Candidate):
 
 
 class Drift(Candidate):
+    """Friction level changing over time: ``F (1 + d(t))`` with ``d`` a linear trend, a
+    saturating change of time constant ``tau_sat`` and a step at ``t_step``
+    (:func:`friction.extensions.drift_change`). A warm-up that levels off within the record
+    is the saturating part (the linear form alone closed 23 % of a +60 % warm-up of time
+    constant T/3: it cannot bend), a change of lubricant or a regulated temperature is the
+    step; their time scales are chosen on the data (:meth:`start`)."""
+
     def extras(self, ctx):
-        return [Extra("k_drift", 0.0, -2.0, 2.0, "1")]
+        T = ctx.T or 1.0
+        return [Extra("k_drift", 0.0, -2.0, 2.0, "1"),
+                Extra("k_sat", 0.0, -2.0, 2.0, "1"),
+                # a saturating change over the fit record, not a start-up transient of its
+                # first samples (which would free the level of the record's start)
+                Extra("tau_sat", 0.3 * T, self.STEP_MARGIN / 3.0 * T, 3.0 * T, "s"),
+                Extra("k_step", 0.0, -1.0, 1.0, "1"),
+                # a step is seen on both sides within the fit record: one at its very end
+                # would only set a free level for whatever follows (the held-out part)
+                Extra("t_step", ctx.t0 + 0.5 * T, ctx.t0 + self.STEP_MARGIN * T,
+                      ctx.t0 + (1.0 - self.STEP_MARGIN) * T, "s"),
+                Extra("w_step", 0.01 * T, max(ctx.dt, 1e-4 * T), 0.1 * T, "s")]
+
+    #: shortest share of the fit record on either side of the step, and over which the
+    #: saturating part may complete 95 % of its change (tau_sat >= STEP_MARGIN / 3 x T) [-]
+    STEP_MARGIN = 0.15
+
+    def trajectory_extras(self, ctx):
+        # the saturating and step parts start from a force-level residual (:meth:`start`);
+        # the trajectory level keeps the linear trend
+        return self.extras(ctx)[:1]
+
+    def _packed(self, p, ctx):
+        return pack_extensions({"drift": {n: p[n] for n in DRIFT_NAMES if n in p}},
+                               t0=ctx.t0, T=ctx.T or 1.0)
 
     def apply(self, F, p, data, ctx):
-        # friction level changing over time (warming): relative change per fit duration
-        return F * (1.0 + p["k_drift"] * (data.t - ctx.t0) / ctx.T)
+        # friction level changing over time (warming, running-in, a lubricant change)
+        return F * (1.0 + drift_change(data.t, self._packed(p, ctx)))
+
+    def start(self, fit, Ff, r, ctx) -> dict:
+        """Start values from the base's fit residual ``r`` [N] against its friction part
+        ``Ff`` [N]: ``r ~ Ff d(t)`` is linear in the amplitudes; the saturation time
+        constant and the step's time and width are chosen on a grid by least squares."""
+        T = ctx.T or 1.0
+        s = fit.t - ctx.t0
+        sub = _subsample(fit.t.size)
+        t, f, rr = fit.t[sub], Ff[sub], r[sub]
+        lin = f * (t - ctx.t0) / T
+        ex = {e.name: e for e in self.extras(ctx)}
+        best = (np.inf, None)
+        for tau in np.geomspace(ex["tau_sat"].lo, ex["tau_sat"].hi, 24):
+            sat = f * (1.0 - np.exp(-np.clip(t - ctx.t0, 0.0, None) / tau))
+            sse, _ = _lsq(np.column_stack([lin, sat]), rr)
+            if sse < best[0]:
+                best = (sse, tau)
+        tau = best[1]
+        sat = f * (1.0 - np.exp(-np.clip(t - ctx.t0, 0.0, None) / tau))
+        _, c = _lsq(np.column_stack([lin, sat]), rr)
+        r1 = rr - np.column_stack([lin, sat]) @ c
+        best = (np.inf, None, None)
+        for w in (ex["w_step"].lo, 0.01 * T, 0.05 * T):
+            w = float(np.clip(w, ex["w_step"].lo, ex["w_step"].hi))
+            for ts in np.linspace(ex["t_step"].lo, ex["t_step"].hi, 49):
+                st = f * 0.5 * (1.0 + np.tanh(0.5 * (t - ts) / w))
+                sse, _ = _lsq(st[:, None], r1)
+                if sse < best[0]:
+                    best = (sse, ts, w)
+        _, ts, w = best
+        st = f * 0.5 * (1.0 + np.tanh(0.5 * (t - ts) / w))
+        _, c = _lsq(np.column_stack([lin, sat, st]), rr)
+        del s
+        out = {"k_drift": c[0], "k_sat": c[1], "tau_sat": tau, "k_step": c[2], "t_step": ts,
+               "w_step": w}
+        return {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
+
+
+def _subsample(n, most: int = 6000) -> np.ndarray:
+    """Evenly spaced indices of at most ``most`` of ``n`` samples (for start grids)."""
+    return np.arange(0, n, max(1, -(-n // most)))
+
+
+def _lsq(A, b):
+    """Least squares of ``A c ~ b``: (sum of squared residuals, c)."""
+    c, *_ = np.linalg.lstsq(A, b, rcond=1e-10)
+    res = b - A @ c
+    return float(res @ res), c
 
 
 class Asymmetry(Candidate):
@@ -262,18 +360,88 @@ class AsymmetryTwins(Candidate):
 
 
 class Position(Candidate):
+    """Friction level varying along the stroke, ``F (1 + m(x))``
+    (:func:`friction.extensions.position_change`): a 12-knot map for trends and defects a
+    tenth of the stroke wide, a periodic waviness (two harmonics) whose wavelength is chosen
+    on the data, and a local defect whose centre and width are chosen on the data
+    (:meth:`start`). The 12-knot map alone closed 1 % of a waviness of period 7 % of the
+    stroke: its knots are 9 % apart."""
     stage_doc = "friction level scaled along the stroke"
-    NAMES = POSITION_NAMES
+    NAMES = POSITION_NAMES + POSITION_FORM_NAMES
+    #: shortest wavelength and narrowest defect, in samples of travel at the top speed:
+    #: finer than this along the motion the data cannot tell a map from noise
+    MIN_SAMPLES = 8.0
+
+    def _span(self, ctx):
+        return max(ctx.x_hi - ctx.x_lo, 1e-12)
 
     def extras(self, ctx):
-        return [Extra(n, 0.0, -1.0, 1.0, "1") for n in self.NAMES]
+        span = self._span(ctx)
+        step = self.MIN_SAMPLES * ctx.sv * ctx.dt
+        lam_lo = min(max(0.01 * span, step), 0.25 * span)
+        w_lo = min(max(0.004 * span, 0.5 * step), 0.05 * span)
+        return ([Extra(n, 0.0, -1.0, 1.0, "1") for n in POSITION_NAMES]
+                + [Extra("lambda_x", 0.1 * span, lam_lo, 0.5 * span, "m")]
+                + [Extra(n, 0.0, -1.0, 1.0, "1") for n in ("p_c1", "p_s1", "p_c2", "p_s2")]
+                + [Extra("d_x", 0.0, -1.0, 1.0, "1"),
+                   Extra("x_d", 0.5 * (ctx.x_lo + ctx.x_hi), ctx.x_lo, ctx.x_lo + span, "m"),
+                   Extra("w_d", 0.05 * span, w_lo, 0.2 * span, "m")])
+
+    def trajectory_extras(self, ctx):
+        # the waviness and the local defect start from a force-level residual
+        # (:meth:`start`); the trajectory level keeps the knot map
+        return self.extras(ctx)[:len(POSITION_NAMES)]
+
+    def _packed(self, p, ctx):
+        return pack_extensions({"position": {n: p[n] for n in self.NAMES if n in p}},
+                               x_lo=ctx.x_lo, x_hi=ctx.x_lo + self._span(ctx))
 
     def apply(self, F, p, data, ctx):
-        # friction level varying along the stroke: a friction map, linear between equally
-        # spaced knots over the fit record's stroke (a local defect, a worn section)
-        span_hi = max(ctx.x_hi, ctx.x_lo + 1e-12)
-        return F * (1.0 + position_map(data.x, ctx.x_lo, span_hi,
-                                       [p.get(n, 0.0) for n in self.NAMES]))
+        # friction level varying along the stroke: a friction map over the fit record's
+        # stroke (a worn section, guide waviness or screw pitch, a local defect)
+        return F * (1.0 + position_change(data.x, self._packed(p, ctx)))
+
+    def start(self, fit, Ff, r, ctx) -> dict:
+        """Start values from the base's fit residual ``r`` [N] against its friction part
+        ``Ff`` [N]: ``r ~ Ff m(x)`` is linear in the knot values and amplitudes; the
+        wavelength is chosen on a grid even in wavenumber (a quarter period of slip over the
+        stroke between neighbours), the defect's centre and width on a grid, each by least
+        squares on what the parts before it leave."""
+        span = self._span(ctx)
+        ex = {e.name: e for e in self.extras(ctx)}
+        sub = _subsample(fit.t.size)
+        x, f, rr = fit.x[sub], Ff[sub], r[sub]
+        knots = np.linspace(ctx.x_lo, ctx.x_lo + span, len(POSITION_NAMES) + 1)
+        H = np.column_stack([np.interp(x, knots, np.eye(knots.size)[k])
+                             for k in range(1, knots.size)]) * f[:, None]
+        _, c = _lsq(H, rr)
+        r1 = rr - H @ c
+
+        def periodic(lam):
+            ph = 2.0 * np.pi * (x - ctx.x_lo) / lam
+            return np.column_stack([np.cos(ph), np.sin(ph), np.cos(2 * ph),
+                                    np.sin(2 * ph)]) * f[:, None]
+        k_lo, k_hi = 1.0 / ex["lambda_x"].hi, 1.0 / ex["lambda_x"].lo
+        waves = np.arange(k_lo, k_hi, 0.25 / span)
+        sse = [_lsq(periodic(1.0 / k), r1)[0] for k in waves]
+        lam = float(1.0 / waves[int(np.argmin(sse))])
+        P = periodic(lam)
+        _, pc = _lsq(P, r1)
+        r2 = r1 - P @ pc
+        best = (np.inf, None, None)
+        for w in np.geomspace(ex["w_d"].lo, ex["w_d"].hi, 8):
+            for xd in np.linspace(ctx.x_lo, ctx.x_lo + span, 61):
+                g = f * np.exp(-0.5 * ((x - xd) / w) ** 2)
+                e, _ = _lsq(g[:, None], r2)
+                if e < best[0]:
+                    best = (e, xd, w)
+        _, xd, w = best
+        G = (f * np.exp(-0.5 * ((x - xd) / w) ** 2))[:, None]
+        _, allc = _lsq(np.column_stack([H, P, G]), rr)
+        out = dict(zip(POSITION_NAMES, allc[:len(POSITION_NAMES)]))
+        out.update(zip(("p_c1", "p_s1", "p_c2", "p_s2"), allc[len(POSITION_NAMES):-1]))
+        out.update(lambda_x=lam, d_x=allc[-1], x_d=xd, w_d=w)
+        return {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
 
 
 class Inertia(Candidate):
@@ -294,6 +462,13 @@ class Inertia(Candidate):
 
 class Delay(Candidate):
     MAX_SAMPLES = 25
+    #: shortest shift named ``delay`` [samples]. Sampling and differentiation alone shift
+    #: a record by up to about a sample: an integrating converter averages the force over
+    #: the sample period (half a sample late), backward differences of encoder counts put
+    #: the velocity half a sample late, and the base law's update at the sample rate differs
+    #: from the continuous contact by a fraction of a sample; a shift within this is the
+    #: record's discretisation, not a delay of its force channel
+    MIN_SAMPLES = 1.5
 
     def extras(self, ctx):
         d = self.MAX_SAMPLES * ctx.dt
@@ -302,6 +477,14 @@ class Delay(Candidate):
     def apply(self, F, p, data, ctx):
         # the force channel lags (delay > 0) the motion channels
         return np.interp(data.t - p["delay"], data.t, F)
+
+    def practical(self, p, ctx) -> str:
+        """Why the fitted shift is too small to name ('' when it is large enough)."""
+        n = abs(p["delay"]) / ctx.dt
+        if n < self.MIN_SAMPLES:
+            return (f"its shift of {n:.2f} samples is below {self.MIN_SAMPLES:g} samples, what "
+                    f"sampling and differentiation alone make")
+        return ""
 
     def undo(self, data, p, ctx):
         """``data`` with its force channel shifted back by ``p["delay"]`` (for a

@@ -6,17 +6,29 @@ applied in the order multiplicative then additive:
 
 * ``load``         levels affine in the normal load (seed 004 Eqs. 9-11):
                    ``F (1 + k_L (load - L0) / L0)``, never of the opposite sign;
-* ``drift``        levels changing over time: ``F (1 + k_drift (t - t0) / T)``;
-* ``position``     levels along the stroke: ``F (1 + m(x))`` with ``m`` a friction map,
-                   linear between :data:`POSITION_KNOTS` equally spaced knots from ``x_lo``
-                   to ``x_hi`` (values ``0, c_x1, ..., c_x11``: relative to the level at
-                   ``x_lo``, whose change the base levels carry), constant beyond;
+* ``drift``        levels changing over time, ``F (1 + d(t))`` (:func:`drift_change`):
+                   a linear trend, a saturating change and a step,
+                   ``d = k_drift (t - t0) / T + k_sat (1 - exp(-(t - t0) / tau_sat))
+                   + k_step / (1 + exp(-(t - t_step) / w_step))`` (the saturating part 0
+                   before ``t0``; ``tau_sat <= 0``: a step at ``t0``; ``w_step <= 0``: a
+                   sharp step);
+* ``position``     levels along the stroke, ``F (1 + m(x))`` with ``m`` a friction map
+                   (:func:`position_change`) of three parts: piecewise linear between
+                   :data:`POSITION_KNOTS` equally spaced knots from ``x_lo`` to ``x_hi``
+                   (values ``0, c_x1, ..., c_x11``: relative to the level at ``x_lo``,
+                   whose change the base levels carry; constant beyond), a periodic
+                   waviness of wavelength ``lambda_x`` with two harmonics
+                   (``p_c1 cos(phi) + p_s1 sin(phi) + p_c2 cos(2 phi) + p_s2 sin(2 phi)``,
+                   ``phi = 2 pi (x - x_lo) / lambda_x``; ``lambda_x <= 0``: none) and a
+                   local defect ``d_x exp(-(x - x_d)^2 / (2 w_d^2))`` (``w_d <= 0``: none);
 * ``acceleration`` the acceleration-dependent part of seed 000:
                    ``f_a tanh(a / a_s) exp(-|v| / v_c)``.
 
-One formula serves the in-process diagnosis (:class:`diagnosis.effect_law.EffectLaw`) and
-the ``friction_effects`` FMU block, so a candidate re-simulated through FMUs is the same
-candidate.
+One formula serves the in-process diagnosis (:mod:`diagnosis.effects` evaluates the maps
+with :func:`position_change` and :func:`drift_change`, :class:`diagnosis.effect_law.EffectLaw`
+with :func:`extension_force`) and the ``friction_effects`` FMU block, so a candidate
+re-simulated through FMUs is the same candidate: every form goes through the compiled
+scalar functions ``_position_m`` and ``_drift_m``.
 """
 from __future__ import annotations
 
@@ -26,16 +38,23 @@ import numpy as np
 from numba import njit
 
 __all__ = ["EXTENSIONS", "EXTENSION_PARAMS", "EXTENSION_INDEX", "POSITION_KNOTS", "POSITION_NAMES",
-           "extension_force", "pack_extensions", "position_map"]
+           "POSITION_FORM_NAMES", "DRIFT_NAMES", "extension_force", "pack_extensions",
+           "position_map", "position_change", "drift_change"]
 
 #: extension names, in the order of their switches in the packed vector
 EXTENSIONS = ("acceleration", "position", "drift", "load")
 #: knots of the position map along the stroke (the first pinned at 0); 12 resolve a local
 #: defect a tenth of the stroke wide (93 % of a Gaussian bump of sigma 0.08 x stroke, where
-#: the former 4th-order Legendre series caught 45-60 %)
+#: the former 4th-order Legendre series caught 45-60 %); narrower features are the periodic
+#: part's and the local defect's
 POSITION_KNOTS = 12
 #: names of the position map's free knot values (knot 0 is pinned at 0)
 POSITION_NAMES = tuple(f"c_x{k}" for k in range(1, POSITION_KNOTS))
+#: the position map's periodic part (wavelength [m], relative cosine/sine amplitudes of the
+#: first two harmonics [-]) and local defect (relative height [-], centre [m], width [m])
+POSITION_FORM_NAMES = ("lambda_x", "p_c1", "p_s1", "p_c2", "p_s2", "d_x", "x_d", "w_d")
+#: the drift's parameters beyond t0 and T
+DRIFT_NAMES = ("k_drift", "k_sat", "tau_sat", "k_step", "t_step", "w_step")
 
 #: packed layout: (name, default, unit, description)
 EXTENSION_PARAMS = (
@@ -51,10 +70,24 @@ EXTENSION_PARAMS = (
                   f"0; knot {POSITION_KNOTS - 1} at x_hi)")
     for k, n in enumerate(POSITION_NAMES, 1)
 ) + (
+    ("lambda_x", 0.0, "m", "wavelength of the periodic part of the stroke map (<= 0: none)"),
+    ("p_c1", 0.0, "1", "relative amplitude of cos(phi) in the periodic part, "
+                       "phi = 2 pi (x - x_lo) / lambda_x"),
+    ("p_s1", 0.0, "1", "relative amplitude of sin(phi) in the periodic part"),
+    ("p_c2", 0.0, "1", "relative amplitude of cos(2 phi) in the periodic part"),
+    ("p_s2", 0.0, "1", "relative amplitude of sin(2 phi) in the periodic part"),
+    ("d_x", 0.0, "1", "relative level change at the centre of a local defect"),
+    ("x_d", 0.0, "m", "centre of the local defect"),
+    ("w_d", 0.0, "m", "width (standard deviation) of the local defect (<= 0: none)"),
     ("use_drift", 0.0, "1", "level drift over time on (1) or off (0)"),
-    ("k_drift", 0.0, "1", "relative level change per duration T"),
+    ("k_drift", 0.0, "1", "relative level change per duration T (linear trend)"),
     ("t0", 0.0, "s", "time the drift starts from"),
     ("T", 1.0, "s", "duration the drift rate refers to (> 0)"),
+    ("k_sat", 0.0, "1", "relative level change of the saturating part of the drift"),
+    ("tau_sat", 1.0, "s", "time constant of the saturating part (<= 0: a step at t0)"),
+    ("k_step", 0.0, "1", "relative level change of the step part of the drift"),
+    ("t_step", 0.0, "s", "time of the step (midpoint)"),
+    ("w_step", 0.0, "s", "time scale of the step's logistic rise (<= 0: sharp)"),
     ("use_load", 0.0, "1", "load-dependent levels on (1) or off (0)"),
     ("L0", 1.0, "N", "reference normal load (> 0)"),
     ("k_L", 0.0, "1", "relative level change per relative load change (1: Amontons)"),
@@ -65,15 +98,96 @@ EXTENSION_INDEX = {p[0]: i for i, p in enumerate(EXTENSION_PARAMS)}
 # indices for the compiled formula (module constants: numba freezes them)
 _USE_ACC, _F_A, _A_S, _V_C = (EXTENSION_INDEX[k] for k in ("use_acc", "f_a", "a_s", "v_c"))
 _USE_POS, _X_LO, _X_HI, _C_X1 = (EXTENSION_INDEX[k] for k in ("use_pos", "x_lo", "x_hi", "c_x1"))
+_LAMBDA_X, _P_C1, _D_X, _X_D, _W_D = (EXTENSION_INDEX[k] for k in
+                                      ("lambda_x", "p_c1", "d_x", "x_d", "w_d"))
 _USE_DRIFT, _K_DRIFT, _T0, _T = (EXTENSION_INDEX[k] for k in ("use_drift", "k_drift", "t0", "T"))
+_K_SAT, _TAU_SAT, _K_STEP, _T_STEP, _W_STEP = (EXTENSION_INDEX[k] for k in
+                                              ("k_sat", "tau_sat", "k_step", "t_step", "w_step"))
 _USE_LOAD, _L0, _K_L = (EXTENSION_INDEX[k] for k in ("use_load", "L0", "k_L"))
 _NK = POSITION_KNOTS
+_TWO_PI = 2.0 * math.pi
 
 
-def position_map(x, x_lo: float, x_hi: float, c) -> np.ndarray:
+@njit(cache=True)
+def _position_m(x, e):
+    """Relative level change m(x) [-] of the stroke map in the packed vector ``e``."""
+    span = e[_X_HI] - e[_X_LO]
+    if span < 1e-12:
+        span = 1e-12
+    u = (x - e[_X_LO]) / span * (_NK - 1)
+    if u <= 0.0:
+        m = 0.0
+    elif u >= _NK - 1:
+        m = e[_C_X1 + _NK - 2]
+    else:
+        j = int(u)
+        w = u - j
+        lo = 0.0 if j == 0 else e[_C_X1 + j - 1]
+        m = lo + w * (e[_C_X1 + j] - lo)
+    if e[_LAMBDA_X] > 0.0:  # periodic waviness, two harmonics
+        phi = _TWO_PI * (x - e[_X_LO]) / e[_LAMBDA_X]
+        m += (e[_P_C1] * math.cos(phi) + e[_P_C1 + 1] * math.sin(phi)
+              + e[_P_C1 + 2] * math.cos(2.0 * phi) + e[_P_C1 + 3] * math.sin(2.0 * phi))
+    if e[_W_D] > 0.0:  # local defect
+        q = (x - e[_X_D]) / e[_W_D]
+        m += e[_D_X] * math.exp(-0.5 * q * q)
+    return m
+
+
+@njit(cache=True)
+def _drift_m(t, e):
+    """Relative level change d(t) [-] of the drift in the packed vector ``e``."""
+    s = t - e[_T0]
+    d = e[_K_DRIFT] * s / e[_T]
+    if e[_K_SAT] != 0.0 and s > 0.0:
+        if e[_TAU_SAT] > 0.0:
+            d += e[_K_SAT] * (1.0 - math.exp(-s / e[_TAU_SAT]))
+        else:
+            d += e[_K_SAT]
+    if e[_K_STEP] != 0.0:
+        if e[_W_STEP] > 0.0:
+            d += e[_K_STEP] * 0.5 * (1.0 + math.tanh(0.5 * (t - e[_T_STEP]) / e[_W_STEP]))
+        elif t >= e[_T_STEP]:
+            d += e[_K_STEP]
+    return d
+
+
+@njit(cache=True)
+def _position_vec(x, e):
+    out = np.empty(x.size)
+    for i in range(x.size):
+        out[i] = _position_m(x[i], e)
+    return out
+
+
+@njit(cache=True)
+def _drift_vec(t, e):
+    out = np.empty(t.size)
+    for i in range(t.size):
+        out[i] = _drift_m(t[i], e)
+    return out
+
+
+def position_change(x, e) -> np.ndarray:
+    """Relative level change ``m(x)`` [-] of the stroke map of the packed vector ``e``
+    (:func:`pack_extensions`) at positions ``x`` [m]: the formula of
+    :func:`extension_force`."""
+    return _position_vec(np.ascontiguousarray(np.atleast_1d(x), dtype=float),
+                         np.asarray(e, float))
+
+
+def drift_change(t, e) -> np.ndarray:
+    """Relative level change ``d(t)`` [-] of the drift of the packed vector ``e``
+    (:func:`pack_extensions`) at times ``t`` [s]: the formula of :func:`extension_force`."""
+    return _drift_vec(np.ascontiguousarray(np.atleast_1d(t), dtype=float),
+                      np.asarray(e, float))
+
+
+def position_map(x, x_lo: float, x_hi: float, c, **form) -> np.ndarray:
     """Relative level change ``m(x)`` [-] of the position map at positions ``x`` [m]: linear
     between the knots ``x_lo + k (x_hi - x_lo) / (POSITION_KNOTS - 1)`` with values
-    ``0, c[0], ..., c[-1]``, constant beyond the stroke."""
+    ``0, c[0], ..., c[-1]``, constant beyond the stroke, plus the periodic part and the local
+    defect given by name in ``form`` (:data:`POSITION_FORM_NAMES`; absent: none)."""
     c = np.asarray(c, float)
     if c.size != POSITION_KNOTS - 1:
         raise ValueError(f"the position map takes {POSITION_KNOTS - 1} knot values, "
@@ -83,8 +197,10 @@ def position_map(x, x_lo: float, x_hi: float, c) -> np.ndarray:
     bad = np.flatnonzero(~np.isfinite(c))
     if bad.size:
         raise ValueError(f"{POSITION_NAMES[bad[0]]} = {c[bad[0]]!r} is not a finite number")
-    knots = np.linspace(x_lo, x_hi, POSITION_KNOTS)
-    return np.interp(x, knots, np.concatenate([[0.0], c]))
+    p = {n: float(v) for n, v in zip(POSITION_NAMES, c)}
+    p.update(form)
+    m = position_change(x, pack_extensions({"position": p}, x_lo=x_lo, x_hi=x_hi))
+    return float(m[0]) if np.ndim(x) == 0 else m.reshape(np.shape(x))
 
 
 @njit(cache=True)
@@ -95,23 +211,10 @@ def extension_force(F, v, a, x, load, t, e):
     if e[_USE_LOAD] > 0.5:  # load: levels affine in the normal load, never of opposite sign
         r = 1.0 + e[_K_L] * (load - e[_L0]) / e[_L0]
         F = F * max(r, 0.0)
-    if e[_USE_DRIFT] > 0.5:  # drift: relative change per duration T
-        F = F * (1.0 + e[_K_DRIFT] * (t - e[_T0]) / e[_T])
-    if e[_USE_POS] > 0.5:  # position: piecewise-linear map along the stroke
-        span = e[_X_HI] - e[_X_LO]
-        if span < 1e-12:
-            span = 1e-12
-        u = (x - e[_X_LO]) / span * (_NK - 1)
-        if u <= 0.0:
-            m = 0.0
-        elif u >= _NK - 1:
-            m = e[_C_X1 + _NK - 2]
-        else:
-            j = int(u)
-            w = u - j
-            lo = 0.0 if j == 0 else e[_C_X1 + j - 1]
-            m = lo + w * (e[_C_X1 + j] - lo)
-        F = F * (1.0 + m)
+    if e[_USE_DRIFT] > 0.5:  # drift: trend, saturating change, step
+        F = F * (1.0 + _drift_m(t, e))
+    if e[_USE_POS] > 0.5:  # position: knots, waviness, local defect
+        F = F * (1.0 + _position_m(x, e))
     if e[_USE_ACC] > 0.5:  # acceleration: grows with |a|, fades with |v|
         F = F + e[_F_A] * math.tanh(a / e[_A_S]) * math.exp(-abs(v) / e[_V_C])
     return F
@@ -125,7 +228,10 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
     ----------
     effects : dict
         Extension name (:data:`EXTENSIONS`) -> its parameters (``f_a`` [N], ``a_s``
-        [m/s^2], ``v_c`` [m/s]; ``c_x1..c_x11`` [-]; ``k_drift`` [-]; ``k_L`` [-]).
+        [m/s^2], ``v_c`` [m/s]; ``c_x1..c_x11`` [-], ``lambda_x`` [m], ``p_c1, p_s1, p_c2,
+        p_s2`` [-], ``d_x`` [-], ``x_d`` [m], ``w_d`` [m]; ``k_drift`` [-], ``k_sat`` [-],
+        ``tau_sat`` [s], ``k_step`` [-], ``t_step`` [s], ``w_step`` [s]; ``k_L`` [-]);
+        parameters not given keep their defaults (a part whose amplitude is 0 is off).
     x_lo, x_hi : float
         Stroke the position map refers to [m].
     t0, T : float
@@ -151,11 +257,17 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
         elif name == "position":
             e[ix["use_pos"]] = 1.0
             e[ix["x_lo"]], e[ix["x_hi"]] = x_lo, x_hi
-            for n in POSITION_NAMES:
+            for n in POSITION_NAMES + POSITION_FORM_NAMES:
                 e[ix[n]] = p.get(n, 0.0)
+                if not np.isfinite(e[ix[n]]):
+                    raise ValueError(f"{n} = {e[ix[n]]!r} is not a finite number")
         elif name == "drift":
             e[ix["use_drift"]] = 1.0
-            e[ix["k_drift"]] = p["k_drift"]
+            for n in DRIFT_NAMES:
+                if n in p:
+                    e[ix[n]] = p[n]
+                if not np.isfinite(e[ix[n]]):
+                    raise ValueError(f"{n} = {e[ix[n]]!r} is not a finite number")
             e[ix["t0"]], e[ix["T"]] = t0, T
         elif name == "load":
             if L0 is None or not L0 > 0:

@@ -2,8 +2,9 @@
  *
  * e[] is the packed vector of friction.extensions.EXTENSION_PARAMS (the generator writes the
  * FL_E_* indices into fl_model.h from that one Python list): switches use_* (0 or 1), the
- * acceleration part (f_a, a_s, v_c), the position map (x_lo, x_hi, c_x1..), the drift
- * (k_drift, t0, T) and the load levels (L0, k_L). */
+ * acceleration part (f_a, a_s, v_c), the position map (x_lo, x_hi, c_x1.., the waviness
+ * lambda_x, p_c1, p_s1, p_c2, p_s2 and the local defect d_x, x_d, w_d), the drift (k_drift,
+ * t0, T, k_sat, tau_sat, k_step, t_step, w_step) and the load levels (L0, k_L). */
 #ifndef FL_EFFECTS_H
 #define FL_EFFECTS_H
 
@@ -21,6 +22,54 @@ static int fl_effects_check(const double *e, char *msg, size_t n)
     return 0;
 }
 
+/* relative level change of the stroke map at x [m]: knots, waviness, local defect
+ * (friction.extensions._position_m) */
+static double fl_position_m(double x, const double *e)
+{
+    double span = e[FL_E_X_HI] - e[FL_E_X_LO], u, m, lo, w;
+    int j;
+    if (span < 1e-12) span = 1e-12;
+    u = (x - e[FL_E_X_LO]) / span * (FL_E_NK - 1);
+    if (u <= 0.0) {
+        m = 0.0;
+    } else if (u >= FL_E_NK - 1) {
+        m = e[FL_E_C_X1 + FL_E_NK - 2];
+    } else {
+        j = (int)u;
+        w = u - j;
+        lo = j == 0 ? 0.0 : e[FL_E_C_X1 + j - 1];
+        m = lo + w * (e[FL_E_C_X1 + j] - lo);
+    }
+    if (e[FL_E_LAMBDA_X] > 0.0) {  /* periodic waviness, two harmonics */
+        double phi = 2.0 * 3.14159265358979323846 * (x - e[FL_E_X_LO]) / e[FL_E_LAMBDA_X];
+        m += e[FL_E_P_C1] * cos(phi) + e[FL_E_P_S1] * sin(phi)
+             + e[FL_E_P_C2] * cos(2.0 * phi) + e[FL_E_P_S2] * sin(2.0 * phi);
+    }
+    if (e[FL_E_W_D] > 0.0) {  /* local defect */
+        double q = (x - e[FL_E_X_D]) / e[FL_E_W_D];
+        m += e[FL_E_D_X] * exp(-0.5 * q * q);
+    }
+    return m;
+}
+
+/* relative level change of the drift at t [s]: trend, saturating change, step
+ * (friction.extensions._drift_m) */
+static double fl_drift_m(double t, const double *e)
+{
+    double s = t - e[FL_E_T0];
+    double d = e[FL_E_K_DRIFT] * s / e[FL_E_T];
+    if (e[FL_E_K_SAT] != 0.0 && s > 0.0)
+        d += e[FL_E_TAU_SAT] > 0.0 ? e[FL_E_K_SAT] * (1.0 - exp(-s / e[FL_E_TAU_SAT]))
+                                   : e[FL_E_K_SAT];
+    if (e[FL_E_K_STEP] != 0.0) {
+        if (e[FL_E_W_STEP] > 0.0)
+            d += e[FL_E_K_STEP] * 0.5 * (1.0 + tanh(0.5 * (t - e[FL_E_T_STEP]) / e[FL_E_W_STEP]));
+        else if (t >= e[FL_E_T_STEP])
+            d += e[FL_E_K_STEP];
+    }
+    return d;
+}
+
 /* law force F [N] with the switched-on extensions at v [m/s], a [m/s^2], x [m], load [N],
  * time t [s]: multiplicative (load, drift, position) then additive (acceleration) */
 static double fl_extension_force(double F, double v, double a, double x, double load,
@@ -30,24 +79,8 @@ static double fl_extension_force(double F, double v, double a, double x, double 
         double r = 1.0 + e[FL_E_K_L] * (load - e[FL_E_L0]) / e[FL_E_L0];
         F = F * (r > 0.0 ? r : 0.0);
     }
-    if (e[FL_E_USE_DRIFT] > 0.5) F = F * (1.0 + e[FL_E_K_DRIFT] * (t - e[FL_E_T0]) / e[FL_E_T]);
-    if (e[FL_E_USE_POS] > 0.5) {  /* piecewise-linear map along the stroke */
-        double span = e[FL_E_X_HI] - e[FL_E_X_LO], u, m, lo, w;
-        int j;
-        if (span < 1e-12) span = 1e-12;
-        u = (x - e[FL_E_X_LO]) / span * (FL_E_NK - 1);
-        if (u <= 0.0) {
-            m = 0.0;
-        } else if (u >= FL_E_NK - 1) {
-            m = e[FL_E_C_X1 + FL_E_NK - 2];
-        } else {
-            j = (int)u;
-            w = u - j;
-            lo = j == 0 ? 0.0 : e[FL_E_C_X1 + j - 1];
-            m = lo + w * (e[FL_E_C_X1 + j] - lo);
-        }
-        F = F * (1.0 + m);
-    }
+    if (e[FL_E_USE_DRIFT] > 0.5) F = F * (1.0 + fl_drift_m(t, e));
+    if (e[FL_E_USE_POS] > 0.5) F = F * (1.0 + fl_position_m(x, e));
     if (e[FL_E_USE_ACC] > 0.5)  /* grows with |a|, fades with |v| */
         F = F + e[FL_E_F_A] * tanh(a / e[FL_E_A_S]) * exp(-fabs(v) / e[FL_E_V_C]);
     return F;

@@ -321,6 +321,30 @@ def test_rollback_and_redo_is_bit_for_bit_and_restores_in_another_instance(fmu_d
 
 
 @needs_shim
+def test_the_mass_rolls_back_bit_for_bit(fmu_dir):
+    s = LoggedSlave(fmu_dir / "mass.fmu", "m")
+    try:
+        s.init(u_amp=3.0, u_freq=7.0)
+
+        def run(k0, k1):
+            out = []
+            for k in range(k0, k1):
+                assert s.set("F_friction", 0.5 * math.sin(0.1 * k)) == fmi2OK
+                assert s.step(k * 1e-3, 1e-3) == fmi2OK
+                out.append(s.s.getReal([s.vr["x"], s.vr["v"], s.vr["a"]]))
+            return np.array(out)
+
+        run(0, 50)
+        state = s.s.getFMUstate()
+        first = run(50, 200)
+        s.s.setFMUstate(state)
+        s.s.freeFMUstate(state)
+        assert np.array_equal(run(50, 200), first) and s.errors() == []
+    finally:
+        s.close()
+
+
+@needs_shim
 def test_a_plant_fmu_refuses_state_get_and_set_as_it_declares(fmu_dir):
     md = fmpy.read_model_description(str(fmu_dir / "damping_rig.fmu"))
     assert not md.coSimulation.canGetAndSetFMUstate

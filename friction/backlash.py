@@ -77,9 +77,10 @@ ENGAGE_BAND = 1e-3
 
 @dataclass(frozen=True)
 class BacklashLuGreParams(LuGreParams):
-    """LuGre parameters plus the gap (defaults: LuGre's contact behind a 2 x 20 um gap)."""
+    """LuGre parameters plus the gap (defaults: LuGre's contact behind a gap of 2 x 2 um,
+    a precision stage's lead screw; real drives show 1-3 mm of lost motion)."""
     OPTIONS: ClassVar[dict] = {"shape": SHAPES, "gap": GAP_MODES}
-    delta: float = param(2e-5, "m", "half-width of the backlash gap (lost motion 2 delta at "
+    delta: float = param(2e-6, "m", "half-width of the backlash gap (lost motion 2 delta at "
                          "a reversal)", lower=0.0, upper=1.0, search=(1e-6, 5e-3), log=True)
     gap: str = "hold"
 

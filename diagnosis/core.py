@@ -12,6 +12,28 @@ Procedure
    unexplained; a noise floor estimated from the data.
 5. Verdict: ``none`` if the base residual is consistent with the noise floor; the best effect
    if it closes a clear share of the gap; ``unexplained`` if a structured gap stays.
+
+No name without practical size
+------------------------------
+A name needs the effect to *matter*, not only to be detectable (:func:`practical_size`).
+Besides closing a third of the held-out gap above the noise floor, the named candidate must
+
+* improve on the base significantly on the held-out samples (paired Diebold-Mariano
+  statistic, :mod:`.significance`, at a family-wise 1 %) - on every path of the verdict;
+* leave an **imprint** - the RMS of the difference between its and the base's held-out
+  predictions, as NRMSE - of at least :data:`IMPRINT_NOISE` x the noise floor and
+  :data:`IMPRINT_GAP` x the base's held-out NRMSE (the total gap): an effect that moves
+  the prediction by less than a third of the noise, or by a sliver of what is wrong with
+  it, is no practical part of the model (issue 15's clean record named ``delay``: imprint
+  about 0.18 x the gap);
+* have fitted parameters of a physical size of its own (:meth:`.effects.Candidate.
+  practical`): a ``delay`` shorter than :attr:`.effects.Delay.MIN_SAMPLES` samples is what
+  sampling and differentiation make (an integrating converter and backward differences
+  each shift a record by half a sample), not a delay of the force channel.
+
+A candidate that fails is not named; the best one that passes is, if it closes a third of
+the gap above the floor; otherwise the verdict is ``unexplained`` (a structured gap) or
+``none`` (within the noise).
 """
 from __future__ import annotations
 
@@ -32,7 +54,7 @@ from .transfer import transfer_applicable, transfer_scores
 
 __all__ = ["diagnose", "DiagnosisReport", "noise_floor", "BASE_NAMES", "extrapolation", "decide",
            "report_sections", "BaseFitError", "BASE_FIT_LIMIT", "base_free_names", "warm_up",
-           "MIN_SCORED_SAMPLES"]
+           "MIN_SCORED_SAMPLES", "practical_size", "IMPRINT_NOISE", "IMPRINT_GAP"]
 
 #: parameters of each law that the *trajectory* level screens for its base re-fit (a
 #: "standard" configuration: symmetric, Gaussian alpha = 2, no offset). The force level's
@@ -94,6 +116,47 @@ NOISE_RATIO = 1.2
 #: second differences of the residual beyond this many robust standard deviations are
 #: jumps of the residual (structure), not noise, in :func:`noise_floor`
 NOISE_CLIP = 5.0
+
+
+#: smallest held-out imprint of a named effect, as a share of the noise floor [-]: the RMS
+#: of what the effect changes in the prediction must reach a third of the noise's (a
+#: Lorentzian curve under a Gaussian base that frees its exponent: 0.39 x the floor, z 8.8)
+IMPRINT_NOISE = 1.0 / 3.0
+#: smallest held-out imprint of a named effect, as a share of the base's held-out NRMSE
+#: (the total gap) [-]
+IMPRINT_GAP = 0.25
+
+
+def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> str:
+    """Why ``effect`` (a ranked entry of :func:`diagnose`) may not be named whatever share of
+    the gap it closes; '' when it may.
+
+    Only the top-ranked candidate, or one within :data:`TIE` of it, can be named (see
+    :func:`decide`). Checks, where the entry carries the figures (the trajectory level and transfer scores
+    have none and keep the share rule alone): the paired statistic ``significance_z``
+    reaches the one-sided quantile of :data:`~diagnosis.significance.FAMILY_LEVEL` split
+    over ``n_tests`` candidates; the held-out ``imprint`` (NRMSE of the candidate's minus
+    the base's prediction) reaches :data:`IMPRINT_NOISE` x ``floor`` and
+    :data:`IMPRINT_GAP` x ``before``; the candidate's own ``size_reason`` (its fitted
+    parameters below a physical size, :meth:`diagnosis.effects.Candidate.practical`) is
+    empty.
+    """
+    if "significance_z" in effect:
+        z_need = z_threshold(max(int(n_tests), 1))
+        if not effect["significance_z"] >= z_need:
+            return (f"its held-out improvement is not significant (paired z = "
+                    f"{effect['significance_z']:.1f} < {z_need:.2f})")
+    if "imprint" in effect:
+        imp = effect["imprint"]
+        if imp < IMPRINT_NOISE * floor:
+            return (f"its held-out imprint (NRMSE {imp:.3g}) is below {IMPRINT_NOISE:g} x the "
+                    f"noise floor {floor:.3g}")
+        if imp < IMPRINT_GAP * before:
+            return (f"its held-out imprint (NRMSE {imp:.3g}) is below {IMPRINT_GAP:g} x the "
+                    f"held-out gap {before:.3g}")
+    if effect.get("size_reason"):
+        return effect["size_reason"]
+    return ""
 
 
 def noise_floor(data, r) -> float:
@@ -278,53 +341,77 @@ def extrapolation(fit, val_sets) -> dict:
 def decide(effects: list[dict], before: float, floor: float, noise_abs: float = 1e-6) -> dict:
     """The verdict from held-out scores (shared by the force and trajectory levels).
 
-    ``none`` when the base's held-out NRMSE ``before`` is within :data:`NOISE_RATIO` of the
-    noise ``floor`` (or below ``noise_abs``); the first of ``effects`` (ranked, dicts with
-    ``name``, ``gap_closed``, ``excess_closed``) when it closes at least
-    :data:`MIN_EXCESS_CLOSED` of the gap above the floor; ``unexplained`` otherwise.
+    ``none`` when the base's held-out NRMSE ``before`` is below ``noise_abs``, or within
+    :data:`NOISE_RATIO` of the noise ``floor`` and no candidate is named. Otherwise the
+    first of ``effects`` (ranked, dicts with ``name``, ``gap_closed``, ``excess_closed``)
+    that closes at least :data:`MIN_EXCESS_CLOSED` of the gap above the floor, lies within
+    :data:`TIE` of the best one's share *and* has practical size (:func:`practical_size`: a
+    significant paired improvement, an imprint of a third of the noise and a quarter of the gap,
+    a physical size of its own); ``unexplained`` when none does and the gap exceeds the
+    noise ratio.
 
-    A gap within the noise ratio but above the floor is still named when the top candidate
-    closes :data:`MIN_EXCESS_CLOSED` of it *and* its held-out improvement is significant:
-    its paired statistic ``significance_z`` (:func:`diagnosis.significance.improvement_z`)
-    reaches the one-sided quantile of :data:`~diagnosis.significance.FAMILY_LEVEL` split
-    over the candidates scored. A long record resolves an effect whose RMS is a fraction of
-    the noise's; effects without the statistic (transfer, trajectory level) keep the ratio.
+    Within the noise ratio a candidate can still be named: a long record resolves an effect
+    below the noise's RMS, so the paired statistic and the imprint decide there (effects
+    without the statistic, transfer scores and the trajectory level, are never named within
+    the noise ratio).
     """
     if before < noise_abs:
         return {"cause": "none", "gap_closed": 0.0,
                 "reason": f"held-out residual NRMSE {before:.3g} is below {noise_abs:.3g}"}
-    if before <= NOISE_RATIO * floor:
-        z_need = z_threshold(len(effects)) if effects else np.inf
-        top = effects[0] if effects else {}
-        small_but_real = (before > floor and top.get("excess_closed", 0.0) >= MIN_EXCESS_CLOSED
-                          and top.get("significance_z", 0.0) >= z_need)
-        if not small_but_real:
+    n = len(effects)
+    within = before <= NOISE_RATIO * floor
+    closing = [e for e in effects if e.get("excess_closed", 0.0) >= MIN_EXCESS_CLOSED]
+    why = {e["name"]: practical_size(e, before, floor, n) for e in closing}
+    if within:
+        # the statistic is needed to name anything inside the noise ratio
+        why.update({e["name"]: why[e["name"]] or "no paired statistic"
+                    for e in closing if "significance_z" not in e})
+    # only the best explanation (or one tied with it, :data:`TIE`) can be named: when it
+    # lacks practical size, a weaker candidate that partly mimics it is not the cause (a
+    # velocity differentiated half a sample late is delay-like, and on a sinusoidal stroke
+    # a position map follows it too)
+    best = effects[0]["excess_closed"] if effects else 0.0
+    named = [e for e in closing if not why[e["name"]] and e["excess_closed"] >= best - TIE]
+    refused = "; ".join(f"{e['name']} closes {100 * e['excess_closed']:.0f} % of the gap above "
+                        f"the floor, but {why[e['name']]}" for e in closing if why[e["name"]])
+    if not named:
+        if within:
             return {"cause": "none", "gap_closed": 0.0,
                     "reason": f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x "
-                              f"the noise floor {floor:.3g}, and no candidate's held-out "
-                              f"improvement is significant (paired z >= {z_need:.2f})"}
-        return {"cause": top["name"], "gap_closed": top["gap_closed"],
-                "excess_closed": top["excess_closed"], "significance_z": top["significance_z"],
-                "reason": f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x the "
-                          f"noise floor {floor:.3g}, but {top['name']} closes "
-                          f"{100 * top['excess_closed']:.0f} % of the gap above it with a "
-                          f"significant held-out improvement (paired z = "
-                          f"{top['significance_z']:.1f} >= {z_need:.2f}): a small real effect"}
-    if not effects or effects[0]["excess_closed"] < MIN_EXCESS_CLOSED:
+                              f"the noise floor {floor:.3g}, and no candidate has a "
+                              f"significant held-out improvement of practical size"
+                              + (f" ({refused})" if refused else "")}
         return {"cause": "unexplained",
                 "gap_closed": effects[0]["gap_closed"] if effects else 0.0,
-                "reason": "no candidate closes a third of the held-out gap above the noise floor"}
-    top = effects[0]
+                "reason": ("no candidate closes a third of the held-out gap above the noise "
+                           "floor" if not closing else
+                           f"no candidate that closes a third of the held-out gap above the "
+                           f"noise floor has practical size ({refused})")}
+    top = named[0]
     verdict = {"cause": top["name"], "gap_closed": top["gap_closed"],
                "excess_closed": top["excess_closed"]}
-    if len(effects) > 1 and effects[1]["excess_closed"] >= top["excess_closed"] - 0.1:
-        verdict["runner_up"] = effects[1]["name"]
+    for k in ("significance_z", "imprint"):
+        if k in top:
+            verdict[k] = top[k]
+    if within:
+        verdict["reason"] = (f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x the "
+                             f"noise floor {floor:.3g}, but {top['name']} closes "
+                             f"{100 * top['excess_closed']:.0f} % of the gap above it with a "
+                             f"significant held-out improvement (paired z = "
+                             f"{top['significance_z']:.1f} >= {z_threshold(max(n, 1)):.2f}) of "
+                             f"practical size (imprint {top.get('imprint', float('nan')):.3g}): "
+                             f"a small real effect")
+    elif refused:
+        verdict["reason"] = f"named the best candidate of practical size ({refused})"
+    others = [e for e in effects if e is not top]
+    if others and others[0]["excess_closed"] >= top["excess_closed"] - 0.1:
+        verdict["runner_up"] = others[0]["name"]
     return verdict
 
 
 #: keys of each ranked effect in the report
 EFFECT_KEYS = ("name", "validation_before", "validation_after", "gap_closed", "excess_closed",
-               "significance_z", "protocol")
+               "significance_z", "imprint", "size_reason", "protocol")
 
 
 def report_sections(where, bands, freq, effects, verdict, sequence, before, final_val,
@@ -479,6 +566,11 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                         "excess_closed": (before - after) / max(before - floor, 1e-12),
                         "significance_z": float(improvement_z(held_residuals["base"],
                                                               held_residuals[name])),
+                        # what the candidate changes in the held-out prediction (NRMSE)
+                        "imprint": float(np.sqrt(np.mean((held_residuals["base"]
+                                                          - held_residuals[name]) ** 2))
+                                         / (np.std(F_all) or 1.0)),
+                        "size_reason": cand.practical(comp.extras, ctx),
                         "n_params": len(cand.force_extras(ctx)) + max(len(comp.base_names)
                                                                  - len(base_names), 0),
                         "fit_before": base_fit, "fit_after": cost,
@@ -524,12 +616,15 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         sequence = ([{"add": effects[0]["name"], "validation": effects[0]["validation_after"]}]
                     if top_ok else [])
         final_val = effects[0]["validation_after"] if top_ok else before
-    elif greedy and effects and effects[0]["excess_closed"] >= MIN_EXCESS_CLOSED:
-        current = fitted[effects[0]["name"]]
-        cur_val = effects[0]["validation_after"]
-        sequence.append({"add": effects[0]["name"], "validation": cur_val})
-        used = {effects[0]["name"]}
-        for e in effects[1:4]:
+    elif greedy and decide(effects, before, floor)["cause"] in fitted:
+        # stacking starts from the effect the verdict names (the best of practical size)
+        first = next(e for e in effects
+                     if e["name"] == decide(effects, before, floor)["cause"])
+        current = fitted[first["name"]]
+        cur_val = first["validation_after"]
+        sequence.append({"add": first["name"], "validation": cur_val})
+        used = {first["name"]}
+        for e in [e for e in effects if e is not first][:3]:
             if e["gap_closed"] < 0.05 or e["name"] in used:
                 continue
             cand = CANDIDATES[e["name"]].specialise(base.law)

@@ -1,0 +1,184 @@
+"""No name without practical size (issue 15 item 1) and candidates that reach the forms real
+data show (item 2): the waviness, the saturating warm-up, the step, the narrow defect, the
+symmetric map; the clean-record benchmark (slow) gives no name."""
+import numpy as np
+import pytest
+
+from diagnosis import diagnose
+from diagnosis.clean_records import NO_NAME, clean_record, level_truth_record, run_clean
+from diagnosis.core import IMPRINT_GAP, IMPRINT_NOISE, decide, practical_size
+from diagnosis.effects import CANDIDATES, Delay, make_context
+from friction.extensions import drift_change, pack_extensions, position_change
+
+NAMES = ("acceleration", "load", "asymmetry", "stribeck_shape", "presliding", "position",
+         "inertia", "delay", "drift")
+
+
+def _effect(name, gap, excess, z, imprint, size_reason=""):
+    return {"name": name, "gap_closed": gap, "excess_closed": excess, "significance_z": z,
+            "imprint": imprint, "size_reason": size_reason, "n_params": 1}
+
+
+def test_the_issue_delay_miss_is_refused_by_its_imprint():
+    # issue 15: a clean record, base within 1.2 x the floor (here 1.024), the delay closes
+    # 1.7 % of the gap (73 % of the sliver above the floor) with paired z = 4.0; its own
+    # imprint is about sqrt(2 x 0.017) = 0.18 of the gap: no name
+    floor = 0.02
+    before = 1.024 * floor
+    imp = np.sqrt(2 * 0.017) * before
+    eff = [_effect("delay", 0.017, 0.73, 4.0, imp),
+           _effect("inertia", 0.001, 0.04, 0.5, 0.1 * floor)]
+    v = decide(eff, before, floor)
+    assert v["cause"] == "none"
+    assert "imprint" in v["reason"] and "delay" in v["reason"]
+    # the same figures with an imprint of practical size would be a small real effect
+    ok = [dict(eff[0], imprint=0.6 * floor), eff[1]]
+    assert decide(ok, before, floor)["cause"] == "delay"
+
+
+def test_each_part_of_the_rule_names_its_reason():
+    floor, before = 0.02, 0.10
+    n = len(NAMES)
+    assert practical_size(_effect("drift", 0.5, 0.6, 30.0, 0.05), before, floor, n) == ""
+    assert "not significant" in practical_size(_effect("asymmetry", 0.537, 0.6, 1.1, 0.05),
+                                               before, floor, n)
+    assert "noise floor" in practical_size(_effect("x", 0.5, 0.6, 30.0,
+                                                   0.9 * IMPRINT_NOISE * floor),
+                                           before, floor, n)
+    assert "gap" in practical_size(_effect("x", 0.5, 0.6, 30.0, 0.9 * IMPRINT_GAP * before),
+                                   before, floor, n)
+    assert "samples" in practical_size(_effect("delay", 0.5, 0.6, 30.0, 0.05,
+                                               "its shift of 0.50 samples is below 1.5"),
+                                       before, floor, n)
+    # entries without the figures (transfer scores, trajectory level) keep the share rule
+    bare = {"name": "load", "gap_closed": 0.5, "excess_closed": 0.6, "n_params": 1}
+    assert practical_size(bare, before, floor, n) == ""
+    assert decide([bare], before, floor)["cause"] == "load"
+
+
+def test_symmetric_map_case_is_not_named_asymmetry():
+    # issue 15: a symmetric map named asymmetry at 53.7 % of the gap with z = 1.1: outside
+    # the noise ratio too, a name needs a significant held-out improvement
+    floor, before = 0.02, 0.06
+    eff = [_effect("asymmetry", 0.537, 0.8, 1.1, 0.04),
+           _effect("delay", 0.02, 0.03, 0.4, 0.01)]
+    v = decide(eff, before, floor)
+    assert v["cause"] == "unexplained" and "not significant" in v["reason"]
+
+
+def test_a_weaker_candidate_is_not_named_in_place_of_a_refused_best_one():
+    # the best explanation is a sub-sample shift; a position map that mimics part of it on a
+    # sinusoidal stroke closes less and is not named instead
+    floor, before = 0.005, 0.03
+    eff = [_effect("delay", 0.8, 0.99, 10.0, 0.02, "its shift of 0.6 samples is below 1.5"),
+           _effect("position", 0.4, 0.5, 8.0, 0.015)]
+    assert decide(eff, before, floor)["cause"] == "unexplained"
+
+
+def test_delay_shorter_than_the_discretisation_has_no_practical_size():
+    ctx = make_context(level_truth_record(lambda *a: 1.0, n=2000)[0])
+    d = CANDIDATES["delay"]
+    assert "samples" in d.practical({"delay": 0.9 * Delay.MIN_SAMPLES * ctx.dt}, ctx)
+    assert d.practical({"delay": -1.1 * Delay.MIN_SAMPLES * ctx.dt}, ctx) == ""
+
+
+def test_clean_record_sampled_half_a_sample_late_is_not_named():
+    # an isolator record whose force is averaged over each sample period (half a sample
+    # late) at 0.5 % noise: before the rule it was named delay (excess 1.19, z = 12.5)
+    from diagnosis.benchmark import plant_kinematics
+    kin = plant_kinematics("mre_isolator", quick=True)
+    data, _ = clean_record(kin, truth="fine", sampling="average", velocity="gradient",
+                           counts=50.0, noise=0.005, colour="white", seed=39)
+    rep = diagnose(data, kin.base, candidates=["delay", "inertia", "position", "asymmetry"])
+    assert rep["verdict"]["cause"] in NO_NAME
+    delay = next(e for e in rep["effects"] if e["name"] == "delay")
+    assert "samples" in delay["size_reason"]
+
+
+# -- forms the candidates reach (truths: levels inside the bristle dynamics, integrated 10 x
+# finer than sampled, v from quantised positions by np.gradient) ------------------------------
+def _diag(level, candidates, **kw):
+    data, truth = level_truth_record(level, noise=0.02, **kw)
+    return diagnose(data, "lugre", candidates=candidates)
+
+
+def test_waviness_of_seven_percent_of_the_stroke_is_position():
+    # issue 15: period 7 % of the stroke, +/- 35 %: the 12-knot map closed 1 % (0.5 % here)
+    rep = _diag(lambda x, t, lo, hi, T: 1 + 0.35 * np.sin(2 * np.pi * (x - lo)
+                                                          / (0.07 * (hi - lo)) + 0.3),
+                ["position", "drift", "asymmetry", "delay"])
+    assert rep["verdict"]["cause"] == "position"
+    assert rep["verdict"]["gap_closed"] > 0.45  # measured 0.54
+    lam = rep["effect_details"]["position"]["extras"]["lambda_x"]
+    data = level_truth_record(lambda *a: 1.0)[0]
+    assert lam == pytest.approx(0.07 * np.ptp(data.x), rel=0.03)  # the wavelength found
+
+
+def test_narrow_local_defect_is_position():
+    # a defect 2 % of the stroke wide (sigma): 12 knots 9 % apart closed 0.22
+    rep = _diag(lambda x, t, lo, hi, T: 1 + 0.5 * np.exp(-0.5 * ((x - lo - 0.6 * (hi - lo))
+                                                                 / (0.02 * (hi - lo))) ** 2),
+                ["position", "drift", "asymmetry"])
+    assert rep["verdict"]["cause"] == "position"
+    assert rep["verdict"]["gap_closed"] > 0.5  # measured 0.69
+
+
+def test_saturating_warm_up_is_drift():
+    # issue 15: +60 % with a time constant of a third of the record: the linear drift closed
+    # 23 % (19.5 % here), below the one-third rule
+    rep = _diag(lambda x, t, lo, hi, T: 1 + 0.6 * (1 - np.exp(-t / (T / 3))),
+                ["drift", "position", "asymmetry"])
+    assert rep["verdict"]["cause"] == "drift"
+    assert rep["verdict"]["gap_closed"] > 0.6  # measured 0.79
+
+
+def test_step_change_of_the_level_is_drift():
+    # +30 % within 10 ms at 45 % of the record (a lubricant change): linear drift closed 0.33
+    rep = _diag(lambda x, t, lo, hi, T: 1 + 0.15 * (1 + np.tanh((t - 0.45 * T) / 0.005)),
+                ["drift", "position", "asymmetry"])
+    assert rep["verdict"]["cause"] == "drift"
+    assert rep["verdict"]["gap_closed"] > 0.6  # measured 0.80
+
+
+def test_symmetric_static_map_gets_no_name():
+    # a symmetric static map (no presliding, Lorentzian curve): the base cannot follow its
+    # sharp reversals; the shift that mimics them is a sub-sample one and not significant,
+    # and asymmetry is not named
+    data, _ = level_truth_record(lambda *a: 1.0, noise=0.015, static=True)
+    rep = diagnose(data, "lugre", candidates=["asymmetry", "delay", "acceleration"])
+    assert rep["verdict"]["cause"] in NO_NAME
+
+
+# -- the one formula -----------------------------------------------------------------------------
+def test_stroke_map_and_drift_forms_are_the_documented_formulas():
+    x = np.linspace(-0.01, 0.11, 301)
+    e = pack_extensions({"position": {"lambda_x": 0.007, "p_c1": 0.1, "p_s1": -0.2,
+                                      "p_c2": 0.05, "p_s2": 0.03, "d_x": 0.3, "x_d": 0.04,
+                                      "w_d": 0.01}}, x_lo=0.0, x_hi=0.1)
+    ph = 2 * np.pi * x / 0.007
+    want = (0.1 * np.cos(ph) - 0.2 * np.sin(ph) + 0.05 * np.cos(2 * ph) + 0.03 * np.sin(2 * ph)
+            + 0.3 * np.exp(-0.5 * ((x - 0.04) / 0.01) ** 2))
+    np.testing.assert_allclose(position_change(x, e), want, atol=1e-14)
+    t = np.linspace(-0.5, 3.0, 401)
+    e = pack_extensions({"drift": {"k_drift": 0.1, "k_sat": 0.6, "tau_sat": 0.4,
+                                   "k_step": -0.2, "t_step": 1.5, "w_step": 0.05}},
+                        t0=0.0, T=2.0)
+    want = (0.1 * t / 2.0 + 0.6 * (1 - np.exp(-np.clip(t, 0, None) / 0.4))
+            - 0.2 / (1 + np.exp(-(t - 1.5) / 0.05)))
+    np.testing.assert_allclose(drift_change(t, e), want, atol=1e-12)
+    # a sharp step and a saturation at once (tau_sat <= 0) are allowed
+    e = pack_extensions({"drift": {"k_sat": 0.5, "tau_sat": 0.0, "k_step": 0.2,
+                                   "t_step": 1.0, "w_step": 0.0}}, t0=0.0, T=2.0)
+    np.testing.assert_allclose(drift_change(np.array([-1.0, 0.5, 1.0, 2.0]), e),
+                               [0.0, 0.5, 0.7, 0.7])
+
+
+@pytest.mark.slow
+def test_clean_records_across_the_plants_get_no_name(tmp_path):
+    # 40 clean records (the benchmark script runs 500): truth 10 x finer, sampled at the
+    # instant or averaged, quantised encoder positions differentiated three ways, white and
+    # coloured noise at 0.5-5 %
+    res = run_clean(40, quick=True, workers=2, cache_dir=str(tmp_path))
+    assert res["records"] == 40
+    assert res["named"] == 0, [(r["key"], r["verdict"]) for r in res["rows"]
+                               if r["verdict"] not in NO_NAME]

@@ -162,7 +162,8 @@ def test_container_fmu_gives_our_trajectories(fmu_dir, tmp_path, sequential, alg
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("law", ["stribeck", "modified_lugre", "load_lugre", "mre_lugre"])
+@pytest.mark.parametrize("law", ["stribeck", "modified_lugre", "load_lugre", "mre_lugre", "gms",
+                                 "backlash_lugre"])
 def test_every_law_in_the_mass_loop_matches_the_reference(fmu_dir, law):
     r = mass_proof(fmu_dir, law, rtol=1e-9)
     assert r["nrmse"] <= 1e-3, r

@@ -164,7 +164,8 @@ def compare_continuous(name, model, points):
                 f"{name} derivative {j} at v={v!r}: {dc[j]!r} != {dp[j]!r}"
         fc = law.force(theta, state, v)
         fp = model.force(state, v)
-        fscale = getattr(p, "sigma0", 0.0) * float(np.sum(np.abs(state[:1 if name != "gms" else 4]))) \
+        elastic = state if name == "gms" else state[:1]  # the deflections sigma0 acts on
+        fscale = p.sigma0 * float(np.sum(np.abs(elastic))) \
             + getattr(p, "sigma1", 0.0) * rate[0] + gmax + abs(p.b) \
             + max(p.sigma2, p.resolved("sigma2", -1)) * abs(v)
         assert abs(fc - fp) <= RTOL_CT * fscale, f"{name} force at v={v!r}: {fc!r} != {fp!r}"

@@ -138,6 +138,8 @@ _SIGNALS = {"x": ("m", "carriage position"), "v": ("m/s", "carriage velocity"),
             "u": ("V", "controller output (voltage vir) computed at the sample"),
             "F_motor": ("N", "motor force gtau * u of the voltage computed at the sample"),
             "u_cmd": ("V", "voltage command (open loop)"),
+            "qg_in": ("m", "reference position input (without the reference option)"),
+            "pulse_in": ("", "pulse signal input (without the pulses option)"),
             "F": ("N", "friction force"),
             "F_friction": ("N", "friction force input (external friction)")}
 
@@ -265,7 +267,10 @@ class EMPS(_EMPSBase):
     Experiment options
     ------------------
     reference : array
-        Reference position ``qg`` [m] at the control instants ``k Ts`` (required).
+        Reference position ``qg`` [m] at the control instants ``k Ts``; without it the
+        inputs ``qg_in`` [m] and ``pulse_in`` [-] are sampled at each control instant (the
+        plant FMU: a sample instant is reached at the end of the communication step that
+        ends there, so the inputs held over that step are the sample's values).
     pulses : array, optional
         The PULSES file's pulse signal (0 or 5), added at the controller output as
         ``pulse_gain * pulse`` [V].
@@ -287,6 +292,7 @@ class EMPS(_EMPSBase):
     #: criterion); the reference is named ``qg``, not ``x_ref``, so a compared channel is
     #: normalised by its own spread
     any_signal = True
+    input_names = ("qg_in", "pulse_in")
     output_names = ("x", "v", "a", "qg", "e", "u", "F_motor")
     discrete_names = ("u", "u_prev", "x_prev", "xf_prev", "t_k", "qg")
     options = dict(reference=None, pulses=None, position_feedback="sample", **_COMMON_OPTIONS)
@@ -294,6 +300,11 @@ class EMPS(_EMPSBase):
     def _x0(self) -> float:
         ref = self.opts.get("reference")
         return 0.0 if ref is None else float(np.ravel(ref)[0])
+
+    def _simulate_fast(self, exp, progress, inputs, substep):
+        if self.opts.get("reference") is None:  # driven through the inputs: generic stepper
+            return Plant._simulate_fast(self, exp, progress, inputs, substep)
+        return super()._simulate_fast(exp, progress, inputs, substep)
 
     def _feedback_average(self) -> bool:
         fb = self.opts["position_feedback"]
@@ -321,16 +332,19 @@ class EMPS(_EMPSBase):
 
     def discrete_update(self, t, s, d, u):
         p = self.params
-        qg = self._array("reference")
+        qg = self._array("reference", required=False)
         pulses = self._array("pulses", required=False)
         x = float(s[0])
         xf = 0.5 * (x + d[2])
         dxf = (xf - d[3]) / p.Ts
-        ref = self._at(qg, t, p.Ts)
+        # the arrays of an in-process run, else the inputs (a plant FMU)
+        ref = self._at(qg, t, p.Ts) if qg is not None else float(u["qg_in"])
         e = ref - (xf if self._feedback_average() else x)
         v_out = p.kv * (p.kp * e - dxf)
         if pulses is not None:
             v_out += p.pulse_gain * self._at(pulses, t, p.Ts)
+        elif qg is None:
+            v_out += p.pulse_gain * float(u["pulse_in"])
         v_out = min(max(v_out, -p.u_max), p.u_max)
         return np.array([v_out, d[0], x, xf, t, ref])
 
@@ -348,7 +362,8 @@ class EMPSAxis(_EMPSBase):
     ------------------
     voltage : array, optional
         Voltage ``u`` [V] at the control instants (the recorded ``vir``, pulses included);
-        without it the input ``u_cmd`` [V] is sampled at each control instant.
+        without it the input ``u_cmd`` [V] is sampled at each control instant (the plant
+        FMU: the value held over the communication step that ends at the sample instant).
     initial : array of 5, optional
         As :class:`EMPS` (default: at rest at 0).
     substeps : int

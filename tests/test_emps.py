@@ -118,8 +118,6 @@ def test_kernel_equals_the_generic_stepper(records, delay):
 def test_bad_input_is_named():
     with pytest.raises(ValueError, match="delay"):
         EMPSParams(delay=2e-3)
-    with pytest.raises(ValueError, match="'reference'"):
-        EMPS().simulate(0.1)
     with pytest.raises(ValueError, match="needs 101"):
         EMPS().simulate(0.1, reference=np.zeros(50))
     with pytest.raises(ValueError, match="position_feedback"):
@@ -169,3 +167,53 @@ def test_diagnosis_points_at_the_asymmetry_and_names_no_flexibility(records):
     assert det["sigma2_neg"] > 1.2 * det["sigma2"]      # documented: 166.7 vs 240.4 N s/m
     rep2 = studies.diagnose(model, E, None)
     assert rep2["verdict"]["cause"] == "asymmetry"
+
+
+# -- the same case through the plant FMUs and their connection files ----------------------------
+@pytest.fixture(scope="module")
+def emps_fmus(tmp_path_factory):
+    return studies.build_fmus(tmp_path_factory.mktemp("emps_fmus"))
+
+
+def test_connection_files_parse(tmp_path):
+    from fmus.connect import load_connection
+    model = studies.stored_model("lugre")
+    for kind in ("closed", "open"):
+        path = tmp_path / f"emps_{kind}.toml"
+        path.write_text(studies.connection_toml(studies.connection_dict(model, kind)))
+        conn = load_connection(path)
+        assert conn.friction_input == "F_friction" and conn.mass == "M"
+        assert conn.parameters["M"] == pytest.approx(model.params.M)
+
+
+def test_through_the_plant_fmus_equals_in_process(records, emps_fmus):
+    """The EMPS loop FMU (and the axis FMU) with the native LuGre FMU, coupled by the
+    connection file as a user's plant FMU is, against the in-process run from the same
+    start, on 3 s of the pulse record (pulses at 0.34 s and 0.84 s ... included)."""
+    _, P = records
+    r = studies.run_through_fmus(studies.stored_model("lugre"), P.window(3.0), emps_fmus)
+    cl, ol = r["closed"], r["open"]
+    assert cl["max_abs_du_V"] < 0.1           # of a 1.6 V RMS voltage; coupling at 1 ms
+    assert cl["max_abs_dx_m"] < 5e-6
+    assert abs(cl["fmu_force_error"] - cl["inprocess_force_error"]) < 0.003
+    # open loop: nothing pulls the position back, so the law FMU's coupling over 1 ms steps
+    # (measured 0.13 mm after 3 s, 0.2 mm after 25 s) stays in the position
+    assert ol["max_abs_dx_m"] < 3e-4
+    assert abs(ol["fmu"]["rmse_mm"] - ol["inprocess"]["rmse_mm"]) < 0.1
+
+
+@pytest.mark.slow
+def test_identification_through_the_plant_fmu(records, emps_fmus):
+    """Least squares through the closed-loop plant FMU (identification.plant_fmu, the path a
+    user's plant FMU takes) lands where the in-process identification of the same
+    parameters on the same window does."""
+    E, _ = records
+    start = studies.start_model()
+    win = E.window(6.0)
+    via_fmu = studies.identify_through_fmus(start, E, emps_fmus, stop=6.0, max_evals=60)
+    coords = [c for c in studies.LUGRE_COORDS if c[0] in ("Fc", "sigma2", "b", "M")]
+    inproc = studies.identify_trajectory(start, win, coords, parts=("closed",),
+                                         max_evals=60, substeps=10)
+    for name, key in (("Fc", "Fc"), ("sigma2", "sigma2"), ("b", "b"), ("M", "plant.M")):
+        a, b = via_fmu["params"][key], inproc["params"][name]
+        assert abs(a - b) <= 0.03 * abs(b) + 0.3, (name, a, b)

@@ -38,7 +38,11 @@ from plants.emps import (EMPS, EMPSAxis, EMPSParams, IDIM_LS, force_error, idim_
 
 __all__ = ["EMPSRecord", "load_record", "EMPSModel", "baseline_model", "simulate",
            "scores", "controller_evidence", "pulse_evidence", "TrajectoryObjective",
-           "identify_trajectory", "README_FIGURES", "PULSE_GAIN", "SOURCE"]
+           "identify_trajectory", "README_FIGURES", "PULSE_GAIN", "SOURCE", "IDENTIFIED",
+           "stored_model", "start_model", "with_asymmetry", "fit_models", "LUGRE_COORDS",
+           "ASYMMETRY_COORDS", "diagnose", "run_study", "demo_figures",
+           "build_fmus", "measured_record", "connection_dict", "connection_toml",
+           "run_through_fmus", "identify_through_fmus"]
 
 SOURCE = ("EMPS benchmark (Janot, Gautier, Brunot), nonlinearbenchmark.org; data copy "
           "forgi86/sysid-neural-continuous @ 956aa7ec")
@@ -81,6 +85,12 @@ class EMPSRecord:
     def motor_force(self) -> np.ndarray:
         """Measured motor force ``gtau * vir`` [N]."""
         return self.gtau * self.vir
+
+    def window(self, stop: float) -> "EMPSRecord":
+        """The record's first ``stop`` seconds."""
+        n = min(self.t.size, int(round(stop / 1e-3)) + 1)
+        return replace(self, t=self.t[:n], qm=self.qm[:n], qg=self.qg[:n], vir=self.vir[:n],
+                       pulses=self.pulses[:n])
 
     def initial(self) -> np.ndarray:
         """Initial condition in motion (:func:`plants.emps.initial_from_record`)."""
@@ -834,13 +844,181 @@ def _main(argv=None) -> int:
     ap.add_argument("--out", default="emps-study", help="output folder")
     ap.add_argument("--identify", action="store_true", help="re-identify our models")
     ap.add_argument("--no-diagnosis", action="store_true")
+    ap.add_argument("--fmus", action="store_true", help="also run the stored model through "
+                    "the EMPS plant FMUs and their connection files (written into OUT/fmus)")
     a = ap.parse_args(argv)
     from frictionlab.progress import report
     res = run_study(a.out, identify=a.identify, diagnose_records=not a.no_diagnosis,
                     progress=report)
     print(json.dumps(res["emps_trajectory"], indent=2, default=float))
+    if a.fmus:
+        import os
+        d = os.path.join(a.out, "fmus")
+        paths = build_fmus(d)
+        model = stored_model("lugre")
+        for kind in ("closed", "open"):
+            with open(os.path.join(d, f"emps_{kind}.toml"), "w") as fh:
+                fh.write(connection_toml(connection_dict(model, kind)))
+        fm = run_through_fmus(model, load_record("pulses"), paths)
+        with open(os.path.join(a.out, "emps_through_fmus.json"), "w") as fh:
+            json.dump(fm, fh, indent=2, default=float)
+        print(json.dumps(fm, indent=2, default=float))
     return 0
 
 
 if __name__ == "__main__":
     raise SystemExit(_main())
+
+
+# -- the same case through FMUs and a connection file (fmus.connect) ----------------------------
+#: the EMPS FMUs: name -> (plant class "module:Class" of plants, what it is)
+EMPS_FMUS = {"emps_loop": ("emps:EMPS", "EMPS axis in its 1 kHz position loop, external "
+                                        "friction; inputs qg_in [m], pulse_in [-]"),
+             "emps_axis": ("emps:EMPSAxis", "EMPS axis alone (open loop), external friction;"
+                                            " input u_cmd [V]")}
+
+
+def build_fmus(out) -> dict:
+    """Build the EMPS plant FMUs (pythonfmu, :class:`fmus.runtime.StepperSlave` over
+    :class:`plants.emps.EMPS` / :class:`plants.emps.EMPSAxis` with external friction) into
+    ``out``; returns ``{name: path}``."""
+    from fmus import variables
+    from fmus.build import build_fmu
+    from fmus.recipes import FmuRecipe
+    from plants import emps as emps_mod
+    out_paths = {}
+    for name, (plant, desc) in EMPS_FMUS.items():
+        cls = getattr(emps_mod, plant.partition(":")[2])
+        recipe = FmuRecipe(
+            name=name, base="StepperSlave", state=False,
+            variables=(lambda cls=cls: variables.plant_variables(cls, probe=True)),
+            attributes=dict(plant=plant, plants_package="{pkg:plants}"),
+            packages=("friction", "plants"), description=desc,
+            default_experiment={"startTime": 0.0, "stopTime": 1.0, "stepSize": 1e-3})
+        out_paths[name] = str(build_fmu(recipe, out))
+    return out_paths
+
+
+def measured_record(rec: EMPSRecord, stop: float | None = None):
+    """``rec`` as a :class:`fmus.connect.MeasuredRecord` on the controller's clock
+    ``t = k Ts`` (the logged time jitters by 2e-8 s), with each signal the plant FMU samples
+    also one sample ahead (``qg_next``, ``pulses_next``, ``vir_next``): the FMU reaches a
+    sample instant at the end of the communication step that ends there, so the value held
+    over that step must be the sample's."""
+    from fmus.connect import MeasuredRecord
+    n = rec.t.size if stop is None else min(rec.t.size, int(round(stop / 1e-3)) + 1)
+
+    def ahead(a):
+        return np.r_[a[1:n], a[n - 1]] if n == a.size else np.asarray(a[1:n + 1], float)
+    cols = {"qm": rec.qm[:n], "vir": rec.vir[:n], "qg": rec.qg[:n], "pulses": rec.pulses[:n],
+            "qg_next": ahead(rec.qg), "pulses_next": ahead(rec.pulses),
+            "vir_next": ahead(rec.vir)}
+    return MeasuredRecord(np.arange(n) * 1e-3, cols, rec.name)
+
+
+def connection_dict(model: EMPSModel, kind: str = "closed", identify=("M",)) -> dict:
+    """The connection file (as a dict; :func:`connection_toml` writes it) of the EMPS plant
+    FMU: ``kind="closed"`` (``emps_loop``: reference and pulses in, voltage compared) or
+    ``"open"`` (``emps_axis``: voltage in, position compared)."""
+    p = model.params
+    params = {"M": p.M, "delay": p.delay, "pulse_gain": p.pulse_gain, "substeps": 10.0}
+    if kind == "closed":
+        params["position_feedback"] = model.position_feedback
+        inputs = {"qg_in": {"column": "qg_next", "hold": "previous"},
+                  "pulse_in": {"column": "pulses_next", "hold": "previous"}}
+        compare = {"u": {"column": "vir", "unit": "V"}}
+    elif kind == "open":
+        inputs = {"u_cmd": {"column": "vir_next", "hold": "previous", "unit": "V"}}
+        compare = {"x": {"column": "qm", "unit": "m"}}
+    else:
+        raise ValueError(f"kind = {kind!r}: choose 'closed' or 'open'")
+    box = {"M": [80.0, 110.0], "delay": [0.0, 1e-3]}
+    return {"step": 1e-3, "time": "t", "mass": "M",
+            "friction": {"input": "F_friction", "sign": 1, "v": "v", "x": "x"},
+            "inputs": inputs, "compare": compare, "parameters": params,
+            "identify": {n: box[n] for n in identify},
+            "law": {"model": model.law.name}}
+
+
+def connection_toml(d: dict) -> str:
+    """TOML text of a connection dict (tables of scalars, strings, lists, inline tables)."""
+    def val(v):
+        if isinstance(v, str):
+            return '"' + v.replace('"', '\\"') + '"'
+        if isinstance(v, bool):
+            return "true" if v else "false"
+        if isinstance(v, (list, tuple)):
+            return "[" + ", ".join(val(x) for x in v) + "]"
+        if isinstance(v, dict):
+            return "{" + ", ".join(f"{k} = {val(x)}" for k, x in v.items()) + "}"
+        return repr(float(v)) if isinstance(v, float) else str(v)
+    lines = [f"{k} = {val(v)}" for k, v in d.items() if not isinstance(v, dict)]
+    for k, v in d.items():
+        if isinstance(v, dict):
+            lines += ["", f"[{k}]"] + [f"{kk} = {val(vv)}" for kk, vv in v.items()]
+    return "\n".join(lines) + "\n"
+
+
+def _law_values(law) -> dict:
+    return {n: getattr(law.params, n) for n in law.Params.numeric_names()
+            if getattr(law.params, n) is not None}
+
+
+def run_through_fmus(model: EMPSModel, rec: EMPSRecord, fmu_paths: dict, *,
+                     stop: float | None = None, settle: float = 0.2) -> dict:
+    """``model`` on ``rec`` through the plant FMUs and the native law FMU (connection-file
+    path, :class:`fmus.connect.PlantLoop`), closed and open loop, next to the in-process
+    run from the same start (at rest at 0: the FMU's controller takes its first sample
+    before the master sets the inputs, so its first voltage is 0, as given to the in-process
+    open loop too). Scores after ``settle`` seconds (the start-up differs)."""
+    from fmus.connect import PlantLoop, parse_connection
+    mrec = measured_record(rec, stop)
+    n = mrec.t.size
+    T = (n - 1) * 1e-3
+    s = mrec.t >= settle
+    out = {"samples": int(n), "settle_s": settle}
+    law_vals = _law_values(model.law)
+    for kind, fmu in (("closed", fmu_paths["emps_loop"]), ("open", fmu_paths["emps_axis"])):
+        conn = parse_connection(connection_dict(model, kind), f"emps_{kind}.toml")
+        t0 = time.perf_counter()
+        with PlantLoop(fmu, conn, model.law, record=("x", "u")) as loop:
+            run = loop.run(mrec, law_vals)
+        sec = time.perf_counter() - t0
+        x_f, u_f = run.at("x", mrec.t), run.at("u", mrec.t)
+        rest = np.zeros(5)
+        if kind == "closed":
+            ref = model.closed_plant().simulate(T, reference=rec.qg, pulses=rec.pulses,
+                                                initial=rest,
+                                                position_feedback=model.position_feedback)
+            out[kind] = {"fmu_force_error": force_error(u_f[s], rec.vir[:n][s]),
+                         "inprocess_force_error": force_error(ref["u"][s], rec.vir[:n][s]),
+                         "max_abs_du_V": float(np.max(np.abs(u_f - ref["u"])[s])),
+                         "max_abs_dx_m": float(np.max(np.abs(x_f - ref["x"])[s])),
+                         "seconds": sec}
+        else:
+            volt = np.array(rec.vir[:n], float)
+            volt[0] = 0.0
+            ref = model.open_plant().simulate(T, voltage=volt, initial=rest)
+            out[kind] = {"fmu": position_metrics(x_f[s], rec.qm[:n][s]),
+                         "inprocess": position_metrics(ref["x"][s], rec.qm[:n][s]),
+                         "max_abs_dx_m": float(np.max(np.abs(x_f - ref["x"])[s])),
+                         "seconds": sec}
+    return out
+
+
+def identify_through_fmus(start: EMPSModel, rec: EMPSRecord, fmu_paths: dict, *,
+                          stop: float = 6.0, names=("Fc", "sigma2", "b"), max_evals: int = 60,
+                          progress=None) -> dict:
+    """Identify the law's ``names`` and the mass through the closed-loop plant FMU and the
+    native law FMU (:func:`identification.plant_fmu.identify_plant_fmu`, the path a user's
+    own plant FMU takes), on the first ``stop`` seconds of ``rec``."""
+    from fmus.connect import parse_connection
+    from identification.plant_fmu import identify_plant_fmu
+    conn = parse_connection(connection_dict(start, "closed", identify=("M",)),
+                            "emps_closed.toml")
+    mrec = measured_record(rec, stop)
+    res = identify_plant_fmu(mrec, fmu_paths["emps_loop"], conn, start.law,
+                             names=list(names) + ["plant.M"], max_evals=max_evals,
+                             algorithm="least_squares", progress=progress)
+    return {"params": dict(res.params), "fit_nrmse": res.fit_nrmse, "n_evals": res.n_evals,
+            "wall_time": res.wall_time}

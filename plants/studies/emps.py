@@ -866,9 +866,6 @@ def _main(argv=None) -> int:
     return 0
 
 
-if __name__ == "__main__":
-    raise SystemExit(_main())
-
 
 # -- the same case through FMUs and a connection file (fmus.connect) ----------------------------
 #: the EMPS FMUs: name -> (plant class "module:Class" of plants, what it is)
@@ -1022,3 +1019,7 @@ def identify_through_fmus(start: EMPSModel, rec: EMPSRecord, fmu_paths: dict, *,
                              algorithm="least_squares", progress=progress)
     return {"params": dict(res.params), "fit_nrmse": res.fit_nrmse, "n_evals": res.n_evals,
             "wall_time": res.wall_time}
+
+
+if __name__ == "__main__":
+    raise SystemExit(_main())

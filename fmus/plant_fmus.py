@@ -1,5 +1,6 @@
-"""FMUs of the plants (external friction) and the co-simulation proof against each plant's
-reference integrator.
+"""Plant + friction-law co-simulation: the connections, the master of a plant FMU with a law FMU
+and the proof against each plant's reference integrator (the plant FMUs' recipes are in
+:mod:`fmus.recipes`, the port names in :mod:`fmus.coupling`).
 
 Each plant of ``plants.PLANTS`` becomes ``<plant>.fmu``: the plant in external-friction mode
 (input ``F_friction`` [N]; outputs its signals, among them the kinematics ``x, v, a`` and the
@@ -42,7 +43,7 @@ re-deflects during the 0.002 mm/s creep).
 The plant FMU integrates its step with
 ``F(t) = F_k + dF_dx (x(t) - x_k) + dF_dv (v(t) - v_k) + R(t - t_k)`` (``R`` the residual
 above), so the stiff part of the contact is resolved inside the plant's own substeps
-(``plants.base.PlantStepper``). With Gauss-Seidel (plant first) the law advances its state
+(``plants.stepper.PlantStepper``). With Gauss-Seidel (plant first) the law advances its state
 with its inputs at both ends of the step (parameter ``inputs_at_step_end``).
 
 :func:`plant_proof` runs that loop with our master at the plant's data rate and compares the main output with

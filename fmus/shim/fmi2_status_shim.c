@@ -42,7 +42,8 @@
  * invalid read in finalizePythonInterpreter of a block freed by __run_exit_handlers). The
  * shim registers its own exit handler right after loading the inner library, so it runs
  * before that static destructor, and calls finalizePythonInterpreter there: the guard is
- * released once, while it is alive, and the later resets find it empty.
+ * released once, while it is alive, and the later resets find it empty. The shim then stays
+ * loaded (RTLD_NODELETE, as the inner library does), so the handler runs at exit only.
  *
  * Logging: pythonfmu 0.7 drops every message unless logging is on, so the inner instance
  * always runs with logging on (all categories) and the shim applies the importer's
@@ -292,9 +293,12 @@ static int load_inner_path(void) {
         return 0;
     }
     /* registered after the inner library's static constructors: runs before its static
-     * destructors (at exit, or when this shim is unloaded) */
+     * destructors, at process exit - this shim stays loaded like the inner library (which
+     * cannot be unloaded), so the guard (and a Python the inner library initialized) is not
+     * released while the host may instantiate again */
     inner_finalize = (finalize_fn *)dlsym(inner_handle, "finalizePythonInterpreter");
-    if (inner_finalize != NULL)
+    if (inner_finalize != NULL &&
+        dlopen(info.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE) != NULL)
         atexit(release_python_guard);
     return 1;
 }

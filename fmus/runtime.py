@@ -300,14 +300,11 @@ class SlaveBase(Fmi2Slave):
         if role == "output":
             self.reject(v.name, f"{v.name} is an output and cannot be set; {value!r} ignored")
             return
+        bounded = False
         if v.type == "Enumeration":
             if isinstance(value, float) and value == int(value):
                 value = int(value)
-            if not v.admissible(value):
-                self.reject(v.name, f"{role} {v.name} = {value!r} is out of bounds: must be "
-                                    f"{v.bound_text()} ({v.description}); value rejected, "
-                                    f"{v.name} keeps {self.values[vr]!r}")
-                return
+            bounded = True
         elif v.type == "Boolean":
             value = bool(value)
         elif v.type == "Real":
@@ -317,11 +314,13 @@ class SlaveBase(Fmi2Slave):
                                     f"({v.description}); value rejected, {v.name} keeps "
                                     f"{self.values[vr]!r}")
                 return
-            if role == "parameter" and not v.admissible(value):
-                self.reject(v.name, f"parameter {v.name} = {value!r} is out of bounds: must be "
-                                    f"{v.bound_text()} [{v.unit}] ({v.description}); value "
-                                    f"rejected, {v.name} keeps {self.values[vr]!r}")
-                return
+            bounded = role == "parameter"
+        if bounded and not v.admissible(value):
+            unit = f" [{v.unit}]" if v.type == "Real" else ""
+            self.reject(v.name, f"{role} {v.name} = {value!r} is out of bounds: must be "
+                                f"{v.bound_text()}{unit} ({v.description}); value rejected, "
+                                f"{v.name} keeps {self.values[vr]!r}")
+            return
         self.pending.pop(v.name, None)
         self.values[vr] = value
         if role == "parameter":

@@ -11,7 +11,9 @@ from diagnosis.benchmark import make_case
 from frictionlab.cli import main
 
 
-@pytest.mark.parametrize("effect", ["asymmetry", "inertia", "drift", "delay"])
+@pytest.mark.parametrize("effect", ["asymmetry", "inertia",
+                                    pytest.param("drift", marks=pytest.mark.slow),
+                                    pytest.param("delay", marks=pytest.mark.slow)])
 def test_withheld_effect_is_named(effect):
     rep = diagnose(make_case(effect, 1.0, 0.02, n=8000, seed=11), "lugre")
     assert rep["verdict"]["cause"] == effect
@@ -72,6 +74,7 @@ def pneumatic_report(real_data):
                     validation=[load_pneumatic("O-ring", 5), load_pneumatic("O-ring", 7)])
 
 
+@pytest.mark.slow  # moved out of the default run: it alone takes 15-50 s
 def test_pneumatic_points_at_load(pneumatic_report):
     """Fit at 1 bar, held out at 5 and 7 bar with the pressure as the load: ``load``.
 

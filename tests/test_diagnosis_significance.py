@@ -158,6 +158,7 @@ def _coloured_clean_case(tau=3.0, rel=0.02):
     return data, case.base, float(np.std(n))
 
 
+@pytest.mark.slow  # moved out of the default run: it alone takes 15-50 s
 def test_coloured_noise_is_never_given_a_name_and_is_none_once_its_level_is_known():
     data, base, sd_noise = _coloured_clean_case()
     rep = diagnose(data, base)

@@ -47,7 +47,7 @@ def test_bad_plant_or_effect_named():
 
 # -- attribution on plant data ----------------------------------------------------------------
 @pytest.mark.parametrize("plant,effect", [pytest.param("xml350", "load", marks=pytest.mark.slow),
-                                          ("xml350", "inertia"),
+                                          pytest.param("xml350", "inertia", marks=pytest.mark.slow),
                                           ("mre_isolator", "asymmetry"),
                                           ("mre_isolator", "drift")])
 def test_plant_case_gets_the_right_name(plant, effect):
@@ -187,6 +187,7 @@ def test_localise_evidence_points_asymmetry_at_direction():
     assert localise(rep, method="evidence")["family"] == "direction"
 
 
+@pytest.mark.slow  # moved out of the default run: about 12 s
 def test_localise_where_finds_the_position_defect_band():
     # the XML-350's random-walk stroke (on the sinusoids of the rig or the valve, position
     # bands coincide with |v| or |a| bands and cannot be told apart)

@@ -39,7 +39,8 @@ def _plateaus(law, n_pl=40, P=0.01):
                "x": 1e-3 * np.sin(0.7 * rng)}
 
 
-@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("law", [pytest.param(n, marks=pytest.mark.slow) if n == "modified_lugre" else n
+                                 for n in LAWS])  # modified_lugre's reference: 13 s
 def test_me_interface_through_fmpy_cvode_equals_the_reference(ndir, law):
     from fmpy import simulate_fmu
     cls = friction.MODELS[law]

@@ -13,14 +13,25 @@ Goals checked and printed:
   FFOA, IFFOA, chaotic PSO, adaptive GA) in at most a tenth of that metaheuristic's wall time
   (time to reach, from the default's trace of improvements; its total time is printed too).
 
+Speed (issue 16 item 6), printed first: the default identification of seed 001's
+6-parameter LuGre at 10,000 samples against a by-hand ``scipy.optimize.least_squares`` fit
+(residual ``model.with_values(...).simulate(t, v) - F`` over the physical parameters, the
+same start and box, scipy's defaults: 2-point Jacobian, trust-region reflective), both
+timed alternately in this process (median of the repeats), then again in a child process
+with one OpenBLAS thread (``OPENBLAS_NUM_THREADS=1``: the by-hand fit's SVDs of the
+10,000 x 6 Jacobian are multithreaded by default, which costs more than they save on a
+loaded 2-core machine). Goal: default / by-hand <= 0.25.
+
 Usage::
 
     python benchmarks/bench_identification.py [--quick] [--budget N] [--json OUT]
+    python benchmarks/bench_identification.py --speed [--repeats N]
 """
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import time
 
 import numpy as np
@@ -78,6 +89,86 @@ def run(algorithm, data, start, names, bounds, budget, seed=0):
     return r, time.perf_counter() - t0
 
 
+def speed_case(n: int = 10000, noise: float = 0.02):
+    """Seed 001's LuGre (Table I) with its 4 Hz / 10 mm sine, ``n`` samples at 1 kHz, white
+    noise of ``noise`` x std(F); the benchmark case's six names, start and box."""
+    from friction.dataset import Dataset
+    c = make_case("seed001")
+    t = np.arange(n) * 1e-3
+    w = 2 * np.pi * 4
+    v = 10e-3 * w * np.cos(w * t)
+    F0 = c.true.simulate(t, v)
+    F = F0 + noise * np.std(F0) * np.random.default_rng(17).standard_normal(n)
+    data = Dataset.from_arrays(t, F, v=v, name=f"seed001 lugre, {n} samples",
+                               check_units=False)
+    return data, c.start, list(c.names), dict(c.bounds)
+
+
+def by_hand_fit(data, start, names, bounds):
+    """What a user writes with scipy alone: least squares on the simulated force over the
+    physical parameters, from the same start inside the same box, scipy's defaults.
+    Returns (NRMSE, nfev)."""
+    from scipy.optimize import least_squares
+    t, v, F = data.t, data.v, data.F
+    lo = np.array([bounds[n][0] for n in names])
+    hi = np.array([bounds[n][1] for n in names])
+    x0 = np.array([getattr(start.params, n) for n in names])
+
+    def residual(p):
+        return start.with_values(**dict(zip(names, p))).simulate(t, v) - F
+
+    res = least_squares(residual, x0, bounds=(lo, hi))
+    return float(np.sqrt(np.mean(res.fun ** 2)) / np.std(F)), int(res.nfev)
+
+
+def speed_ratio(repeats: int = 7, n: int = 10000) -> dict:
+    """Default identification vs the by-hand fit on :func:`speed_case`, timed alternately
+    (after one warm-up of each); medians and their ratio."""
+    data, start, names, bounds = speed_case(n)
+    identify(data, start, names=names, bounds=bounds)
+    by_hand_fit(data, start, names, bounds)
+    t_def, t_hand = [], []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        r = identify(data, start, names=names, bounds=bounds)
+        t_def.append(time.perf_counter() - t0)
+        t0 = time.perf_counter()
+        hand_cost, nfev = by_hand_fit(data, start, names, bounds)
+        t_hand.append(time.perf_counter() - t0)
+    d, h = float(np.median(t_def)), float(np.median(t_hand))
+    return dict(samples=n, default_s=d, by_hand_s=h, ratio=d / h, default_cost=r.fit_nrmse,
+                by_hand_cost=hand_cost, default_evals=r.n_evals, by_hand_nfev=nfev,
+                ratios=[a / b for a, b in zip(t_def, t_hand)],
+                blas_threads=os.environ.get("OPENBLAS_NUM_THREADS", "default"))
+
+
+def print_speed(repeats: int = 7) -> list:
+    """:func:`speed_ratio` here and in a child with one OpenBLAS thread; prints both."""
+    import subprocess
+    import sys
+    rows = [speed_ratio(repeats)]
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
+    out = subprocess.run([sys.executable, __file__, "--speed-child", "--repeats",
+                          str(repeats)], env=env, capture_output=True, text=True)
+    if out.returncode == 0:
+        rows.append(json.loads(out.stdout.strip().splitlines()[-1]))
+    else:
+        print(f"(one-BLAS-thread child failed: {out.stderr.strip().splitlines()[-1:]})")
+    print("Speed: default identification vs a by-hand scipy least_squares fit, seed001 "
+          f"LuGre, 6 parameters, {rows[0]['samples']} samples (medians of {repeats}, "
+          "alternating)")
+    print("| OpenBLAS threads | default [s] (evals, NRMSE) | by hand [s] (nfev, NRMSE) | "
+          "ratio | goal <= 0.25 |")
+    print("|---|---|---|---|---|")
+    for r in rows:
+        print(f"| {r['blas_threads']} | {r['default_s']:.4f} ({r['default_evals']}, "
+              f"{r['default_cost']:.6g}) | {r['by_hand_s']:.4f} ({r['by_hand_nfev']}, "
+              f"{r['by_hand_cost']:.6g}) | {r['ratio']:.3f} (runs {min(r['ratios']):.2f}-"
+              f"{max(r['ratios']):.2f}) | {'x' if r['ratio'] <= 0.25 else ' '} |")
+    print(flush=True)
+    return rows
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="small budgets (smoke test)")
@@ -88,7 +179,17 @@ def main(argv=None):
     ap.add_argument("--no-real", action="store_true")
     ap.add_argument("--no-robustness", action="store_true")
     ap.add_argument("--json", default=None)
+    ap.add_argument("--speed", action="store_true",
+                    help="only the speed ratio against a by-hand least_squares fit")
+    ap.add_argument("--speed-child", action="store_true", help=argparse.SUPPRESS)
+    ap.add_argument("--repeats", type=int, default=7, help="timed repeats of the speed ratio")
     args = ap.parse_args(argv)
+    if args.speed_child:
+        print(json.dumps(speed_ratio(args.repeats)))
+        return None
+    speed_rows = print_speed(args.repeats)
+    if args.speed:
+        return speed_rows
     budget = args.budget or (3000 if args.quick else 10000)
     algorithms = [DEFAULT_ALGORITHM] + [a for a in SEED_METAHEURISTICS + MODERN
                                         if a != DEFAULT_ALGORITHM]
@@ -191,7 +292,8 @@ def main(argv=None):
         print(f"- [{'x' if g['ok'] else ' '}] {g['dataset']}: {g['goal']}: {v}")
     if args.json:
         with open(args.json, "w") as fh:
-            json.dump(dict(budget=budget, rows=rows, goals=goals), fh, indent=2,
+            json.dump(dict(budget=budget, rows=rows, goals=goals, speed=speed_rows), fh,
+                      indent=2,
                       default=lambda o: None if o is None else float(o))
     return rows, goals
 

@@ -28,10 +28,11 @@ import numpy as np
 from numba import njit, prange
 
 from ._validation import ParameterError
-from .base import FrictionModel, FrictionParams, param
+from .base import METHODS, FrictionModel, FrictionParams, param
 from .shapes import SHAPES, DirectionalStribeck, stribeck_g
 
-__all__ = ["LuGreParams", "LuGre", "bristle_update", "lugre_run"]
+__all__ = ["LuGreParams", "LuGre", "bristle_update", "lugre_run", "lugre_sensitivity_run",
+           "lugre_normal_equations"]
 
 
 @dataclass(frozen=True)
@@ -182,6 +183,276 @@ def lugre_run(t, v, th, method, z0, F, Z):
                 z = z + (z - zss) * _em1(h * cgm * abs(vm))
 
 
+@njit(cache=True, inline="always")
+def _g_partials(v, Fc, Fs, ivs, alpha, shape, cut, ifc, need_alpha):
+    """g(v) of one direction, 1/g, and the partial derivatives of g with respect to that
+    direction's Fc, Fs, vs and the exponent alpha:
+    ``(g, 1/g, dg/dFc, dg/dFs, dg/dvs, dg/dalpha)``.
+
+    The value is :func:`_g_fast`'s. Beyond the cut-off ``cut`` (gaussian shape,
+    :func:`_cutoff`) g is Fc exactly (``ifc`` = 1/Fc) and the other partials below
+    2^-54 Fc (returned as 0); Fs = Fc has no cut-off (``cut`` infinite: dg/dFs is e^{-x}
+    there). dg/dalpha (a logarithm) only where ``need_alpha``."""
+    r = abs(v) * ivs
+    d = Fs - Fc
+    if shape == 1:
+        q = 1.0 + r * r
+        g = Fc + d / q
+        L = 1.0 / q
+        return g, 1.0 / g, 1.0 - L, L, 2.0 * d * r * r * L * L * ivs, 0.0
+    if r == 0.0:
+        g = Fc + d
+        return g, 1.0 / g, 0.0, 1.0, 0.0, 0.0
+    x = r * r if alpha == 2.0 else r ** alpha
+    if x > cut:
+        return Fc, ifc, 1.0, 0.0, 0.0, 0.0
+    E = math.exp(-x)
+    dE = d * E
+    gal = -dE * x * math.log(r) if need_alpha else 0.0
+    g = Fc + dE
+    return g, 1.0 / g, 1.0 - E, E, dE * alpha * x * ivs, gal
+
+
+@njit(cache=True, inline="always")
+def _sens_cutoff(Fc, Fs):
+    """:func:`_cutoff`, infinite where Fs = Fc (see :func:`_g_partials`)."""
+    if Fs == Fc:
+        return math.inf
+    return _cutoff(Fc, Fs)
+
+
+#: samples per block of the normal-equation sums of :func:`_sensitivity_pass`
+_NE_BLOCK = 64
+
+
+#: floating-point freedoms of the sensitivity kernels: reassociation (the block sums
+#: vectorise) and fused multiply-adds; no assumption about NaN or infinities (a parameter
+#: set that overflows must still give a non-finite cost)
+_SENS_MATH = {"reassoc", "contract"}
+
+
+@njit(cache=True, inline="always", fastmath=_SENS_MATH)
+def _flush_normal(R, rb, m, D, H, G):
+    """Add the block's ``R[:, :m]^T R[:, :m]`` (lower triangle) to ``H`` and
+    ``R[:, :m] rb[:m]`` to ``G`` (contiguous dot products: vectorised)."""
+    for i in range(D):
+        Ri = R[i]
+        acc = 0.0
+        for k in range(m):
+            acc += Ri[k] * rb[k]
+        G[i] += acc
+        for j in range(i + 1):
+            Rj = R[j]
+            acc = 0.0
+            for k in range(m):
+                acc += Ri[k] * Rj[k]
+            H[i, j] += acc
+
+
+@njit(cache=True, fastmath=_SENS_MATH)
+def _sensitivity_pass(t, v, th, method, z0, cols, F, J, Fm, scale, H, G):
+    """One pass of the LuGre force with its forward sensitivities; see
+    :func:`lugre_sensitivity_run` and :func:`lugre_normal_equations`.
+
+    Stores ``F`` and ``J`` where they have ``N`` rows; accumulates the residual
+    ``r = (F - Fm) scale`` into ``H += (scale J)^T (scale J)``, ``G += (scale J)^T r`` and
+    the returned ``sum r^2`` where ``Fm`` has ``N`` entries.
+
+    The sensitivity ``dz[j] = dz/dp_j`` of the bristle deflection to column ``j``'s
+    parameter is propagated with the state: every column through the terms in ``dz``
+    (the force's ``s0 - s1 |v| sigma0/g`` and the update's decay ``e^{-s}``), and the few
+    columns a sample's partial derivatives touch (the Stribeck parameters of its direction,
+    sigma0, sigma1, the direction's sigma2, b) through their own terms.
+    """
+    n = t.size
+    D = J.shape[1] if J.shape[0] == n else G.size
+    store = J.shape[0] == n
+    accumulate = Fm.size == n
+    dz = np.zeros(D)
+    row = np.empty(D)
+    R = np.empty((D, _NE_BLOCK))  # a block of scaled Jacobian rows, one row per column
+    rb = np.empty(_NE_BLOCK)
+    m = 0
+    s0 = th[S0]
+    s1 = th[S1]
+    b = th[B]
+    is0 = 1.0 / s0
+    alpha = th[ALPHA]
+    shape = th[SHAPE]
+    ivsp = 1.0 / th[VSP]
+    ivsn = 1.0 / th[VSN]
+    c_s0 = cols[S0]
+    c_s1 = cols[S1]
+    c_al = cols[ALPHA]
+    c_b = cols[B]
+    need_al = c_al >= 0
+    cutp = _sens_cutoff(th[FCP], th[FSP])
+    cutn = _sens_cutoff(th[FCN], th[FSN])
+    ifcp = 1.0 / th[FCP]
+    ifcn = 1.0 / th[FCN]
+    sse = 0.0
+    z = z0
+    for k in range(n):
+        vk = v[k]
+        av = abs(vk)
+        if vk >= 0.0:
+            side = 0
+            g, ig, gfc, gfs, gvs, gal = _g_partials(vk, th[FCP], th[FSP], ivsp, alpha,
+                                                    shape, cutp, ifcp, need_al)
+        else:
+            side = 1
+            g, ig, gfc, gfs, gvs, gal = _g_partials(vk, th[FCN], th[FSN], ivsn, alpha,
+                                                    shape, cutn, ifcn, need_al)
+        cg = s0 * ig
+        zd = vk - cg * av * z
+        f = s0 * z + s1 * zd + th[S2P + side] * vk + b
+        # dF = A dz + Bg dg + direct terms
+        A = s0 - s1 * av * cg
+        avz = av * z
+        Bg = s1 * avz * cg * ig
+        for j in range(D):
+            row[j] = A * dz[j]
+        c = cols[FCP + side]
+        if c >= 0:
+            row[c] += Bg * gfc
+        c = cols[FSP + side]
+        if c >= 0:
+            row[c] += Bg * gfs
+        c = cols[VSP + side]
+        if c >= 0:
+            row[c] += Bg * gvs
+        if c_al >= 0:
+            row[c_al] += Bg * gal
+        if c_s0 >= 0:
+            row[c_s0] += z - s1 * avz * ig
+        if c_s1 >= 0:
+            row[c_s1] += zd
+        c = cols[S2P + side]
+        if c >= 0:
+            row[c] += vk
+        if c_b >= 0:
+            row[c_b] += 1.0
+        if store:
+            F[k] = f
+            for j in range(D):
+                J[k, j] = row[j]
+        if accumulate:
+            r = (f - Fm[k]) * scale
+            sse += r * r
+            rb[m] = r
+            for j in range(D):
+                R[j, m] = row[j] * scale
+            m += 1
+            if m == _NE_BLOCK:
+                _flush_normal(R, rb, m, D, H, G)
+                m = 0
+        if k + 1 < n:
+            h = t[k + 1] - t[k]
+            if method == 1:
+                # z+ = z + h zd: dz+ = (1 - h |v| s0/g) dz + h |v| z s0/g^2 dg - h |v| z/g [s0]
+                K = 1.0 - h * av * cg
+                for j in range(D):
+                    dz[j] *= K
+                Bz = h * avz * cg * ig
+                c = cols[FCP + side]
+                if c >= 0:
+                    dz[c] += Bz * gfc
+                c = cols[FSP + side]
+                if c >= 0:
+                    dz[c] += Bz * gfs
+                c = cols[VSP + side]
+                if c >= 0:
+                    dz[c] += Bz * gvs
+                if c_al >= 0:
+                    dz[c_al] += Bz * gal
+                if c_s0 >= 0:
+                    dz[c_s0] -= h * avz * ig
+                z = z + h * zd
+                continue
+            vm = 0.5 * (vk + v[k + 1])
+            avm = abs(vm)
+            if vm >= 0.0:
+                sm = 0
+                gm, igm, mfc, mfs, mvs, mal = _g_partials(vm, th[FCP], th[FSP], ivsp,
+                                                          alpha, shape, cutp, ifcp, need_al)
+                sg = 1.0
+            else:
+                sm = 1
+                gm, igm, mfc, mfs, mvs, mal = _g_partials(vm, th[FCN], th[FSN], ivsn,
+                                                          alpha, shape, cutn, ifcn, need_al)
+                sg = -1.0
+            zss = sg * gm * is0
+            hv = h * avm
+            em = _em1(hv * (s0 * igm))
+            e = em + 1.0
+            dev = z - zss
+            # z+ = z + (z - zss) em(s), s = h s0 |vm| / gm, zss = sgn gm / s0:
+            # dz+ = e dz - em dzss - (z - zss) e ds
+            for j in range(D):
+                dz[j] *= e
+            dve = dev * e * hv * igm
+            P = -em * sg * is0 + dve * s0 * igm
+            c = cols[FCP + sm]
+            if c >= 0:
+                dz[c] += P * mfc
+            c = cols[FSP + sm]
+            if c >= 0:
+                dz[c] += P * mfs
+            c = cols[VSP + sm]
+            if c >= 0:
+                dz[c] += P * mvs
+            if c_al >= 0:
+                dz[c_al] += P * mal
+            if c_s0 >= 0:
+                dz[c_s0] += em * sg * gm * is0 * is0 - dve
+            z = z + dev * em
+    if accumulate:
+        if m > 0:
+            _flush_normal(R, rb, m, D, H, G)
+        for i in range(D):
+            for j in range(i):
+                H[j, i] = H[i, j]
+    return sse
+
+
+@njit(cache=True)
+def lugre_sensitivity_run(t, v, th, method, z0, cols, F, J):
+    """Forward sensitivities of the classic LuGre force along (t, v): the force F[k] and
+    its derivatives with respect to chosen parameters, integrated with the bristle state
+    in one pass (the update of :func:`lugre_run`, differentiated exactly).
+
+    Parameters
+    ----------
+    t, v : ndarray, shape (N,)
+        Time [s] and velocity [m/s].
+    th : ndarray
+        Packed parameters (:data:`_LAYOUT`).
+    method : int
+        0 exact exponential bristle update, 1 explicit Euler.
+    z0 : float
+        Initial bristle deflection [m] (held fixed: its sensitivity is zero).
+    cols : ndarray of int64, shape (len(_LAYOUT),)
+        Column of ``J`` of each packed parameter, -1 for none; a symmetric parameter maps
+        both of its direction entries to one column (:meth:`LuGre.jacobian_columns`).
+    F : ndarray, shape (N,)
+        Written: the force [N] (equal to :func:`lugre_run`'s to rounding).
+    J : ndarray, shape (N, D)
+        Written: ``J[k, j] = dF[k]/dp_j`` [N per unit of the parameter].
+    """
+    _sensitivity_pass(t, v, th, method, z0, cols, F, J, np.empty(0), 1.0,
+                      np.empty((0, 0)), np.empty(J.shape[1]))
+
+
+@njit(cache=True)
+def lugre_normal_equations(t, v, th, method, z0, cols, Fm, scale, H, G):
+    """Gauss-Newton normal equations of the scaled residual ``r = (F - Fm) scale`` in one
+    sensitivity pass, without storing the ``N x D`` Jacobian: adds ``(scale J)^T (scale J)``
+    to ``H`` (D x D) and ``(scale J)^T r`` to ``G`` (D), returns ``sum r^2``. Arguments as
+    :func:`lugre_sensitivity_run`; ``Fm`` the measured force [N]."""
+    return _sensitivity_pass(t, v, th, method, z0, cols, np.empty(0), np.empty((0, G.size)),
+                             Fm, scale, H, G)
+
+
 @njit(cache=True)
 def _kernel(t, v, a, load, x, th, method, state0):
     F = np.empty(t.size)
@@ -198,6 +469,40 @@ def _population_kernel(t, v, a, load, x, Theta, method):
         Z = np.empty(t.size)
         lugre_run(t, v, Theta[i], method, 0.0, F[i], Z)
     return F
+
+
+#: samples per block of :func:`_population_sse_kernel` (the force of one block in memory)
+_SSE_BLOCK = 4096
+
+
+@njit(cache=True, parallel=True)
+def _population_sse_kernel(t, v, Theta, method, Fm):
+    """``sum_k (F_i[k] - Fm[k])^2`` of every parameter row ``i`` without an ``npop x N``
+    force matrix: each row runs :func:`lugre_run` block by block (the state carried
+    across, so its forces are the same numbers), in parallel over the rows."""
+    npop = Theta.shape[0]
+    n = t.size
+    out = np.empty(npop)
+    for i in prange(npop):
+        F = np.empty(_SSE_BLOCK + 1)
+        Z = np.empty(_SSE_BLOCK + 1)
+        z = 0.0
+        acc = 0.0
+        k0 = 0
+        while True:
+            k1 = min(k0 + _SSE_BLOCK, n - 1)
+            m = k1 - k0 + 1
+            lugre_run(t[k0:k1 + 1], v[k0:k1 + 1], Theta[i], method, z, F[:m], Z[:m])
+            last = m if k1 == n - 1 else m - 1  # the block's last sample starts the next
+            for k in range(last):
+                d = F[k] - Fm[k0 + k]
+                acc += d * d
+            if k1 == n - 1:
+                break
+            z = Z[m - 1]
+            k0 = k1
+        out[i] = acc
+    return out
 
 
 class LuGre(DirectionalStribeck, FrictionModel):
@@ -218,6 +523,13 @@ class LuGre(DirectionalStribeck, FrictionModel):
 
     _kernel = staticmethod(_kernel)
     _population_kernel = staticmethod(_population_kernel)
+    #: forward-sensitivity kernel (identification's analytic Jacobian; see
+    #: :meth:`force_jacobian`)
+    _sensitivity_kernel = staticmethod(lugre_sensitivity_run)
+    #: the same pass accumulating Gauss-Newton normal equations (no N x D Jacobian)
+    _normal_equations_kernel = staticmethod(lugre_normal_equations)
+    #: population sums of squared force errors without the population's forces
+    _population_sse_kernel = staticmethod(_population_sse_kernel)
 
     def _pack(self, p: LuGreParams) -> np.ndarray:
         return np.array([p.sigma0, p.sigma1, p.sigma2, p.resolved("sigma2", -1),
@@ -240,6 +552,60 @@ class LuGre(DirectionalStribeck, FrictionModel):
         p = self.params
         zd = self.derivatives(state, v)[0]
         return p.sigma0 * state[0] + p.sigma1 * zd + float(self.sigma2_of(v)) * v + p.b
+
+    # -- forward sensitivities (identification's analytic Jacobian) ----------------------
+    def jacobian_columns(self, names) -> np.ndarray:
+        """The ``cols`` argument of :func:`lugre_sensitivity_run` for the parameters
+        ``names`` (the columns of the Jacobian): a symmetric parameter (its ``_neg`` twin
+        left None and not named) also owns its twin's entry, as
+        :meth:`friction.base.FrictionModel.population_theta` sets both."""
+        layout = {n: i for i, n in enumerate(self.theta_layout)}
+        cols = np.full(len(self.theta_layout), -1, dtype=np.int64)
+        for j, n in enumerate(names):
+            if n not in layout or n == "shape":
+                raise KeyError(f"{self.name} has no packed parameter {n!r}; "
+                               f"choose from {list(self.theta_layout[:-1])}")
+            cols[layout[n]] = j
+            twin = self.twins.get(n)
+            if twin is not None and getattr(self.params, twin, None) is None \
+                    and twin not in names:
+                cols[layout[twin]] = j
+        return cols
+
+    def force_jacobian(self, t, v, names, *, method: str = "exact", state0=None):
+        """Friction force along a prescribed motion and its Jacobian with respect to the
+        parameters ``names``, from forward sensitivities of the bristle state integrated
+        with it (one pass; no finite differences).
+
+        Parameters
+        ----------
+        t, v : array_like, shape (N,)
+            Time [s] and velocity [m/s].
+        names : sequence of str
+            Parameters to differentiate with respect to (e.g. ``["sigma0", "Fc"]``); a
+            symmetric parameter (``Fc`` with ``Fc_neg`` None) acts on both directions.
+        method : {"exact", "euler"}
+            Bristle update, as in :meth:`simulate`.
+        state0 : array_like, optional
+            Initial bristle deflection (default at rest); it is held fixed.
+
+        Returns
+        -------
+        F : ndarray, shape (N,)
+            Force [N] (as :meth:`simulate` gives it, to rounding).
+        J : ndarray, shape (N, len(names))
+            ``dF/d(name)`` [N per unit of each parameter].
+        """
+        if method not in METHODS:
+            raise ValueError(f"method must be one of {sorted(METHODS)}, got {method!r}")
+        t, v, _, _, _ = self._inputs(t, v)
+        names = list(names)
+        z0 = 0.0 if state0 is None else float(np.asarray(state0, float).ravel()[0])
+        F = np.empty(t.size)
+        J = np.empty((t.size, len(names)))
+        lugre_sensitivity_run(t, v, self.theta, METHODS[method], z0,
+                              self.jacobian_columns(names), F, J)
+        return F, J
 
     def z_max(self) -> float:
         """Bound of the bristle deflection: max over v of g(v)/sigma0 [m] (z0 = 0 start)."""

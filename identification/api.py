@@ -31,14 +31,14 @@ def confidence_intervals(space: ParameterSpace, u, jac, cost: float, n: int,
     physical values (asymmetric for log-scaled parameters). Assumes white residuals:
     coloured noise makes the intervals optimistic.
     """
-    from scipy.stats import norm
+    from statistics import NormalDist
     J = np.asarray(jac, float)
     D = J.shape[1]
     dof = max(n - D, 1)
     s2 = cost ** 2 / dof  # cost**2 = sum r^2
     cov = s2 * np.linalg.pinv(J.T @ J)
     sd = np.sqrt(np.clip(np.diag(cov), 0.0, None))
-    z = float(norm.ppf(0.5 + level / 2))
+    z = float(NormalDist().inv_cdf(0.5 + level / 2))
     lo = space.to_physical(u - z * sd)
     hi = space.to_physical(u + z * sd)
     return {n_: (float(min(a, b)), float(max(a, b))) for n_, a, b in zip(space.names, lo, hi)}
@@ -209,6 +209,7 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     x0 = np.array([_initial(n) for n in space.names], float)
     u0 = np.clip(space.to_unit(x0), 0.0, 1.0)
     prog = _as_progress(progress, f"identify {alg.name}")
+    problem.progress = prog  # life signs between the algorithm's lines (long records)
 
     history: list[float] = []
     info: dict = {}
@@ -282,12 +283,15 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
                                    start="record").predict(x_best[None, :])[0]
         val = nrmse(validation.F, F_val)
     ci = None
-    jac = None
+    jac_of = None  # () -> the final residual Jacobian (N x D), for the intervals
     if info.get("jac") is not None and info.get("u") is not None:
         u_ci = np.asarray(info["u"], float)
         if np.allclose(u_ci, u_best):
-            jac = info["jac"]
-            ci = confidence_intervals(space, u_ci, jac, problem.best_cost, len(data))
+            # an algorithm may give it as a callable: computed only if an interval needs it
+            # (an analytic N x D Jacobian of a long record is one more pass and N x D floats)
+            jac_of = info["jac"] if callable(info["jac"]) else (lambda j=info["jac"]: j)
+            if not identifiability:
+                ci = confidence_intervals(space, u_ci, jac_of(), problem.best_cost, len(data))
     report = None
     deferred = None
     if identifiability:
@@ -305,7 +309,8 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
                 target = InProcessObjective(obj.model, obj.data, obj.names, method=obj.method,
                                             start=obj.start)
             rep, ci_ = assess_identifiability(target, space, u_best, best_cost, model=fitted,
-                                              data=data, jac=jac, profile=not fast)
+                                              data=data, jac=None if jac_of is None
+                                              else jac_of(), profile=not fast)
             rep["notes"] = list(notes) + rep["notes"]
             return {"identifiability": rep, "ci": ci_}
 

@@ -93,9 +93,32 @@ class Objective:
         F = self.predict(np.atleast_2d(x))[0]
         return (F - self.data.F) * self._rscale
 
+    def jacobian(self, x):
+        """Analytic Jacobian of :meth:`residuals` with respect to the physical parameters
+        (``N x D``), or ``None`` when the objective has none (the problem then takes
+        finite differences)."""
+        return None
+
+    def has_jacobian(self) -> bool:
+        """Whether :meth:`jacobian` (and :meth:`normal_equations`) give analytic values
+        (for every parameter set or for none)."""
+        return False
+
+    def normal_equations(self, x):
+        """``(sum r^2, J^T r, J^T J)`` of the scaled residual at one parameter set (physical
+        values), without an ``N x D`` Jacobian in memory, or ``None`` when the objective
+        has no analytic Jacobian."""
+        return None
+
     @property
     def _sd(self) -> float:
-        return float(np.std(self.data.F))
+        # computed once per measured array (an O(N) pass and temporary otherwise on every
+        # residual evaluation)
+        F = self.data.F
+        cached = self.__dict__.get("_sd_cache")
+        if cached is None or cached[0] is not F:
+            cached = self.__dict__["_sd_cache"] = (F, float(np.std(F)))
+        return cached[1]
 
     @property
     def _rscale(self) -> float:
@@ -154,6 +177,117 @@ class InProcessObjective(Objective):
             return np.array(rows)
         return self.model.simulate_population(self.data.t, self.data.v, self.names, X,
                                               method=self.method, **self._inputs)
+
+    def costs(self, X) -> np.ndarray:
+        """Costs of a population; a law with a fused kernel (``_population_sse_kernel``,
+        the classic LuGre) never holds the population's forces (memory O(npop), not
+        O(npop N)), otherwise as :meth:`Objective.costs`."""
+        # the law's own class, not inherited: a subclass changes the equations
+        kernel = None
+        if "_population_sse_kernel" in vars(type(self.model)):
+            kernel = type(self.model)._population_sse_kernel
+        if kernel is None or self.start != "rest" \
+                or type(self).predict is not InProcessObjective.predict:
+            return super().costs(X)
+        X = np.atleast_2d(np.asarray(X, float))
+        t, v, a, load, xx = self._prepared()
+        Theta = self.model.population_theta(self.names, X)
+        sse = kernel(t, v, Theta, METHODS[self.method], self.data.F)
+        c = np.sqrt(sse / t.size) / self._sd
+        return np.where(np.isfinite(c), c, np.inf)
+
+    def residuals(self, x) -> np.ndarray:
+        F = self.predict(np.atleast_2d(x))[0]  # a fresh array: worked on in place
+        F -= self.data.F
+        F *= self._rscale
+        return F
+
+    def has_jacobian(self) -> bool:
+        """The law has a sensitivity kernel (``_sensitivity_kernel``: the classic LuGre)
+        covering every identified name, the simulations start at rest (a start from the
+        record depends on the parameters) and :meth:`predict` is this class's own (a
+        subclass that changes the prediction would need its own derivative)."""
+        cols = self.__dict__.get("_jac_cols")
+        if cols is None:
+            m = self.model
+            cols = False
+            # the law's own class, not inherited: a subclass changes the equations
+            own = vars(type(m))
+            if own.get("_sensitivity_kernel") is not None \
+                    and own.get("_normal_equations_kernel") is not None \
+                    and self.start == "rest" \
+                    and type(self).predict is InProcessObjective.predict:
+                try:
+                    cols = m.jacobian_columns(self.names)
+                except KeyError:
+                    cols = False
+            self._jac_cols = cols
+        return cols is not False
+
+    def jacobian(self, x):
+        """Scaled residual Jacobian ``N x D`` at one parameter set ``x`` (physical values
+        of ``names``) from the law's forward sensitivities (one pass of
+        :func:`friction.lugre.lugre_sensitivity_run`), or ``None`` where
+        :meth:`has_jacobian` is False (the problem then takes finite differences)."""
+        if not self.has_jacobian():
+            return None
+        m = self.model
+        kernel = type(m)._sensitivity_kernel
+        cols = self._jac_cols
+        t, v, a, load, xx = self._prepared()
+        theta = m.population_theta(self.names, np.atleast_2d(np.asarray(x, float)))[0]
+        F = np.empty(t.size)
+        J = np.empty((t.size, len(self.names)))
+        kernel(t, v, theta, METHODS[self.method], float(m.initial_state()[0]), cols, F, J)
+        J *= self._rscale
+        return J
+
+    def normal_equations(self, x):
+        """``(sum r^2, J^T r, J^T J)`` of the scaled residuals at one parameter set ``x``
+        (physical values of ``names``) in one forward-sensitivity pass
+        (:func:`friction.lugre.lugre_normal_equations`: memory O(D^2) however long the
+        record), or ``None`` where :meth:`has_jacobian` is False."""
+        if not self.has_jacobian():
+            return None
+        kernel, t, v, method, z0, cols, Fm, scale = self._sensitivity_setup()
+        theta = self._theta_of(x)
+        D = len(self.names)
+        H = np.zeros((D, D))
+        G = np.zeros(D)
+        sse = kernel(t, v, theta, method, z0, cols, Fm, scale, H, G)
+        return float(sse), G, H
+
+    def _sensitivity_setup(self):
+        """What every sensitivity pass takes besides theta (computed once per record)."""
+        st = self.__dict__.get("_sens_setup")
+        if st is None or st[6] is not self.data.F:
+            m = self.model
+            t, v = self._prepared()[:2]
+            st = self._sens_setup = (type(m)._normal_equations_kernel, t, v,
+                                     METHODS[self.method], float(m.initial_state()[0]),
+                                     self._jac_cols, self.data.F, self._rscale)
+        return st
+
+    def _theta_of(self, x) -> np.ndarray:
+        """:meth:`friction.base.FrictionModel.population_theta` of one row (its index
+        arithmetic cached: a least-squares run asks for it once per pass)."""
+        idx = self.__dict__.get("_theta_idx")
+        m = self.model
+        if idx is None:
+            layout = {n: i for i, n in enumerate(m.theta_layout)}
+            dst, src = [], []
+            for j, n in enumerate(self.names):
+                dst.append(layout[n])
+                src.append(j)
+                twin = m.twins.get(n)
+                if twin is not None and getattr(m.params, twin, None) is None \
+                        and twin not in self.names:
+                    dst.append(layout[twin])
+                    src.append(j)
+            idx = self._theta_idx = (np.array(dst, np.int64), np.array(src, np.int64))
+        theta = m.theta.copy()
+        theta[idx[0]] = np.asarray(x, float).ravel()[idx[1]]
+        return theta
 
     def _state0(self, row, t, v, a, load, x) -> np.ndarray:
         m = self.model

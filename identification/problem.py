@@ -22,6 +22,12 @@ from .space import ParameterSpace
 __all__ = ["Problem", "BudgetExhausted"]
 
 
+#: bytes of simulated forces one population call may hold at once: a larger population
+#: (long records: 129 screened sets x 2,000,000 samples would be 2 GB, and its residuals as
+#: much again) is evaluated in chunks of rows
+CHUNK_BYTES = 64 * 2**20
+
+
 class BudgetExhausted(Exception):
     """Raised inside an algorithm when the evaluation budget is spent."""
 
@@ -35,7 +41,12 @@ class Problem:
         Simulations run so far (one per parameter set).
     best_u, best_cost : ndarray, float
         Best point seen and its cost (NRMSE).
+    progress : callable(n, info) or None
+        Ticked with ``n = 0`` at most every ``tick_every`` seconds during long work
+        (population chunks, least-squares iterations).
     """
+    #: default seconds between progress ticks
+    TICK_EVERY = 1.0
 
     def __init__(self, objective, space: ParameterSpace, executor, max_evals: int | None = None):
         self.objective = objective
@@ -51,6 +62,11 @@ class Problem:
         #: checkpoint log (EvaluationLog) or None
         self.log = None
         self._in_unit = False
+        #: progress callable(n, info) ticked (n = 0) at most once per ``tick_every`` seconds
+        #: during long evaluations (population chunks, least-squares iterations)
+        self.progress = None
+        self.tick_every = self.TICK_EVERY
+        self._last_tick = time.perf_counter()
 
     @property
     def dim(self) -> int:
@@ -63,6 +79,17 @@ class Problem:
     @property
     def exhausted(self) -> bool:
         return self.max_evals is not None and self.n_evals >= self.max_evals
+
+    def tick(self, info: str = "") -> None:
+        """A progress line (``progress(0, info)``) if one is due: long records show life
+        between an algorithm's own progress lines."""
+        if self.progress is None:
+            return
+        now = time.perf_counter()
+        if now - self._last_tick >= self.tick_every:
+            self._last_tick = now
+            best = f" best cost={self.best_cost:.4g}" if np.isfinite(self.best_cost) else ""
+            self.progress(0, f"evals {self.n_evals}{best}{' ' + info if info else ''}")
 
     def _track(self, U, c):
         k = int(np.argmin(c))
@@ -103,11 +130,25 @@ class Problem:
                 # the original run's clock: trace times and wall time carry on from it
                 self._t0 = time.perf_counter() - float(rec["s"])
                 return np.array([np.inf if c is None else c for c in rec["c"]], float)
-        c = np.asarray(self.executor.costs(self.objective, X), float)
+        c = self._chunked_costs(X)
         if log is not None:
             log.append({"k": "costs", "X": X, "c": [finite_or_none(v) for v in c],
                         "s": time.perf_counter() - self._t0})
         return c
+
+    def _chunked_costs(self, X) -> np.ndarray:
+        """``executor.costs`` over the rows of ``X``, in chunks whose simulated forces fit
+        :data:`CHUNK_BYTES` (one call when the record is short)."""
+        n_samples = len(self.objective.data.F) if hasattr(self.objective, "data") else 0
+        rows = max(1, int(CHUNK_BYTES // max(8 * n_samples, 1)))
+        if rows >= len(X):
+            return np.asarray(self.executor.costs(self.objective, X), float)
+        out = np.empty(len(X))
+        for i in range(0, len(X), rows):
+            out[i:i + rows] = np.asarray(self.executor.costs(self.objective, X[i:i + rows]),
+                                         float)
+            self.tick(f"population {min(i + rows, len(X))}/{len(X)}")
+        return out
 
     def run_unit(self, kind: str, key: dict, compute):
         """Run a deterministic block ``compute() -> dict`` (JSON-able numbers, strings,
@@ -152,30 +193,103 @@ class Problem:
         u = np.clip(np.asarray(u, float), 0.0, 1.0)
         r = self.objective.residuals(self.space.to_physical(u))
         self.n_evals += 1
-        c = float(np.sqrt(np.sum(r * r))) if np.all(np.isfinite(r)) else np.inf
+        finite = np.isfinite(r)
+        ok = bool(finite.all())
+        c = float(np.sqrt(np.sum(r * r))) if ok else np.inf
         self._track(u[None, :], np.array([c]))
-        return np.where(np.isfinite(r), r, 1e3)
+        self.tick()
+        return r if ok else np.where(finite, r, 1e3)
 
     def jacobian_uncounted(self, u, step: float = 1e-6) -> np.ndarray:
         """The Jacobian :meth:`jacobian` gives at ``u`` with ``r0`` from :meth:`residuals`
         (the same numbers), neither counted nor tracked: a replayed least-squares run
         recomputes its final Jacobian (for confidence intervals) with it."""
         u = np.clip(np.asarray(u, float), 0.0, 1.0)
+        J = self._analytic_jacobian(u)
+        if J is not None:
+            return J
         r = self.objective.residuals(self.space.to_physical(u))
         return self._jacobian_values(u, np.where(np.isfinite(r), r, 1e3), step)
 
     def jacobian(self, u, r0=None, step: float = 1e-6) -> np.ndarray:
-        """Forward-difference Jacobian of the residuals in unit-cube coordinates, all D
-        perturbed sets simulated in one population call."""
+        """Jacobian of the residuals in unit-cube coordinates: analytic where the objective
+        gives one (:meth:`identification.objectives.Objective.jacobian`: the LuGre
+        forward sensitivities, one simulation with its sensitivities, counted as one
+        evaluation), else forward differences with all D perturbed sets simulated in one
+        population call (D evaluations, D + 1 without ``r0``)."""
         u = np.clip(np.asarray(u, float), 0.0, 1.0)
         D = u.size
+        if self.has_analytic_jacobian:
+            if self.remaining < 1:
+                raise BudgetExhausted
+            self.n_evals += 1
+            J = self._analytic_jacobian(u)
+            self.tick()
+            return J
         if self.remaining < D + (r0 is None):
             raise BudgetExhausted
         self.n_evals += D
         if r0 is None:
             r0 = self.objective.residuals(self.space.to_physical(u))
             self.n_evals += 1
-        return self._jacobian_values(u, r0, step)
+        J = self._jacobian_values(u, r0, step)
+        self.tick()
+        return J
+
+    @property
+    def has_analytic_jacobian(self) -> bool:
+        """Whether :meth:`jacobian` is analytic (the objective's ``has_jacobian()``)."""
+        flag = self.__dict__.get("_analytic")
+        if flag is None:
+            ask = getattr(self.objective, "has_jacobian", None)
+            flag = self._analytic = bool(ask()) if callable(ask) else False
+        return flag
+
+    def normal_equations(self, u):
+        """``(sum r^2, J^T r, J^T J)`` of the residuals at ``u`` in cube coordinates from
+        one analytic sensitivity pass (counted as one evaluation and tracked), or ``None``
+        when the objective has no analytic Jacobian. Memory O(D^2): the Jacobian of a long
+        record is never held."""
+        if not self.has_analytic_jacobian:
+            return None
+        if self.exhausted:
+            raise BudgetExhausted
+        u = np.clip(np.asarray(u, float), 0.0, 1.0)
+        x = self.space.to_physical(u)
+        out = self.objective.normal_equations(x)
+        if out is None:
+            return None
+        c2, g, H = out
+        self.n_evals += 1
+        c = float(np.sqrt(c2)) if np.isfinite(c2) and np.all(np.isfinite(H)) else np.inf
+        self._track(u[None, :], np.array([c]))
+        self.tick()
+        if not np.isfinite(c):
+            return np.inf, np.zeros_like(g), np.zeros_like(H)
+        s = self._dx_du(u, x)
+        return float(c2), g * s, H * np.outer(s, s)
+
+    def _dx_du(self, u, x=None):
+        """Slope of the physical value along each cube coordinate."""
+        if x is None:
+            x = self.space.to_physical(u)
+        lo, hi = self.space._ends()
+        return np.where(self.space.log, x * (hi - lo), hi - lo)
+
+    def _analytic_jacobian(self, u):
+        """The objective's analytic residual Jacobian at ``u`` in cube coordinates
+        (physical Jacobian times dx/du), or None."""
+        if not self.has_analytic_jacobian:
+            return None
+        x = self.space.to_physical(u)
+        J = self.objective.jacobian(x)
+        if J is None:
+            return None
+        J *= self._dx_du(u, x)[None, :]
+        bad = ~np.isfinite(J)
+        if bad.any():
+            J[bad] = 0.0
+        return J
 
     def _jacobian_values(self, u, r0, step) -> np.ndarray:
         D = u.size

@@ -1,9 +1,15 @@
 """Gradient-based least squares (scipy.optimize.least_squares) and its multistart variant.
 
 The residual is the simulated minus measured force, scaled so that ``sum r^2 = nrmse^2``.
-The Jacobian is a forward difference whose D perturbed parameter sets run as one population
-through the numba kernel (one parallel call per Jacobian instead of D serial simulations).
-Confidence intervals follow from the final Jacobian (Gauss-Newton covariance).
+Where the objective has an analytic Jacobian (the classic LuGre: forward sensitivities of
+the bristle state, :func:`friction.lugre.lugre_normal_equations`) the default algorithm
+never forms the N x D Jacobian: one pass gives ``r.r``, ``J^T r`` and ``J^T J``, and
+scipy's trust region runs on an equivalent residual of length D + 1
+(:func:`compress_normal_equations`), so an iteration costs one pass and D x D algebra
+whatever the record's length. Otherwise the Jacobian is analytic (``problem.jacobian``) or
+a forward difference whose D perturbed parameter sets run as one population through the
+numba kernel. Confidence intervals follow from the final Jacobian (Gauss-Newton
+covariance).
 """
 from __future__ import annotations
 
@@ -13,17 +19,25 @@ from scipy.optimize import least_squares
 from ..problem import BudgetExhausted
 from .base import Algorithm, latin_hypercube
 
-__all__ = ["LeastSquares", "MultistartLeastSquares", "run_least_squares"]
+__all__ = ["LeastSquares", "MultistartLeastSquares", "run_least_squares",
+           "compress_normal_equations"]
 
 
 def run_least_squares(problem, u0, *, method="trf", max_nfev=None, ftol=1e-10, xtol=1e-10,
-                      gtol=1e-10, diff_step=1e-6, tr_solver="lsmr"):
+                      gtol=1e-10, diff_step=1e-6, tr_solver="lsmr", solver="scipy",
+                      x_scale="jac"):
     """Trust-region reflective least squares from ``u0`` inside the unit cube.
 
     ``tr_solver="lsmr"`` (default) solves the trust-region subproblems with products of the
     Jacobian only. The ``"exact"`` solver takes a dense SVD of the tall N x D Jacobian each
     iteration, which multithreaded OpenBLAS makes up to ~70 times slower on a loaded
     2-core machine (measured: 0.17 s instead of 2.4 ms for 4000 x 9).
+
+    ``solver="normal"``: on a problem with an analytic Jacobian, the compressed run of
+    :func:`compress_normal_equations` (the same trust-region model, one sensitivity pass
+    per point, memory O(D^2)); otherwise (``"scipy"``) the N-long residual vector with the
+    problem's Jacobian (analytic where it has one). ``x_scale``: scipy's variable scaling
+    (``"jac"``: by the Jacobian's column norms).
 
     Returns the scipy result (``x``, ``jac``, ``fun``) or ``None`` if the budget ran out
     before the first iteration finished.
@@ -33,21 +47,32 @@ def run_least_squares(problem, u0, *, method="trf", max_nfev=None, ftol=1e-10, x
     from the log, ``jac`` recomputed at ``x`` on first use: the same numbers) and reruns an
     interrupted one from ``u0``.
     """
-    if getattr(problem, "log", None) is None:
+    lm = solver == "normal" and getattr(problem, "has_analytic_jacobian", False)
+
+    def go():
+        if lm:
+            return _run_normal_least_squares(problem, u0, method=method, max_nfev=max_nfev,
+                                             ftol=ftol, xtol=xtol, gtol=gtol,
+                                             tr_solver=tr_solver, x_scale=x_scale)
         return _run_least_squares(problem, u0, method=method, max_nfev=max_nfev, ftol=ftol,
                                   xtol=xtol, gtol=gtol, diff_step=diff_step,
-                                  tr_solver=tr_solver)
+                                  tr_solver=tr_solver, x_scale=x_scale)
+
+    if getattr(problem, "log", None) is None:
+        return go()
     u0 = np.asarray(u0, float)
     key = {"u0": u0, "x0": problem.space.to_physical(np.clip(u0, 0.0, 1.0)),
            "lower": problem.space.lower, "upper": problem.space.upper, "method": method,
            "max_nfev": max_nfev, "ftol": ftol, "xtol": xtol, "gtol": gtol,
            "diff_step": diff_step, "tr_solver": tr_solver}
+    if x_scale != "jac":
+        key["x_scale"] = x_scale
+    if lm:
+        key["solver"] = "normal_equations"
     live = {}
 
     def compute():
-        res = live["res"] = _run_least_squares(
-            problem, u0, method=method, max_nfev=max_nfev, ftol=ftol, xtol=xtol, gtol=gtol,
-            diff_step=diff_step, tr_solver=tr_solver)
+        res = live["res"] = go()
         if res is None:
             return {"none": True}
         return {"x": res.x, "cost": float(res.cost), "message": str(res.message),
@@ -79,8 +104,98 @@ class _ReplayedLeastSquares:
         return self._jac
 
 
+def compress_normal_equations(c2, g, H):
+    """A residual vector of length D + 1 and its D + 1 x D Jacobian with the same
+    Gauss-Newton model as a long residual ``r`` (length N) with Jacobian ``J``, from
+    ``c2 = r.r``, ``g = J^T r``, ``H = J^T J`` alone.
+
+    With ``H = R^T R`` (eigen-decomposition of the column-scaled ``H``; directions of
+    relative eigenvalue below 1e-14 dropped), ``Q = J R^-1`` spans the columns of ``J``:
+    the short residual is ``[Q^T r, sqrt(c2 - |Q^T r|^2)]`` and its Jacobian ``[R; 0]``.
+    Its squared norm is ``c2``, and ``R^T R = H``, ``[R; 0]^T [Q^T r, .] = g``: a
+    trust-region method sees the same cost, gradient and quadratic model as on the long
+    residual, so it takes the same steps.
+    """
+    D = g.size
+    d = np.sqrt(np.maximum(np.diag(H), 0.0))
+    d = np.where(d > 0, d, 1.0)
+    Hs = H / np.outer(d, d)
+    w, V = np.linalg.eigh(0.5 * (Hs + Hs.T))
+    keep = w > max(float(w[-1]), 0.0) * 1e-14
+    sw = np.sqrt(np.where(keep, w, 0.0))
+    q = np.where(keep, (V.T @ (g / d)) / np.where(keep, sw, 1.0), 0.0)
+    f = np.empty(D + 1)
+    f[:D] = q
+    f[D] = np.sqrt(max(c2 - float(q @ q), 0.0))
+    Jc = np.zeros((D + 1, D))
+    Jc[:D] = (sw[:, None] * V.T) * d[None, :]
+    return f, Jc
+
+
+def _run_normal_least_squares(problem, u0, *, method, max_nfev, ftol, xtol, gtol,
+                              tr_solver="lsmr", x_scale="jac"):
+    """``scipy.optimize.least_squares`` on the compressed residual of
+    :func:`compress_normal_equations`: each point costs one forward-sensitivity pass
+    (:meth:`identification.problem.Problem.normal_equations`, which gives the Jacobian too)
+    and the trust-region algebra is D + 1 x D instead of N x D."""
+    cache = {}
+    n = len(problem.objective.data.F) if hasattr(problem.objective, "data") else 1
+
+    def at(u):
+        key = np.asarray(u, float).tobytes()
+        if key not in cache:
+            cache.clear()
+            c2, g, H = problem.normal_equations(u)
+            if not np.isfinite(c2):
+                # as the long residual's 1e3 per non-finite sample: a huge cost
+                f = np.zeros(g.size + 1)
+                f[-1] = 1e3 * np.sqrt(n)
+                cache[key] = (f, np.zeros((g.size + 1, g.size)))
+            else:
+                cache[key] = compress_normal_equations(c2, g, H)
+        return cache[key]
+
+    u0 = np.clip(np.asarray(u0, float), 1e-9, 1 - 1e-9)
+    if u0.size == 1:
+        tr_solver = "exact"  # scipy's lsmr subproblem indexes a 2-D subspace: one parameter fails
+    try:
+        res = least_squares(lambda u: at(u)[0], u0, jac=lambda u: at(u)[1],
+                            bounds=(0.0, 1.0), method=method, x_scale=x_scale, ftol=ftol,
+                            xtol=xtol, gtol=gtol, max_nfev=max_nfev, tr_solver=tr_solver)
+    except BudgetExhausted:
+        return None
+    return _NormalResult(problem, res)
+
+
+def _jacobian_of(res):
+    """``res.jac``, or a callable giving it where it is computed on demand (the analytic
+    N x D Jacobian of a compressed run): the driver computes it only for intervals."""
+    if isinstance(res, _NormalResult) and res._jac is None:
+        return lambda: res.jac
+    return res.jac
+
+
+class _NormalResult:
+    """scipy's result of a compressed run with the fields the algorithms read (``x``,
+    ``cost``, ``nfev``, ``status``, ``message``, ``success``); ``jac`` is the long
+    residual's N x D Jacobian (for intervals), computed analytically at ``x`` when first
+    asked."""
+
+    def __init__(self, problem, res):
+        self._problem = problem
+        self.x, self.cost, self.nfev = res.x, float(res.cost), int(res.nfev)
+        self.status, self.message, self.success = int(res.status), res.message, res.success
+        self._jac = None
+
+    @property
+    def jac(self):
+        if self._jac is None:
+            self._jac = self._problem.jacobian_uncounted(self.x)
+        return self._jac
+
+
 def _run_least_squares(problem, u0, *, method, max_nfev, ftol, xtol, gtol, diff_step,
-                       tr_solver):
+                       tr_solver, x_scale="jac"):
     cache = {}
 
     def fun(u):
@@ -97,10 +212,48 @@ def _run_least_squares(problem, u0, *, method, max_nfev, ftol, xtol, gtol, diff_
         tr_solver = "exact"  # scipy's lsmr subproblem indexes a 2-D subspace: one parameter fails
     try:
         return least_squares(fun, u0, jac=jac, bounds=(0.0, 1.0), method=method,
-                             x_scale="jac", ftol=ftol, xtol=xtol, gtol=gtol, max_nfev=max_nfev,
-                             tr_solver=tr_solver)
+                             x_scale=x_scale, ftol=ftol, xtol=xtol, gtol=gtol,
+                             max_nfev=max_nfev, tr_solver=tr_solver)
     except BudgetExhausted:
         return None
+
+
+def noise_level(F) -> float:
+    """The white-noise RMS of a sampled signal relative to its standard deviation, from the
+    median absolute deviation of its second differences (``F[k+1] - 2 F[k] + F[k-1]``
+    carries 6 times the noise variance and little of a signal sampled faster than it
+    changes; the median ignores the few samples of fast transients, such as reversals)."""
+    F = np.asarray(F, float)
+    sd = float(np.std(F))
+    if F.size < 5 or not sd > 0:
+        return np.nan
+    d2 = F[2:] - 2.0 * F[1:-1] + F[:-2]
+    mad = float(np.median(np.abs(d2 - np.median(d2))))
+    return 1.4826 * mad / np.sqrt(6.0) / sd
+
+
+def at_noise_floor(problem, cost):
+    """A short reason if ``cost`` (NRMSE) equals the measured force's noise level
+    (:func:`noise_level`) within the estimate's statistical spread (2.5/sqrt(N); at least
+    2 %), else ``None``. Below the band the estimate is the signal's curvature, not noise
+    (noise-free data): no conclusion."""
+    data = getattr(problem.objective, "data", None)
+    if data is None or not hasattr(data, "t"):
+        return None  # not a time series (a steady-state map): no noise estimate
+    F = np.asarray(data.F, float)
+    level = noise_level(F)
+    if not (np.isfinite(level) and level > 0 and np.isfinite(cost)):
+        return None
+    tol = max(0.02, 2.5 / np.sqrt(F.size))
+    if abs(cost / level - 1.0) <= tol:
+        return f"NRMSE {cost:.4g}, noise {level:.4g}"
+    return None
+
+
+#: above this size of the N x D Jacobian (8 bytes a number) the default runs every least
+#: squares on the normal equations (scipy's trust region on the long residual holds several
+#: copies of the Jacobian: about 1 GB at 2,000,000 samples and 8 parameters)
+LONG_JACOBIAN_BYTES = 64 * 2**20
 
 
 class LeastSquares(Algorithm):
@@ -133,41 +286,121 @@ class MultistartLeastSquares(Algorithm):
     Fast where one basin dominates (the first run converges and the trace reaches the optimum
     early) and robust where the LuGre family has a few basins (Stribeck velocity vs.
     stiffness trade-off): the extra starts check them.
+
+    With an analytic Jacobian (the classic LuGre's forward sensitivities) the model's
+    current values are tried first (``solver="auto"``): a run of at most ``probe_nfev``
+    passes on the compressed normal equations (:func:`compress_normal_equations`: one
+    sensitivity pass per point, D x D algebra, the exact trust-region subproblem in the unit
+    cube's own scale). A run that converges to the data's noise level
+    (:func:`at_noise_floor`; or below ``target``) with no parameter on a face of the box
+    ends the search: no other basin can fit measurably better, so neither the screening nor
+    the other starts run. Otherwise the search runs as above, its least squares on the
+    N-long residual with the analytic Jacobian (the previous default's steps, without its
+    finite differences). The noise-level test after the first full run skips the other
+    starts too (``noise_stop=False``: never stop early). ``solver="normal"``: every run on
+    the compressed normal equations (memory O(D^2) for any record length; its steps differ
+    from the long residual's where scipy's iterative subproblem solver stops early);
+    ``"scipy"``: no start from the guess, the long residual everywhere. A record whose
+    N x D Jacobian exceeds :data:`LONG_JACOBIAN_BYTES` (1,000,000 samples at 8 parameters)
+    runs as ``"normal"`` under ``"auto"``: its memory stays O(N), not O(N D) per copy.
     """
     name = "multistart_ls"
     kind = "local"
     steppable = False
     defaults = dict(n_screen=None, n_starts=3, max_nfev=15, ftol=1e-10, xtol=1e-10,
-                    gtol=1e-10, polish_nfev=200, target=1e-9, tr_solver="lsmr")
-    source = "Latin hypercube (scipy.stats.qmc) + scipy.optimize.least_squares"
+                    gtol=1e-10, polish_nfev=200, target=1e-9, tr_solver="lsmr",
+                    solver="auto", noise_stop=True, probe_nfev=20)
+    #: where each run's least squares works: (the start from the guess, the other runs)
+    SOLVERS = {"auto": ("normal", "scipy"), "normal": ("normal", "normal"),
+               "scipy": (None, "scipy")}
+    source = ("Latin hypercube (scipy.stats.qmc) + scipy.optimize.least_squares (analytic "
+              "LuGre Jacobian; its normal equations for the start from the guess)")
 
     def _ls(self, problem, u, nfev):
         return run_least_squares(problem, u, max_nfev=nfev, ftol=self.ftol, xtol=self.xtol,
-                                 gtol=self.gtol, tr_solver=self.tr_solver)
+                                 gtol=self.gtol, tr_solver=self.tr_solver,
+                                 solver=self._solvers(problem)[1])
+
+    def _solvers(self, problem):
+        try:
+            pair = self.SOLVERS[self.solver]
+        except KeyError:
+            raise ValueError(f"solver = {self.solver!r}: choose from "
+                             f"{sorted(self.SOLVERS)}") from None
+        if self.solver == "auto" and getattr(problem, "has_analytic_jacobian", False):
+            data = getattr(problem.objective, "data", None)
+            n = len(data.F) if data is not None else 0
+            if 8 * n * problem.dim > LONG_JACOBIAN_BYTES:
+                # a long record: the N x D Jacobian (and scipy's copies of it) would dominate
+                # the memory; every run on the normal equations instead
+                return self.SOLVERS["normal"]
+        return pair
+
+    def _settled(self, problem, res):
+        """Why the search may stop at ``res`` (None: it may not)."""
+        if problem.best_cost < self.target:
+            return f"cost below {self.target:g}"
+        if not self.noise_stop or res.status <= 0:
+            return None
+        x = np.asarray(res.x, float)
+        if np.any((x <= 1e-6) | (x >= 1 - 1e-6)):
+            return None  # a parameter on the box: the basin may be the box's, not the data's
+        return at_noise_floor(problem, problem.best_cost)
 
     def run(self, problem, rng, u0, progress=None):
         D = problem.dim
         n_screen = self.n_screen or max(64, 16 * D)
         u0 = np.clip(np.asarray(u0, float), 0, 1)
-        U = np.vstack([u0[None, :], latin_hypercube(n_screen, D, rng)])
         history = []
+        if self.probe_nfev and self._solvers(problem)[0] \
+                and getattr(problem, "has_analytic_jacobian", False):
+            # the guess first, with the exact (D x D) trust-region subproblem (cheapest per
+            # iteration) in the unit cube's own scale (x_scale=1: a trust region scaled by
+            # the Jacobian's column norms would stretch along nearly flat directions and
+            # carry such a parameter to the box); kept only if it settles (then no other
+            # basin fits measurably better), otherwise the search below runs as it would
+            # without it
+            probe = run_least_squares(problem, u0, max_nfev=self.probe_nfev, ftol=self.ftol,
+                                      xtol=self.xtol, gtol=self.gtol, tr_solver="exact",
+                                      solver=self._solvers(problem)[0], x_scale=1.0)
+            history.append(problem.best_cost)
+            if probe is None:
+                return {"message": "evaluation budget exhausted", "history": history}
+            why = self._settled(problem, probe)
+            if why is not None:
+                if progress is not None:
+                    progress(1, f"start from the guess cost={problem.best_cost:.4g} ({why}): "
+                                f"done")
+                return {"jac": _jacobian_of(probe), "u": probe.x, "history": history,
+                        "message": f"{probe.message} Search ended after the start from the "
+                                   f"guess: {why}."}
+        U = np.vstack([u0[None, :], latin_hypercube(n_screen, D, rng)])
         try:
             c = problem.evaluate(U)
         except BudgetExhausted:
-            return {"message": "evaluation budget exhausted during screening"}
+            return {"message": "evaluation budget exhausted during screening",
+                    "history": history}
         history.append(problem.best_cost)
         order = [int(i) for i in np.argsort(c, kind="stable")]
         if 0 not in order[:self.n_starts + 1]:
             order = order[:self.n_starts] + [0]  # the user's guess is always tried
         best = self._ls(problem, U[order[0]], self.polish_nfev)
         history.append(problem.best_cost)
+        n_total = len(order[:self.n_starts + 1])
         if progress is not None:
-            progress(1, f"start 1/{len(order[:self.n_starts + 1])} cost={problem.best_cost:.4g}")
+            progress(1, f"start 1/{n_total} cost={problem.best_cost:.4g}")
         if best is None:
             return {"message": "evaluation budget exhausted", "history": history}
+        skip = self._settled(problem, best)
         for k, i in enumerate(order[1:self.n_starts + 1], start=2):
             if problem.best_cost < self.target or problem.exhausted:
                 break  # exact fit already: the other starts add nothing
+            if skip is not None:
+                # the first run converged to the data's noise level: no other basin can
+                # fit measurably better
+                if progress is not None:
+                    progress(1, f"other starts skipped: {skip}")
+                break
             res = self._ls(problem, U[i], self.max_nfev)
             if res is not None and res.cost < best.cost * (1 - 1e-6):
                 res = self._ls(problem, res.x, self.polish_nfev) or res  # a better basin
@@ -175,6 +408,6 @@ class MultistartLeastSquares(Algorithm):
                     best = res
             history.append(problem.best_cost)
             if progress is not None:
-                progress(1, f"start {k}/{len(order[:self.n_starts + 1])} "
-                            f"cost={problem.best_cost:.4g}")
-        return {"jac": best.jac, "u": best.x, "message": best.message, "history": history}
+                progress(1, f"start {k}/{n_total} cost={problem.best_cost:.4g}")
+        return {"jac": _jacobian_of(best), "u": best.x, "message": best.message,
+                "history": history}

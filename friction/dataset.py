@@ -14,6 +14,7 @@ gives the same message with command-line hints (``--scale x=1e-3``), which the
 from __future__ import annotations
 
 import csv
+import io
 import math
 import os
 import re
@@ -501,7 +502,91 @@ def _to_floats(cells: list[str], decimal_comma: bool) -> np.ndarray | None:
     return out
 
 
-def load_csv(path, mapping=None, scale=None, check_units: bool = True) -> Dataset:
+#: bytes read per block by the streaming CSV reader (:func:`_read_numeric_csv`)
+CSV_BLOCK = 8 * 2**20
+
+
+def _read_numeric_csv(path, progress=None):
+    """A plain numeric CSV read in blocks without holding its text: ``(columns, notes)``,
+    or ``None`` when the file needs the general reader (quotes, decimal commas, UTF-16,
+    non-numeric or empty cells, ragged or blank-but-spaced lines: that reader reads them
+    or names the problem).
+
+    The separator and header come from the first lines as the general reader takes them
+    (:func:`_sniff`); the body is parsed block by block (``numpy.loadtxt``: C speed, memory
+    of one block plus the result), with ``progress(0, info)`` after each block of a file
+    longer than one block.
+    """
+    size = os.path.getsize(path)
+    with open(path, "rb") as fh:
+        head = fh.read(min(size, 1 << 16))
+        if head.startswith((b"\xff\xfe", b"\xfe\xff")) or b'"' in head:
+            return None
+        cut = head.rfind(b"\n")
+        if cut < 0:
+            return None
+        text, notes = _decode(head[:cut + 1])
+        if "latin-1 text" in notes:
+            return None
+        lines = [ln for ln in text.splitlines() if ln.strip()]
+        if len(lines) < 2:
+            return None
+        sep = _sniff(lines)
+        split = (lambda ln: ln.split()) if sep is None else \
+            (lambda ln: next(csv.reader([ln], delimiter=sep)))
+        header = [h.strip().strip('"').strip() for h in split(lines[0])]
+        if all(_to_floats([h], True) is not None for h in header if h):
+            return None  # no header: the general reader says so
+        for ln in lines[1:21]:
+            cells = split(ln)
+            if len(cells) != len(header) or _to_floats(cells, False) is None \
+                    or any(not c.strip() for c in cells):
+                return None
+        # the body starts after the header line (and a byte-order mark)
+        start = head.index(b"\n") + 1
+        while head[start:start + 1] in (b"\r", b"\n") and start < cut:
+            start += 1
+        fh.seek(start)
+        blocks, rest, done = [], b"", start
+        kw = dict(delimiter=sep, comments=None, ndmin=2, dtype=float, encoding="latin-1")
+        while True:
+            raw = fh.read(CSV_BLOCK)
+            buf = rest + raw
+            if raw:
+                end = buf.rfind(b"\n")
+                if end < 0:
+                    rest = buf
+                    continue
+                chunk, rest = buf[:end + 1], buf[end + 1:]
+            else:
+                chunk, rest = buf, b""
+            if chunk.strip():
+                try:
+                    arr = np.loadtxt(io.BytesIO(chunk), **kw)
+                except ValueError:
+                    return None
+                if arr.shape[1] != len(header):
+                    return None
+                blocks.append(arr)
+            done += len(chunk)
+            if progress is not None and chunk and size > CSV_BLOCK:  # a long file
+                rows = sum(b.shape[0] for b in blocks)
+                progress(0, f"read {100.0 * done / max(size, 1):5.1f} % ({rows} rows)")
+            if not raw:
+                break
+    if not blocks:
+        return None
+    data = np.concatenate(blocks).T.copy() if len(blocks) > 1 else blocks[0].T.copy()
+    del blocks
+    if sep is None:
+        notes.append("whitespace-separated")
+    elif sep != ",":
+        notes.append({";": "';'-separated", "\t": "tab-separated", "|": "'|'-separated"}[sep])
+    return {h: data[j] for j, h in enumerate(header)}, notes
+
+
+def load_csv(path, mapping=None, scale=None, check_units: bool = True,
+             progress=None) -> Dataset:
     """Load a measurement CSV (header row, SI units; the contract's is comma separated).
 
     Separators ``,``, ``;``, tab and ``|`` (or runs of whitespace) are detected from the
@@ -520,10 +605,19 @@ def load_csv(path, mapping=None, scale=None, check_units: bool = True) -> Datase
         column given a factor (even 1) is never blamed by the unit check.
     check_units : bool
         Run :meth:`Dataset.check_units`.
+    progress : callable(n, info), optional
+        Called (``n = 0``) after each block of a file longer than one block (a plain
+        numeric CSV is read in blocks of :data:`CSV_BLOCK` bytes: memory of one block plus
+        the columns).
     """
     path = os.fspath(path)
     if not os.path.exists(path):
         raise FileNotFoundError(f"no such data file: {path}")
+    fast = _read_numeric_csv(path, progress)
+    if fast is not None:
+        arrays, notes = fast
+        return _apply(arrays, mapping, scale, os.path.basename(path), check_units,
+                      tuple(notes))
     with open(path, "rb") as fh:
         text, notes = _decode(fh.read())
     lines = [ln for ln in text.splitlines() if ln.strip()]
@@ -640,9 +734,10 @@ _MAT_COLUMN = re.compile(r"^\s*(?P<var>\w+)\s*\[\s*(?::\s*,\s*(?P<rows>-?\d+)|"
                          r"(?P<cols>-?\d+)\s*,\s*:)\s*\]\s*$")
 
 
-def load_dataset(path, mapping=None, scale=None, check_units: bool = True):
+def load_dataset(path, mapping=None, scale=None, check_units: bool = True, progress=None):
     """Load CSV or ``.mat`` by extension: a :class:`Dataset`, or a :class:`SteadyStateMap`
-    for a file with columns v and F and no t."""
+    for a file with columns v and F and no t. ``progress(n, info)``: lines while a long
+    CSV is read (:func:`load_csv`)."""
     if os.fspath(path).lower().endswith(".mat"):
         return load_mat(path, mapping, scale, check_units)
-    return load_csv(path, mapping, scale, check_units)
+    return load_csv(path, mapping, scale, check_units, progress=progress)

@@ -93,6 +93,15 @@ def static_from_json(path, model_name: str):
     return values, params.get("shape")
 
 
+def _load_progress(path, quiet):
+    """Progress lines while a long file is read (none with ``--quiet``)."""
+    if quiet:
+        return None
+    import os
+    from frictionlab.progress import Progress
+    return Progress(label=f"load {os.path.basename(path)}")
+
+
 def run_identify_cli(args) -> int:
     """Entry point used by ``frictionlab identify`` (see :mod:`frictionlab.cli`)."""
     from . import identify
@@ -125,10 +134,13 @@ def run_identify_cli(args) -> int:
                              f"{args.model}")
         fixed = {**values, **fixed}  # an explicit --fix wins
         model = law
-    data = load_dataset(files[0], mapping=mapping, scale=scale)
+    quiet = getattr(args, "quiet", False)
+    data = load_dataset(files[0], mapping=mapping, scale=scale,
+                        progress=_load_progress(files[0], quiet))
     validation = None
     if len(files) == 2:
-        validation = load_dataset(files[1], mapping=mapping, scale=scale)
+        validation = load_dataset(files[1], mapping=mapping, scale=scale,
+                                  progress=_load_progress(files[1], quiet))
     min_speed = getattr(args, "min_speed", None)
     if min_speed is not None:
         if not isinstance(data, SteadyStateMap):
@@ -137,7 +149,6 @@ def run_identify_cli(args) -> int:
         data = data.sliding(min_speed)
         if isinstance(validation, SteadyStateMap):
             validation = validation.sliding(min_speed)
-    quiet = getattr(args, "quiet", False)
     result = identify(data, model, algorithm=getattr(args, "algorithm", None),
                       seed=getattr(args, "seed", 0), max_evals=max_evals,
                       validation=validation, progress=not quiet,

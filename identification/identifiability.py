@@ -98,7 +98,9 @@ class _Fit:
         X = self.space.to_physical(U)
         P = np.asarray(self.obj.predict(X), float)
         self.n_evals += U.shape[0]
-        return (P - self.Fd[None, :]) * self.rs
+        R = np.subtract(P, self.Fd[None, :])  # one k x N array, not two (long records)
+        R *= self.rs
+        return R
 
     def cost2_of(self, U) -> np.ndarray:
         R = self.residuals(U)
@@ -112,9 +114,11 @@ def _jacobian(fit, u, r0, cols=None) -> np.ndarray:
     h = np.array([-_JAC_STEP if u[j] + _JAC_STEP > 1.0 else _JAC_STEP for j in cols])
     U = np.repeat(u[None, :], len(cols), axis=0)
     U[np.arange(len(cols)), cols] += h
-    R = fit.residuals(U)
-    J = (R - r0[None, :]) / h[:, None]
-    return np.where(np.isfinite(J), J, 0.0).T
+    J = fit.residuals(U)  # the same numbers as before, worked out in place
+    J -= r0[None, :]
+    J /= h[:, None]
+    J[~np.isfinite(J)] = 0.0
+    return J.T
 
 
 # ------------------------------------------------------------------------------ profile
@@ -201,6 +205,16 @@ def _profile_side(fit, j, sgn, thresh2, step0, budget_left):
     return float(u_prev[j]), True, best, False
 
 
+def _singular(Jn):
+    """Singular values and right singular vectors of a tall N x k matrix, from the SVD of
+    its k x k triangular factor (QR): the same numbers without the N x k left factor and
+    its workspace (a long record's Jacobian would be held twice more)."""
+    if Jn.shape[0] > Jn.shape[1]:
+        Jn = np.linalg.qr(Jn, mode="r")
+    _, S, Vt = np.linalg.svd(Jn, full_matrices=False)
+    return S, Vt
+
+
 def _gn_covariance(Jth, cols, s2, names):
     """Gauss-Newton covariance of the columns ``cols`` (bool mask) of the Jacobian in
     domain coordinates, by SVD of the column-normalised matrix: singular values below
@@ -216,7 +230,7 @@ def _gn_covariance(Jth, cols, s2, names):
     cn = np.linalg.norm(Jth, axis=0)
     idx = np.flatnonzero(cols)
     Jn = Jth[:, idx] / cn[idx]
-    _, S, Vt = np.linalg.svd(Jn, full_matrices=False)
+    S, Vt = _singular(Jn)
     tol = S[0] * 1e-7 if S.size and S[0] > 0 else np.inf
     keep = S > tol
     Vk = Vt[keep]
@@ -794,7 +808,7 @@ def assess_identifiability(objective, space, u, cost, *, model, data, jac=None,
     if live.sum() >= 2:
         idx = np.flatnonzero(live)
         Jn = Jth[:, idx] / cn[idx]
-        _, S, Vt = np.linalg.svd(Jn, full_matrices=False)
+        S, Vt = _singular(Jn)
         th0 = np.where(logc, np.log(np.where(logc, x, 1.0)), x)
         for i in range(S.size - 1, -1, -1):  # the flattest direction first
             if S[0] == 0:

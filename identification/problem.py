@@ -10,9 +10,9 @@ on a resume.
 """
 from __future__ import annotations
 
-import time
-
 import json
+import math
+import time
 
 import numpy as np
 
@@ -261,11 +261,12 @@ class Problem:
             return None
         c2, g, H = out
         self.n_evals += 1
-        c = float(np.sqrt(c2)) if np.isfinite(c2) and np.all(np.isfinite(H)) else np.inf
-        self._track(u[None, :], np.array([c]))
+        c = math.sqrt(c2) if math.isfinite(c2) and np.isfinite(H).all() else math.inf
+        if c < self.best_cost:
+            self._track(u[None, :], np.array([c]))
         self.tick()
-        if not np.isfinite(c):
-            return np.inf, np.zeros_like(g), np.zeros_like(H)
+        if not math.isfinite(c):
+            return math.inf, np.zeros_like(g), np.zeros_like(H)
         s = self._dx_du(u, x)
         return float(c2), g * s, H * np.outer(s, s)
 

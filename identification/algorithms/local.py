@@ -13,7 +13,10 @@ covariance).
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
+from numba import njit
 from scipy.optimize import least_squares
 
 from ..problem import BudgetExhausted
@@ -114,21 +117,40 @@ def compress_normal_equations(c2, g, H):
     the short residual is ``[Q^T r, sqrt(c2 - |Q^T r|^2)]`` and its Jacobian ``[R; 0]``.
     Its squared norm is ``c2``, and ``R^T R = H``, ``[R; 0]^T [Q^T r, .] = g``: a
     trust-region method sees the same cost, gradient and quadratic model as on the long
-    residual, so it takes the same steps.
+    residual.
     """
+    return _compress(float(c2), np.ascontiguousarray(g, float),
+                     np.ascontiguousarray(H, float))
+
+
+@njit(cache=True)
+def _compress(c2, g, H):
     D = g.size
-    d = np.sqrt(np.maximum(np.diag(H), 0.0))
-    d = np.where(d > 0, d, 1.0)
-    Hs = H / np.outer(d, d)
-    w, V = np.linalg.eigh(0.5 * (Hs + Hs.T))
-    keep = w > max(float(w[-1]), 0.0) * 1e-14
-    sw = np.sqrt(np.where(keep, w, 0.0))
-    q = np.where(keep, (V.T @ (g / d)) / np.where(keep, sw, 1.0), 0.0)
+    d = np.empty(D)
+    for i in range(D):
+        d[i] = math.sqrt(H[i, i]) if H[i, i] > 0.0 else 1.0
+    Hs = np.empty((D, D))
+    for i in range(D):
+        for j in range(D):
+            Hs[i, j] = 0.5 * (H[i, j] + H[j, i]) / (d[i] * d[j])
+    w, V = np.linalg.eigh(Hs)
+    floor = max(w[D - 1], 0.0) * 1e-14
     f = np.empty(D + 1)
-    f[:D] = q
-    f[D] = np.sqrt(max(c2 - float(q @ q), 0.0))
     Jc = np.zeros((D + 1, D))
-    Jc[:D] = (sw[:, None] * V.T) * d[None, :]
+    qq = 0.0
+    for k in range(D):
+        if w[k] > floor:
+            sw = math.sqrt(w[k])
+            a = 0.0
+            for i in range(D):
+                a += V[i, k] * g[i] / d[i]
+            f[k] = a / sw
+            qq += f[k] * f[k]
+            for j in range(D):
+                Jc[k, j] = sw * V[j, k] * d[j]
+        else:
+            f[k] = 0.0
+    f[D] = math.sqrt(max(c2 - qq, 0.0))
     return f, Jc
 
 

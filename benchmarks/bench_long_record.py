@@ -18,7 +18,9 @@ Results (2,000,000 rows, 187 MB; 2-core machine shared with other jobs: a wall t
 ==========================  ===========  ============  ===============================
 command                     peak memory  wall          notes
 ==========================  ===========  ============  ===============================
-identify, before (735f957)  6.43 GB      8:50 loaded   10 s silent load; fit 491 s
+identify, before (735f957)  6.43 GB      4:19 quiet    silent load; fit 239 s, its first
+                                                       progress line after 115 s (8:50
+                                                       and 491 s loaded)
 identify, now               1.22 GB      12 s quiet    load 2.6 s with progress; fit
                                                        2.5 s (11 evaluations, the start
                                                        from the guess reaches the noise)

@@ -210,7 +210,13 @@ class MEMaster:
             time: the motion slides along a switching surface there).
         """
         from scipy.integrate import solve_ivp
-        t_eval = np.asarray(t_eval, dtype=float)
+        t_eval = np.asarray(t_eval, dtype=float).ravel()
+        if t_eval.size < 2 or not np.all(np.isfinite(t_eval)):
+            raise ValueError("t_eval: need at least 2 finite output times [s]")
+        if np.any(np.diff(t_eval) <= 0):
+            i = int(np.argmax(np.diff(t_eval) <= 0))
+            raise ValueError(f"t_eval must be strictly increasing: t_eval[{i + 1}] = "
+                             f"{t_eval[i + 1]!r} <= t_eval[{i}] = {t_eval[i]!r}")
         for u in self.units.values():
             u.fmu.setTime(float(t_eval[0]))
             u.fmu.enterInitializationMode()

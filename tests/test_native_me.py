@@ -164,3 +164,16 @@ def test_me_instance_refuses_cs_calls_and_wrong_sizes(ndir):
         fmu.setContinuousStates(nan, 1)
     fmu.terminate()
     fmu.freeInstance()
+
+
+def test_me_master_refuses_bad_output_times_and_connections(ndir):
+    path = ndir / f"lugre{SUFFIX}.fmu"
+    with MEMaster({"law": path}, [], inputs={"law.v": lambda t: 1e-3}) as M:
+        for bad, match in (([0.0, 0.2, 0.1], "strictly increasing"),
+                           ([0.0, float("nan")], "finite"), ([0.0], "at least 2")):
+            with pytest.raises(ValueError, match=match):
+                M.simulate(bad)
+    with pytest.raises(ValueError, match="not an input"):
+        MEMaster({"mass": ndir / f"mass{SUFFIX}.fmu", "law": path}, [("law.F", "mass.x")])
+    with pytest.raises(KeyError, match="no variable"):
+        MEMaster({"law": path}, [], inputs={"law.nonsense": lambda t: 0.0})

@@ -5,9 +5,12 @@ far it shrinks once that effect is added, measured on held-out data.
 >>> report = diagnose("fit.csv", "lugre", validation="heldout.csv")   # doctest: +SKIP
 >>> report["verdict"]                                                  # doctest: +SKIP
 """
-from .core import BASE_NAMES, DiagnosisReport, diagnose, diagnose_trajectory, noise_floor
+from .core import diagnose
 from .effects import CANDIDATES, EFFECT_NAMES
-from .trajectory import EffectLaw, TrajectoryRecord, record_from_result, simulate_record
+from .report import DiagnosisReport
+from .trajectory import (BASE_NAMES, EffectLaw, TrajectoryRecord, diagnose_trajectory,
+                         record_from_result, simulate_record)
+from .verdict import noise_floor
 
 __all__ = ["diagnose", "diagnose_trajectory", "DiagnosisReport", "CANDIDATES", "EFFECT_NAMES", "noise_floor",
            "BASE_NAMES", "TrajectoryRecord", "record_from_result", "simulate_record",

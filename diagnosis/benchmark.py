@@ -739,7 +739,7 @@ def truth_shrink(data: Dataset, truth: np.ndarray, report, base_truth=None) -> d
 
 
 def _score(case_effect, exp, rep, data, truth, seconds) -> dict:
-    from .core import NOISE_RATIO
+    from .verdict import NOISE_RATIO
     from .significance import improvement_z, z_threshold
     cause = rep["verdict"]["cause"]
     loc = localise(rep)

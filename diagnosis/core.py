@@ -13,31 +13,14 @@ Procedure
 5. Verdict: ``none`` if the base residual is consistent with the noise floor; the best effect
    if it closes a clear share of the gap; ``unexplained`` if a structured gap stays.
 
-No name without practical size
-------------------------------
-A name needs the effect to *matter*, not only to be detectable (:func:`practical_size`).
-Besides closing a third of the held-out gap above the noise floor, the named candidate must
-
-* improve on the base significantly on the held-out samples (paired Diebold-Mariano
-  statistic, :mod:`.significance`, at a family-wise 1 %) - on every path of the verdict;
-* leave an **imprint** - the RMS of the difference between its and the base's held-out
-  predictions, as NRMSE - of at least :data:`IMPRINT_NOISE` x the noise floor and
-  :data:`IMPRINT_GAP` x the base's held-out NRMSE (the total gap): an effect that moves
-  the prediction by less than half the noise, or by a sliver of what is wrong with
-  it, is no practical part of the model (issue 15's clean record named ``delay``: imprint
-  about 0.18 x the gap);
-* have fitted parameters of a physical size of its own (:meth:`.effects.Candidate.
-  practical`): a ``delay`` shorter than :attr:`.effects.Delay.MIN_SAMPLES` samples is what
-  sampling and differentiation make (an integrating converter and backward differences
-  each shift a record by half a sample), not a delay of the force channel.
-
-A candidate that fails is not named; the best one that passes is, if it closes a third of
-the gap above the floor; otherwise the verdict is ``unexplained`` (a structured gap) or
-``none`` (within the noise).
+Verdict
+-------
+The rules that name a cause (noise floor, ranking, practical size, the decision) are
+shared with the trajectory level and live in :mod:`.verdict`; the report's shape in
+:mod:`.report`. Both are re-exported here.
 """
 from __future__ import annotations
 
-import json
 import time
 
 import numpy as np
@@ -49,20 +32,16 @@ from friction.metrics import nrmse
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
-from .significance import improvement_z, z_threshold
+from .report import DiagnosisReport, report_sections
+from .significance import improvement_z
 from .transfer import transfer_applicable, transfer_scores
+# the verdict rules both levels share, re-exported (their public names were this module's)
+from .verdict import (IMPRINT_GAP, IMPRINT_NOISE, MIN_EXCESS_CLOSED, NOISE_RATIO,  # noqa: F401
+                      TIE, decide, noise_floor, practical_size, rank)
 
-__all__ = ["diagnose", "DiagnosisReport", "noise_floor", "BASE_NAMES", "extrapolation", "decide",
+__all__ = ["diagnose", "DiagnosisReport", "noise_floor", "extrapolation", "decide",
            "report_sections", "BaseFitError", "BASE_FIT_LIMIT", "base_free_names", "warm_up",
            "MIN_SCORED_SAMPLES", "practical_size", "IMPRINT_NOISE", "IMPRINT_GAP"]
-
-#: parameters of each law that the *trajectory* level screens for its base re-fit (a
-#: "standard" configuration: symmetric, Gaussian alpha = 2, no offset). The force level's
-#: base is identify's default law instead (:func:`base_free_names`)
-BASE_NAMES = {
-    "lugre": ["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs"],
-    "stribeck": ["sigma2", "Fc", "Fs", "vs"],
-}
 
 #: a base whose NRMSE on its own fit record reaches this (worse than the record's mean
 #: force, NRMSE 1) stops the diagnosis: effects scored against it would be credited with
@@ -101,124 +80,6 @@ def warm_up(record) -> int:
     if len(record) == 0 or record.v[0] != 0.0:
         return 0
     return min(WARM_UP_MAX, int(len(record) * WARM_UP_SHARE))
-
-#: a candidate must close at least this share of the held-out gap *above the noise floor*
-#: to be named. Right-family candidates whose form differs from the truth's close 0.38-0.95
-#: of it in the withheld-effect benchmark, effects outside the library at most 0.07 (an
-#: electrical ripple 0.001, a slower current loop at the trajectory level 0.064): a third
-#: keeps a 5x margin above the latter; the report gives the part left unexplained
-MIN_EXCESS_CLOSED = 1.0 / 3.0
-#: candidates within this much closed excess of the best count as tied: the one with fewer
-#: parameters is named (an acceleration term can mimic a mass error, not the reverse)
-TIE = 0.02
-#: base residual within this factor of the noise floor counts as noise
-NOISE_RATIO = 1.2
-#: second differences of the residual beyond this many robust standard deviations are
-#: jumps of the residual (structure), not noise, in :func:`noise_floor`
-NOISE_CLIP = 5.0
-
-
-#: smallest held-out imprint of a named effect, as a share of the noise floor [-]: the RMS
-#: of what the effect changes in the prediction must reach half the noise's. At a third,
-#: 2 of 224 clean records would have been named (drift, imprints 0.37 and 0.45 x the
-#: floor, z 3.0 and 3.5); a Lorentzian curve under a Gaussian base that frees its exponent
-#: (0.39 x the floor, z 8.8) is detected but not named
-IMPRINT_NOISE = 0.5
-#: smallest held-out imprint of a named effect, as a share of the base's held-out NRMSE
-#: (the total gap) [-]
-IMPRINT_GAP = 0.25
-
-
-def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> str:
-    """Why ``effect`` (a ranked entry of :func:`diagnose`) may not be named whatever share of
-    the gap it closes; '' when it may.
-
-    Only the top-ranked candidate, or one within :data:`TIE` of it, can be named (see
-    :func:`decide`). Checks, where the entry carries the figures (the trajectory level and transfer scores
-    have none and keep the share rule alone): the paired statistic ``significance_z``
-    reaches the one-sided quantile of :data:`~diagnosis.significance.FAMILY_LEVEL` split
-    over ``n_tests`` candidates; the held-out ``imprint`` (NRMSE of the candidate's minus
-    the base's prediction) reaches :data:`IMPRINT_NOISE` x ``floor`` and
-    :data:`IMPRINT_GAP` x ``before``; the candidate's own ``size_reason`` (its fitted
-    parameters below a physical size, :meth:`diagnosis.effects.Candidate.practical`) is
-    empty.
-    """
-    if "significance_z" in effect:
-        z_need = z_threshold(max(int(n_tests), 1))
-        if not effect["significance_z"] >= z_need:
-            return (f"its held-out improvement is not significant (paired z = "
-                    f"{effect['significance_z']:.1f} < {z_need:.2f})")
-    if "imprint" in effect:
-        imp = effect["imprint"]
-        if imp < IMPRINT_NOISE * floor:
-            return (f"its held-out imprint (NRMSE {imp:.3g}) is below {IMPRINT_NOISE:g} x the "
-                    f"noise floor {floor:.3g}")
-        if imp < IMPRINT_GAP * before:
-            return (f"its held-out imprint (NRMSE {imp:.3g}) is below {IMPRINT_GAP:g} x the "
-                    f"held-out gap {before:.3g}")
-    if effect.get("size_reason"):
-        return effect["size_reason"]
-    return ""
-
-
-def noise_floor(data, r) -> float:
-    """Measurement-noise level of a residual, as NRMSE [-].
-
-    Second differences cancel any smooth (modelled or unmodelled) structure, so
-    std(diff2(r)) / sqrt(6) estimates white noise. The few second differences that straddle a
-    jump of the residual (a velocity reversal under a stiff bristle, a stick-slip transition)
-    are structure, not noise, and would dominate a plain std; so the differences are
-    winsorised at :data:`NOISE_CLIP` robust (MAD) standard deviations first. Gaussian noise
-    keeps its std (a 5-sigma clip changes it by < 1e-5); heavy-tailed measurement noise keeps
-    most of its tails, unlike a pure MAD estimate.
-    """
-    sd = float(np.std(data.F)) or 1.0
-    d2 = np.diff(np.asarray(r, float), 2)
-    if d2.size < 3:
-        return 0.0
-    centred = d2 - np.median(d2)
-    robust = 1.4826 * float(np.median(np.abs(centred)))
-    if robust > 0:
-        centred = np.clip(centred, -NOISE_CLIP * robust, NOISE_CLIP * robust)
-    est = float(np.std(centred)) / np.sqrt(6.0)
-    return est / sd
-
-
-class DiagnosisReport(dict):
-    """The contract's diagnosis JSON plus details; ``to_json()`` writes it."""
-
-    def to_json(self, path=None, indent=2) -> str:
-        text = json.dumps(self, indent=indent, default=_plain)
-        if path is not None:
-            with open(path, "w") as fh:
-                fh.write(text)
-        return text
-
-    def summary(self) -> str:
-        b, v = self["baseline"], self["verdict"]
-        lines = [f"baseline {b['model']}: fit NRMSE {b['fit']:.4g}, validation NRMSE "
-                 f"{b['validation']:.4g} (noise floor {self['noise_floor']:.3g})",
-                 "where (held-out residual energy):"]
-        for w in self["where"][:4]:
-            lines.append(f"  {w['share'] * 100:5.1f} %  {w['label']}  (NRMSE {w['nrmse']:.3g})")
-        lines.append("which (held-out validation NRMSE before -> after):")
-        for e in self["effects"]:
-            z = f"  z {e['significance_z']:5.1f}" if "significance_z" in e else ""
-            lines.append(f"  {e['name']:15s} {e['validation_before']:.4g} -> "
-                         f"{e['validation_after']:.4g}  gap closed {e['gap_closed'] * 100:6.1f} %"
-                         + z)
-        lines.append(f"verdict: {v['cause']} (gap closed {v['gap_closed'] * 100:.1f} %)")
-        if self.get("transfer"):
-            lines.append(f"scored by transfer: {self['transfer']['explanation']}")
-        return "\n".join(lines)
-
-
-def _plain(o):
-    if isinstance(o, (np.floating, np.integer)):
-        return o.item()
-    if isinstance(o, np.ndarray):
-        return o.tolist()
-    return str(o)
 
 
 def _as_dataset(d, mapping=None, scale=None):
@@ -338,96 +199,6 @@ def extrapolation(fit, val_sets) -> dict:
                         "validation_range": [float(np.min(allv)), float(np.max(allv))],
                         "outside_share": share, "unit": unit}
     return out
-
-
-def decide(effects: list[dict], before: float, floor: float, noise_abs: float = 1e-6) -> dict:
-    """The verdict from held-out scores (shared by the force and trajectory levels).
-
-    ``none`` when the base's held-out NRMSE ``before`` is below ``noise_abs``, or within
-    :data:`NOISE_RATIO` of the noise ``floor`` and no candidate is named. Otherwise the
-    first of ``effects`` (ranked, dicts with ``name``, ``gap_closed``, ``excess_closed``)
-    that closes at least :data:`MIN_EXCESS_CLOSED` of the gap above the floor, lies within
-    :data:`TIE` of the best one's share *and* has practical size (:func:`practical_size`: a
-    significant paired improvement, an imprint of half the noise and a quarter of the gap,
-    a physical size of its own); ``unexplained`` when none does and the gap exceeds the
-    noise ratio.
-
-    Within the noise ratio a candidate can still be named: a long record resolves an effect
-    below the noise's RMS, so the paired statistic and the imprint decide there (effects
-    without the statistic, transfer scores and the trajectory level, are never named within
-    the noise ratio).
-    """
-    if before < noise_abs:
-        return {"cause": "none", "gap_closed": 0.0,
-                "reason": f"held-out residual NRMSE {before:.3g} is below {noise_abs:.3g}"}
-    n = len(effects)
-    within = before <= NOISE_RATIO * floor
-    closing = [e for e in effects if e.get("excess_closed", 0.0) >= MIN_EXCESS_CLOSED]
-    why = {e["name"]: practical_size(e, before, floor, n) for e in closing}
-    if within:
-        # the statistic is needed to name anything inside the noise ratio
-        why.update({e["name"]: why[e["name"]] or "no paired statistic"
-                    for e in closing if "significance_z" not in e})
-    # only the best explanation (or one tied with it, :data:`TIE`) can be named: when it
-    # lacks practical size, a weaker candidate that partly mimics it is not the cause (a
-    # velocity differentiated half a sample late is delay-like, and on a sinusoidal stroke
-    # a position map follows it too)
-    best = effects[0]["excess_closed"] if effects else 0.0
-    named = [e for e in closing if not why[e["name"]] and e["excess_closed"] >= best - TIE]
-    refused = "; ".join(f"{e['name']} closes {100 * e['excess_closed']:.0f} % of the gap above "
-                        f"the floor, but {why[e['name']]}" for e in closing if why[e["name"]])
-    if not named:
-        if within:
-            return {"cause": "none", "gap_closed": 0.0,
-                    "reason": f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x "
-                              f"the noise floor {floor:.3g}, and no candidate has a "
-                              f"significant held-out improvement of practical size"
-                              + (f" ({refused})" if refused else "")}
-        return {"cause": "unexplained",
-                "gap_closed": effects[0]["gap_closed"] if effects else 0.0,
-                "reason": ("no candidate closes a third of the held-out gap above the noise "
-                           "floor" if not closing else
-                           f"no candidate that closes a third of the held-out gap above the "
-                           f"noise floor has practical size ({refused})")}
-    top = named[0]
-    verdict = {"cause": top["name"], "gap_closed": top["gap_closed"],
-               "excess_closed": top["excess_closed"]}
-    for k in ("significance_z", "imprint"):
-        if k in top:
-            verdict[k] = top[k]
-    if within:
-        verdict["reason"] = (f"held-out residual NRMSE {before:.3g} is within {NOISE_RATIO} x the "
-                             f"noise floor {floor:.3g}, but {top['name']} closes "
-                             f"{100 * top['excess_closed']:.0f} % of the gap above it with a "
-                             f"significant held-out improvement (paired z = "
-                             f"{top['significance_z']:.1f} >= {z_threshold(max(n, 1)):.2f}) of "
-                             f"practical size (imprint {top.get('imprint', float('nan')):.3g}): "
-                             f"a small real effect")
-    elif refused:
-        verdict["reason"] = f"named the best candidate of practical size ({refused})"
-    others = [e for e in effects if e is not top]
-    if others and others[0]["excess_closed"] >= top["excess_closed"] - 0.1:
-        verdict["runner_up"] = others[0]["name"]
-    return verdict
-
-
-#: keys of each ranked effect in the report
-EFFECT_KEYS = ("name", "validation_before", "validation_after", "gap_closed", "excess_closed",
-               "significance_z", "imprint", "size_reason", "protocol")
-
-
-def report_sections(where, bands, freq, effects, verdict, sequence, before, final_val,
-                    floor) -> dict:
-    """The report sections both levels share: the contract's ``where``, ``effects`` and
-    ``verdict``, plus ``where_bands``, ``where_frequency``, ``greedy`` and ``noise_floor``."""
-    gap = max(before - floor, 1e-12)
-    left = max(final_val - floor, 0.0)
-    return {"where": where,
-            "effects": [{k: e[k] for k in EFFECT_KEYS if k in e} for e in effects],
-            "verdict": verdict, "where_bands": bands[:12], "where_frequency": freq,
-            "greedy": {"sequence": sequence, "validation_final": final_val,
-                       "unexplained_nrmse": left, "unexplained_share_of_gap": left / gap},
-            "noise_floor": floor}
 
 
 def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed: int = 0,
@@ -577,7 +348,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                                                                  - len(base_names), 0),
                         "fit_before": base_fit, "fit_after": cost,
                         "fitted": comp.describe()})
-    _rank(effects)
+    rank(effects)
 
     # 3b. held-out records at conditions the fit record never saw: transfer scores
     shift = extrapolation(fit, val_sets) if full is None else {}
@@ -607,7 +378,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                             "fit_record_validation_after": e1.get("validation_after"),
                             "fitted": {"transfer_params": tr["params"][name],
                                        **e1.get("fitted", {})}})
-        _rank(effects)
+        rank(effects)
         transfer = {"covariates": sorted(shift), "folds": tr["folds"],
                     "explanation": TRANSFER_NOTE}
 
@@ -725,17 +496,6 @@ def _missing_columns(cand, val_sets) -> str:
     return ""
 
 
-def _rank(effects: list) -> None:
-    """Sort best first; near-ties (within :data:`TIE` of closed excess) go to the simpler."""
-    effects.sort(key=lambda e: -e["gap_closed"])
-    if effects:
-        best = effects[0]["excess_closed"]
-        tied = [e for e in effects if e["excess_closed"] >= best - TIE]
-        simplest = min(tied, key=lambda e: e["n_params"])
-        effects.remove(simplest)
-        effects.insert(0, simplest)
-
-
 def _concat(sets) -> Dataset:
     cat = lambda key: np.concatenate([getattr(s, key) for s in sets])
     load = cat("load") if all(s.load is not None for s in sets) else None
@@ -746,13 +506,3 @@ def _concat(sets) -> Dataset:
                    name="+".join(s.name for s in sets))
 
 
-def diagnose_trajectory(measured, plant, model="lugre", **kwargs):
-    """Trajectory-level diagnosis: candidates put into the plant's friction, the plant
-    re-simulated against measured positions (XML-350 tracking error, valve lift).
-
-    Thin entry point of :func:`diagnosis.trajectory.diagnose_trajectory` (see there for the
-    parameters: ``validation``, ``candidates``, ``engine`` = ``"plant"`` or ``"fmu"``, ...).
-    The report is this module's contract JSON with ``"level": "trajectory"``.
-    """
-    from .trajectory import diagnose_trajectory as _run
-    return _run(measured, plant, model, **kwargs)

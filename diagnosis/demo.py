@@ -63,8 +63,7 @@ def run_stage(out: str, summary: dict, quick: bool = False) -> None:
     write_html(rep, os.path.join(out, "diagnosis_pneumatic.html"))
     res["pneumatic_o_ring"] = {"verdict": rep["verdict"], "baseline": rep["baseline"]}
     say(f"  diagnosis pneumatic O-ring (fit 1 bar, held out 5+7 bar): {rep['verdict']['cause']}")
-    from .core import diagnose_trajectory
-    from .trajectory import write_trajectory_html
+    from .trajectory import diagnose_trajectory, write_trajectory_html
     fit, val, model = xml350_asymmetry_records()
     rep = diagnose_trajectory(fit, model, "lugre", validation=val,
                               candidates=["asymmetry", "inertia", "delay", "stribeck_shape"])

@@ -38,7 +38,7 @@ Procedure (mirrors :func:`diagnosis.diagnose`)
 3. Each candidate: base parameters and the effect's parameters re-identified jointly on the
    fit record (warm start: the base fit; bounded number of plant simulations), scored on
    the held-out record(s); greedy stacking, noise floor and verdict as the force level
-   (constants :data:`diagnosis.core.MIN_EXCESS_CLOSED`, ``TIE``, ``NOISE_RATIO``).
+   (:mod:`diagnosis.verdict`: ``MIN_EXCESS_CLOSED``, ``TIE``, ``NOISE_RATIO``).
 
 The fits are ``least_squares`` (TRF, unit-cube box) with a finite-difference Jacobian that
 is refreshed every third iteration and Broyden-updated in between, and stop after
@@ -88,8 +88,8 @@ from scipy.optimize import least_squares
 from friction import FrictionModel, make_model
 from friction.dataset import Dataset
 
-from .core import (MIN_EXCESS_CLOSED, TIE, BASE_NAMES, DiagnosisReport, decide,
-                   noise_floor, report_sections)
+from .report import DiagnosisReport, report_sections
+from .verdict import MIN_EXCESS_CLOSED, decide, noise_floor, rank
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
 # the parts of the trajectory level, re-exported here (the public names of this module)
@@ -101,7 +101,15 @@ from .trajectory_report import trajectory_figures, write_trajectory_html  # noqa
 __all__ = ["TrajectoryRecord", "record_from_result", "load_record", "parse_experiment",
            "EffectLaw", "simulate_record", "trajectory_figures", "write_trajectory_html",
            "diagnose_trajectory", "FORCE_EFFECTS", "FMU_EFFECTS", "REFERENCE_OUTPUTS",
-           "MASS_PARAMETERS", "TrajectoryModel"]
+           "MASS_PARAMETERS", "TrajectoryModel", "BASE_NAMES"]
+
+#: parameters of each law that the trajectory level screens for its base re-fit (a
+#: "standard" configuration: symmetric, Gaussian alpha = 2, no offset). The force level's
+#: base is identify's default law instead (:func:`diagnosis.core.base_free_names`)
+BASE_NAMES = {
+    "lugre": ["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs"],
+    "stribeck": ["sigma2", "Fc", "Fs", "vs"],
+}
 
 #: residual [-] (in units of the record's scale) of a trial point whose simulation fails
 FAILED_RESIDUAL = 1e3
@@ -581,7 +589,7 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         :class:`fmus.master.Master` (same equations; see the module docstring).
     fit_names : list of str, optional
         Base parameters re-fitted on the trajectory. Default: those of
-        :data:`diagnosis.core.BASE_NAMES` whose +10 % change moves the fit record's
+        :data:`BASE_NAMES` whose +10 % change moves the fit record's
         residual by at least a fifth of the most visible one (at most four).
     max_sims : int
         Plant simulations per candidate fit (the budget that keeps the diagnosis
@@ -931,25 +939,14 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                         "excess_closed": (before - after) / max(before - floor, 1e-12),
                         "n_params": n_par, "fit_before": base_fit, "fit_after": cost,
                         "fitted": {**s.describe(u, ctx), **cost_sims}})
-    effects.sort(key=lambda e: -e["gap_closed"])
-    if effects:  # near-ties go to the simpler effect
-        top = effects[0]["excess_closed"]
-        top_after = effects[0]["validation_after"]
-        # held-out scores closer than a twentieth of the noise floor are a tie too: with a
-        # gap barely above the floor, excess fractions differ by noise alone
-        tied = [effects[0]] + [e for e in effects[1:] if e["excess_closed"] >= top - TIE or (
-            e["validation_after"] <= top_after + TIE_FLOOR * floor
-            and e["excess_closed"] >= MIN_EXCESS_CLOSED)]
-        simplest = min(tied, key=lambda e: e["n_params"])
-        effects.remove(simplest)
-        effects.insert(0, simplest)
-        tied_names = [e["name"] for e in tied if e is not simplest]
+    # near-ties go to the simpler effect; held-out scores closer than a twentieth of the
+    # noise floor are a tie too: with a gap barely above the floor, excess fractions differ
+    # by noise alone
+    tied_names = rank(effects, floor, TIE_FLOOR)
 
     # -- 4. greedy stacking
     sequence = []
     final_val = before
-    if not effects:
-        tied_names = []
     if greedy and effects and effects[0]["excess_closed"] >= MIN_EXCESS_CLOSED:
         used = [effects[0]["name"]]
         cur_val = effects[0]["validation_after"]

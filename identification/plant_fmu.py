@@ -44,10 +44,10 @@ FAILED_RESIDUAL = 1e3
 
 def default_law_names(model: FrictionModel) -> list[str]:
     """Law parameters a trajectory fit identifies by default: the trajectory level's base
-    set (:data:`diagnosis.core.BASE_NAMES`: symmetric, no offset, Stribeck exponent kept),
-    else every free parameter but ``alpha`` and ``b``."""
+    set (:data:`diagnosis.trajectory.BASE_NAMES`: symmetric, no offset, Stribeck exponent
+    kept), else every free parameter but ``alpha`` and ``b``."""
     try:
-        from diagnosis.core import BASE_NAMES
+        from diagnosis.trajectory import BASE_NAMES
     except ImportError:  # pragma: no cover
         BASE_NAMES = {}
     if model.name in BASE_NAMES:

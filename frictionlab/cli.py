@@ -35,6 +35,10 @@ def _add_data_options(p: argparse.ArgumentParser, optional: bool = False) -> Non
     p.add_argument("--law-fmu", dest="law_fmu", default="native",
                    choices=("native", "pythonfmu"),
                    help="with --plant-fmu: the friction-law FMU kind (default native C)")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="run the evaluations on a dask.distributed cluster: the scheduler's "
+                   "address, e.g. tcp://127.0.0.1:8786; FMUs and data go to each worker "
+                   "once (keep the scheduler on a private network; see the README)")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -107,6 +111,29 @@ def build_parser() -> argparse.ArgumentParser:
     return ap
 
 
+class _scheduler:
+    """``--scheduler ADDRESS``: connect before any work (an unreachable address is a
+    one-line error naming it, within :data:`identification.cluster.CONNECT_TIMEOUT`), put
+    the client on ``args.executor``, close it after the command."""
+
+    def __init__(self, args):
+        self.args = args
+        self.client = None
+
+    def __enter__(self):
+        address = getattr(self.args, "scheduler", None)
+        if address:
+            from identification.cluster import connect
+            self.client = connect(address)
+        self.args.executor = self.client
+        return self.client
+
+    def __exit__(self, *exc):
+        if self.client is not None:
+            self.client.close()
+        return False
+
+
 def _dispatch(args) -> int:
     if args.command == "demo":
         from .demo import run_demo
@@ -125,7 +152,8 @@ def _dispatch(args) -> int:
         if not args.model and not args.plant_fmu:
             raise ValueError("identify needs --model NAME (the friction law)")
         from identification.cli import run_identify_cli
-        return run_identify_cli(args) or 0
+        with _scheduler(args):
+            return run_identify_cli(args) or 0
     if args.command == "diagnose":
         if args.benchmark and args.plants:
             from diagnosis.benchmark import run_benchmark_cli
@@ -133,7 +161,8 @@ def _dispatch(args) -> int:
         if not args.benchmark and (not args.data or not (args.model or args.plant_fmu)):
             raise ValueError("diagnose needs DATA and --model (or --benchmark)")
         from diagnosis.cli import run_diagnose_cli
-        return run_diagnose_cli(args) or 0
+        with _scheduler(args):
+            return run_diagnose_cli(args) or 0
     raise ValueError(f"unknown command {args.command!r}")
 
 

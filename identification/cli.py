@@ -153,7 +153,7 @@ def run_identify_cli(args) -> int:
                       seed=getattr(args, "seed", 0), max_evals=max_evals,
                       validation=validation, progress=not quiet,
                       checkpoint=getattr(args, "checkpoint", None), fixed=fixed or None,
-                      bounds=bounds)
+                      bounds=bounds, executor=getattr(args, "executor", None))
     kind = "plateaus, steady-state map" if isinstance(data, SteadyStateMap) else "samples"
     print(f"data        : {files[0]} ({len(data)} {kind}"
           + (f"; read as {', '.join(data.notes)})" if data.notes else ")"))
@@ -202,7 +202,8 @@ def _run_plant_fmu(args, max_evals) -> int:
                                 algorithm=getattr(args, "algorithm", None),
                                 seed=getattr(args, "seed", 0), max_evals=max_evals,
                                 validation=files[1:] or None, progress=not quiet,
-                                native=getattr(args, "law_fmu", "native") == "native")
+                                native=getattr(args, "law_fmu", "native") == "native",
+                                executor=getattr(args, "executor", None) or "inline")
     print(f"plant FMU   : {args.plant_fmu} (connection {args.connect}; law FMU "
           f"{result['law_fmu']})")
     print(f"data        : {files[0]}")

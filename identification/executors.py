@@ -92,10 +92,14 @@ class ProcessExecutor:
 class DaskExecutor:
     """Evaluate on a ``dask.distributed`` cluster (for campaigns that outgrow one machine).
 
+    The objective goes to every worker once per identification, with its data and its FMU
+    files by value (:func:`identification.cluster.ship`: workers need no shared file system);
+    then only parameter rows travel, one chunk per worker thread.
+
     Parameters
     ----------
     client : dask.distributed.Client
-        A connected client; the objective is scattered (broadcast) once per objective.
+        A connected client (:func:`identification.cluster.connect`).
     chunks : int, optional
         Pieces per population (default: number of worker threads).
     """
@@ -108,16 +112,50 @@ class DaskExecutor:
         self._objective_id = None
 
     def costs(self, objective, X):
-        if self._future is None or self._objective_id != id(objective):
-            self._future = self.client.scatter(objective, broadcast=True)
-            self._objective_id = id(objective)
-        n = self.chunks or max(1, sum(self.client.nthreads().values()))
-        futures = [self.client.submit(_dask_costs, self._future, c, pure=False)
-                   for c in _chunks(np.asarray(X), n)]
-        return np.concatenate(self.client.gather(futures))
+        """Costs of the parameter rows ``X[n, D]`` (physical values) of ``objective``.
+
+        Parameters
+        ----------
+        objective : identification.objectives.Objective
+        X : ndarray
+
+        Returns
+        -------
+        ndarray
+            One cost per row, in the order of ``X``.
+
+        Raises
+        ------
+        identification.cluster.SchedulerError
+            When the scheduler or every worker is lost during the evaluation.
+        """
+        from concurrent.futures import CancelledError
+        from .cluster import SchedulerError, ship
+        try:
+            if self._future is None or self._objective_id != id(objective):
+                self._future = self.client.scatter(ship(objective), broadcast=True,
+                                                   hash=False)
+                self._objective_id = id(objective)
+            n = self.chunks or max(1, sum(self.client.nthreads().values()))
+            futures = [self.client.submit(_dask_costs, self._future, c, pure=False)
+                       for c in _chunks(np.asarray(X), n)]
+            return np.concatenate(self.client.gather(futures))
+        except (OSError, CancelledError, TimeoutError) as exc:
+            addr = getattr(self.client, "scheduler_address", None) or "the scheduler"
+            text = str(exc).strip().splitlines()
+            raise SchedulerError(f"lost the dask scheduler at {addr} during the run: "
+                                 f"{text[0] if text else type(exc).__name__} (a --checkpoint "
+                                 f"keeps every finished evaluation)") from None
 
     def close(self):
+        """Release the scattered objective (the client stays connected)."""
+        if self._future is not None:
+            try:
+                self._future.release()
+            except Exception:  # noqa: BLE001 - a lost client has nothing to release
+                pass
         self._future = None
+        self._objective_id = None
 
 
 def make_executor(executor, objective):

@@ -1,0 +1,309 @@
+"""Running on a ``dask.distributed`` cluster: connect to a scheduler, and ship an objective
+(its FMU files and its data) to the workers once.
+
+A worker may sit on another machine with no shared file system, so a co-simulation
+objective cannot be sent with the paths of its FMUs. :func:`ship` wraps it in a
+:class:`ShippedObjective` that carries the FMU files' bytes (:class:`FileBundle`) beside the
+objective and its measured data. :class:`identification.executors.DaskExecutor` scatters
+that wrapper to every worker once per identification (``client.scatter(...,
+broadcast=True)``); after that only parameter rows travel. On a worker the bundle is written
+once per machine into ``<tempdir>/frictionlab-shipped/<sha256>/`` (a second worker process
+on the same machine, or a second identification with the same FMUs, finds it there) and the
+objective's paths are pointed at it. Each worker thread evaluates on its own copy of the
+objective (an FMU instance is not thread-safe).
+
+>>> from identification.cluster import connect                        # doctest: +SKIP
+>>> client = connect("tcp://10.0.0.5:8786")
+>>> res = identify_plant_fmu("run.csv", "rig.fmu", "rig.toml", executor=client)
+
+A dask scheduler runs whatever code its clients send: keep it on a private network (bind it
+to 127.0.0.1 or a private interface) or behind dask's TLS settings (see the README).
+"""
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import os
+import pickle
+import tempfile
+import threading
+
+__all__ = ["connect", "SchedulerError", "FileBundle", "ShippedObjective", "ship",
+           "worker_stats", "CONNECT_TIMEOUT"]
+
+#: seconds to wait for the scheduler to answer (and again for its first worker) [s]
+CONNECT_TIMEOUT = 5.0
+
+
+class SchedulerError(ConnectionError):
+    """The dask scheduler cannot be reached, has no workers, or was lost during a run."""
+
+
+def _first_line(exc) -> str:
+    text = str(exc).strip()
+    return text.splitlines()[0] if text else type(exc).__name__
+
+
+def connect(address: str, timeout: float | None = None, *, workers: int = 1):
+    """A ``dask.distributed.Client`` connected to the scheduler at ``address``.
+
+    Parameters
+    ----------
+    address : str
+        Scheduler address, e.g. ``"tcp://127.0.0.1:8786"`` (``tls://...`` with dask's TLS
+        settings in its configuration).
+    timeout : float, optional
+        Seconds to wait for the scheduler to answer, then as long again for ``workers``
+        workers to be connected to it [s] (default :data:`CONNECT_TIMEOUT`).
+    workers : int
+        Workers the scheduler must have before the run starts (a scheduler without
+        workers would leave the run waiting for ever).
+
+    Returns
+    -------
+    dask.distributed.Client
+
+    Raises
+    ------
+    SchedulerError
+        One line naming the address: unreachable within ``timeout``, a malformed address,
+        or no worker connected.
+    ImportError
+        When ``dask.distributed`` is not installed.
+    """
+    try:
+        from dask.distributed import Client
+    except ImportError:  # pragma: no cover - dask is a dependency of the test extra
+        raise ImportError("--scheduler needs dask.distributed: pip install "
+                          "'dask[distributed]'") from None
+    if not isinstance(address, str) or not address.strip():
+        raise SchedulerError(f"dask scheduler address {address!r}: expected e.g. "
+                             f"tcp://127.0.0.1:8786")
+    address = address.strip()
+    timeout = float(CONNECT_TIMEOUT if timeout is None else timeout)
+    try:
+        client = Client(address, timeout=timeout, set_as_default=False)
+    except Exception as exc:  # noqa: BLE001 - OSError, TimeoutError, ValueError (bad URI)
+        raise SchedulerError(f"cannot reach the dask scheduler at {address} within "
+                             f"{timeout:g} s: {_first_line(exc)}") from None
+    try:
+        client.wait_for_workers(workers, timeout=timeout)
+    except Exception:  # noqa: BLE001 - dask raises TimeoutError
+        client.close()
+        raise SchedulerError(f"the dask scheduler at {address} has no worker after "
+                             f"{timeout:g} s: start some with 'dask worker {address}'") \
+            from None
+    return client
+
+
+# -- files shipped by value ----------------------------------------------------------------------
+#: per worker process: bundle digest -> folder it was written to
+_EXTRACTED: dict = {}
+_LOCK = threading.Lock()
+#: per worker process: what this process did (for tests and diagnostics)
+_STATS = {"chunks": 0, "rows": 0, "extracted": 0, "reused": 0, "objectives": 0,
+          "folders": []}
+
+
+def _root() -> str:
+    return os.path.join(tempfile.gettempdir(), "frictionlab-shipped")
+
+
+class FileBundle:
+    """Files carried by value (their bytes), written once per machine where they are used.
+
+    Parameters
+    ----------
+    paths : dict
+        ``key -> local file path``; each file keeps its base name in the folder it is
+        written to, so a folder of FMUs (``<law>_native.fmu``) stays a valid folder.
+
+    Attributes
+    ----------
+    digest : str
+        SHA-256 over the names and contents: the folder's name on the workers.
+    nbytes : int
+        Total size of the files [bytes].
+    """
+
+    def __init__(self, paths: dict):
+        self.files = {}
+        h = hashlib.sha256()
+        for key in sorted(paths):
+            path = os.fspath(paths[key])
+            with open(path, "rb") as fh:
+                data = fh.read()
+            name = os.path.basename(path)
+            if any(n == name and k != key for k, (n, _) in self.files.items()):
+                raise ValueError(f"two shipped files are named {name!r}: rename one")
+            self.files[key] = (name, data)
+            h.update(key.encode() + b"\0" + name.encode() + b"\0")
+            h.update(hashlib.sha256(data).digest())
+        self.digest = h.hexdigest()
+        self.nbytes = sum(len(d) for _, d in self.files.values())
+
+    def folder(self) -> str:
+        """The folder holding the files on this machine, written on first use (atomic:
+        written into a private folder, then renamed; a concurrent writer's copy wins)."""
+        with _LOCK:
+            hit = _EXTRACTED.get(self.digest)
+            if hit is not None and self._complete(hit):
+                _STATS["reused"] += 1
+                return hit
+            final = os.path.join(_root(), self.digest)
+            if not self._complete(final):
+                os.makedirs(_root(), exist_ok=True)
+                tmp = tempfile.mkdtemp(prefix=f".{self.digest[:12]}-", dir=_root())
+                for name, data in self.files.values():
+                    with open(os.path.join(tmp, name), "wb") as fh:
+                        fh.write(data)
+                try:
+                    os.rename(tmp, final)
+                    _STATS["extracted"] += 1
+                except OSError:  # another process wrote it first
+                    import shutil
+                    shutil.rmtree(tmp, ignore_errors=True)
+                    if not self._complete(final):
+                        raise
+                    _STATS["reused"] += 1
+            else:
+                _STATS["reused"] += 1
+            _EXTRACTED[self.digest] = final
+            _STATS["folders"].append(final)
+            return final
+
+    def _complete(self, folder) -> bool:
+        return os.path.isdir(folder) and all(
+            os.path.isfile(os.path.join(folder, n))
+            and os.path.getsize(os.path.join(folder, n)) == len(d)
+            for n, d in self.files.values())
+
+    def paths(self) -> dict:
+        """``key -> path`` of the files on this machine (written on first use)."""
+        d = self.folder()
+        return {k: os.path.join(d, n) for k, (n, _) in self.files.items()}
+
+
+def _law_fmus(obj) -> list:
+    """Law FMU names a co-simulation objective opens from its ``fmu_dir``."""
+    names = [obj.model.name]
+    if type(obj).__name__ == "ClosedLoopCoSimObjective":
+        names.append("mass")
+    return names
+
+
+def _files_of(obj) -> dict:
+    """``key -> path`` of the FMU files ``obj`` opens: its plant FMU, the further plant-side
+    FMUs of its connection, the law FMU(s) of its ``fmu_dir``; ``{}`` for an objective
+    without FMUs (the in-process one)."""
+    files = {}
+    if getattr(obj, "plant_fmu", None):
+        files["plant"] = obj.plant_fmu
+    conn = getattr(obj, "conn", None)
+    for inst, path in (getattr(conn, "fmus", None) or {}).items():
+        files[f"conn:{inst}"] = path
+    if getattr(obj, "fmu_dir", None) and getattr(obj, "model", None) is not None:
+        from fmus.master import fmu_file
+        for law in _law_fmus(obj):
+            files[f"law:{law}"] = fmu_file(obj.fmu_dir, law, getattr(obj, "native", False))
+    return files
+
+
+def _repoint(obj, paths: dict) -> None:
+    """Point ``obj``'s FMU paths at ``paths`` (the bundle's files on this machine)."""
+    if "plant" in paths:
+        obj.plant_fmu = paths["plant"]
+    conn = getattr(obj, "conn", None)
+    if conn is not None and getattr(conn, "fmus", None):
+        fmus = {inst: paths.get(f"conn:{inst}", p) for inst, p in conn.fmus.items()}
+        obj.conn = dataclasses.replace(conn, fmus=fmus)
+    laws = [k for k in paths if k.startswith("law:")]
+    if laws:
+        obj.fmu_dir = os.path.dirname(paths[laws[0]])
+
+
+class ShippedObjective:
+    """An objective with its FMU files by value, for workers without the client's files.
+
+    Parameters
+    ----------
+    objective : identification.objectives.Objective
+        Pickled with its data (an FMU objective drops its open instances when pickled).
+
+    Notes
+    -----
+    Where it is unpickled (a worker), the bundle's files are written once per machine and
+    the objective's paths repointed; :meth:`costs` then evaluates on a per-thread copy.
+    Where it was made (the client), it is the objective itself with its own paths.
+    """
+
+    def __init__(self, objective):
+        self.objective = objective
+        files = _files_of(objective)
+        self.bundle = FileBundle(files) if files else None
+        self._copies = {}
+
+    # what the scatter sends: the objective (its own __getstate__) and the bundle
+    def __getstate__(self):
+        return {"objective": pickle.dumps(self.objective, protocol=pickle.HIGHEST_PROTOCOL),
+                "bundle": self.bundle}
+
+    def __setstate__(self, state):
+        self.bundle = state["bundle"]
+        self.objective = pickle.loads(state["objective"])
+        self._blob = state["objective"]
+        if self.bundle is not None:
+            _repoint(self.objective, self.bundle.paths())
+        self._copies = {}
+        _STATS["objectives"] += 1
+
+    @property
+    def parallel_inside(self) -> bool:
+        return bool(getattr(self.objective, "parallel_inside", False))
+
+    def _mine(self):
+        """This thread's objective (the first thread uses the received one)."""
+        tid = threading.get_ident()
+        obj = self._copies.get(tid)
+        if obj is None:
+            with _LOCK:
+                if not self._copies:
+                    obj = self.objective
+                else:
+                    blob = getattr(self, "_blob", None) or pickle.dumps(self.objective)
+                    obj = pickle.loads(blob)
+                    if self.bundle is not None:
+                        _repoint(obj, self.bundle.paths())
+                self._copies[tid] = obj
+        return obj
+
+    def costs(self, X):
+        """Costs of the parameter rows ``X[n, D]`` (physical values) on this worker.
+
+        Parameters
+        ----------
+        X : ndarray
+            Parameter rows in the objective's units.
+
+        Returns
+        -------
+        ndarray
+            One cost per row (NRMSE; ``inf`` for a failed co-simulation).
+        """
+        c = self._mine().costs(X)
+        _STATS["chunks"] += 1
+        _STATS["rows"] += int(len(X))
+        return c
+
+
+def ship(objective) -> ShippedObjective:
+    """:class:`ShippedObjective` of ``objective`` (FMU files by value, data inside)."""
+    return objective if isinstance(objective, ShippedObjective) else \
+        ShippedObjective(objective)
+
+
+def worker_stats() -> dict:
+    """What this process did as a worker: ``chunks`` and ``rows`` evaluated, bundles
+    ``extracted`` (written) or ``reused`` (found on disk), ``objectives`` received,
+    ``folders`` used. Run it on every worker with ``client.run(worker_stats)``."""
+    return {k: (list(v) if isinstance(v, list) else v) for k, v in _STATS.items()}

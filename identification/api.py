@@ -268,8 +268,13 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
             from None
     # the reported cost is the objective's own prediction (the numba kernel, without the
     # input-range checks of simulate(), so a box edge the law rejects still gets a number)
-    F_fit = obj.predict(x_best[None, :])[0]
-    fit = nrmse(data.F, F_fit)
+    if type(obj) is InProcessObjective and np.isfinite(problem.best_cost):
+        # the search scored the best point with this kernel already (every path of the
+        # in-process objective computes the NRMSE of the same simulation): not run again
+        fit = problem.best_cost
+    else:
+        F_fit = obj.predict(x_best[None, :])[0]
+        fit = nrmse(data.F, F_fit)
     val = None
     if validation is not None and is_map:
         from .steady_state import SteadyStateObjective

@@ -119,7 +119,10 @@ class ParameterSpace:
         if unknown:
             raise KeyError(f"{model.name} has no parameter(s) {unknown}; choose from "
                            f"{model.free_names()}")
-        box = default_bounds(model, names, data)
+        # the data's default box only for names without given bounds (its percentiles of
+        # |F| and |v| are skipped when every name has one)
+        rest = [n for n in names if n not in (bounds or {})]
+        box = default_bounds(model, rest, data if rest else None)
         for n, b in (bounds or {}).items():
             if n not in names:
                 raise KeyError(f"bounds given for {n!r}, which is not identified ({names})")

@@ -21,6 +21,7 @@ from scipy.optimize import least_squares
 
 from ..problem import BudgetExhausted
 from .base import Algorithm, latin_hypercube
+from .trf import trf_exact
 
 __all__ = ["LeastSquares", "MultistartLeastSquares", "run_least_squares",
            "compress_normal_equations"]
@@ -181,12 +182,45 @@ def _run_normal_least_squares(problem, u0, *, method, max_nfev, ftol, xtol, gtol
     if u0.size == 1:
         tr_solver = "exact"  # scipy's lsmr subproblem indexes a 2-D subspace: one parameter fails
     try:
-        res = least_squares(lambda u: at(u)[0], u0, jac=lambda u: at(u)[1],
-                            bounds=(0.0, 1.0), method=method, x_scale=x_scale, ftol=ftol,
-                            xtol=xtol, gtol=gtol, max_nfev=max_nfev, tr_solver=tr_solver)
+        if method == "trf" and tr_solver == "exact" and not isinstance(x_scale, str) \
+                and np.all(np.asarray(x_scale) == 1.0):
+            # scipy's algorithm with its D + 1 x D algebra compiled (the same iterates;
+            # scipy's Python bookkeeping cost more than the sensitivity passes on 10,000
+            # samples)
+            ones = np.ones(u0.size)
+            res = trf_exact(at, u0, 0.0 * ones, ones, ftol=ftol, xtol=xtol, gtol=gtol,
+                            max_nfev=max_nfev, stop=_converged_within(n))
+        else:
+            res = least_squares(lambda u: at(u)[0], u0, jac=lambda u: at(u)[1],
+                                bounds=(0.0, 1.0), method=method, x_scale=x_scale,
+                                ftol=ftol, xtol=xtol, gtol=gtol, max_nfev=max_nfev,
+                                tr_solver=tr_solver)
     except BudgetExhausted:
         return None
     return _NormalResult(problem, res)
+
+
+#: a compressed run ends where the Gauss-Newton model of the long residual promises less
+#: than this fraction of one parameter standard error's cost (``c2 / N``): the remaining
+#: moves are below 1 % of a standard error (sqrt(1e-4)); scipy's own tests spend one or
+#: two more sensitivity passes there
+MODEL_REDUCTION_SE2 = 1e-4
+
+
+def _converged_within(n):
+    """The ``stop`` test of :func:`identification.algorithms.trf.trf_exact` on a
+    compressed residual ``f = [Q^T r, rest]`` of an ``n``-sample record: the Gauss-Newton
+    step's reduction of ``0.5 |r|^2`` is ``0.5 |Q^T r|^2`` (an upper bound of what the box
+    allows); below :data:`MODEL_REDUCTION_SE2` / n of the cost the run has converged."""
+    tol = MODEL_REDUCTION_SE2 / max(n, 1)
+
+    def stop(f, J, cost):
+        gain = 0.5 * float(np.dot(f[:-1], f[:-1]))
+        if cost > 0 and gain <= tol * cost:
+            return (f"the Gauss-Newton model promises {gain / cost:.1e} of the cost "
+                    f"(< {MODEL_REDUCTION_SE2:g}/N: under 1 % of a standard error)")
+        return None
+    return stop
 
 
 def _jacobian_of(res):
@@ -245,13 +279,27 @@ def noise_level(F) -> float:
     median absolute deviation of its second differences (``F[k+1] - 2 F[k] + F[k-1]``
     carries 6 times the noise variance and little of a signal sampled faster than it
     changes; the median ignores the few samples of fast transients, such as reversals)."""
-    F = np.asarray(F, float)
-    sd = float(np.std(F))
-    if F.size < 5 or not sd > 0:
+    F = np.ascontiguousarray(F, dtype=float)
+    if F.size < 5:
         return np.nan
-    d2 = F[2:] - 2.0 * F[1:-1] + F[:-2]
-    mad = float(np.median(np.abs(d2 - np.median(d2))))
-    return 1.4826 * mad / np.sqrt(6.0) / sd
+    return float(_noise_level(F))
+
+
+@njit(cache=True)
+def _noise_level(F):
+    """:func:`noise_level` compiled (one pass for the second differences, two selections
+    for the medians; numpy's calls cost more than the work on 10,000 samples)."""
+    sd = np.std(F)
+    if not sd > 0:
+        return np.nan
+    n = F.size - 2
+    d2 = np.empty(n)
+    for k in range(n):
+        d2[k] = F[k + 2] - 2.0 * F[k + 1] + F[k]
+    med = np.median(d2)
+    for k in range(n):
+        d2[k] = abs(d2[k] - med)
+    return 1.4826 * np.median(d2) / math.sqrt(6.0) / sd
 
 
 def at_noise_floor(problem, cost):

@@ -33,7 +33,7 @@ import pathlib
 import sys
 import tempfile
 
-from frictionlab.progress import report
+from friction.progress import as_progress
 
 from . import status_shim
 from .modeldescription import model_description_xml
@@ -131,7 +131,7 @@ def validate(path) -> list[str]:
     return validate_fmu(str(path))
 
 
-def build_all(out: str | os.PathLike, only=None, *, progress: bool = True,
+def build_all(out: str | os.PathLike, only=None, *, progress=True,
               kinds=("native", "pythonfmu")) -> dict[str, pathlib.Path]:
     """Build (and validate) every FMU into folder ``out``: the native ones
     (``<name>_native.fmu``, plain C, :mod:`fmus.native.build`) and the pythonfmu ones
@@ -144,8 +144,8 @@ def build_all(out: str | os.PathLike, only=None, *, progress: bool = True,
     only : list of str, optional
         Names to build (see :func:`catalogue` and :func:`fmus.native.build.native_catalogue`);
         a name both know is built in both kinds, ``<name>_native`` natively only; default all.
-    progress : bool
-        Print one progress line per FMU on stderr.
+    progress : None, bool, tqdm or callable(n, info)
+        Progress in FMUs built (:mod:`friction.progress`); True: a line per FMU on stderr.
     kinds : tuple of str
         ``"native"`` and/or ``"pythonfmu"``.
 
@@ -185,25 +185,23 @@ def build_all(out: str | os.PathLike, only=None, *, progress: bool = True,
             raise ValueError(f"unknown FMU name(s) {unknown}; choose from "
                              f"{sorted(set(cat) | set(ncat))}")
     total = len(py_names) + len(nat_names)
-    built, k, native_error = {}, 0, None
-    for name in nat_names:
-        k += 1
-        try:
-            path = build_native(name, out)
-        except NativeBuildError as exc:
-            native_error = exc
-            report(f"[build-fmus] native FMUs skipped: {str(exc).splitlines()[0]}", progress)
-            k += len(nat_names) - nat_names.index(name) - 1
-            break
-        _check_valid(path)
-        report(f"[build-fmus {k}/{total}] {path} (native, valid)", progress)
-        built[name + SUFFIX] = path
-    for name in py_names:
-        k += 1
-        path = build_fmu(cat[name], out)
-        _check_valid(path)
-        report(f"[build-fmus {k}/{total}] {path} (pythonfmu, valid)", progress)
-        built[name] = path
+    built, native_error = {}, None
+    with as_progress(progress, "build-fmus", total=total, unit="fmu", interval=0) as prog:
+        for k, name in enumerate(nat_names):
+            try:
+                path = build_native(name, out)
+            except NativeBuildError as exc:
+                native_error = exc
+                prog(len(nat_names) - k, f"native FMUs skipped: {str(exc).splitlines()[0]}")
+                break
+            _check_valid(path)
+            prog(1, f"{path} (native, valid)")
+            built[name + SUFFIX] = path
+        for name in py_names:
+            path = build_fmu(cat[name], out)
+            _check_valid(path)
+            prog(1, f"{path} (pythonfmu, valid)")
+            built[name] = path
     if native_error is not None:
         raise RuntimeError(f"the native FMUs were not built ({str(native_error).splitlines()[0]}"
                            f"); the pythonfmu FMUs were") from native_error

@@ -53,7 +53,7 @@ from typing import Iterable, Mapping
 
 import numpy as np
 
-from frictionlab.progress import Progress
+from friction.progress import as_progress
 
 __all__ = ["Master", "Connection", "FMUError", "simulate_cosim", "ALGORITHMS", "fmu_values",
            "fmu_file", "law_parameters", "FMU_KINDS"]
@@ -692,8 +692,8 @@ class Master:
         """Run the co-simulation; returns a structured array (``time`` first, then ``record``).
 
         ``None`` arguments are taken from the FMUs' DefaultExperiments. ``progress``: None
-        (progress lines when the run has more than 20000 steps), True/False, or a callable
-        ``progress(n_steps_done)``. ``inputs``: ``{"instance.variable": values}`` for every
+        (a bar when the run has more than 20000 steps), or as :mod:`friction.progress`
+        says (False, True, a tqdm bar, ``callable(n, info)``), in communication steps. ``inputs``: ``{"instance.variable": values}`` for every
         external input declared at construction; ``values[k]`` (``n`` or ``n + 1`` of them
         for ``n`` steps) is set at the communication point ``t_k`` (at initialization for
         ``k = 0``) and held over the step from ``t_k``; a recorded external input shows the
@@ -743,15 +743,14 @@ class Master:
 
         cols = self._columns
         srcs = [(c[0].out_buf if c[1] == "out" else c[0].in_buf, c[2]) for c in cols]
-        show = progress if progress is not None else n > 20000
-        prog = progress if callable(progress) else \
-            Progress(total=n, label="cosim", enabled=bool(show))
         chunk = max(1, n // 100)
         cloop = self._c_loop(insts, srcs)
-        if cloop is not None:
-            out = self._run_c(cloop, t0, h, n, srcs, prog, chunk, table)
-        else:
-            out = self._run_python(insts, t0, h, n, srcs, prog, chunk, table)
+        with as_progress(n > 20000 if progress is None else progress, "cosim", total=n,
+                         unit="step") as prog:
+            if cloop is not None:
+                out = self._run_c(cloop, t0, h, n, srcs, prog, chunk, table)
+            else:
+                out = self._run_python(insts, t0, h, n, srcs, prog, chunk, table)
         time = t0 + h * np.arange(n + 1)
         dtype = [("time", np.float64)] + [(c, np.float64) for c in self.record]
         res = np.empty(n + 1, dtype=dtype)

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ._validation import as_float_array, check_finite, check_same_length, check_time
+from .progress import as_progress
 
 __all__ = ["Dataset", "SteadyStateMap", "DataError", "load_dataset", "load_csv", "load_mat",
            "parse_mapping"]
@@ -514,8 +515,8 @@ def _read_numeric_csv(path, progress=None):
 
     The separator and header come from the first lines as the general reader takes them
     (:func:`_sniff`); the body is parsed block by block (``numpy.loadtxt``: C speed, memory
-    of one block plus the result), with ``progress(0, info)`` after each block of a file
-    longer than one block.
+    of one block plus the result), with ``progress(bytes, info)`` after each block of a file
+    longer than one block (:mod:`friction.progress`).
     """
     size = os.path.getsize(path)
     with open(path, "rb") as fh:
@@ -547,33 +548,41 @@ def _read_numeric_csv(path, progress=None):
         while head[start:start + 1] in (b"\r", b"\n") and start < cut:
             start += 1
         fh.seek(start)
-        blocks, rest, done = [], b"", start
-        kw = dict(delimiter=sep, comments=None, ndmin=2, dtype=float, encoding="latin-1")
-        while True:
-            raw = fh.read(CSV_BLOCK)
-            buf = rest + raw
-            if raw:
-                end = buf.rfind(b"\n")
-                if end < 0:
-                    rest = buf
-                    continue
-                chunk, rest = buf[:end + 1], buf[end + 1:]
-            else:
-                chunk, rest = buf, b""
-            if chunk.strip():
-                try:
-                    arr = np.loadtxt(io.BytesIO(chunk), **kw)
-                except ValueError:
-                    return None
-                if arr.shape[1] != len(header):
-                    return None
-                blocks.append(arr)
-            done += len(chunk)
-            if progress is not None and chunk and size > CSV_BLOCK:  # a long file
-                rows = sum(b.shape[0] for b in blocks)
-                progress(0, f"read {100.0 * done / max(size, 1):5.1f} % ({rows} rows)")
-            if not raw:
-                break
+        with as_progress(progress if size > CSV_BLOCK else None,
+                         f"load {os.path.basename(path)}", total=size - start, unit="B") as prog:
+            return _read_blocks(fh, start, size, sep, header, notes, prog)
+
+
+def _read_blocks(fh, start, size, sep, header, notes, progress):
+    """The body of :func:`_read_numeric_csv` from byte ``start``; ``progress(bytes, info)``
+    after each block."""
+    blocks, rest, done = [], b"", start
+    kw = dict(delimiter=sep, comments=None, ndmin=2, dtype=float, encoding="latin-1")
+    while True:
+        raw = fh.read(CSV_BLOCK)
+        buf = rest + raw
+        if raw:
+            end = buf.rfind(b"\n")
+            if end < 0:
+                rest = buf
+                continue
+            chunk, rest = buf[:end + 1], buf[end + 1:]
+        else:
+            chunk, rest = buf, b""
+        if chunk.strip():
+            try:
+                arr = np.loadtxt(io.BytesIO(chunk), **kw)
+            except ValueError:
+                return None
+            if arr.shape[1] != len(header):
+                return None
+            blocks.append(arr)
+        done += len(chunk)
+        if chunk:
+            rows = sum(b.shape[0] for b in blocks)
+            progress(len(chunk), f"read {100.0 * done / max(size, 1):5.1f} % ({rows} rows)")
+        if not raw:
+            break
     if not blocks:
         return None
     data = np.concatenate(blocks).T.copy() if len(blocks) > 1 else blocks[0].T.copy()
@@ -605,10 +614,10 @@ def load_csv(path, mapping=None, scale=None, check_units: bool = True,
         column given a factor (even 1) is never blamed by the unit check.
     check_units : bool
         Run :meth:`Dataset.check_units`.
-    progress : callable(n, info), optional
-        Called (``n = 0``) after each block of a file longer than one block (a plain
-        numeric CSV is read in blocks of :data:`CSV_BLOCK` bytes: memory of one block plus
-        the columns).
+    progress : None, bool, tqdm or callable(n, info), optional
+        Progress in bytes read (:mod:`friction.progress`), after each block of a file
+        longer than one block (a plain numeric CSV is read in blocks of :data:`CSV_BLOCK`
+        bytes: memory of one block plus the columns).
     """
     path = os.fspath(path)
     if not os.path.exists(path):
@@ -736,8 +745,8 @@ _MAT_COLUMN = re.compile(r"^\s*(?P<var>\w+)\s*\[\s*(?::\s*,\s*(?P<rows>-?\d+)|"
 
 def load_dataset(path, mapping=None, scale=None, check_units: bool = True, progress=None):
     """Load CSV or ``.mat`` by extension: a :class:`Dataset`, or a :class:`SteadyStateMap`
-    for a file with columns v and F and no t. ``progress(n, info)``: lines while a long
-    CSV is read (:func:`load_csv`)."""
+    for a file with columns v and F and no t. ``progress``: bytes read while a long CSV is
+    read (:func:`load_csv`, :mod:`friction.progress`)."""
     if os.fspath(path).lower().endswith(".mat"):
         return load_mat(path, mapping, scale, check_units)
     return load_csv(path, mapping, scale, check_units, progress=progress)

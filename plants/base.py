@@ -55,6 +55,7 @@ from typing import Any, Callable, ClassVar
 import numpy as np
 
 from friction.base import FrictionModel, FrictionParams
+from friction.progress import as_progress
 
 from .law_stepper import FrictionComponent, FrictionStep
 from .stepper import PlantStepper
@@ -303,8 +304,8 @@ class Plant:
             as a Filippov sliding motion where both regimes push the velocity onto it.
         rtol : float
             Relative tolerance of the reference integrator.
-        progress : callable, optional
-            Called as ``progress(n, info)`` while output samples are produced.
+        progress : None, bool, tqdm or callable(n, info), optional
+            Progress in output samples (the convention of :mod:`friction.progress`).
         inputs : callable, optional
             ``inputs(t) -> dict`` of external input values (e.g. ``F_friction``), held over
             each output interval.
@@ -322,11 +323,13 @@ class Plant:
         """
         exp, rest = self._experiment(stop_time, dict(experiment_options))
         plant = self.with_options(**rest) if rest else self
-        if method == "fast":
-            return plant._simulate_fast(exp, progress, inputs, substep)
-        if method == "reference":
-            return plant._simulate_reference(exp, rtol, progress, inputs, time_budget)
-        raise ValueError(f"method must be 'fast' or 'reference', got {method!r}")
+        if method not in ("fast", "reference"):
+            raise ValueError(f"method must be 'fast' or 'reference', got {method!r}")
+        with as_progress(progress, f"simulate {self.name}", total=exp.times().size,
+                         unit="sample") as prog:
+            if method == "fast":
+                return plant._simulate_fast(exp, prog, inputs, substep)
+            return plant._simulate_reference(exp, rtol, prog, inputs, time_budget)
 
     # -- helpers shared by both integrators ------------------------------------------------------
     def _u(self, u: dict | None) -> dict:

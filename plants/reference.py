@@ -48,8 +48,8 @@ class ReferenceIntegrator:
     rtol : float
         Relative tolerance of Radau; the absolute tolerances are ``10 rtol`` times the
         plant's ``state_scale`` and the law's ``z_max()``.
-    progress : callable, optional
-        Called as ``progress(n, info)`` while output samples are produced.
+    progress : callable(n, info), optional
+        Progress in output samples (a :class:`friction.progress.Progress`).
     inputs : callable, optional
         ``inputs(t) -> dict`` of external inputs, held over each output interval.
     time_budget : float, optional

@@ -225,7 +225,8 @@ def test_cli_build_fmus(tmp_path, capsys):
     assert validate(tmp_path / "stribeck.fmu") == []
     assert validate(tmp_path / "stribeck_native.fmu") == []  # both kinds
     err = capsys.readouterr().err
-    assert "[build-fmus 1/2]" in err and "[build-fmus 2/2]" in err
+    assert "[build-fmus]" in err and "1/2" in err and "2/2" in err  # a tqdm line per FMU
+    assert "stribeck_native.fmu (native, valid)" in err and ("s/fmu" in err or "fmu/s" in err)
     assert main(["build-fmus", "--out", str(tmp_path), "--only", "nonsense"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "unknown FMU name" in err[0] and "nonsense" in err[0]

@@ -125,7 +125,9 @@ def test_fmu_errors_name_the_instance_the_call_and_the_time(fmu_dir):
 def test_progress_is_shown_on_long_runs(fmu_dir, capsys):
     with Master(_loop(fmu_dir), mass_connections("lugre"), record=["mass.x"]) as m:
         m.simulate(stop_time=0.2, step_size=1e-4, progress=True)
-    assert "[cosim]" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "[cosim]" in err and "2000/2000" in err and ("step/s" in err or "s/step" in err)
+    assert "<" in err  # elapsed<remaining: the ETA of a run of known length
 
 
 # -- external tools ------------------------------------------------------------------------

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import os
 
-from frictionlab.progress import report
+from friction.progress import report
 
 from . import damping_rig, emps, forging_press, mre_isolator, valve, xml350
 

@@ -322,7 +322,7 @@ def plot_mismatch(rows: list[dict], path: str) -> str:
 
 def demo_figures(out: str, summary: dict, quick: bool = False) -> None:
     """The XML-350 part of the demo stage (compensation, mismatch, identification protocol)."""
-    from frictionlab.progress import Progress, report
+    from friction.progress import Progress, report
 
     os.makedirs(out, exist_ok=True)
     stage = XML350()

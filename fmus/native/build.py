@@ -1,4 +1,5 @@
-"""Build the native FMUs: friction laws, the friction_effects block and the mass, in C.
+"""Build the native FMUs: friction laws, the friction_effects block, the mass and the EMPS
+axis and controller (:data:`PLANT_NATIVE`), in C.
 
 A native FMU ``<name>_native.fmu`` holds
 
@@ -27,10 +28,12 @@ import zipfile
 
 from .ckernels import CSRC, NativeBuildError, compiler
 from .description import build_description, model_description
-from .variables import NVar, c_table, effects_variables, law_variables, mass_variables
+from .variables import (EMPS_PARAMS, NVar, c_table, effects_variables,
+                        emps_axis_variables, emps_controller_variables, law_variables,
+                        mass_variables)
 
 __all__ = ["NativeRecipe", "native_catalogue", "build_native", "MINGW_CC", "SUFFIX",
-           "LAW_EXPERIMENT"]
+           "LAW_EXPERIMENT", "PLANT_NATIVE"]
 
 #: file-name suffix that tells a native FMU from a pythonfmu one
 SUFFIX = "_native"
@@ -40,6 +43,20 @@ MINGW_CC = "x86_64-w64-mingw32-gcc"
 LAW_EXPERIMENT = {"startTime": 0.0, "stopTime": 1.0, "stepSize": 1e-4}
 #: the kinds whose Model Exchange interface is declared (proven against the reference)
 MODEL_EXCHANGE = True
+#: native FMUs of a worked plant case (Co-Simulation only: sampled blocks), built by the case
+#: (:func:`plants.studies.emps.build_native_fmus`), not part of :func:`native_catalogue`:
+#: name -> (C kind, variables, continuous states, description, default experiment)
+PLANT_NATIVE = {
+    "emps_axis": ("EMPS_AXIS", emps_axis_variables, 2,
+                  "EMPS axis (native C): carriage mass driven by gtau times the drive voltage "
+                  "sampled at 1/Ts and applied delay later, against an external friction force",
+                  {"startTime": 0.0, "stopTime": 1.0, "stepSize": 1e-3}),
+    "emps_controller": ("EMPS_CTRL", emps_controller_variables, 0,
+                        "EMPS position controller (native C), sampled at 1/Ts: two-sample "
+                        "average, backward difference, vir = kv (kp (qg - x) - dqf) + "
+                        "pulse_gain pulse, saturated at +/- u_max",
+                        {"startTime": 0.0, "stopTime": 1.0, "stepSize": 1e-3}),
+}
 
 
 class NativeRecipe:
@@ -54,6 +71,8 @@ class NativeRecipe:
     def __init__(self, name: str):
         import friction
         self.name = name
+        self.model_exchange = MODEL_EXCHANGE
+        self.experiment = LAW_EXPERIMENT
         self.model_identifier = f"fl_native_{name}"
         self.file_name = f"{name}{SUFFIX}.fmu"
         self.law_sources: list[pathlib.Path] = []
@@ -77,6 +96,14 @@ class NativeRecipe:
             self.description = ("Friction effects block (native C) between a law FMU and a "
                                 "plant FMU: acceleration-dependent part, load-, position- and "
                                 "time-dependent levels (friction.extensions)")
+        elif name in PLANT_NATIVE:
+            kind, variables, n_states, desc, experiment = PLANT_NATIVE[name]
+            self.kind = kind
+            self.variables = variables()
+            self.n_params, self.n_states, self.n_events = 0, n_states, 0
+            self.description = desc
+            self.model_exchange = False
+            self.experiment = experiment
         elif name == "mass":
             self.kind = "MASS"
             self.variables = mass_variables()
@@ -84,7 +111,8 @@ class NativeRecipe:
             self.description = ("Rigid mass (native C) driven by a sinusoidal force against "
                                 "an external friction force (mass+friction proof loop)")
         else:
-            raise ValueError(f"no native FMU {name!r}; choose from {sorted(native_catalogue())}")
+            raise ValueError(f"no native FMU {name!r}; choose from "
+                             f"{sorted(native_catalogue()) + sorted(PLANT_NATIVE)}")
 
     # -- generated header -------------------------------------------------------------------
     def header(self, guid: str) -> str:
@@ -98,7 +126,7 @@ class NativeRecipe:
                  f"#define FL_NVARS {len(self.variables)}",
                  f"#define FL_NSTATES {self.n_states}",
                  f"#define FL_NEVENT {self.n_events}",
-                 f"#define FL_HAS_ME {1 if MODEL_EXCHANGE else 0}"]
+                 f"#define FL_HAS_ME {1 if self.model_exchange else 0}"]
         if self.kind == "LAW":
             lines += [f"#define FL_LAW fl_law_{self.name}", f"#define FL_NP {self.n_params}"]
         if self.kind == "EFFECTS":
@@ -110,13 +138,18 @@ class NativeRecipe:
                          "use_drift", "k_drift", "t0", "T", "k_sat", "tau_sat", "k_step",
                          "t_step", "w_step", "use_load", "L0", "k_L"):
                 lines.append(f"#define FL_E_{name.upper()} {ext.EXTENSION_INDEX[name]}")
+        if self.kind.startswith("EMPS"):
+            for v in self.variables:
+                if v.role == "EMPS_PARAM":
+                    lines.append(f"#define FL_EP_{v.name.upper()} {EMPS_PARAMS.index(v.name)}")
         lines += [c_table(self.variables), "#endif", ""]
         return "\n".join(lines)
 
     def source_files(self) -> dict[str, bytes]:
         """Flat ``sources/`` content: name -> bytes (without fl_model.h)."""
         files = {p.name: p.read_bytes() for p in (CSRC / "fl_fmi2.c", CSRC / "fl_runtime.h",
-                                                  CSRC / "fl_law.h", CSRC / "fl_effects.h")}
+                                                  CSRC / "fl_law.h", CSRC / "fl_effects.h",
+                                                  CSRC / "fl_emps.h")}
         for p in self.law_sources:
             files[p.name] = p.read_bytes()
         if self.law_sources:
@@ -170,7 +203,7 @@ def build_native(name: str, out: str | os.PathLike, *, win64: bool | None = None
     Parameters
     ----------
     name : str
-        A key of :func:`native_catalogue`.
+        A key of :func:`native_catalogue` or of :data:`PLANT_NATIVE`.
     out : path
         Output folder (created).
     win64 : bool, optional
@@ -218,8 +251,9 @@ def build_native(name: str, out: str | os.PathLike, *, win64: bool | None = None
                           f"(a Windows host can build it from sources/)", stacklevel=2)
         xml = model_description(recipe.variables, model_identifier=recipe.model_identifier,
                                 guid=guid, description=recipe.description,
-                                sources=recipe.c_files, default_experiment=LAW_EXPERIMENT,
-                                model_exchange=MODEL_EXCHANGE, n_event_indicators=recipe.n_events)
+                                sources=recipe.c_files, default_experiment=recipe.experiment,
+                                model_exchange=recipe.model_exchange,
+                                n_event_indicators=recipe.n_events)
         dest = out / recipe.file_name
         tmp_dest = dest.with_suffix(".fmu.tmp")
         with zipfile.ZipFile(tmp_dest, "w", zipfile.ZIP_DEFLATED) as z:

@@ -17,7 +17,8 @@ from ..coupling import law_inputs  # noqa: F401 (re-exported)
 from ..variables import Var, exclusive_max, exclusive_min  # noqa: F401 (re-exported)
 
 __all__ = ["NVar", "law_variables", "effects_variables", "mass_variables", "c_table",
-           "exclusive_min", "exclusive_max", "law_inputs"]
+           "exclusive_min", "exclusive_max", "law_inputs", "emps_axis_variables",
+           "emps_controller_variables", "EMPS_PARAMS", "EMPS_FEEDBACK"]
 
 
 @dataclasses.dataclass
@@ -173,3 +174,75 @@ def c_table(variables: list[NVar]) -> str:
             _c_double(v.start), _c_double(v.lower), _c_double(v.upper), int(v.lower_open),
             int(v.upper_open), _c_str(v.unit)))
     return "static const fl_var FL_VARS[FL_NVARS] = {\n" + ",\n".join(rows) + "\n};\n"
+
+
+#: the EMPS FMUs' parameters in the C index order of ``FL_EP_*`` (fl_emps.h reads them by
+#: these names; a name an FMU lacks gets no define)
+EMPS_PARAMS = ("M", "gtau", "kp", "kv", "Ts", "u_max", "delay", "pulse_gain",
+               "position_feedback", "x0", "v0", "u0")
+#: position feedback of the EMPS controller (Enumeration items, codes 1..n)
+EMPS_FEEDBACK = ("sample", "average")
+
+
+def _emps_param(name: str) -> NVar:
+    """One EMPS parameter: the fields of :class:`plants.emps.EMPSParams` with their units,
+    bounds and descriptions; the initial conditions and the feedback switch here."""
+    from plants.emps import EMPSParams
+    k = EMPS_PARAMS.index(name)
+    own = {v.name: v for v in shared.param_vars(EMPSParams)}
+    if name in own:
+        return _native(own[name], "EMPS_PARAM", k)
+    extra = {
+        "position_feedback": Var("position_feedback", "parameter", "Enumeration", 1,
+                                 description="position in the error: sample (the sampled "
+                                             "position, what the recorded vir obeys) or "
+                                             "average (the two-sample average qf)",
+                                 lower=1, upper=len(EMPS_FEEDBACK), items=EMPS_FEEDBACK,
+                                 enum_type="EMPS.position_feedback"),
+        "x0": Var("x0", "parameter", "Real", 0.0, "m", "initial position [m]"),
+        "v0": Var("v0", "parameter", "Real", 0.0, "m/s", "initial velocity [m/s] (the "
+                  "controller: the velocity before the start, on which its two earlier "
+                  "position samples lie)"),
+        "u0": Var("u0", "parameter", "Real", 0.0, "V", "voltage acting before the first "
+                  "sample's voltage reaches the carriage [V]"),
+    }
+    return _native(extra[name], "EMPS_PARAM", k)
+
+
+def emps_axis_variables() -> list[NVar]:
+    """Variables of the native EMPS axis (:mod:`fmus.native.csrc` ``fl_emps.h``): mass driven
+    by ``gtau`` times the sampled, delayed voltage ``u`` against the friction force input."""
+    out = [_emps_param(n) for n in ("M", "gtau", "Ts", "delay", "x0", "v0", "u0")]
+    out += [NVar("u", "Real", "input", "IN_U", unit="V",
+                 description="drive voltage [V], sampled at start + k Ts (its value at the "
+                             "sample instant), acting delay seconds later"),
+            NVar("F_friction", "Real", "input", "IN_FFRIC", unit="N",
+                 description="friction force opposing the motion [N]"),
+            NVar("x", "Real", "output", "OUT_X", unit="m", description="carriage position [m]"),
+            NVar("v", "Real", "output", "OUT_V", unit="m/s",
+                 description="carriage velocity [m/s]"),
+            NVar("a", "Real", "output", "OUT_A", unit="m/s2",
+                 description="carriage acceleration [m/s2] (with the voltage acting right "
+                             "after the communication point)", depends=("F_friction",))]
+    return out
+
+
+def emps_controller_variables() -> list[NVar]:
+    """Variables of the native EMPS position controller (``fl_emps.h``): sampled at 1/Ts,
+    two-sample average, backward difference, saturation, pulse voltage at its output."""
+    out = [_emps_param(n) for n in ("kp", "kv", "Ts", "u_max", "pulse_gain", "gtau",
+                                    "position_feedback", "v0")]
+    out += [NVar("x", "Real", "input", "IN_X", unit="m",
+                 description="measured carriage position [m]"),
+            NVar("qg", "Real", "input", "IN_QG", unit="m",
+                 description="reference position [m]"),
+            NVar("pulse", "Real", "input", "IN_PULSE",
+                 description="pulse signal (the PULSES file's 0/5), added as pulse_gain * "
+                             "pulse volts at the output"),
+            NVar("u", "Real", "output", "OUT_U", unit="V",
+                 description="controller output voltage (vir) of the last sample [V]",
+                 depends=("x", "qg", "pulse")),
+            NVar("F_motor", "Real", "output", "OUT_FMOTOR", unit="N",
+                 description="motor force gtau * u of the last sample [N]",
+                 depends=("x", "qg", "pulse"))]
+    return out

@@ -42,7 +42,9 @@ __all__ = ["EMPSRecord", "load_record", "EMPSModel", "baseline_model", "simulate
            "stored_model", "start_model", "with_asymmetry", "fit_models", "LUGRE_COORDS",
            "ASYMMETRY_COORDS", "diagnose", "run_study", "demo_figures",
            "build_fmus", "measured_record", "connection_dict", "connection_toml",
-           "run_through_fmus", "identify_through_fmus"]
+           "run_through_fmus", "identify_through_fmus", "NATIVE_FMUS", "build_native_fmus",
+           "native_connection_dict", "native_connection", "run_native", "scores_native",
+           "identify_native"]
 
 SOURCE = ("EMPS benchmark (Janot, Gautier, Brunot), nonlinearbenchmark.org; data copy "
           "forgi86/sysid-neural-continuous @ 956aa7ec")
@@ -949,10 +951,12 @@ def connection_toml(d: dict) -> str:
         if isinstance(v, dict):
             return "{" + ", ".join(f"{k} = {val(x)}" for k, x in v.items()) + "}"
         return repr(float(v)) if isinstance(v, float) else str(v)
-    lines = [f"{k} = {val(v)}" for k, v in d.items() if not isinstance(v, dict)]
+    def key(k):
+        return k if k.replace("_", "").isalnum() else '"' + k + '"'
+    lines = [f"{key(k)} = {val(v)}" for k, v in d.items() if not isinstance(v, dict)]
     for k, v in d.items():
         if isinstance(v, dict):
-            lines += ["", f"[{k}]"] + [f"{kk} = {val(vv)}" for kk, vv in v.items()]
+            lines += ["", f"[{k}]"] + [f"{key(kk)} = {val(vv)}" for kk, vv in v.items()]
     return "\n".join(lines) + "\n"
 
 
@@ -1020,6 +1024,168 @@ def identify_through_fmus(start: EMPSModel, rec: EMPSRecord, fmu_paths: dict, *,
     return {"params": dict(res.params), "fit_nrmse": res.fit_nrmse, "n_evals": res.n_evals,
             "wall_time": res.wall_time}
 
+
+
+# -- the same case through native C FMUs: axis + controller + law, nothing installed -----------
+#: the native C EMPS FMUs (:data:`fmus.native.build.PLANT_NATIVE`, sources in
+#: ``fmus/native/csrc/fl_emps.h``): the axis (mass driven by ``gtau`` times the sampled,
+#: delayed voltage, against the friction-force input; outputs ``x, v, a``) and its position
+#: controller as a separate FMU, coupled by a connection file's ``[fmus]`` and
+#: ``[connections]`` (:func:`native_connection_dict`)
+NATIVE_FMUS = ("emps_axis", "emps_controller")
+
+
+def build_native_fmus(out, *, win64: bool | None = None) -> dict:
+    """Build the native EMPS FMUs (``emps_axis_native.fmu``, ``emps_controller_native.fmu``:
+    plain C, linux64 and, with MinGW-w64, win64 binaries, ``sources/`` inside) into folder
+    ``out``; returns ``{name: path}``. The law FMU (``<law>_native.fmu``) comes from
+    :class:`fmus.connect.PlantLoop` (built once per process) or any folder of native FMUs."""
+    from fmus.native.build import build_native
+    return {name: str(build_native(name, out, win64=win64)) for name in NATIVE_FMUS}
+
+
+def native_connection_dict(model: EMPSModel, kind: str = "closed", *,
+                           controller: str = "emps_controller_native.fmu",
+                           initial=None, identify=("M",), step: float = 1e-3) -> dict:
+    """The connection file (as a dict; :func:`connection_toml` writes it) of the native EMPS
+    FMUs, the axis ``emps_axis_native.fmu`` being the plant.
+
+    Parameters
+    ----------
+    model : EMPSModel
+        Axis, drive and controller parameters (``params``), position feedback, law name.
+    kind : {"closed", "open"}
+        ``"closed"``: the controller FMU (``[fmus] controller``, path relative to the
+        connection file) closes the loop: ``plant.x -> controller.x``, ``controller.u ->
+        plant.u``; the measured reference and pulse drive it (the columns one sample ahead,
+        :func:`measured_record`: its sample at the end of a step uses the values held over
+        that step) and its voltage is compared with ``vir`` [V]. ``"open"``: the measured
+        voltage ``vir`` drives the axis (its value at each sample instant) and the position
+        is compared with ``qm`` [m].
+    controller : str
+        Path of the controller FMU as written into the file.
+    initial : array of 5, optional
+        ``(q0 [m], v0 [m/s], q(-1), q(-2) [m], u(-1) [V])`` as :func:`simulate` takes it
+        (the axis' ``x0, v0, u0``; the controller's two earlier samples lie on ``v0``);
+        default at rest at 0.
+    identify : tuple of str
+        Axis parameters identified with the law (``M``, ``delay``).
+    step : float
+        Communication step [s]: the sample time or a whole fraction of it (the friction
+        force is held over a step, a first-order coupling error).
+
+    Notes
+    -----
+    The controller takes its start sample with the reference the connection holds over the
+    first step (``qg`` one sample ahead), so its first voltage differs from the in-process
+    loop's, which uses ``qg(0)``, by ``kv kp (qg(1) - qg(0))`` for that one sample (0.5 V
+    on these records); from the second sample on the two loops see the same inputs.
+    """
+    p = model.params
+    init = np.zeros(5) if initial is None else np.asarray(initial, float).ravel()
+    params = {"M": p.M, "gtau": p.gtau, "Ts": p.Ts, "delay": p.delay,
+              "x0": float(init[0]), "v0": float(init[1]), "u0": float(init[4])}
+    order = None
+    if kind == "closed":
+        params.update({f"controller.{k}": getattr(p, k)
+                       for k in ("kp", "kv", "Ts", "u_max", "pulse_gain", "gtau")})
+        params["controller.position_feedback"] = model.position_feedback
+        params["controller.v0"] = float(init[1])
+        order = ["plant", "controller", "friction"]
+        inputs = {"controller.qg": {"column": "qg_next", "hold": "previous", "unit": "m"},
+                  "controller.pulse": {"column": "pulses_next", "hold": "previous"}}
+        compare = {"controller.u": {"column": "vir", "unit": "V"}}
+    elif kind == "open":
+        inputs = {"u": {"column": "vir", "hold": "previous", "unit": "V"}}
+        compare = {"x": {"column": "qm", "unit": "m"}}
+    else:
+        raise ValueError(f"kind = {kind!r}: choose 'closed' or 'open'")
+    box = {"M": [80.0, 110.0], "delay": [0.0, 1e-3]}
+    out = {"step": float(step), "time": "t", "mass": "M"}
+    if order:
+        out["order"] = order
+        out["fmus"] = {"controller": controller}
+        out["connections"] = {"plant.x": "controller.x", "controller.u": "plant.u"}
+    out.update({"friction": {"input": "F_friction", "sign": 1, "v": "v", "x": "x"},
+                "inputs": inputs, "compare": compare, "parameters": params,
+                "identify": {n: box[n] for n in identify},
+                "law": {"model": model.law.name}})
+    return out
+
+
+def native_connection(model: EMPSModel, kind: str, paths: dict, initial=None,
+                      identify=("M",), step: float = 1e-3):
+    """:func:`native_connection_dict` parsed (:func:`fmus.connect.parse_connection`), the
+    controller found at ``paths["emps_controller"]``."""
+    from fmus.connect import parse_connection
+    return parse_connection(native_connection_dict(model, kind, initial=initial,
+                                                   controller=paths["emps_controller"],
+                                                   identify=identify, step=step),
+                            f"emps_native_{kind}.toml")
+
+
+def run_native(model: EMPSModel, rec: EMPSRecord, paths: dict, *, closed: bool = True,
+               initial=None, stop: float | None = None, step: float = 1e-3,
+               fmu_dir=None) -> dict:
+    """One run of ``model`` on ``rec`` through the native FMUs (axis, controller, native law
+    FMU) in :class:`fmus.connect.PlantLoop`: closed loop from ``qg`` (pulses on) or open
+    loop from the recorded voltage, from ``initial`` (default :meth:`EMPSRecord.initial`),
+    communication step ``step`` [s].
+
+    Returns ``{"x": position [m], "u": voltage [V] (closed loop: the controller's), "seconds"}``
+    at the record's samples."""
+    from fmus.connect import PlantLoop
+    from fmus.master import law_parameters
+    init = rec.initial() if initial is None else initial
+    conn = native_connection(model, "closed" if closed else "open", paths, init, step=step)
+    mrec = measured_record(rec, stop)
+    t0 = time.perf_counter()
+    with PlantLoop(paths["emps_axis"], conn, model.law, fmu_dir=fmu_dir,
+                   record=("x",)) as loop:
+        run = loop.run(mrec, law_parameters(model.law))
+    out = {"x": run.at("x", mrec.t),
+           "u": run.at("controller.u", mrec.t) if closed else np.asarray(rec.vir[:mrec.t.size]),
+           "seconds": time.perf_counter() - t0}
+    return out
+
+
+def scores_native(model: EMPSModel, rec: EMPSRecord, paths: dict, fmu_dir=None) -> dict:
+    """:func:`scores` through the native FMUs (:func:`run_native`): closed-loop force error
+    and position error from the record's motion, open-loop position RMSE [mm] and R^2 from
+    the record's motion and from rest."""
+    cl = run_native(model, rec, paths, closed=True, fmu_dir=fmu_dir)
+    ol = run_native(model, rec, paths, closed=False, fmu_dir=fmu_dir)
+    ol_rest = run_native(model, rec, paths, closed=False, initial=rec.initial_at_rest(),
+                         fmu_dir=fmu_dir)
+    pm = position_metrics(cl["x"], rec.qm)
+    return {"closed_loop": {"force_error": force_error(rec.gtau * cl["u"], rec.motor_force),
+                            "position_error": float(np.linalg.norm(cl["x"] - rec.qm)
+                                                    / np.linalg.norm(rec.qm)),
+                            "position_rmse_mm": pm["rmse_mm"]},
+            "open_loop": position_metrics(ol["x"], rec.qm),
+            "open_loop_from_rest": position_metrics(ol_rest["x"], rec.qm),
+            "seconds": cl["seconds"] + ol["seconds"] + ol_rest["seconds"]}
+
+
+def identify_native(start: EMPSModel, rec: EMPSRecord, paths: dict, *, names=None,
+                    identify=("M",), stop: float | None = None, max_evals: int = 200,
+                    native: bool = True, plant_fmu: str | None = None, conn=None,
+                    progress=None, fmu_dir=None):
+    """Identify the law's ``names`` (default ``Fc, Fs, vs, sigma2, b``) and the axis'
+    ``identify`` parameters through the closed-loop co-simulation of the native EMPS FMUs
+    (:func:`identification.plant_fmu.identify_plant_fmu`, the user's path), from
+    :meth:`EMPSRecord.initial`. ``native=False`` with ``plant_fmu`` / ``conn`` runs the same
+    through other FMUs (the pythonfmu loop of :func:`connection_dict`). Returns the
+    :class:`identification.result.IdentificationResult`."""
+    from identification.plant_fmu import identify_plant_fmu
+    names = list(names or ("Fc", "Fs", "vs", "sigma2", "b"))
+    if conn is None:
+        conn = native_connection(start, "closed", paths, rec.initial(), identify=identify)
+    mrec = measured_record(rec, stop)
+    return identify_plant_fmu(mrec, plant_fmu or paths["emps_axis"], conn, start.law,
+                              names=names + [f"plant.{n}" for n in identify],
+                              max_evals=max_evals, algorithm="least_squares",
+                              progress=progress, native=native, fmu_dir=fmu_dir)
 
 if __name__ == "__main__":
     raise SystemExit(_main())

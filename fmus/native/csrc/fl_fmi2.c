@@ -7,7 +7,8 @@
  *
  * Kinds (FL_KIND): a friction law (inputs v [, a, load, x], output F and the coupling
  * outputs of the linearly implicit plant coupling), the friction_effects block
- * (friction.extensions) and the rigid mass of the mass + friction proof loop.
+ * (friction.extensions), the rigid mass of the mass + friction proof loop, and the EMPS axis
+ * and its position controller (fl_emps.h, Co-Simulation only).
  *
  * Semantics the tests hold us to:
  * - Co-Simulation: the law's state advances by its own stable kernel (exact exponential
@@ -65,6 +66,8 @@ typedef struct {
     double last_in[4];
     int have_last, have_dv, stepped;
     double slope_v, curv_v, dv_last;
+    /* EMPS axis and controller: sample clock and held values (fl_emps.h) */
+    double ds[8];
 } fl_data;
 
 typedef struct {
@@ -79,6 +82,7 @@ typedef struct {
     int vr_lin[NLIN];
     int vr_state[MAXS], vr_der[MAXS];
     int vr_Fin, vr_fext, vr_ffric, vr_x, vr_v, vr_a;
+    int vr_ep[FL_EP_MAX], vr_uin, vr_qg, vr_pulse, vr_uout, vr_fmotor;
     int n_states;
 } fl_inst;
 
@@ -498,6 +502,13 @@ static void mass_advance(fl_inst *c, double t, double h)
 #endif
 
 /* ---------------------------------------------------------------------------------------- */
+/* the EMPS axis and its position controller */
+
+#if FL_KIND == FL_KIND_EMPS_AXIS || FL_KIND == FL_KIND_EMPS_CTRL
+#include "fl_emps.h"
+#endif
+
+/* ---------------------------------------------------------------------------------------- */
 /* shared by the kinds */
 
 static int ensure_model(fl_inst *c)
@@ -516,8 +527,10 @@ static void compute_outputs(fl_inst *c)
     law_outputs(c);
 #elif FL_KIND == FL_KIND_EFFECTS
     effects_outputs(c);
-#else
+#elif FL_KIND == FL_KIND_MASS
     mass_outputs(c);
+#else
+    emps_outputs(c);
 #endif
     c->d.outputs_dirty = 0;
 }
@@ -535,6 +548,11 @@ static void initial_state(fl_inst *c)
 #if FL_KIND == FL_KIND_MASS
     c->d.state[0] = mp(c, 1);
     c->d.state[1] = mp(c, 2);
+#endif
+    memset(c->d.ds, 0, sizeof c->d.ds);
+#if FL_KIND == FL_KIND_EMPS_AXIS || FL_KIND == FL_KIND_EMPS_CTRL
+    c->d.ds[DS_START] = c->d.time;
+    emps_initial(c);
 #endif
     c->d.have_last = c->d.have_dv = c->d.stepped = 0;
     c->d.slope_v = c->d.curv_v = c->d.dv_last = 0.0;
@@ -607,6 +625,12 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     c->vr_x = find_role(FL_R_OUT_X, -1);
     c->vr_v = find_role(FL_R_OUT_V, -1);
     c->vr_a = find_role(FL_R_OUT_A, -1);
+    for (j = 0; j < FL_EP_MAX; j++) c->vr_ep[j] = find_role(FL_R_EMPS_PARAM, j);
+    c->vr_uin = find_role(FL_R_IN_U, -1);
+    c->vr_qg = find_role(FL_R_IN_QG, -1);
+    c->vr_pulse = find_role(FL_R_IN_PULSE, -1);
+    c->vr_uout = find_role(FL_R_OUT_U, -1);
+    c->vr_fmotor = find_role(FL_R_OUT_FMOTOR, -1);
     for (j = 0; j < NLIN; j++) c->vr_lin[j] = find_role(FL_R_OUT_LIN, j);
     for (j = 0; j < MAXS; j++) {
         c->vr_state[j] = find_role(FL_R_STATE, j);
@@ -1029,8 +1053,12 @@ fmi2Status fmi2DoStep(fmi2Component comp, fmi2Real t, fmi2Real h,
 #elif FL_KIND == FL_KIND_EFFECTS
     c->d.time = t + h;
     compute_outputs(c);
-#else
+#elif FL_KIND == FL_KIND_MASS
     mass_advance(c, t, h);
+    c->d.time = t + h;
+    compute_outputs(c);
+#else
+    emps_advance(c, t, h);
     c->d.time = t + h;
     compute_outputs(c);
 #endif

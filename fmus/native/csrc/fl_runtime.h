@@ -27,7 +27,9 @@ enum {
     FL_R_EXT,          /* effects block: packed extension entry e[idx] */
     FL_R_MASS_PARAM,   /* mass: parameter idx (m, x0, v0, u0, u_amp, u_freq) */
     FL_R_IN_FEXT, FL_R_IN_FFRIC,
-    FL_R_OUT_X, FL_R_OUT_V, FL_R_OUT_A
+    FL_R_OUT_X, FL_R_OUT_V, FL_R_OUT_A,
+    FL_R_EMPS_PARAM,   /* EMPS axis / controller: parameter FL_EP_<idx> of fl_model.h */
+    FL_R_IN_U, FL_R_IN_QG, FL_R_IN_PULSE, FL_R_OUT_U, FL_R_OUT_FMOTOR
 };
 
 typedef struct fl_var {
@@ -41,5 +43,10 @@ typedef struct fl_var {
 #define FL_KIND_LAW 1
 #define FL_KIND_EFFECTS 2
 #define FL_KIND_MASS 3
+#define FL_KIND_EMPS_AXIS 4
+#define FL_KIND_EMPS_CTRL 5
+
+/* largest EMPS parameter index + 1 (FL_EP_* of fl_model.h) */
+#define FL_EP_MAX 16
 
 #endif

@@ -44,7 +44,8 @@ def run_diagnose_cli(args) -> int:
     sets = [load_dataset(p, mapping=mapping, scale=scale) for p in args.data]
     rep = diagnose(sets[0], args.model, validation=sets[1:] or None, seed=args.seed,
                    candidates=_candidates(args), progress=None if quiet else say,
-                   noise_level=_noise_level(args, mapping, scale))
+                   noise_level=_noise_level(args, mapping, scale),
+                   executor=getattr(args, "executor", None))
     from .report_html import write_html
     return _emit(rep, args, write_html)
 

@@ -204,7 +204,7 @@ def extrapolation(fit, val_sets) -> dict:
 def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed: int = 0,
              fit_fraction: float = 0.7, greedy: bool = True, progress=None,
              mapping=None, scale=None, noise_level: float | None = None,
-             base_names: list | None = None) -> DiagnosisReport:
+             base_names: list | None = None, executor=None) -> DiagnosisReport:
     """Locate and name the sim-to-real gap of a friction model.
 
     Parameters
@@ -231,6 +231,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     base_names : list of str, optional
         Free parameters of the base law. Default: those ``identify`` fits by default
         (:func:`base_free_names`), so both commands fit the same law.
+    executor : None or dask.distributed.Client
+        Where the candidates' joint fits run: in this process (default), or mapped over a
+        dask cluster, one task per candidate, the fit record scattered once
+        (:mod:`diagnosis.cluster`); the report is the same.
 
     Every record is simulated from the law's steady state at its first velocity (a record
     that starts in motion), a separate held-out record that starts at rest after an
@@ -318,6 +322,8 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
 
     # 3. which
     effects, skipped, fitted = [], {}, {}
+    from .cluster import candidate_fits  # on a cluster: the applicable ones' fits at once
+    remote = candidate_fits(executor, names, base.law, base_names, fit, ctx, val_sets)
     for k, name in enumerate(names, 1):
         cand = CANDIDATES[name].specialise(base.law)
         ok, why = cand.applicable(base.law, fit, ctx)
@@ -326,8 +332,8 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
             skipped[name] = why
             continue
         say(f"[diagnose] candidate {k}/{len(names)}: {name}")
-        best = None
-        for law_v, names_v in cand.modify_law(base.law, base_names, ctx):
+        best = remote.get(name)
+        for law_v, names_v in (() if best else cand.modify_law(base.law, base_names, ctx)):
             comp, cost = fit_composite(law_v, names_v, [cand], fit, ctx)
             if best is None or cost < best[1]:
                 best = (comp, cost)

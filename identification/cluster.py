@@ -102,7 +102,7 @@ _EXTRACTED: dict = {}
 _LOCK = threading.Lock()
 #: per worker process: what this process did (for tests and diagnostics)
 _STATS = {"chunks": 0, "rows": 0, "extracted": 0, "reused": 0, "objectives": 0,
-          "folders": []}
+          "candidates": 0, "folders": []}
 
 
 def _root() -> str:
@@ -304,6 +304,6 @@ def ship(objective) -> ShippedObjective:
 
 def worker_stats() -> dict:
     """What this process did as a worker: ``chunks`` and ``rows`` evaluated, bundles
-    ``extracted`` (written) or ``reused`` (found on disk), ``objectives`` received,
-    ``folders`` used. Run it on every worker with ``client.run(worker_stats)``."""
+    ``extracted`` (written) or ``reused`` (found on disk or in memory), ``objectives``
+    received, diagnosis ``candidates`` fitted (:mod:`diagnosis.cluster`), ``folders`` used. Run it on every worker with ``client.run(worker_stats)``."""
     return {k: (list(v) if isinstance(v, list) else v) for k, v in _STATS.items()}

@@ -92,9 +92,10 @@ class ProcessExecutor:
 class DaskExecutor:
     """Evaluate on a ``dask.distributed`` cluster (for campaigns that outgrow one machine).
 
-    The objective goes to every worker once per identification, with its data and its FMU
-    files by value (:func:`identification.cluster.ship`: workers need no shared file system);
-    then only parameter rows travel, one chunk per worker thread.
+    The objective goes from here to every worker once per identification, with its data and
+    its FMU files by value (:func:`identification.cluster.ship`: workers need no shared file
+    system); then only parameter rows travel, one chunk per worker thread, each to the
+    worker that holds its objective.
 
     Parameters
     ----------
@@ -108,8 +109,26 @@ class DaskExecutor:
     def __init__(self, client, chunks: int | None = None):
         self.client = client
         self.chunks = chunks
-        self._future = None
+        self._shipped = None
+        self._futures = {}  # worker address -> the shipped objective's future there
         self._objective_id = None
+
+    def _placed(self, objective) -> dict:
+        """``worker -> future`` of the shipped objective on every current worker: sent
+        from here once per worker (a worker that joins later gets it on the next call)."""
+        from .cluster import ship
+        if self._shipped is None or self._objective_id != id(objective):
+            self.close()
+            self._shipped = ship(objective)
+            self._objective_id = id(objective)
+        workers = sorted(self.client.nthreads())
+        for w in [w for w in self._futures if w not in workers]:
+            self._futures.pop(w).release()
+        for w in workers:
+            if w not in self._futures:
+                self._futures[w] = self.client.scatter(self._shipped, workers=[w],
+                                                       hash=False)
+        return self._futures
 
     def costs(self, objective, X):
         """Costs of the parameter rows ``X[n, D]`` (physical values) of ``objective``.
@@ -127,34 +146,40 @@ class DaskExecutor:
         Raises
         ------
         identification.cluster.SchedulerError
-            When the scheduler or every worker is lost during the evaluation.
+            When the scheduler or a worker is lost during the evaluation.
         """
         from concurrent.futures import CancelledError
-        from .cluster import SchedulerError, ship
+        from .cluster import SchedulerError
         try:
-            if self._future is None or self._objective_id != id(objective):
-                self._future = self.client.scatter(ship(objective), broadcast=True,
-                                                   hash=False)
-                self._objective_id = id(objective)
-            n = self.chunks or max(1, sum(self.client.nthreads().values()))
-            futures = [self.client.submit(_dask_costs, self._future, c, pure=False)
-                       for c in _chunks(np.asarray(X), n)]
+            placed = self._placed(objective)
+            # one chunk per worker thread, each on the worker that holds its objective
+            nthreads = self.client.nthreads()
+            slots = [w for w in sorted(placed) for _ in range(max(1, nthreads.get(w, 1)))]
+            if not slots:
+                raise OSError("no worker is connected")
+            n = self.chunks or len(slots)
+            futures = []
+            for i, c in enumerate(_chunks(np.asarray(X), n)):
+                w = slots[i % len(slots)]
+                futures.append(self.client.submit(_dask_costs, placed[w], c, pure=False,
+                                                  workers=[w]))
             return np.concatenate(self.client.gather(futures))
         except (OSError, CancelledError, TimeoutError) as exc:
             addr = getattr(self.client, "scheduler_address", None) or "the scheduler"
             text = str(exc).strip().splitlines()
-            raise SchedulerError(f"lost the dask scheduler at {addr} during the run: "
+            raise SchedulerError(f"lost the dask cluster at {addr} during the run: "
                                  f"{text[0] if text else type(exc).__name__} (a --checkpoint "
                                  f"keeps every finished evaluation)") from None
 
     def close(self):
-        """Release the scattered objective (the client stays connected)."""
-        if self._future is not None:
+        """Release the shipped objective on the workers (the client stays connected)."""
+        for f in self._futures.values():
             try:
-                self._future.release()
+                f.release()
             except Exception:  # noqa: BLE001 - a lost client has nothing to release
                 pass
-        self._future = None
+        self._futures = {}
+        self._shipped = None
         self._objective_id = None
 
 

@@ -158,6 +158,10 @@ def test_unreachable_scheduler_is_one_line_exit_2_and_nothing_lost(tmp_path, cap
     assert code == 2 and len(err.splitlines()) == 1 and address in err, err
     assert main(["identify", data, "--model", "lugre", "--scheduler", "nonsense://x"]) == 2
     assert "nonsense://x" in capsys.readouterr().err
+    # the trajectory level runs in this process: refused before connecting, not ignored
+    assert main(["diagnose", data, "--model", "lugre", "--plant", "xml350",
+                 "--scheduler", address]) == 2
+    assert "--scheduler applies to the force-level" in capsys.readouterr().err
 
 
 def test_a_scheduler_without_workers_is_refused():
@@ -258,3 +262,23 @@ def test_plant_fmu_identification_on_the_cluster_equals_inline(cluster, tmp_path
     # ...once: the second identification found them by their content hash
     assert _delta(after, before, "extracted") == {"w1": 1, "w2": 1}
     assert _delta(after, mid, "reused") == {"w1": 1, "w2": 1}
+
+
+@pytest.mark.slow
+def test_cli_diagnose_on_the_cluster_equals_inline(cluster, tmp_path, capsys):
+    """diagnose --scheduler: the candidates' joint fits run one task per candidate on the
+    workers (both get some); the report equals the in-process one."""
+    address, _ = cluster
+    data = str(_csv(tmp_path / "run.csv"))
+    argv = ["diagnose", data, "--model", "lugre", "--quiet",
+            "--candidates", "acceleration,asymmetry,inertia,delay"]
+    assert main(argv + ["--json", str(tmp_path / "inline.json")]) == 0
+    before = _stats(address)
+    assert main(argv + ["--json", str(tmp_path / "dask.json"), "--scheduler", address]) == 0
+    fits = _delta(_stats(address), before, "candidates")
+    inline = json.loads((tmp_path / "inline.json").read_text())
+    dask = json.loads((tmp_path / "dask.json").read_text())
+    for rep in (inline, dask):
+        rep.pop("timing", None)
+    assert dask == inline
+    assert sum(fits.values()) == 4 and all(n > 0 for n in fits.values()), fits

@@ -1,0 +1,130 @@
+"""The force-level diagnosis' candidate fits on a ``dask.distributed`` cluster.
+
+Every candidate effect is re-identified jointly with the base law on the fit record
+(:func:`diagnosis.composite.fit_composite`), independently of the others: they are mapped
+over the workers, one task per candidate, with the fit record, its context and the base law
+scattered to every worker once. Each task runs exactly what :func:`diagnosis.diagnose` runs
+in-process, so the report is the same; scoring on the held-out records, the greedy stacking
+and the verdict stay in the client.
+
+>>> from identification.cluster import connect                      # doctest: +SKIP
+>>> rep = diagnose("fit.csv", "lugre", executor=connect("tcp://10.0.0.5:8786"))
+"""
+from __future__ import annotations
+
+__all__ = ["candidate_fits", "applicable", "as_client"]
+
+
+def as_client(executor):
+    """The ``dask.distributed.Client`` behind ``executor`` (a client, or a
+    :class:`identification.executors.DaskExecutor`), else ``None`` (fits run in-process).
+
+    Parameters
+    ----------
+    executor : None, str, dask.distributed.Client or DaskExecutor
+        ``None``, ``"inline"`` or ``"auto"``: in this process.
+
+    Returns
+    -------
+    dask.distributed.Client or None
+    """
+    if executor is None or executor in ("inline", "auto"):
+        return None
+    client = getattr(executor, "client", executor)
+    try:
+        from dask.distributed import Client
+    except ImportError:  # pragma: no cover
+        Client = None
+    if Client is not None and isinstance(client, Client):
+        return client
+    raise ValueError(f"executor = {executor!r}: the diagnosis runs its candidate fits "
+                     f"in-process (None) or on a dask.distributed.Client")
+
+
+def _fit_one(name, law, base_names, fit, ctx):
+    """Best (composite, fit NRMSE) of candidate ``name`` over its law variants, or None
+    when it does not apply (the client decides what to report)."""
+    from identification.cluster import _STATS
+    from .composite import fit_composite
+    from .effects import CANDIDATES
+    _STATS["candidates"] += 1
+    cand = CANDIDATES[name].specialise(law)
+    best = None
+    for law_v, names_v in cand.modify_law(law, base_names, ctx):
+        comp, cost = fit_composite(law_v, names_v, [cand], fit, ctx)
+        if best is None or cost < best[1]:
+            best = (comp, cost)
+    return best
+
+
+def applicable(names, law, fit, ctx, val_sets) -> list:
+    """The candidates of ``names`` that :func:`diagnosis.diagnose` fits: those that apply
+    to ``law`` on ``fit`` and whose columns every held-out record has.
+
+    Parameters
+    ----------
+    names : list of str
+    law : FrictionModel
+    fit : friction.dataset.Dataset
+    ctx : diagnosis.effects.Context
+    val_sets : list of friction.dataset.Dataset
+
+    Returns
+    -------
+    list of str
+    """
+    from .core import _missing_columns
+    from .effects import CANDIDATES
+    out = []
+    for n in names:
+        cand = CANDIDATES[n].specialise(law)
+        ok, _ = cand.applicable(law, fit, ctx)
+        if ok and not _missing_columns(cand, val_sets):
+            out.append(n)
+    return out
+
+
+def candidate_fits(executor, names, law, base_names, fit, ctx, val_sets=()) -> dict:
+    """The candidates' joint fits on the cluster behind ``executor``.
+
+    Parameters
+    ----------
+    executor : None, dask.distributed.Client or DaskExecutor
+        ``None``: nothing runs here (``{}``; the caller fits in-process).
+    names : list of str
+        Candidate effects; those that do not apply (:func:`applicable`) are left out.
+    law : FrictionModel
+        The fitted base law (the candidates' start).
+    base_names : list of str
+        Its free parameters.
+    fit : friction.dataset.Dataset
+        The fit record [SI units].
+    ctx : diagnosis.effects.Context
+        Its scales.
+    val_sets : list of friction.dataset.Dataset
+        The held-out records (a candidate needs its columns in them).
+
+    Returns
+    -------
+    dict
+        ``name -> (Composite, fit NRMSE)``, the same as the in-process loop gives.
+    """
+    client = as_client(executor)
+    if client is None:
+        return {}
+    names = applicable(names, law, fit, ctx, val_sets)
+    if not names:
+        return {}
+    fit_f, ctx_f, law_f = client.scatter([fit, ctx, law], broadcast=True, hash=False)
+    futures = [client.submit(_fit_one, n, law_f, list(base_names), fit_f, ctx_f,
+                             pure=False, key=f"diagnose-candidate-{n}-{id(fit_f)}")
+               for n in names]
+    try:
+        return dict(zip(names, client.gather(futures)))
+    except (OSError, TimeoutError) as exc:
+        from identification.cluster import SchedulerError
+        raise SchedulerError(f"lost the dask scheduler at {client.scheduler_address} "
+                             f"during the candidate fits: {exc}") from None
+    finally:
+        for f in futures + [fit_f, ctx_f, law_f]:
+            f.release()

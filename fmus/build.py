@@ -41,12 +41,23 @@ from .recipes import LAW_EXPERIMENT, FmuRecipe, catalogue  # noqa: F401 (re-expo
 from .vendor import vendor_package
 
 __all__ = ["FmuRecipe", "catalogue", "build_fmu", "build_all", "validate", "REPO",
-           "RUNTIME_MODULES"]
+           "RUNTIME_MODULES", "RUNTIME_COPIES"]
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 #: the modules of this package that travel inside every pythonfmu FMU (``_fl_<fmu>_fmus``):
 #: the slave runtime and what it imports (relative imports, so they work under any name)
 RUNTIME_MODULES = ("coupling.py", "variables.py", "runtime.py")
+#: lower-layer modules without project imports that travel with them: source -> name in the
+#: runtime package (their absolute imports in the runtime modules become relative)
+RUNTIME_COPIES = {"friction/bounds.py": "bounds.py"}
+
+
+def _runtime_source(text: str) -> str:
+    """A runtime module as it travels: ``from friction.bounds import`` -> ``from .bounds``."""
+    for src, name in RUNTIME_COPIES.items():
+        dotted = src[:-3].replace("/", ".")
+        text = text.replace(f"from {dotted} import", f"from .{name[:-3]} import")
+    return text
 def _log_categories() -> dict:
     from pythonfmu import Fmi2Slave
     return dict(Fmi2Slave.log_categories)
@@ -95,7 +106,10 @@ def build_fmu(recipe: FmuRecipe, out: str | os.PathLike) -> pathlib.Path:
         rt.mkdir()
         (rt / "__init__.py").write_text('"""frictionlab FMU runtime (vendored by fmus.build)."""\n')
         for module in RUNTIME_MODULES:
-            (rt / module).write_text((pathlib.Path(__file__).parent / module).read_text())
+            text = (pathlib.Path(__file__).parent / module).read_text()
+            (rt / module).write_text(_runtime_source(text))
+        for src, name in RUNTIME_COPIES.items():
+            (rt / name).write_text((REPO / src).read_text())
         files.append(rt)
         script = stage / f"{recipe.model_identifier}.py"
         script.write_text(_script(recipe))

@@ -26,6 +26,8 @@ import dataclasses
 import importlib
 import math
 
+from friction.bounds import Bounded  # the FMU's copy in its runtime package (fmus.build)
+
 from .coupling import (INPUT_INFO, LAW_PORTS, MEAN_INPUT, PLANT_PORTS, SHARE_INPUT,
                        SWITCH_OUTPUTS, COUPLING_OUTPUTS, fmi_unit, has_switch, law_inputs)
 
@@ -36,7 +38,7 @@ __all__ = ["Var", "exclusive_min", "exclusive_max", "fmi_min_max", "param_vars",
 
 
 @dataclasses.dataclass
-class Var:
+class Var(Bounded):
     """One FMU variable (what the model description lists and the runtime stores)."""
     name: str
     causality: str                  # "parameter" | "input" | "output"
@@ -65,23 +67,12 @@ class Var:
     def bound_text(self) -> str:
         if self.type == "Enumeration":
             return "one of " + ", ".join(f"{k} ({item})" for k, item in enumerate(self.items, 1))
-        parts = []
-        if self.lower > -math.inf:
-            parts.append(f"{'>' if self.lower_open else '>='} {self.lower:g}")
-        if self.upper < math.inf:
-            parts.append(f"{'<' if self.upper_open else '<='} {self.upper:g}")
-        return " and ".join(parts) or "finite"
+        return Bounded.bound_text(self)
 
     def admissible(self, value) -> bool:
         if self.type == "Enumeration":
             return isinstance(value, int) and 1 <= value <= len(self.items)
-        if not math.isfinite(value):
-            return False
-        if value < self.lower or (self.lower_open and value == self.lower):
-            return False
-        if value > self.upper or (self.upper_open and value == self.upper):
-            return False
-        return True
+        return Bounded.admissible(self, value)
 
 
 def exclusive_min(lower: float) -> float:

@@ -60,7 +60,7 @@ DRIFT_NAMES = ("k_drift", "k_sat", "tau_sat", "k_step", "t_step", "w_step")
 EXTENSION_PARAMS = (
     ("use_acc", 0.0, "1", "acceleration-dependent part on (1) or off (0)"),
     ("f_a", 0.0, "N", "amplitude of the acceleration-dependent part"),
-    ("a_s", 1.0, "m/s2", "acceleration scale of the acceleration-dependent part (> 0)"),
+    ("a_s", 1.0, "m/s^2", "acceleration scale of the acceleration-dependent part (> 0)"),
     ("v_c", 1.0, "m/s", "velocity over which the acceleration-dependent part fades (> 0)"),
     ("use_pos", 0.0, "1", "position-dependent levels on (1) or off (0)"),
     ("x_lo", 0.0, "m", "start of the stroke the position map refers to"),

@@ -22,52 +22,31 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import ClassVar
 
 import numpy as np
 from numba import njit, prange
 
-from ._validation import ParameterError
 from .base import METHODS, FrictionModel, FrictionParams, param
-from .shapes import SHAPES, DirectionalStribeck, stribeck_g
+from .shapes import SHAPES, DirectionalStribeck, DirectionalStribeckParams, stribeck_g
 
 __all__ = ["LuGreParams", "LuGre", "bristle_update", "lugre_run", "lugre_sensitivity_run",
            "lugre_normal_equations"]
 
 
 @dataclass(frozen=True)
-class LuGreParams(FrictionParams):
-    """Parameters of the classic LuGre law (defaults: a small precision-stage contact)."""
-    #: option fields -> their choices and the integer codes the kernels use
-    OPTIONS: ClassVar[dict] = {"shape": SHAPES}
+class _BristleParams(FrictionParams):
+    """The bristle fields of the classic LuGre, first in its field order."""
     sigma0: float = param(1e5, "N/m", "bristle stiffness", lower=0, lower_open=True,
                           upper=1e9, search=(1e3, 1e7), log=True)
     sigma1: float = param(300.0, "N.s/m", "micro-damping of the bristles", lower=0,
                           search=(0.0, 2e3))
-    sigma2: float = param(0.4, "N.s/m", "viscous coefficient (v >= 0)", lower=0,
-                          search=(0.0, 50.0))
-    Fc: float = param(1.0, "N", "Coulomb friction level (v >= 0)", lower=0, lower_open=True,
-                      search=(1e-2, 50.0))
-    Fs: float = param(1.5, "N", "static (break-away) friction level (v >= 0)", lower=0,
-                      lower_open=True, search=(1e-2, 60.0))
-    vs: float = param(1e-3, "m/s", "Stribeck velocity (v >= 0)", lower=0, lower_open=True,
-                      search=(1e-5, 0.1), log=True)
-    alpha: float = param(2.0, "1", "Stribeck shape exponent (gaussian shape)", lower=0,
-                         lower_open=True, upper=10, search=(0.3, 4.0))
-    b: float = param(0.0, "N", "constant force offset (seed 003 Eq. 4)", search=(-5.0, 5.0))
-    Fc_neg: float | None = param(None, "N", "Coulomb level for v < 0 (None: same as Fc)",
-                                 lower=0, lower_open=True, search=(1e-2, 50.0))
-    Fs_neg: float | None = param(None, "N", "static level for v < 0 (None: same as Fs)",
-                                 lower=0, lower_open=True, search=(1e-2, 60.0))
-    vs_neg: float | None = param(None, "m/s", "Stribeck velocity for v < 0 (None: same as vs)",
-                                 lower=0, lower_open=True, search=(1e-5, 0.1), log=True)
-    sigma2_neg: float | None = param(None, "N.s/m", "viscous coefficient for v < 0 "
-                                     "(None: same as sigma2)", lower=0, search=(0.0, 50.0))
-    shape: str = "gaussian"
 
-    def _check_relations(self):
-        if self.shape not in SHAPES:
-            raise ParameterError(f"shape = {self.shape!r}: must be one of {sorted(SHAPES)}")
+
+@dataclass(frozen=True)
+class LuGreParams(DirectionalStribeckParams, _BristleParams):
+    """Parameters of the classic LuGre law (defaults: a small precision-stage contact):
+    ``sigma0, sigma1``, then the Stribeck block of
+    :class:`friction.shapes.DirectionalStribeckParams` (fields in that order)."""
 
 
 # packed layout: index constants are used inside the kernels

@@ -8,11 +8,17 @@ g is in force units [N]; the bristle saturates at z_ss = g(v) sgn(v) / sigma0.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from numba import njit
 
-__all__ = ["SHAPES", "stribeck_g", "stribeck_g_np", "DirectionalStribeck"]
+from ._validation import ParameterError
+from .base import FrictionParams, param
+
+__all__ = ["SHAPES", "stribeck_g", "stribeck_g_np", "DirectionalStribeck",
+           "DirectionalStribeckParams"]
 
 SHAPES = {"gaussian": 0, "lorentzian": 1}
 
@@ -38,6 +44,41 @@ def stribeck_g_np(v, Fc, Fs, vs, alpha=2.0, shape="gaussian"):
     else:
         e = np.exp(-r ** alpha)
     return Fc + (Fs - Fc) * e
+
+
+@dataclass(frozen=True)
+class DirectionalStribeckParams(FrictionParams):
+    """The parameter block of a direction-dependent Stribeck curve with viscous friction and
+    an offset (``sigma2, Fc, Fs, vs, alpha, b``, their ``*_neg`` twins and ``shape``), the
+    one definition the static map (:class:`friction.stribeck.StribeckParams`) and the classic
+    LuGre (:class:`friction.lugre.LuGreParams`, after its bristle fields) share. Defaults:
+    a small precision-stage contact."""
+    #: option fields -> their choices and the integer codes the kernels use
+    OPTIONS: ClassVar[dict] = {"shape": SHAPES}
+    sigma2: float = param(0.4, "N.s/m", "viscous coefficient (v >= 0)", lower=0,
+                          search=(0.0, 50.0))
+    Fc: float = param(1.0, "N", "Coulomb friction level (v >= 0)", lower=0, lower_open=True,
+                      search=(1e-2, 50.0))
+    Fs: float = param(1.5, "N", "static (break-away) friction level (v >= 0)", lower=0,
+                      lower_open=True, search=(1e-2, 60.0))
+    vs: float = param(1e-3, "m/s", "Stribeck velocity (v >= 0)", lower=0, lower_open=True,
+                      search=(1e-5, 0.1), log=True)
+    alpha: float = param(2.0, "1", "Stribeck shape exponent (gaussian shape)", lower=0,
+                         lower_open=True, upper=10, search=(0.3, 4.0))
+    b: float = param(0.0, "N", "constant force offset (seed 003 Eq. 4)", search=(-5.0, 5.0))
+    Fc_neg: float | None = param(None, "N", "Coulomb level for v < 0 (None: same as Fc)",
+                                 lower=0, lower_open=True, search=(1e-2, 50.0))
+    Fs_neg: float | None = param(None, "N", "static level for v < 0 (None: same as Fs)",
+                                 lower=0, lower_open=True, search=(1e-2, 60.0))
+    vs_neg: float | None = param(None, "m/s", "Stribeck velocity for v < 0 (None: same as vs)",
+                                 lower=0, lower_open=True, search=(1e-5, 0.1), log=True)
+    sigma2_neg: float | None = param(None, "N.s/m", "viscous coefficient for v < 0 "
+                                     "(None: same as sigma2)", lower=0, search=(0.0, 50.0))
+    shape: str = "gaussian"
+
+    def _check_relations(self):
+        if self.shape not in SHAPES:
+            raise ParameterError(f"shape = {self.shape!r}: must be one of {sorted(SHAPES)}")
 
 
 class DirectionalStribeck:

@@ -16,48 +16,21 @@ sample, so it is exact at any step size.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar
 
 import numpy as np
 from numba import njit, prange
 
-from ._validation import ParameterError
-from .base import FrictionModel, FrictionParams, param
+from .base import FrictionModel
 from .lugre import _g_fast, side_constants
-from .shapes import SHAPES, DirectionalStribeck, stribeck_g
+from .shapes import SHAPES, DirectionalStribeck, DirectionalStribeckParams, stribeck_g
 
 __all__ = ["StribeckParams", "StaticStribeck", "stribeck_force", "stribeck_run"]
 
 
 @dataclass(frozen=True)
-class StribeckParams(FrictionParams):
-    """Parameters of the static Stribeck map (defaults: those of the classic LuGre)."""
-    #: option fields -> their choices and the integer codes the kernels use
-    OPTIONS: ClassVar[dict] = {"shape": SHAPES}
-    sigma2: float = param(0.4, "N.s/m", "viscous coefficient (v >= 0)", lower=0,
-                          search=(0.0, 50.0))
-    Fc: float = param(1.0, "N", "Coulomb friction level (v >= 0)", lower=0, lower_open=True,
-                      search=(1e-2, 50.0))
-    Fs: float = param(1.5, "N", "static (break-away) friction level (v >= 0)", lower=0,
-                      lower_open=True, search=(1e-2, 60.0))
-    vs: float = param(1e-3, "m/s", "Stribeck velocity (v >= 0)", lower=0, lower_open=True,
-                      search=(1e-5, 0.1), log=True)
-    alpha: float = param(2.0, "1", "Stribeck shape exponent (gaussian shape)", lower=0,
-                         lower_open=True, upper=10, search=(0.3, 4.0))
-    b: float = param(0.0, "N", "constant force offset (seed 003 Eq. 4)", search=(-5.0, 5.0))
-    Fc_neg: float | None = param(None, "N", "Coulomb level for v < 0 (None: same as Fc)",
-                                 lower=0, lower_open=True, search=(1e-2, 50.0))
-    Fs_neg: float | None = param(None, "N", "static level for v < 0 (None: same as Fs)",
-                                 lower=0, lower_open=True, search=(1e-2, 60.0))
-    vs_neg: float | None = param(None, "m/s", "Stribeck velocity for v < 0 (None: same as vs)",
-                                 lower=0, lower_open=True, search=(1e-5, 0.1), log=True)
-    sigma2_neg: float | None = param(None, "N.s/m", "viscous coefficient for v < 0 "
-                                     "(None: same as sigma2)", lower=0, search=(0.0, 50.0))
-    shape: str = "gaussian"
-
-    def _check_relations(self):
-        if self.shape not in SHAPES:
-            raise ParameterError(f"shape = {self.shape!r}: must be one of {sorted(SHAPES)}")
+class StribeckParams(DirectionalStribeckParams):
+    """Parameters of the static Stribeck map (defaults: those of the classic LuGre); the
+    fields are :class:`friction.shapes.DirectionalStribeckParams`'s."""
 
 
 _LAYOUT = ("sigma2", "sigma2_neg", "Fc", "Fc_neg", "Fs", "Fs_neg", "vs", "vs_neg", "alpha",

@@ -129,7 +129,7 @@ class DampingRig(Plant):
     signals = {"x": ("m", "sliding displacement piston-cylinder"),
                "x_p": ("m", "piston displacement"),
                "v": ("m/s", "sliding velocity piston-cylinder"),
-               "a": ("m/s2", "relative acceleration"), "x_c": ("m", "cylinder displacement"),
+               "a": ("m/s^2", "relative acceleration"), "x_c": ("m", "cylinder displacement"),
                "F_meas": ("N", "sum of the four force sensors"),
                "u": ("N", "motor force (open-loop experiment)"),
                "F": ("N", "ring friction on the cylinder"),

@@ -180,7 +180,7 @@ class ForgingPress(Plant):
     options = {"schedule": ((1.2e-3, 6.0), (0.1e-3, 5.0), (0.05e-3, 5.0), (0.002e-3, 25.0)),
                "workpiece": True}
     signals = {"x": ("m", "beam travel, downwards"), "v": ("m/s", "beam velocity"),
-               "a": ("m/s2", "beam acceleration"), "p1": ("Pa", "major chamber pressure"),
+               "a": ("m/s^2", "beam acceleration"), "p1": ("Pa", "major chamber pressure"),
                "p2": ("Pa", "supporting chamber pressure"),
                "F_sigma": ("N", "deformation resistance"),
                "load": ("N", "load input of the friction law (= F_sigma)"),

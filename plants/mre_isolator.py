@@ -79,7 +79,7 @@ class MREIsolator(Plant):
     max_substep = 1e-4
     options = {"freq": 4.0, "amplitude": 8e-3, "ramp_cycles": 1.0}
     signals = {"x": ("m", "shear displacement"), "v": ("m/s", "shear velocity"),
-               "a": ("m/s2", "shear acceleration"), "x_table": ("m", "table position"),
+               "a": ("m/s^2", "shear acceleration"), "x_table": ("m", "table position"),
                "x_ref": ("m", "table reference"), "F_meas": ("N", "load-cell force"),
                "F": ("N", "isolator shear force"),
                "F_friction": ("N", "isolator force input (external law)")}

@@ -122,7 +122,7 @@ class ValveActuator(Plant):
     max_substep = 2.5e-5
     options = {"freq": 10.0, "magnitude": 8e-3, "speed": 0.0, "t_acc": 0.02}
     signals = {"x": ("m", "valve lift S"), "v": ("m/s", "valve velocity"),
-               "a": ("m/s2", "valve acceleration"), "i": ("A", "coil current"),
+               "a": ("m/s^2", "valve acceleration"), "i": ("A", "coil current"),
                "i_cmd": ("A", "current command"), "S_ref": ("m", "lift reference"),
                "S_meas": ("m", "encoder position (quantised)"),
                "F": ("N", "friction force on the valve, opposing v"),

@@ -46,10 +46,11 @@ __all__ = ["FmuRecipe", "catalogue", "build_fmu", "build_all", "validate", "REPO
 REPO = pathlib.Path(__file__).resolve().parents[1]
 #: the modules of this package that travel inside every pythonfmu FMU (``_fl_<fmu>_fmus``):
 #: the slave runtime and what it imports (relative imports, so they work under any name)
-RUNTIME_MODULES = ("coupling.py", "variables.py", "runtime.py")
+RUNTIME_MODULES = ("variables.py", "runtime.py")
 #: lower-layer modules without project imports that travel with them: source -> name in the
-#: runtime package (their absolute imports in the runtime modules become relative)
-RUNTIME_COPIES = {"friction/bounds.py": "bounds.py"}
+#: runtime package (their absolute imports in the runtime modules become relative;
+#: ``from .coupling import`` finds the copy of friction/coupling.py)
+RUNTIME_COPIES = {"friction/bounds.py": "bounds.py", "friction/coupling.py": "coupling.py"}
 
 
 def _runtime_source(text: str) -> str:

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from friction.regimes import filippov, regime_split, side, surface_regime
-from fmus.coupling import MEAN_INPUT, PLANT_INPUTS, SHARE_INPUT
+from friction.coupling import MEAN_INPUT, PLANT_INPUTS, SHARE_INPUT
 
 from .law_stepper import FrictionStep
 
@@ -85,7 +85,7 @@ class PlantStepper:
     """
 
     #: inputs of the linearly implicit coupling (external friction mode; the port names of
-    #: fmus.coupling, shared with the law FMUs and the master)
+    #: friction.coupling, shared with the law FMUs and the master)
     COUPLING_INPUTS = PLANT_INPUTS
     #: output of the coupling (external friction mode): share of the last step spent on the
     #: low side of |v| = v_switch (a sliding stretch counts with its Filippov weight)

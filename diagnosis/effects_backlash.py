@@ -1,0 +1,377 @@
+"""The ``backlash`` candidate: lost motion at the reversals between the drive and the contact.
+
+The effect
+----------
+Between the measured drive (motor, screw, gear) and the sliding contact sits a play of
+width ``backlash_gap`` = 2 delta [m]. After a reversal the drive travels across the play
+while the contact stands still and holds the force it carried; only when the drive reaches
+the other flank does the contact follow. Measured against the drive's motion, the friction
+force lags by a constant displacement at every reversal: a flat segment of width
+``backlash_gap`` and then the base law's presliding, shifted by +-delta.
+
+As an extension of a fitted base law
+------------------------------------
+The base law is fed the *contact's* motion instead of the drive's: its parameters keep their
+meaning, the candidate adds one parameter, the half-gap ``delta`` [m] (``backlash_gap`` =
+2 delta is what the report gives). The law that does exactly this is
+:class:`friction.backlash.BacklashLuGre` (a play operator in front of the LuGre bristle,
+integrated exactly in the drive's travel, numba), so the candidate *is* that law with the
+base's fitted LuGre values: one home for the physics, and its native FMU
+(``backlash_lugre``) carries the candidate through every FMU route (see below). The state
+(the bristle and the position in the play) lives inside the law's kernel: a stateless output
+map such as :func:`friction.extensions.extension_force` cannot express it.
+
+The measured force is the one the contact holds while the drive crosses the play
+(``gap="hold"``: a force read at the contact, or a preloaded joint). Offered on a classic
+LuGre base (identify's default); other bases have no play-operator form here and are
+skipped with the reason.
+
+The gap is non-convex in the residual (a flat segment that is too short only moves the
+reversal transitions), so its start is chosen on the data before the joint fit
+(:func:`gap_start`: the base law with the play simulated for a geometric grid of gaps,
+the least-squares best kept).
+
+FMU route
+---------
+The ``friction_effects`` block is a stateless map of the law's output force (the law FMU
+before it, the plant after it): it sees ``F_law, v, a, x, load, t`` and nothing of the law's
+state. Backlash changes the motion the law's state integrates, not its output, so it cannot
+sit after the law; it runs inside the law FMU ``backlash_lugre`` (exact steps with the cut
+at each reversal, rollback, Model Exchange), which the trajectory level and a user's plant
+FMU pick by the candidate's law name. ``tests/test_diagnosis_backlash_gms.py`` checks that
+FMU against :meth:`Backlash.law_for` to 1e-10.
+
+Truth forms (:data:`TRUTHS`, for the benchmark)
+-----------------------------------------------
+Three mechanisms from different physics, each integrated :data:`FINE` x finer than sampled
+(none is the candidate's own law): the measured force is the friction of the contact, a
+LuGre contact at :data:`diagnosis.benchmark.BASE`:
+
+* ``rigid``     a kinematic play of constant width (the contact follows the drive exactly
+                once engaged; a sharp flank);
+* ``compliant`` the contact, a mass, pushed through a spring and damper once engaged (a
+                flexible coupling or gear tooth: the contact lags further by its load over
+                the coupling stiffness and oscillates a little);
+* ``impact``    a stiff Hunt-Crossley contact with impact damping (force k e^1.5 +
+                lambda e^1.5 de/dt, compressive only): the engagement is an impact that
+                settles within a few milliseconds.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from friction import make_model
+
+from .effects import Candidate, Context
+
+__all__ = ["Backlash", "BACKLASH", "gap_start", "TRUTHS", "backlash_truth", "GAP_GRID",
+           "FINE", "fine_grid", "reversal_travels", "contact_record"]
+
+#: gaps tried by :func:`gap_start` around the model-free estimate of the lost motion
+GAP_GRID = 8
+#: the largest lost motion estimated, as a share of the fit record's stroke [-]
+GAP_STROKE_MAX = 0.3
+#: share of the force swing at a reversal that marks the end of the lost motion in
+#: :func:`reversal_travels` [-] (beyond the half way a ``free`` contact drops to at once)
+REVERSAL_SHARE = 0.75
+#: truth integration grid, steps per data sample
+FINE = 10
+
+
+class Backlash(Candidate):
+    """Lost motion ``backlash_gap`` = 2 delta [m] at every reversal between drive and
+    contact: the base LuGre law fed the contact's motion behind a play
+    (:class:`friction.backlash.BacklashLuGre`, module docstring)."""
+
+    #: shortest lost motion named ``backlash``, in samples of travel at the record's top
+    #: speed (ctx.sv dt) [-]: a shorter flat segment at a reversal is what a sub-sample shift
+    #: of the force channel makes there (and a ``delay`` within 1.5 samples is not named)
+    MIN_SAMPLES = 1.5
+
+    def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
+        if law.name != "lugre":
+            return False, (f"backlash is offered on the classic LuGre base (the "
+                           f"backlash_lugre law); the base is {law.name}")
+        return True, ""
+
+    def law_for(self, law, delta: float):
+        """The base ``law`` (classic LuGre) behind a play of half-width ``delta`` [m]: a
+        :class:`friction.backlash.BacklashLuGre` with the base's values (``gap="hold"``)."""
+        vals = {n: getattr(law.params, n) for n in _LUGRE_VALUES}
+        return make_model("backlash_lugre", delta=float(delta), gap="hold", **vals)
+
+    def modify_law(self, law, base_names, ctx: Context):
+        # start: a tenth of a percent of the stroke; :meth:`start_law` moves it onto the data
+        delta = max(1e-4 * (ctx.x_hi - ctx.x_lo), 1e-6)
+        return [(self.law_for(law, delta), list(base_names) + ["delta"])]
+
+    def start_law(self, law, names, fit, ctx: Context):
+        """``law`` (a :meth:`modify_law` variant) with its gap and what the drive feels
+        while crossing it started on the data (:func:`gap_start`)."""
+        return law.with_values(**gap_start(law, names, fit, ctx))
+
+    def own_law_names(self, law):
+        return ("delta",)
+
+    def parameters(self, law) -> dict:
+        """The candidate's own parameters of a fitted ``law``: ``backlash_gap`` [m] (the
+        lost motion at a reversal, 2 delta)."""
+        return {"backlash_gap": 2.0 * float(law.params.delta)}
+
+    def practical(self, p: dict, ctx: Context) -> str:
+        """Why a fitted gap (``p["delta"]`` [m] or ``p["backlash_gap"]``) is too small to name
+        ('' when it is large enough; see :data:`MIN_SAMPLES`)."""
+        gap = p.get("backlash_gap", 2.0 * p["delta"] if "delta" in p else None)
+        if gap is None:
+            return ""
+        n = gap / max(ctx.sv * ctx.dt, 1e-300)
+        if n < self.MIN_SAMPLES:
+            return (f"its lost motion of {gap:.3g} m is {n:.2f} samples of travel at the top "
+                    f"speed, below {self.MIN_SAMPLES:g}: what a sub-sample shift makes at a "
+                    f"reversal")
+        return ""
+
+
+def reversal_travels(fit, ctx: Context) -> np.ndarray:
+    """Drive travel [m] from each reversal of ``fit`` until the force has gone
+    :data:`REVERSAL_SHARE` of the way from its value at the turn to its sliding level in the
+    new direction (model-free: the lost motion plus the contact's presliding travel; with a
+    play the ``hold`` contact keeps its force and the ``free`` one drops to about half way,
+    the offset, until the play is crossed).
+
+    Reversals are sign changes of the velocity outside a dead band of 2 % of the top speed
+    (a noisy velocity near rest does not chatter), measured from the turning point of the
+    position; a segment that never reaches the midpoint gives no travel."""
+    v, x, F = fit.v, fit.x, fit.F
+    band = 0.02 * ctx.sv
+    sgn = np.sign(v) * (np.abs(v) > band)
+    idx = np.flatnonzero(sgn)
+    if idx.size < 2:
+        return np.zeros(0)
+    s = sgn[idx]
+    flips = idx[1:][s[1:] != s[:-1]]          # first sample beyond the band after a turn
+    bounds = np.concatenate((flips, [v.size]))
+    out = []
+    prev = idx[0]
+    for j in range(flips.size):
+        k0, k1 = flips[j], bounds[j + 1]
+        new = float(np.sign(v[k0]))
+        seg = slice(prev, k0 + 1)
+        turn = prev + int(np.argmax(-new * x[seg]))   # the extreme of x before moving on
+        prev = k0
+        nxt = slice(k0, k1)
+        slide = np.abs(v[nxt]) > 0.3 * ctx.sv
+        if slide.sum() < 3:
+            continue
+        level = float(np.median(F[nxt][slide]))
+        mid = F[turn] + REVERSAL_SHARE * (level - F[turn])
+        if not (level - F[turn]) * new > 0:
+            continue
+        past = np.flatnonzero(new * (F[turn:k1] - mid) > 0)
+        if past.size:
+            out.append(abs(x[turn + past[0]] - x[turn]))
+    return np.asarray(out)
+
+
+def contact_record(fit, delta: float):
+    """``fit`` as the contact behind a play of half-width ``delta`` [m] sees it: positions
+    through the play operator (sharp flanks, starting centred), the velocity the drive's
+    where the contact is pushed and 0 while the drive crosses the play (the data with the
+    effect taken out, for a re-identification of the base law)."""
+    from friction.dataset import Dataset
+    xc = _play(np.ascontiguousarray(fit.x, dtype=float), float(delta))
+    moving = np.concatenate(([False], np.diff(xc) != 0.0))
+    moving[:-1] |= moving[1:]
+    vc = np.where(moving, fit.v, 0.0)
+    return Dataset(t=fit.t, x=xc, v=vc, a=np.gradient(vc, fit.t), F=fit.F, load=fit.load,
+                   name=fit.name)
+
+
+def gap_start(law, names, fit, ctx: Context) -> dict:
+    """Start of the joint fit: values of ``law`` (a :class:`friction.backlash.BacklashLuGre`)
+    for its parameters ``names`` and the option ``gap``.
+
+    A base law fitted without the play absorbs it in a distorted way (a soft bristle with a
+    huge static level mimics the flat segments), and from there no gap improves the fit.
+    So: the lost motion is first estimated without a model (median of
+    :func:`reversal_travels`), the base law is re-identified on the contact's motion behind
+    that play (:func:`contact_record`, :func:`identification.identify`), and the gap and
+    the option (``hold``: the force the contact holds while the drive crosses the play,
+    read at a preloaded contact; ``free``: nothing, the contact a free mass whose bristle
+    unloads) are then chosen on ``fit`` among :data:`GAP_GRID` gaps from a fifth to 1.5 x
+    the estimate x both options x the law's values re-identified or as fitted (a record
+    without play keeps the base's), each a compiled run from the record's start state."""
+    from identification import identify
+    travels = reversal_travels(fit, ctx)
+    stroke = max(ctx.x_hi - ctx.x_lo, 1e-12)
+    floor = max(ctx.sv * ctx.dt, 1e-7)
+    gap0 = float(np.median(travels)) if travels.size else floor
+    gap0 = min(max(gap0, floor), GAP_STROKE_MAX * stroke)
+    lugre_names = [n for n in names if n != "delta"]
+    lugre = make_model("lugre", **{n: getattr(law.params, n) for n in _LUGRE_VALUES})
+    law_u = identify(contact_record(fit, 0.5 * gap0), lugre, names=lugre_names,
+                     seed=0)["model"]
+    undone = {n: float(getattr(law_u.params, n)) for n in lugre_names}
+    as_fitted = {n: float(getattr(law.params, n)) for n in lugre_names}
+    best = (math.inf, None)
+    for vals in (undone, as_fitted):
+        for mode in ("hold", "free"):
+            for g in gap0 * np.geomspace(0.2, 1.5, GAP_GRID):
+                trial = law.with_values(delta=0.5 * float(g), gap=mode, **vals)
+                s0 = trial.record_start_state(fit.t, fit.v, F=fit.F)
+                F = trial.simulate(fit.t, fit.v, state0=s0)
+                sse = float(np.sum((fit.F - F) ** 2))
+                if sse < best[0]:
+                    best = (sse, {"delta": 0.5 * float(g), "gap": mode, **vals})
+    return best[1]
+
+
+_LUGRE_VALUES = ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape",
+                 "Fc_neg", "Fs_neg", "vs_neg", "sigma2_neg")
+
+
+BACKLASH = Backlash("backlash", "lost motion at the reversals between drive and contact",
+                    "modify_law")
+
+
+# -- truth forms (benchmark) ------------------------------------------------------------------
+@njit(cache=True, inline="always")
+def _g(v, Fc, Fs, vs, alpha):
+    return Fc + (Fs - Fc) * math.exp(-abs(v / vs) ** alpha)
+
+
+@njit(cache=True)
+def _contact_lugre(h, vc, s0, s1, s2, Fc, Fs, vs, alpha):
+    """LuGre friction [N] of a contact moving with the per-step velocities ``vc`` [m/s]
+    (step ``h`` [s], n + 1 points): bristle exact for each step's velocity; the force at a
+    point uses the velocity of the step that ends there."""
+    n = vc.size
+    F = np.empty(n + 1)
+    z = 0.0
+    F[0] = 0.0
+    for k in range(n):
+        w = vc[k]
+        if w != 0.0:
+            g = _g(w, Fc, Fs, vs, alpha)
+            zss = math.copysign(g / s0, w)
+            z = zss + (z - zss) * math.exp(-h * s0 * abs(w) / g)
+            zd = w - s0 * abs(w) * z / g
+        else:
+            zd = 0.0
+        F[k + 1] = s0 * z + s1 * zd + s2 * w
+    F[0] = F[1]
+    return F
+
+
+@njit(cache=True)
+def _play(xd, half):
+    """Contact positions of a kinematic play of half-width ``half`` [m] (sharp flanks),
+    starting centred."""
+    xc = np.empty(xd.size)
+    c = xd[0]
+    for k in range(xd.size):
+        if xd[k] - c > half:
+            c = xd[k] - half
+        elif c - xd[k] > half:
+            c = xd[k] + half
+        xc[k] = c
+    return xc
+
+
+@njit(cache=True)
+def _mass_behind_gap(h, xd, half, m, k, c, hunt, s0, s1, s2, Fc, Fs, vs, alpha):
+    """A contact of mass ``m`` [kg] with LuGre friction, pushed by the drive positions ``xd``
+    [m] through a gap of half-width ``half`` [m] and, once engaged, a spring ``k`` and a
+    damper ``c`` (``hunt`` = 0: linear, k e + c de/dt [N/m, N s/m]; 1: Hunt-Crossley,
+    k e^1.5 + c e^1.5 de/dt, compressive only). Semi-implicit Euler of the mass, exact
+    bristle update at the contact's step velocity. Returns the contact's friction [N]."""
+    n = xd.size
+    F = np.empty(n)
+    x = xd[0]
+    v = 0.0
+    z = 0.0
+    for j in range(n):
+        vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
+        fc = 0.0
+        e = xd[j] - x - half          # penetration of the right flank (drive ahead)
+        ed = vd - v
+        if e > 0.0:
+            fc = k * e + c * ed if hunt == 0 else k * e ** 1.5 + c * e ** 1.5 * ed
+            if fc < 0.0:
+                fc = 0.0
+        e = x - xd[j] - half          # left flank (drive behind)
+        if e > 0.0:
+            f2 = k * e - c * ed if hunt == 0 else k * e ** 1.5 - c * e ** 1.5 * ed
+            if f2 > 0.0:
+                fc -= f2
+        g = _g(v, Fc, Fs, vs, alpha)
+        zd = v - s0 * abs(v) * z / g
+        ff = s0 * z + s1 * zd + s2 * v
+        F[j] = ff
+        v = v + h * (fc - ff) / m
+        if v != 0.0:
+            gv = _g(v, Fc, Fs, vs, alpha)
+            zss = math.copysign(gv / s0, v)
+            z = zss + (z - zss) * math.exp(-h * s0 * abs(v) / gv)
+        x = x + h * v
+    return F
+
+
+def fine_grid(t, v, fine: int):
+    """The truths' integration grid: step ``h`` [s] = the sample interval of ``t`` / ``fine``,
+    its times [s] and the velocity [m/s] linear between the samples ``v``."""
+    h = float(t[1] - t[0]) / fine
+    tf = t[0] + h * np.arange((t.size - 1) * fine + 1)
+    return h, tf, np.interp(tf, t, v)
+
+
+def backlash_truth(form: str, t, v, gap: float, params: dict, fine: int = FINE) -> np.ndarray:
+    """Noise-free friction [N] of the contact behind a lost motion ``gap`` [m] along the
+    drive's sampled motion ``(t, v)`` [s, m/s], integrated ``fine`` x finer than sampled
+    (velocity linear between samples).
+
+    Parameters
+    ----------
+    form : str
+        ``rigid``, ``compliant`` or ``impact`` (module docstring).
+    t, v : ndarray
+        Sample times [s] (uniform) and drive velocity [m/s].
+    gap : float
+        Lost motion at a reversal [m] (the play's full width).
+    params : dict
+        LuGre parameters of the contact (sigma0 [N/m], sigma1 [N s/m], sigma2 [N s/m],
+        Fc, Fs [N], vs [m/s], alpha [-]).
+    fine : int
+        Integration steps per sample.
+    """
+    if form not in TRUTHS:
+        raise ValueError(f"unknown backlash truth {form!r}; choose from {TRUTHS}")
+    if not gap >= 0:
+        raise ValueError(f"gap = {gap!r} is out of bounds: must be >= 0 [m]")
+    p = {"alpha": 2.0, **params}
+    h, tf, vf = fine_grid(t, v, fine)
+    xd = np.concatenate(([0.0], np.cumsum(0.5 * (vf[1:] + vf[:-1]) * h)))
+    lug = (p["sigma0"], p["sigma1"], p["sigma2"], p["Fc"], p["Fs"], p["vs"], p["alpha"])
+    if form == "rigid":
+        xc = _play(xd, 0.5 * gap)
+        F = _contact_lugre(h, np.diff(xc) / h, *lug)
+    else:
+        m = 0.2                                    # contact mass [kg]
+        if form == "compliant":                    # a coupling 10 x softer than the bristle,
+            k = 10.0 * p["sigma0"]                 # well damped (zeta 0.5)
+            c = 2.0 * 0.5 * math.sqrt(k * m)
+            hunt = 0
+        else:                                      # steel on steel, impact damping
+            k, c, hunt = 2e8, 3e8 * 0.2, 1         # [N/m^1.5], lambda = 1.5 alpha k
+        n_sub = 4                                  # the stiff contact on a finer grid still
+        tf2 = t[0] + (h / n_sub) * np.arange((tf.size - 1) * n_sub + 1)
+        xd2 = np.interp(tf2, tf, xd)
+        F = _mass_behind_gap(h / n_sub, xd2, 0.5 * gap, m, k, c, hunt, *lug)[::n_sub]
+    return F[::fine]
+
+
+#: truth forms of the backlash effect (benchmark)
+TRUTHS = ("rigid", "compliant", "impact")

@@ -1,0 +1,296 @@
+"""The ``gms`` candidate: multi-element presliding hysteresis (generalized Maxwell-slip).
+
+The effect
+----------
+Before a contact slides it deforms: its asperities are springs that break away one after the
+other, each at its own share of the friction level. The presliding force is then a
+hysteresis with *nonlocal memory* (an inner loop closes where it started; a branch after a
+reversal is twice the virgin curve, Masing's rule), which one bristle (LuGre) cannot follow:
+its presliding curve is one exponential, and its small loops drift. Al-Bender, Lampaert and
+Swevers (IEEE TAC 50, 2005) model it as N Maxwell-slip elements in parallel.
+
+As an extension of a fitted base law
+------------------------------------
+The base's bristle is replaced by N = 4 slip-blocks (the element count is fixed: a native
+FMU holds four continuous states) with the same total stiffness and the same break-away
+level: :class:`friction.gms.GMS`. The base's steady-state curve keeps its parameters
+(``Fc, Fs, vs, alpha, sigma2, b``: the curve every block carries a share of) and its
+``sigma0`` (now the stiffness right after a reversal, every block sticking); the LuGre
+damping ``sigma1`` has no counterpart. The candidate's own parameters:
+
+* ``spread`` [-]   the stiffness split: ratio of the stiffest to the softest block
+                   (geometric; 1 is one elastoplastic element, large a gradual presliding
+                   curve reaching Fs / (N k_N) [m]);
+* ``C`` [N/s]      the attraction rate of a slipping block to its share of the Stribeck
+                   curve (frictional lag g / C [s]);
+* the break-away split is equal (each block carries 1/N of the level).
+
+A base fitted without the effect absorbs it (a soft bristle mimics a long presliding
+curve), so the start of the joint fit is chosen on the data (:func:`gms_start`: spread and C
+on a grid, the stiffness scaled around the base's), and the fit frees the base's levels with
+them.
+
+FMU route
+---------
+As for ``backlash`` (:mod:`diagnosis.effects_backlash`): the blocks are the law's state, so
+the stateless ``friction_effects`` block (a map of the law's output force) cannot carry
+them; the candidate runs in the native law FMU ``gms`` (exact steps, cut at reversals,
+rollback, Model Exchange), which the trajectory level and a user's plant FMU pick by the
+candidate's law name.
+
+Truth forms (:data:`TRUTHS`, for the benchmark)
+-----------------------------------------------
+Each integrated :data:`FINE` x finer than sampled; none is the candidate's own law:
+
+* ``maxwell4``      classic Maxwell-slip (rate-independent: a block sticks until its force
+                    reaches its share of g(v), then slips holding it) with 4 blocks of
+                    unequal stiffness and unequal break-away shares;
+* ``maxwell10``     the same with 10 blocks (a continuous distribution of asperities);
+* ``dahl``          Dahl's model with a Stribeck level, dF/dx = sigma |1 - F / g sgn v|^1.5
+                    (a rate-independent hysteresis of one state, exponent != 1);
+* ``elastoplastic`` Dupont's elasto-plastic presliding (purely elastic up to half the
+                    steady deflection, then a smooth transition to sliding).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from friction import make_model
+from friction.gms import N_ELEMENTS
+
+from .effects import Candidate, Context
+from .effects_backlash import fine_grid
+
+__all__ = ["GMSCandidate", "GMS_CANDIDATE", "gms_start", "TRUTHS", "gms_truth", "FINE",
+           "SPREADS"]
+
+#: truth integration grid, steps per data sample
+FINE = 10
+#: stiffness ratios tried by :func:`gms_start` [-]
+SPREADS = (1.0, 4.0, 16.0, 64.0, 256.0)
+#: stiffness scales tried by :func:`gms_start`, relative to the base's sigma0 [-]
+STIFFNESS_SCALES = (1.0, 3.0, 10.0)
+#: frictional lags g / C tried by :func:`gms_start`, in samples [-]
+LAG_SAMPLES = (0.3, 3.0)
+#: LuGre parameters the GMS law shares
+_SHARED = ("sigma0", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape")
+
+
+class GMSCandidate(Candidate):
+    """Presliding with N = 4 Maxwell-slip blocks in place of the base's bristle
+    (:class:`friction.gms.GMS`; module docstring)."""
+
+    def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
+        if law.name != "lugre":
+            return False, (f"gms replaces the bristle of the classic LuGre base; the base is "
+                           f"{law.name}")
+        p = law.params
+        twins = [n for n in ("Fc_neg", "Fs_neg", "vs_neg", "sigma2_neg")
+                 if getattr(p, n) is not None]
+        if twins:
+            return False, f"the GMS law has no direction twins ({', '.join(twins)} set)"
+        return True, ""
+
+    def law_for(self, law, spread: float = 10.0, C: float | None = None):
+        """The base ``law`` (classic LuGre) with its bristle replaced by four slip-blocks of
+        total stiffness sigma0: a :class:`friction.gms.GMS` with the base's values, the
+        stiffness ratio ``spread`` [-] and attraction rate ``C`` [N/s] (default: a lag
+        g / C of 1 ms at the level Fs)."""
+        vals = {n: getattr(law.params, n) for n in _SHARED}
+        if C is None:
+            C = max(float(vals["Fs"]), float(vals["Fc"])) / 1e-3
+        return make_model("gms", spread=float(spread), C=float(C), **vals)
+
+    def names_for(self, base_names) -> list:
+        """Free parameters of the GMS variant: the base's it shares, then spread and C."""
+        return [n for n in base_names if n in _SHARED] + ["spread", "C"]
+
+    def modify_law(self, law, base_names, ctx: Context):
+        return [(self.law_for(law), self.names_for(base_names))]
+
+    def start_law(self, law, names, fit, ctx: Context):
+        """``law`` (a :meth:`modify_law` variant) started on the data (:func:`gms_start`)."""
+        return law.with_values(**gms_start(law, names, fit, ctx))
+
+    def own_law_names(self, law):
+        return ("spread", "C")
+
+    def parameters(self, law) -> dict:
+        """The candidate's own parameters of a fitted GMS ``law``: ``spread`` [-], ``C``
+        [N/s], the block stiffnesses ``k1..k4`` [N/m] and the presliding distance
+        ``presliding`` [m] (from rest to every block slipping, at Fs)."""
+        k = law.element_stiffness()
+        out = {"spread": float(law.params.spread), "C": float(law.params.C)}
+        out.update({f"k{i + 1}": float(k[i]) for i in range(N_ELEMENTS)})
+        out["presliding"] = float(law.presliding_distance())
+        return out
+
+
+def gms_start(law, names, fit, ctx: Context) -> dict:
+    """Start of the joint fit of a GMS variant ``law``: ``spread`` from :data:`SPREADS`,
+    ``sigma0`` from :data:`STIFFNESS_SCALES` x the base's and ``C`` from a frictional lag of
+    :data:`LAG_SAMPLES` samples at the level max(Fc, Fs), the best on ``fit`` (each a
+    compiled run from the record's start state); the base's levels kept."""
+    p = law.params
+    level = max(float(p.Fc), float(p.Fs))
+    best = (math.inf, {})
+    s_free = "sigma0" in names
+    for spread in SPREADS:
+        for k0 in (STIFFNESS_SCALES if s_free else (1.0,)):
+            for lag in LAG_SAMPLES:
+                vals = {"spread": spread, "C": level / (lag * ctx.dt)}
+                if s_free:
+                    vals["sigma0"] = float(p.sigma0) * k0 * max(spread, 1.0) ** 0.5
+                trial = law.with_values(**vals)
+                s0 = trial.record_start_state(fit.t, fit.v, F=fit.F)
+                F = trial.simulate(fit.t, fit.v, state0=s0)
+                sse = float(np.sum((fit.F - F) ** 2))
+                if sse < best[0]:
+                    best = (sse, vals)
+    return best[1]
+
+
+GMS_CANDIDATE = GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
+                             "Maxwell-slip)", "modify_law")
+
+
+# -- truth forms (benchmark) ------------------------------------------------------------------
+@njit(cache=True, inline="always")
+def _g(v, Fc, Fs, vs, alpha):
+    return Fc + (Fs - Fc) * math.exp(-abs(v / vs) ** alpha)
+
+
+@njit(cache=True)
+def _maxwell_slip(h, v, k, w, s2, Fc, Fs, vs, alpha):
+    """Classic Maxwell-slip: blocks of stiffness ``k`` [N/m] and break-away share ``w``
+    [-] (sum 1); each sticks (z_i += dx) until k_i |z_i| reaches w_i g(v), then slips
+    holding it. ``v`` [m/s] at the points of a grid of step ``h`` [s]."""
+    n = v.size
+    F = np.empty(n)
+    z = np.zeros(k.size)
+    for j in range(n):
+        if j > 0:
+            dx = 0.5 * (v[j] + v[j - 1]) * h
+            g = _g(0.5 * (v[j] + v[j - 1]), Fc, Fs, vs, alpha)
+            for i in range(k.size):
+                zi = z[i] + dx
+                lim = w[i] * g / k[i]
+                if zi > lim:
+                    zi = lim
+                elif zi < -lim:
+                    zi = -lim
+                z[i] = zi
+        f = 0.0
+        for i in range(k.size):
+            f += k[i] * z[i]
+        F[j] = f + s2 * v[j]
+    return F
+
+
+@njit(cache=True)
+def _dahl(h, v, sigma, expo, s2, Fc, Fs, vs, alpha):
+    """Dahl's model with a Stribeck level: dF/dx = sigma |1 - F/g sgn v|^expo
+    sgn(1 - F/g sgn v), explicit on the fine grid (substeps keep sigma dx / g small)."""
+    n = v.size
+    F = np.empty(n)
+    f = 0.0
+    for j in range(n):
+        if j > 0:
+            vm = 0.5 * (v[j] + v[j - 1])
+            dx = vm * h
+            g = _g(vm, Fc, Fs, vs, alpha)
+            m = int(math.ceil(abs(sigma * dx / g) / 0.05)) + 1
+            ddx = dx / m
+            sg = 1.0 if vm > 0 else -1.0
+            for _ in range(m):
+                u = 1.0 - f / g * sg
+                f += sigma * ddx * abs(u) ** expo * (1.0 if u > 0 else -1.0)
+        F[j] = f + s2 * v[j]
+    return F
+
+
+@njit(cache=True)
+def _elastoplastic(h, v, s0, s1, s2, Fc, Fs, vs, alpha, share):
+    """Dupont's elasto-plastic presliding: dz/dt = v - a(z, v) |v| z / z_ss, a = 0 for
+    |z| < z_ba = share z_ss (purely elastic), a smooth half-sine rise to 1 at z_ss, 1 beyond
+    (for z of the sign of v; 0 for z against it); substeps keep v dt / z_ss small."""
+    n = v.size
+    F = np.empty(n)
+    z = 0.0
+    for j in range(n):
+        zd = 0.0
+        if j > 0:
+            vm = 0.5 * (v[j] + v[j - 1])
+            zss = _g(vm, Fc, Fs, vs, alpha) / s0
+            m = int(math.ceil(abs(vm * h) / (0.02 * zss))) + 1
+            hh = h / m
+            for _ in range(m):
+                a = 0.0
+                if z * vm > 0.0:
+                    az = abs(z)
+                    zba = share * zss
+                    if az >= zss:
+                        a = 1.0
+                    elif az > zba:
+                        a = 0.5 * math.sin(math.pi * (az - 0.5 * (zss + zba))
+                                           / (zss - zba)) + 0.5
+                zd = vm - a * abs(vm) * z / zss
+                z += hh * zd
+        F[j] = s0 * z + s1 * zd + s2 * v[j]
+    return F
+
+
+def gms_truth(form: str, t, v, params: dict, presliding: float, fine: int = FINE,
+              seed: int = 0) -> np.ndarray:
+    """Noise-free friction [N] with presliding hysteresis of ``form`` along the sampled
+    motion ``(t, v)`` [s, m/s], integrated ``fine`` x finer than sampled (velocity linear
+    between samples).
+
+    Parameters
+    ----------
+    form : str
+        One of :data:`TRUTHS` (module docstring).
+    t, v : ndarray
+        Sample times [s] (uniform) and velocity [m/s].
+    params : dict
+        Steady-state curve: Fc, Fs [N], vs [m/s], alpha [-], sigma2 [N s/m] (and sigma1
+        (``elastoplastic`` is damped as a 0.1 kg contact critically on its stiffness).
+    presliding : float
+        Presliding distance [m]: travel from rest to full sliding at the level Fs (the
+        softest block's break-away deflection; Dahl: 3 Fs / sigma; elasto-plastic: z_ss).
+    fine : int
+        Integration steps per sample.
+    seed : int
+        Seed of the Maxwell-slip blocks' stiffnesses and shares.
+    """
+    if form not in TRUTHS:
+        raise ValueError(f"unknown presliding truth {form!r}; choose from {TRUTHS}")
+    if not presliding > 0:
+        raise ValueError(f"presliding = {presliding!r} is out of bounds: must be > 0 [m]")
+    p = {"alpha": 2.0, **params}
+    h, _, vf = fine_grid(t, v, fine)
+    curve = (p["Fc"], p["Fs"], p["vs"], p["alpha"])
+    if form.startswith("maxwell"):
+        n = int(form[len("maxwell"):])
+        rng = np.random.default_rng(seed)
+        # break-away deflections spread over (presliding / 30, presliding), shares random
+        d = np.sort(presliding * np.exp(rng.uniform(np.log(1 / 30), 0.0, n)))
+        d[-1] = presliding
+        w = rng.uniform(0.5, 1.5, n)
+        w /= w.sum()
+        k = w * p["Fs"] / d
+        F = _maxwell_slip(h, vf, k, w, p["sigma2"], *curve)
+    elif form == "dahl":
+        F = _dahl(h, vf, 3.0 * p["Fs"] / presliding, 1.5, p["sigma2"], *curve)
+    else:
+        s0 = p["Fs"] / presliding
+        # damped as a 0.1 kg contact critically on its presliding stiffness
+        F = _elastoplastic(h, vf, s0, 2.0 * math.sqrt(s0 * 0.1), p["sigma2"], *curve, 0.5)
+    return F[::fine]
+
+
+#: truth forms of the presliding-hysteresis effect (benchmark)
+TRUTHS = ("maxwell4", "maxwell10", "dahl", "elastoplastic")

@@ -1,0 +1,184 @@
+"""The ``backlash`` and ``gms`` diagnosis candidates (issue 15 item 3): their laws, starts,
+truth forms and FMU route (the native law FMUs ``backlash_lugre`` and ``gms``, not the
+stateless ``friction_effects`` block), and what the force-level diagnosis names on records
+whose truth carries lost motion, Maxwell-slip presliding, or neither."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from diagnosis import effects_backlash as eb
+from diagnosis import effects_gms as eg
+from diagnosis.effects import make_context
+from friction import make_model
+from friction.dataset import Dataset
+from friction.metrics import nrmse
+
+#: the benchmark's LuGre contact (diagnosis.benchmark BASE)
+BASE = dict(sigma0=2e4, sigma1=150.0, sigma2=8.0, Fc=2.0, Fs=2.8, vs=5e-3)
+
+
+def _motion(n, dt, seed):
+    """The benchmark's multi-sine drive (both directions, ~16 reversals in 8.4 s)."""
+    rng = np.random.default_rng(seed)
+    t = np.arange(n) * dt
+    v = np.zeros(n)
+    for f, amp in ((0.7, 0.05), (1.9, 0.03), (4.3, 0.012)):
+        v += amp * np.sin(2 * np.pi * f * t + rng.uniform(0, 2 * np.pi))
+    v *= 0.6 + 0.4 * np.sin(2 * np.pi * 0.13 * t) ** 2
+    x = np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * dt)))
+    return t, x, v, rng
+
+
+def _record(F0, t, x, v, rng, noise=0.02, name="rec"):
+    F = F0 + noise * float(np.std(F0)) * rng.standard_normal(t.size)
+    return Dataset.from_arrays(t, F, x=x, v=v, a=np.gradient(v, t), name=name,
+                               check_units=False)
+
+
+# -- candidate laws --------------------------------------------------------------------------
+def test_backlash_candidate_is_the_base_behind_a_play_and_reports_the_lost_motion():
+    base = make_model("lugre", **BASE, alpha=1.5, b=0.1)
+    law = eb.BACKLASH.law_for(base, 1e-3)
+    assert law.name == "backlash_lugre" and law.params.gap == "hold"
+    for n in ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "alpha", "b"):
+        assert getattr(law.params, n) == getattr(base.params, n)
+    assert eb.BACKLASH.parameters(law) == {"backlash_gap": pytest.approx(2e-3)}
+    (var, names), = eb.BACKLASH.modify_law(base, ["sigma0", "Fc"], _ctx())
+    assert names == ["sigma0", "Fc", "delta"] and var.name == "backlash_lugre"
+    # a gap of 0 is the base law bit for bit (the play operator cuts nothing)
+    t, x, v, _ = _motion(3000, 1e-3, 0)
+    np.testing.assert_array_equal(eb.BACKLASH.law_for(base, 0.0).simulate(t, v),
+                                  base.simulate(t, v))
+    ok, why = eb.BACKLASH.applicable(make_model("stribeck"), None, None)
+    assert not ok and "stribeck" in why
+
+
+def _ctx():
+    t, x, v, rng = _motion(2000, 1e-3, 0)
+    return make_context(_record(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng))
+
+
+def test_backlash_practical_size_is_a_sample_and_a_half_of_travel():
+    ctx = _ctx()
+    step = ctx.sv * ctx.dt
+    assert "samples of travel" in eb.BACKLASH.practical({"delta": 0.5 * step}, ctx)
+    assert eb.BACKLASH.practical({"backlash_gap": 2.0 * step}, ctx) == ""
+
+
+def test_gms_candidate_shares_the_base_curve_and_stiffness():
+    base = make_model("lugre", **BASE, alpha=1.5, b=0.1)
+    law = eg.GMS_CANDIDATE.law_for(base, spread=20.0, C=3e3)
+    assert law.name == "gms"
+    for n in ("sigma0", "sigma2", "Fc", "Fs", "vs", "alpha", "b"):
+        assert getattr(law.params, n) == getattr(base.params, n)
+    k = law.element_stiffness()
+    assert k.sum() == pytest.approx(BASE["sigma0"]) and k[0] / k[-1] == pytest.approx(20.0)
+    names = eg.GMS_CANDIDATE.names_for(["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs",
+                                        "alpha", "b"])
+    assert names == ["sigma0", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "spread", "C"]
+    par = eg.GMS_CANDIDATE.parameters(law)
+    assert par["spread"] == 20.0 and par["C"] == 3e3
+    assert par["presliding"] == pytest.approx(BASE["Fs"] / 4 / k[-1])
+    # the steady state is the base's Stribeck curve
+    vv = np.array([-0.05, -1e-3, 2e-3, 0.04])
+    np.testing.assert_allclose(law.steady_state(vv), base.steady_state(vv), rtol=1e-12)
+    twin = base.with_values(Fc_neg=1.5)
+    ok, why = eg.GMS_CANDIDATE.applicable(twin, None, None)
+    assert not ok and "Fc_neg" in why
+
+
+# -- starts on the data ----------------------------------------------------------------------
+@pytest.mark.parametrize("form", eb.TRUTHS)
+def test_reversal_travels_measure_the_lost_motion_without_a_model(form):
+    t, x, v, rng = _motion(12000, 1e-3, 0)
+    data = _record(eb.backlash_truth(form, t, v, 2e-3, BASE), t, x, v, rng)
+    tr = eb.reversal_travels(data, make_context(data))
+    assert tr.size >= 10
+    # the play plus the contact's presliding travel (~0.1 mm)
+    assert 2e-3 <= np.median(tr) < 2.25e-3
+    clean = _record(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng)
+    assert np.median(eb.reversal_travels(clean, make_context(clean))) < 2e-4
+
+
+def test_contact_record_takes_the_play_out():
+    t, x, v, rng = _motion(4000, 1e-3, 1)
+    data = _record(np.zeros(t.size) + 1.0, t, x, v, rng)
+    rec = eb.contact_record(data, 1e-3)
+    assert np.all(np.abs(rec.x - data.x) <= 1e-3 + 1e-15)
+    crossing = rec.v == 0.0
+    assert 0.05 < crossing.mean() < 0.5            # the drive crosses the play after turns
+    assert np.array_equal(rec.v[~crossing], data.v[~crossing])
+
+
+# -- truth forms -----------------------------------------------------------------------------
+def test_backlash_truths_lag_by_the_gap_and_differ_from_the_candidate():
+    t, x, v, _ = _motion(6000, 1e-3, 0)
+    lugre = make_model("lugre", **BASE).simulate(t, v)
+    hold = make_model("backlash_lugre", delta=1e-3, **BASE).simulate(t, v)
+    # a mass pushed through a coupling has no force jump sigma1 v at the engagement
+    free = make_model("backlash_lugre", delta=1e-3, gap="free",
+                      **dict(BASE, sigma1=0.0)).simulate(t, v)
+    for form in eb.TRUTHS:
+        F = eb.backlash_truth(form, t, v, 2e-3, BASE)
+        assert np.all(np.isfinite(F))
+        # far from the base law, nearer to the candidate of its kind, yet not its copy
+        near = nrmse(F, hold if form == "rigid" else free)
+        assert near < 0.5 * nrmse(F, lugre), form
+        assert near > 1e-3, form
+    with pytest.raises(ValueError, match="unknown backlash truth"):
+        eb.backlash_truth("elastic", t, v, 1e-3, BASE)
+
+
+@pytest.mark.parametrize("form", eg.TRUTHS)
+def test_presliding_truths_settle_on_the_curve_and_have_hysteresis(form):
+    dt = 1e-3
+    t = np.arange(4000) * dt
+    v = np.where(t < 2.0, 0.02, -0.02) * np.minimum(1.0, t / 0.2)
+    F = eg.gms_truth(form, t, v, BASE, 1e-3)
+    g = BASE["Fc"] + (BASE["Fs"] - BASE["Fc"]) * np.exp(-(0.02 / BASE["vs"]) ** 2)
+    ss = g + BASE["sigma2"] * 0.02
+    assert F[1900] == pytest.approx(ss, rel=0.02)         # sliding: the Stribeck curve
+    assert F[-1] == pytest.approx(-ss, rel=0.02)
+    # presliding: after the reversal the force takes more than one sample of travel (20 um)
+    # to swing across, and less than twice the presliding distance of 1 mm (100 samples)
+    k = np.flatnonzero(F[2000:] < 0.0)[0]
+    assert 1 < k < 120, k
+
+
+# -- the FMU route: the candidates' laws in their native FMUs ---------------------------------
+@pytest.mark.parametrize("which", ["backlash", "gms"])
+def test_candidate_law_runs_in_its_native_law_fmu_to_1e_10(which):
+    """The friction_effects block is a stateless map of the law's output; these candidates
+    change the law's state, so they run in the law FMUs. With the inputs set at the end of
+    each step (first-order hold, ``inputs_at_step_end``) the FMU's steps are the kernel's."""
+    from fmus.master import fmu_values, law_parameters
+    from fmus.native.build import SUFFIX
+    from fmus.testing import LoggedSlave, built_native_fmus
+    base = make_model("lugre", **BASE, alpha=1.7, b=0.05)
+    law = (eb.BACKLASH.law_for(base, 4e-4).with_values(gap="free") if which == "backlash"
+           else eg.GMS_CANDIDATE.law_for(base, spread=30.0, C=4e3))
+    path = built_native_fmus((law.name,)) / f"{law.name}{SUFFIX}.fmu"
+    t, x, v, _ = _motion(3000, 1e-3, 2)
+    ref = law.simulate(t, v)
+    s = LoggedSlave(path)
+    try:
+        vals = fmu_values({n: s.md.modelVariables[i] for i, n in
+                           enumerate(v_.name for v_ in s.md.modelVariables)},
+                          law_parameters(law))
+        assert s.set("v", float(v[0])) == 0
+        s.init(**vals, inputs_at_step_end=True)
+        F = np.empty(t.size)
+        F[0] = s.get("F")
+        for k in range(t.size - 1):
+            assert s.set("v", float(v[k + 1])) == 0
+            assert s.step(t[k], t[k + 1] - t[k]) == 0
+            F[k + 1] = s.get("F")
+        assert not s.errors()
+        # a parameter outside its bounds answers fmi2Error naming it
+        bad = "delta" if which == "backlash" else "spread"
+        assert s.set(bad, -1.0) >= 3
+        assert any(bad in m for m in s.errors())
+    finally:
+        s.close()
+    assert np.max(np.abs(F - ref)) <= 1e-10 * np.max(np.abs(ref))

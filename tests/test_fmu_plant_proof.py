@@ -379,7 +379,7 @@ def test_quantised_loops_converge_first_order_once_the_encoder_is_ideal(proof_fm
 @pytest.mark.slow
 @pytest.mark.parametrize("plant", ["mre_isolator"])
 def test_finer_step_fallback_meets_the_tolerance(proof_fmu_dir, plant):
-    from fmus.demo import FALLBACK_STEP
+    from frictionlab.demo.fmus_stage import FALLBACK_STEP
     from fmus.plant_fmus import plant_laws, plant_proof
     cls = plants.PLANTS[plant]
     stop = min(float(cls.default_experiment.stop), 200.0 / cls.data_rate)

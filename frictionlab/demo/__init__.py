@@ -1,8 +1,9 @@
 """``frictionlab demo``: every stage of the project end to end, into one folder.
 
-Each package contributes a stage, a module with ``run_stage(out_dir, summary, quick)`` that
-writes its PNG/JSON files into ``out_dir`` and its figures into the shared ``summary`` dict
-(:data:`STAGE_MODULES`: ``<package>.demo``, and for the plants ``plants.studies.demo``).
+Each stage is a module with ``run_stage(out_dir, summary, quick)`` that writes its PNG/JSON
+files into ``out_dir`` and its figures into the shared ``summary`` dict
+(:data:`STAGE_MODULES`: ``frictionlab.demo.<package>_stage``, and for the plants the studies'
+``plants.studies.demo``); the library packages hold no demo or plotting code.
 A stage that fails to import stops the demo with that error.
 """
 from __future__ import annotations
@@ -12,15 +13,15 @@ import json
 import os
 import time
 
-from .progress import report
+from friction.progress import report
 
 __all__ = ["run_demo", "STAGES", "STAGE_MODULES"]
 
 STAGES = ("friction", "plants", "fmus", "identification", "diagnosis")
 
 #: stage -> module holding its ``run_stage``
-STAGE_MODULES = {"friction": "friction.demo", "plants": "plants.studies.demo",
-                 "fmus": "fmus.demo", "identification": "identification.demo",
+STAGE_MODULES = {"friction": "frictionlab.demo.friction_stage",
+                 "plants": "plants.studies.demo", "fmus": "frictionlab.demo.fmus_stage", "identification": "identification.demo",
                  "diagnosis": "diagnosis.demo"}
 
 

@@ -16,8 +16,8 @@ import os
 
 import numpy as np
 
-from . import MODELS, make_model
-from .numerics import euler_critical_velocity
+from friction import MODELS, make_model
+from friction.numerics import euler_critical_velocity
 
 __all__ = ["run_stage"]
 

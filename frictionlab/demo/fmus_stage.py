@@ -27,7 +27,7 @@ import json
 import os
 import time
 
-from frictionlab.progress import report
+from friction.progress import report
 
 __all__ = ["run_stage", "FALLBACK_STEP", "ORDER_FLOOR"]
 
@@ -44,8 +44,8 @@ ORDER_FLOOR = 2e-5
 
 def run_stage(out, summary: dict, quick: bool = False) -> None:
     import friction
-    from .build import build_all, validate
-    from .proof import mass_proof
+    from fmus.build import build_all, validate
+    from fmus.proof import mass_proof
 
     fmu_dir = os.path.join(out, "fmus")
     built = build_all(fmu_dir)
@@ -66,7 +66,7 @@ def run_stage(out, summary: dict, quick: bool = False) -> None:
     detail = {}
     try:
         import plants
-        from .plant_fmus import plant_laws, plant_proof
+        from fmus.plant_fmus import plant_laws, plant_proof
         names = list(plants.PLANTS)
     except ImportError:
         names = []
@@ -152,7 +152,7 @@ def _xml350_parts(fmu_dir, quick) -> dict:
     """The XML-350 loop from five part FMUs against the monolithic reference."""
     from friction.metrics import nrmse
     from plants.xml350 import XML350, xml350_friction
-    from .plant_fmus import xml350_loop_master
+    from fmus.plant_fmus import xml350_loop_master
     stop = 0.03 if quick else float(XML350.default_experiment.stop)
     with xml350_loop_master(fmu_dir) as m:
         res = m.simulate(stop_time=stop, step_size=1e-4)

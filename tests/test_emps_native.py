@@ -188,3 +188,42 @@ def test_controller_fmu_samples_the_benchmark_law(native):
         assert ct.get("u") == 10.0
     finally:
         ct.close()
+
+
+def test_scores_through_the_native_fmus_equal_the_in_process_scores(native):
+    """The study's criteria through the native FMUs (closed loop from the record's motion,
+    open loop from rest) on 4 s of the pulse record, three pulse edges included, against
+    the in-process :func:`scores`: the co-simulation's 1 ms coupling moves them little."""
+    try:
+        P = studies.load_record("pulses").window(4.0)
+    except FileNotFoundError as exc:
+        pytest.skip(str(exc))
+    model = studies.stored_model("lugre")
+    nat = studies.scores_native(model, P, native)
+    ref = studies.scores(model, P)
+    assert abs(nat["closed_loop"]["force_error"] - ref["closed_loop"]["force_error"]) < 2e-3
+    assert nat["closed_loop"]["force_error"] < 0.06
+    assert abs(nat["open_loop_from_rest"]["rmse_mm"] - ref["open_loop_from_rest"]["rmse_mm"]) \
+        < 0.2
+
+
+@pytest.mark.slow
+def test_identification_through_the_native_fmus_on_the_full_record(native):
+    """Least squares through the native closed loop (identification.plant_fmu, the user's
+    path) on all of DATA_EMPS lands where the in-process identification of the same
+    parameters on the closed loop does (seconds, not minutes: see
+    benchmarks/bench_emps_cosim.py)."""
+    try:
+        E = studies.load_record("estimation")
+    except FileNotFoundError as exc:
+        pytest.skip(str(exc))
+    start = studies.start_model()
+    res = studies.identify_native(start, E, native, max_evals=200)
+    coords = [c for c in studies.LUGRE_COORDS if c[0] in ("Fc", "Fs", "vs", "sigma2", "b",
+                                                          "M")]
+    inproc = studies.identify_trajectory(start, E, coords, parts=("closed",), max_evals=200,
+                                         substeps=10)
+    for name, key in (("Fc", "Fc"), ("sigma2", "sigma2"), ("b", "b"), ("M", "plant.M")):
+        a, b = res.params[key], inproc["params"][name]
+        assert abs(a - b) <= 0.03 * abs(b) + 0.3, (name, a, b)
+    assert res.fit_nrmse < 0.05

@@ -44,7 +44,7 @@ def _first_line(exc) -> str:
     return text.splitlines()[0] if text else type(exc).__name__
 
 
-def connect(address: str, timeout: float | None = None, *, workers: int = 1):
+def connect(address: str, timeout: float | None = None, *, workers: int = 1, security=None):
     """A ``dask.distributed.Client`` connected to the scheduler at ``address``.
 
     Parameters
@@ -58,6 +58,9 @@ def connect(address: str, timeout: float | None = None, *, workers: int = 1):
     workers : int
         Workers the scheduler must have before the run starts (a scheduler without
         workers would leave the run waiting for ever).
+    security : distributed.security.Security, optional
+        TLS settings for a ``tls://`` address (default: dask's configuration,
+        ``distributed.comm.tls.*``).
 
     Returns
     -------
@@ -82,7 +85,8 @@ def connect(address: str, timeout: float | None = None, *, workers: int = 1):
     address = address.strip()
     timeout = float(CONNECT_TIMEOUT if timeout is None else timeout)
     try:
-        client = Client(address, timeout=timeout, set_as_default=False)
+        client = Client(address, timeout=timeout, set_as_default=False,
+                        **({} if security is None else {"security": security}))
     except Exception as exc:  # noqa: BLE001 - OSError, TimeoutError, ValueError (bad URI)
         raise SchedulerError(f"cannot reach the dask scheduler at {address} within "
                              f"{timeout:g} s: {_first_line(exc)}") from None

@@ -7,6 +7,9 @@ candidate extras (unit cube over their physical box)]``; the residual is
 """
 from __future__ import annotations
 
+import contextlib
+import contextvars
+import time
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -17,7 +20,8 @@ from identification.space import ParameterSpace
 
 from .effects import Candidate, Context
 
-__all__ = ["Composite", "fit_composite", "law_space", "STATIC_LEVELS", "STATIC_LEVEL_SPAN"]
+__all__ = ["Composite", "fit_composite", "law_space", "reporting", "STATIC_LEVELS",
+           "STATIC_LEVEL_SPAN", "LONG_JACOBIAN_BYTES"]
 
 _STAGE_ORDER = {"modify_law": 0, "multiplicative": 1, "additive": 2, "shift": 3}
 
@@ -124,12 +128,40 @@ def _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx):
 
 
 def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, *,
-                  extras0: dict | None = None, max_nfev: int = 60) -> tuple[Composite, float]:
+                  extras0: dict | None = None, max_nfev: int = 60,
+                  progress=None) -> tuple[Composite, float]:
     """Jointly re-identify the base law's parameters and the effects' extras on ``fit``.
 
     Returns the fitted composite and its fit NRMSE. ``law``'s current values start the search.
     Every trial is simulated from its own state consistent with the record's first samples
     (its motion and measured force), as :meth:`Composite.predict` scores it.
+
+    Parameters
+    ----------
+    law : FrictionModel
+        Base law; its current values start the search.
+    base_names : list of str
+        The law's parameters re-identified with the effects' extras.
+    effects : list of Candidate
+        Effects stacked on the law.
+    fit : Dataset
+        Record fitted (t [s], v [m/s], F [N], ...).
+    ctx : Context
+        The diagnosis context the effects read.
+    extras0 : dict, optional
+        Start values of extras [their units] (default each extra's ``x0`` or data start).
+    max_nfev : int
+        Most trial points of each least-squares run (scipy's ``max_nfev``).
+    progress : callable(n, info), optional
+        Ticked at most once a second with ``n`` residual evaluations (default: the
+        :func:`reporting` context's, else silent).
+
+    Notes
+    -----
+    A record whose N x D finite-difference Jacobian exceeds :data:`LONG_JACOBIAN_BYTES`
+    is fitted by :func:`_solve_normal` (the same trust-region algorithm on the normal
+    equations, a float32 Jacobian): memory O(N D / 2) instead of scipy's several N x D
+    float64 copies.
     """
     nb = len(base_names)
     # no law parameter to fit (the transfer scores calibrate only a candidate's own): the
@@ -203,7 +235,15 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
                 costs.append(float(np.sum(residual(u) ** 2)))
             u0[nb + j] = grid[int(np.argmin(costs))]
 
+    n_par = u0.size
+    long_record = n_par > 0 and 8 * fit.F.size * n_par > LONG_JACOBIAN_BYTES
+    prog = progress if progress is not None else _PROGRESS.get()
+    if prog is not None:
+        residual = _counted(residual, prog, f"fit {'+'.join(e.name for e in effects) or 'base'}")
+
     def solve(u):
+        if long_record:
+            return _solve_normal(residual, u, max_nfev)
         return least_squares(residual, u, bounds=(0.0, 1.0), x_scale=1.0, max_nfev=max_nfev,
                              diff_step=1e-6, method="trf")
 
@@ -227,5 +267,104 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     xl, extras = unpack(sol.x)
     fitted = law.with_values(**{n: float(val) for n, val in zip(base_names, xl)})
     comp = Composite(fitted, list(base_names), list(effects), extras, ctx)
-    nr = float(np.sqrt(np.mean(sol.fun ** 2)))
+    nr = float(np.sqrt(2.0 * sol.cost / fit.F.size)) if long_record \
+        else float(np.sqrt(np.mean(sol.fun ** 2)))
     return comp, nr
+
+
+#: above this size of the N x D finite-difference Jacobian (8 bytes a number) a joint fit
+#: runs on the normal equations (:func:`_solve_normal`): scipy's trust region holds the
+#: Jacobian several times over (its copy, the scaled and augmented matrix, the SVD's left
+#: factor: 2.8 GB peak for a 2,000,000-row record's candidate fits)
+LONG_JACOBIAN_BYTES = 64 * 2**20
+
+#: the progress callable(n, info) of the fits in this context (:func:`reporting`)
+_PROGRESS = contextvars.ContextVar("fit_composite_progress", default=None)
+
+
+@contextlib.contextmanager
+def reporting(progress):
+    """Within the block, :func:`fit_composite` calls without their own ``progress=``
+    report to ``progress`` (``callable(n, info)``, ``n`` residual evaluations; ``None``:
+    silent): a command shows life during the fits of a diagnosis without every layer
+    between it and the fits taking the argument."""
+    token = _PROGRESS.set(progress)
+    try:
+        yield progress
+    finally:
+        _PROGRESS.reset(token)
+
+
+#: seconds between the progress ticks of a joint fit
+TICK_EVERY = 1.0
+
+
+def _counted(residual, progress, label):
+    """``residual`` ticking ``progress(n, label + cost)`` at most every
+    :data:`TICK_EVERY` seconds with the evaluations since the previous tick."""
+    state = {"n": 0, "t": time.perf_counter()}
+
+    def wrapped(u):
+        r = residual(u)
+        state["n"] += 1
+        now = time.perf_counter()
+        if now - state["t"] >= TICK_EVERY:
+            progress(state["n"], f"{label} cost={float(np.sqrt(np.mean(r * r))):.4g}")
+            state["n"], state["t"] = 0, now
+        return r
+    return wrapped
+
+
+def _solve_normal(residual, u0, max_nfev, diff_step=1e-6):
+    """``least_squares(residual, u0, bounds=(0, 1), x_scale=1.0, max_nfev=max_nfev,
+    diff_step=diff_step, method="trf")`` (a 2-point Jacobian, the exact trust-region
+    subproblem) without an N x D float64 Jacobian or scipy's copies of it.
+
+    The forward-difference Jacobian is stored in float32 (its entries carry the
+    differences' own error, ~1e-8 relative at this step, near float32's 6e-8; memory
+    N x D x 4 bytes) and reduced to ``r.r``, ``J^T r``, ``J^T J`` in float64 blocks of rows;
+    the trust region runs on the D + 1 residual with the same Gauss-Newton model
+    (:func:`identification.algorithms.local.compress_normal_equations`,
+    :func:`identification.algorithms.trf.trf_exact`: scipy's algorithm and tests, trial
+    points costing one evaluation, a Jacobian D more where one is accepted).
+
+    Returns
+    -------
+    TrfResult
+        ``x``, ``cost`` (half the sum of squares of the long residual), ``nfev``,
+        ``status``, ``message``.
+    """
+    from identification.algorithms.local import (compress_normal_equations,
+                                                 forward_difference_normal_equations)
+    from identification.algorithms.trf import trf_exact
+
+    u0 = np.asarray(u0, float)
+    last = {}
+
+    def r_at(u):
+        key = u.tobytes()
+        if last.get("key") != key:
+            last.clear()
+            last["r"] = np.asarray(residual(u), float)
+            last["key"] = key
+        return last["r"]
+
+    def cost_of(u):
+        r = r_at(u)
+        return 0.5 * float(np.dot(r, r))
+
+    J = None
+
+    def fun_jac(u):
+        nonlocal J
+        r0 = r_at(u).copy()
+        c2, g, H, J = forward_difference_normal_equations(r_at, u, r0, step=diff_step,
+                                                          out=J)
+        last.clear()
+        last["r"], last["key"] = r0, u.tobytes()
+        return compress_normal_equations(c2, g, H)
+
+    x0 = np.clip(u0, 0.0, 1.0)
+    D = u0.size
+    return trf_exact(fun_jac, x0, np.zeros(D), np.ones(D), ftol=1e-8, xtol=1e-8,
+                     gtol=1e-8, max_nfev=max_nfev, cost_of=cost_of)

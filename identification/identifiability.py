@@ -149,6 +149,8 @@ def _refit(fit, u_start, j, uj, max_nfev=20):
         return _jacobian(fit, full(x), r, free)
 
     x0 = np.clip(base[free], 1e-9, 1 - 1e-9)
+    if 8 * fit.N * fit.D > LONG_JACOBIAN_BYTES:
+        return _refit_normal(fit, base, free, x0, max_nfev)
     try:
         res = least_squares(fun, x0, jac=jac, bounds=(0.0, 1.0), method="trf",
                             x_scale="jac", ftol=1e-7, xtol=1e-7, gtol=1e-7,
@@ -158,6 +160,76 @@ def _refit(fit, u_start, j, uj, max_nfev=20):
         return base, float(fit.cost2_of(base[None, :])[0])
     u = full(res.x)
     return u, float(2.0 * res.cost)
+
+
+#: above this size of the N x D Jacobian (8 bytes a number) a profile refit works on the
+#: normal equations (:func:`_refit_normal`): scipy's trust region on the long residual holds
+#: the Jacobian and its scaled copies (the peak of a 2,000,000-row report, 1.45 GB)
+LONG_JACOBIAN_BYTES = 64 * 2**20
+
+
+def _normal_at(fit, u, free):
+    """``(r.r, J^T r, J^T J)`` of the scaled residual over the coordinates ``free`` at
+    ``u`` (cube coordinates): from the objective's analytic sensitivity pass where it has
+    one (:meth:`identification.objectives.InProcessObjective.normal_equations`, one
+    evaluation, memory O(D^2)), else forward differences stored in float32
+    (:func:`identification.algorithms.local.forward_difference_normal_equations`)."""
+    has = getattr(fit.obj, "has_jacobian", None)
+    if callable(has) and has():
+        x = fit.space.to_physical(u)
+        out = fit.obj.normal_equations(x)
+        if out is not None:
+            fit.n_evals += 1
+            c2, g, H = out
+            lo, hi = fit.space._ends()
+            s = np.where(fit.space.log, x * (hi - lo), hi - lo)  # dx/du
+            g = np.asarray(g) * s
+            H = np.asarray(H) * np.outer(s, s)
+            return float(c2), g[free], H[np.ix_(free, free)]
+    from .algorithms.local import forward_difference_normal_equations
+
+    def residual(v):
+        return fit.residuals(v[None, :])[0]
+    c2, g, H, _ = forward_difference_normal_equations(residual, u, cols=free, step=_JAC_STEP)
+    return c2, g, H
+
+
+def _refit_normal(fit, base, free, x0, max_nfev):
+    """:func:`_refit`'s least squares (the same scipy options) on the compressed residual of
+    the normal equations (:func:`identification.algorithms.local.
+    compress_normal_equations`: the long residual's Gauss-Newton model in D + 1 numbers):
+    no N x D Jacobian is held. Returns (u, cost^2)."""
+    from scipy.optimize import least_squares
+
+    from .algorithms.local import compress_normal_equations
+    cache = {}
+
+    def full(x):
+        u = base.copy()
+        u[free] = x
+        return u
+
+    def at(x):
+        key = np.asarray(x, float).tobytes()
+        if key not in cache:
+            cache.clear()
+            c2, g, H = _normal_at(fit, full(x), free)
+            if not (np.isfinite(c2) and np.all(np.isfinite(H)) and np.all(np.isfinite(g))):
+                f = np.zeros(len(free) + 1)
+                f[-1] = 1e3 * np.sqrt(fit.N)  # as 1e3 per non-finite sample: a huge cost
+                cache[key] = (f, np.zeros((len(free) + 1, len(free))))
+            else:
+                cache[key] = compress_normal_equations(c2, g, H)
+        return cache[key]
+
+    try:
+        res = least_squares(lambda x: at(x)[0], x0, jac=lambda x: at(x)[1],
+                            bounds=(0.0, 1.0), method="trf", x_scale="jac", ftol=1e-7,
+                            xtol=1e-7, gtol=1e-7, max_nfev=max_nfev,
+                            tr_solver="lsmr" if len(free) > 1 else "exact")
+    except (ValueError, np.linalg.LinAlgError):
+        return base, float(fit.cost2_of(base[None, :])[0])
+    return full(res.x), float(2.0 * res.cost)
 
 
 def _profile_side(fit, j, sgn, thresh2, step0, budget_left):

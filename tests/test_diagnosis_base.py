@@ -85,22 +85,38 @@ def rack_pinion_split():
     return load_rack_pinion().split(0.7)
 
 
-def test_rack_pinion_held_out_part_is_scored_from_its_steady_start(rack_pinion_split):
+@pytest.mark.parametrize("seed", [0, pytest.param(1, marks=pytest.mark.slow)])
+def test_rack_pinion_held_out_part_is_scored_from_its_steady_start(rack_pinion_split, seed):
+    """The held-out part starts in motion (0.40 m/s): it is scored from the state consistent
+    with its first samples, not from an undeflected bristle.
+
+    The base's own values are not pinned: its cost is flat along sigma1 (on its upper
+    bound 2000 or near it) and identify's multistart lands in one of two basins by seed
+    (seed 0: fit NRMSE 0.368, polished to 0.343, held-out 0.67; seeds 1-4: 0.387, held-out
+    0.99), so the absolute limits this test used (start spike > 500 N, held-out NRMSE <
+    0.8) held for seed 0's basin only. What is asserted holds in both: the spike from rest
+    is the law's own bristle-rate term (about sigma1 v), the steady start removes it, and
+    the score is the held-out residual's NRMSE, far below the score from rest."""
     fit, held = rack_pinion_split
     assert held.v[0] > 0.35 and warm_up(held) == 0  # starts in motion: every sample scored
-    rep = diagnose(fit, "lugre", validation=[held],
+    rep = diagnose(fit, "lugre", validation=[held], seed=seed,
                    candidates=["stribeck_shape", "drift", "position"])
     base = rep._models["base"]
-    P = base.predict(held)
-    r = held.F - P
-    # no start spike (from an undeflected bristle it was -777 N, sigma1 v at 0.40 m/s)
     law = base.law
-    from_rest = held.F[0] - law.simulate(held.t, held.v)[0]
-    assert abs(from_rest) > 500.0
-    assert np.max(np.abs(r)) < 3.0 * np.std(held.F)
+    sd = np.std(held.F)
+    r = held.F - base.predict(held)
+    r_rest = held.F - law.simulate(held.t, held.v)
+    # from an undeflected bristle the first sample is off by about sigma1 v (-777 N before)
+    spike = law.params.sigma1 * held.v[0]
+    assert spike > 5 * sd
+    assert abs(r_rest[0]) > 0.5 * spike
+    # from the state consistent with the first samples: no start spike
+    assert abs(r[0]) < 0.05 * abs(r_rest[0])
+    assert np.max(np.abs(r)) < 3.0 * sd
     before = rep["baseline"]["validation"]
-    assert before == pytest.approx(np.sqrt(np.mean(r ** 2)) / np.std(held.F), rel=1e-9)
-    assert before < 0.8  # was 1.08 with the spike left out of the score (5.4 with it)
+    assert before == pytest.approx(np.sqrt(np.mean(r ** 2)) / sd, rel=1e-9)
+    # the spike left in the score gave 5.4 (1.08 with it left out)
+    assert before < 0.25 * np.sqrt(np.mean(r_rest ** 2)) / sd
 
 
 def test_warm_up_only_for_a_record_that_starts_at_rest():

@@ -149,3 +149,65 @@ def test_identify_peak_memory_scales_to_2M_rows_within_1_5_GB(tmp_path):
     slope = (peaks[500_000] - peaks[250_000]) / 250_000
     at_2M = peaks[500_000] + slope * 1_500_000
     assert at_2M <= 1500.0, (peaks, at_2M)
+
+
+@pytest.mark.parametrize("law,names", [("lugre", ["sigma0", "sigma1", "Fc", "Fs", "vs", "b"]),
+                                       ("modified_lugre", ["Fc", "Fs", "sigma1"])])
+def test_profile_refit_on_the_normal_equations(law, names, monkeypatch):
+    """A long record's profile refit (identifiability._refit_normal: the normal equations,
+    from the LuGre's sensitivity pass or from float32 forward differences for a law without
+    one) ends at the cost of the refit on the long residual, below the unrefitted cost."""
+    import identification.identifiability as ident
+    from identification.objectives import InProcessObjective
+    from identification.space import ParameterSpace
+    t, x, v, F = _record(4000)
+    data = Dataset.from_arrays(t, F, v=v, check_units=False)
+    m = make_model(law)
+    r = identify(data, m, names=names, identifiability=False)
+    space = ParameterSpace.build(m, names, None, data)
+    u = space.to_unit(np.array([r.params[n] for n in names]))
+    fit = ident._Fit(InProcessObjective(m, data, names), space, u, r.fit_nrmse)
+    j = 1
+    target = min(u[j] + 0.05, 1.0)
+    u_long, c_long = ident._refit(fit, fit.u, j, target)
+    calls = []
+    normal_at = ident._normal_at
+    monkeypatch.setattr(ident, "_normal_at", lambda *a: calls.append(1) or normal_at(*a))
+    monkeypatch.setattr(ident, "LONG_JACOBIAN_BYTES", 0)
+    u_ne, c_ne = ident._refit(fit, fit.u, j, target)
+    assert calls
+    held = fit.u.copy()
+    held[j] = target
+    assert c_ne < 0.999 * float(fit.cost2_of(held[None, :])[0])
+    assert c_ne == pytest.approx(c_long, rel=1e-5)
+    assert u_ne[j] == target
+
+
+@pytest.mark.parametrize("effect", ["delay", "acceleration"])
+def test_candidate_fit_on_the_normal_equations(effect, monkeypatch):
+    """A long record's joint fit (diagnosis.composite._solve_normal: scipy's trust region
+    on the normal equations of a float32 forward-difference Jacobian) ends where scipy's
+    fit on the long residual ends; a progress callable given by the context is ticked."""
+    import diagnosis.composite as composite
+    from diagnosis.benchmark import make_case
+    from diagnosis.core import fit_base
+    from diagnosis.effects import CANDIDATES, make_context
+    data = make_case(effect, n=3000)
+    ctx = make_context(data)
+    base, names, _ = fit_base(data, "lugre", ctx)
+    cand = CANDIDATES[effect].specialise(base.law)
+    law_v, names_v = next(iter(cand.modify_law(base.law, names, ctx)))
+    ref, cost_ref = composite.fit_composite(law_v, names_v, [cand], data, ctx)
+    solved, ticks = [], []
+    solve = composite._solve_normal
+    monkeypatch.setattr(composite, "_solve_normal", lambda *a: solved.append(1) or solve(*a))
+    monkeypatch.setattr(composite, "LONG_JACOBIAN_BYTES", 0)
+    monkeypatch.setattr(composite, "TICK_EVERY", 0.0)
+    with composite.reporting(lambda n, info: ticks.append((n, info))):
+        got, cost = composite.fit_composite(law_v, names_v, [cand], data, ctx)
+    assert solved
+    assert cost == pytest.approx(cost_ref, rel=1e-6)
+    for k, val in ref.extras.items():
+        assert got.extras[k] == pytest.approx(val, rel=1e-4, abs=1e-9), k
+    assert ticks and all(n >= 1 for n, _ in ticks)
+    assert ticks[-1][1].startswith(f"fit {effect} cost=")

@@ -272,7 +272,7 @@ def _trial(x, J_h, diag_h, g_h, d, uf, s, V, Delta, alpha0, has_alpha, lb, ub, t
 
 
 def trf_exact(fun_jac, x0, lb, ub, *, ftol=1e-8, xtol=1e-8, gtol=1e-8, max_nfev=None,
-              stop=None):
+              stop=None, cost_of=None):
     """Minimise ``0.5 |f(x)|^2`` in the box ``[lb, ub]`` as
     ``scipy.optimize.least_squares(fun, x0, jac=jac, bounds=(lb, ub), method="trf",
     tr_solver="exact", x_scale=1.0)`` does, for small problems.
@@ -291,6 +291,11 @@ def trf_exact(fun_jac, x0, lb, ub, *, ftol=1e-8, xtol=1e-8, gtol=1e-8, max_nfev=
         scipy's tolerances (cost change, step, scaled gradient).
     max_nfev : int, optional
         Most evaluations (default ``100 n``).
+    cost_of : callable(x) -> float, optional
+        Half the sum of squares at ``x`` alone, for the trial points (as scipy calls
+        ``fun`` there): ``fun_jac`` then runs only where a trial is accepted (as scipy's
+        ``jac``). For residuals whose Jacobian costs more than their value (finite
+        differences).
     stop : callable(f, J, cost) -> str or None, optional
         Tested at every accepted point (the start included) after scipy's gradient test:
         a string ends the run there with status 2 and that message (e.g. the Gauss-Newton
@@ -343,13 +348,17 @@ def trf_exact(fun_jac, x0, lb, ub, *, ftol=1e-8, xtol=1e-8, gtol=1e-8, max_nfev=
             x_new, step, step_h, pred, alpha = _trial(x, J_h, diag_h, g_h, d, uf, s, V,
                                                      Delta, alpha, has_alpha, lb, ub,
                                                      theta)
-            f_new, J_new = fun_jac(x_new)
+            if cost_of is None:
+                f_new, J_new = fun_jac(x_new)
+                cost_new = 0.5 * float(np.dot(f_new, f_new)) \
+                    if np.all(np.isfinite(f_new)) else math.nan
+            else:
+                cost_new = float(cost_of(x_new))
             nfev += 1
             step_h_norm = float(np.linalg.norm(step_h))
-            if not np.all(np.isfinite(f_new)):
+            if not math.isfinite(cost_new):
                 Delta = 0.25 * step_h_norm
                 continue
-            cost_new = 0.5 * float(np.dot(f_new, f_new))
             actual = cost - cost_new
             # update_tr_radius
             if pred > 0:
@@ -377,6 +386,8 @@ def trf_exact(fun_jac, x0, lb, ub, *, ftol=1e-8, xtol=1e-8, gtol=1e-8, max_nfev=
             alpha *= Delta / Delta_new
             Delta = Delta_new
         if actual > 0:
+            if cost_of is not None:
+                f_new, J_new = fun_jac(x_new)
             x, f, J, cost = x_new, f_new, J_new, cost_new
             njev += 1
     if status is None:

@@ -227,3 +227,40 @@ def test_identification_through_the_native_fmus_on_the_full_record(native):
         a, b = res.params[key], inproc["params"][name]
         assert abs(a - b) <= 0.03 * abs(b) + 0.3, (name, a, b)
     assert res.fit_nrmse < 0.05
+
+
+def test_the_native_fmus_need_nothing_but_the_c_library(native, tmp_path):
+    """Each EMPS FMU carries its binaries (linux64; win64 with the MinGW-w64 compiler) that
+    need only libc and libm, and its sources, from which a host without our build compiles
+    it (``cc -shared sources/*.c``) to the same exported FMI functions."""
+    import shutil
+    import subprocess
+    import zipfile
+    from fmus.native.build import _fmi_headers, _mingw
+    from fmus.native.ckernels import compiler
+    if not shutil.which("readelf"):
+        pytest.skip("readelf (binutils) is not installed")
+    for name, path in native.items():
+        with zipfile.ZipFile(path) as z:
+            files = set(z.namelist())
+            z.extractall(tmp_path / name)
+        ident = f"fl_native_{name}"
+        assert {f"binaries/linux64/{ident}.so", "sources/fl_fmi2.c", "sources/fl_emps.h",
+                "sources/fl_model.h", "sources/buildDescription.xml"} <= files
+        if _mingw():
+            assert f"binaries/win64/{ident}.dll" in files
+        so = tmp_path / name / "binaries" / "linux64" / f"{ident}.so"
+        elf = subprocess.run(["readelf", "-d", str(so)], capture_output=True, text=True,
+                             check=True).stdout
+        libs = {ln.split("[", 1)[1].split("]", 1)[0] for ln in elf.splitlines()
+                if "(NEEDED)" in ln}
+        assert libs <= {"libc.so.6", "libm.so.6"}, (name, libs)
+        src = tmp_path / name / "sources"
+        lib = tmp_path / f"{name}_host.so"
+        subprocess.run([compiler(), "-std=c99", "-O2", "-shared", "-fPIC", f"-I{src}",
+                        f"-I{_fmi_headers()}", str(src / "fl_fmi2.c"), "-o", str(lib), "-lm"],
+                       check=True, capture_output=True)
+        syms = subprocess.run(["readelf", "--dyn-syms", str(lib)], capture_output=True,
+                              text=True, check=True).stdout
+        for fn in ("fmi2Instantiate", "fmi2DoStep", "fmi2SetReal", "fmi2GetReal"):
+            assert fn in syms

@@ -826,9 +826,11 @@ def run_study(out: str | None = None, *, identify: bool = False, diagnose_record
         "readme_baseline": {"force_error_pulses": 0.119, "position_rmse_mm_pulses": 9.22},
         "goals": {"force_error_pulses": 0.06, "position_rmse_mm_pulses": 4.5},
         "open_loop_limit": open_loop_limit(
-            {m: table[m][P.name] for m in vcc}, idim, vcc, model=o)}
+            {m: table[m][P.name] for m in vcc}, idim, vcc, model=o,
+            start_offsets={m.name: _start_offset(m, P)
+                           for m in (ours["lugre"], ours["lugre+asymmetry"])})}
     if native_table is not None:
-        res["emps_trajectory"]["through_native_fmus"] = _native_summary(native_table, P.name)
+        res["emps_trajectory"]["through_native_fmus"] = _native_summary(native_table, P.name, E.name)
     if out is not None:
         res["figure"] = figure(os.path.join(out, "emps_trajectory.png"), P, base,
                                ours["lugre"])
@@ -859,23 +861,35 @@ def _native_table(models, records, out=None) -> dict:
             shutil.rmtree(d, ignore_errors=True)
 
 
-def _native_summary(table: dict, pulses: str) -> dict:
-    """Per model, the held-out (pulse record) figures through the native FMUs: closed-loop
-    relative motor-force error [-], open-loop position RMSE [mm] and R^2 from rest."""
+def _native_summary(table: dict, pulses: str, estimation: str) -> dict:
+    """Per model, the figures through the native FMUs on the held-out pulse record and on
+    the estimation record: closed-loop relative motor-force error [-], open-loop position
+    RMSE [mm] and R^2 from rest (and the RMSE from the record's motion)."""
     out = {}
     for name, per in table.items():
-        sc = per[pulses]
-        out[name] = {"force_error_pulses": sc["closed_loop"]["force_error"],
-                     "position_rmse_mm_pulses": sc["open_loop_from_rest"]["rmse_mm"],
-                     "r2_pulses": sc["open_loop_from_rest"]["r2"],
-                     "position_rmse_mm_pulses_from_record_motion": sc["open_loop"]["rmse_mm"]}
+        out[name] = {}
+        for rec, tag in ((pulses, "pulses"), (estimation, "estimation")):
+            sc = per[rec]
+            out[name].update({
+                f"force_error_{tag}": sc["closed_loop"]["force_error"],
+                f"position_rmse_mm_{tag}": sc["open_loop_from_rest"]["rmse_mm"],
+                f"r2_{tag}": sc["open_loop_from_rest"]["r2"],
+                f"position_rmse_mm_{tag}_from_record_motion": sc["open_loop"]["rmse_mm"]})
     out["fmus"] = ("emps_axis_native.fmu + emps_controller_native.fmu + <law>_native.fmu, "
                    "1 ms communication step, connection file with [fmus]/[connections]")
     return out
 
 
+def _start_offset(model: EMPSModel, rec: EMPSRecord) -> tuple:
+    """(record's initial velocity [m/s], RMS difference [mm] of the open-loop positions from
+    rest and from the record's motion)."""
+    a = simulate(model, rec, closed=False, at_rest=True)["x"]
+    b = simulate(model, rec, closed=False)["x"]
+    return float(rec.initial()[1]), 1e3 * float(np.sqrt(np.mean((a - b) ** 2)))
+
+
 def open_loop_limit(scores_pulses: dict, idim: dict, checks: dict, model: str,
-                    goal: float = 4.5) -> str:
+                    goal: float = 4.5, start_offsets: dict | None = None) -> str:
     """What limits the open-loop position RMSE on the pulse record, in words with the
     figures.
 
@@ -891,6 +905,10 @@ def open_loop_limit(scores_pulses: dict, idim: dict, checks: dict, model: str,
         The model whose figure is the study's (``emps_trajectory``).
     goal : float
         Goal of the open-loop position RMSE [mm].
+    start_offsets : dict, optional
+        Model name -> (initial velocity of the record [m/s], RMS difference [mm] between the
+        open-loop runs from rest and from the record's motion): how much the start alone
+        moves the figure.
     """
     e, p = idim["estimation"], idim["pulses"]
     rmse = scores_pulses[model]["open_loop_from_rest"]["rmse_mm"]
@@ -902,6 +920,13 @@ def open_loop_limit(scores_pulses: dict, idim: dict, checks: dict, model: str,
                      f"{chk['open_loop_from_rest']['rmse_mm']:.2f} mm, from the record's "
                      f"motion {sc['open_loop']['rmse_mm']:.2f} -> "
                      f"{chk['open_loop']['rmse_mm']:.2f} mm")
+    start = ""
+    if start_offsets:
+        v0 = next(iter(start_offsets.values()))[0]
+        start = (f" The start alone moves the positions by as much: the record begins at "
+                 f"{1e3 * v0:.1f} mm/s (first backward difference), and the runs from rest and "
+                 f"from that motion differ by " + ", ".join(
+                     f"{d:.2f} mm RMS ({n})" for n, (_, d) in start_offsets.items()) + ".")
     return (f"open loop from rest on DATA_EMPS_PULSES: {rmse:.2f} mm ({model}; {verdict} the "
             f"{goal:g} mm goal). What limits it: without feedback the position integrates "
             f"twice any difference of the force balance, and the friction differs between "
@@ -917,7 +942,7 @@ def open_loop_limit(scores_pulses: dict, idim: dict, checks: dict, model: str,
             "): the open-loop figure on the held-out record is set by that record-to-record "
             "change and this sensitivity, not by a missing effect the estimation record "
             "shows. The closed loop is not limited by it (the controller absorbs the force "
-            "difference: the voltage error stays at the estimation record's level).")
+            "difference: the voltage error stays at the estimation record's level)." + start)
 
 
 def demo_figures(out: str, summary: dict, quick: bool = False) -> None:
@@ -938,6 +963,14 @@ def demo_figures(out: str, summary: dict, quick: bool = False) -> None:
     report(f"  EMPS open loop, position RMSE on the pulses: ours "
            f"{ol['position_rmse_mm_pulses']:.2f} mm vs IDIM-LS "
            f"{ol['baseline_position_rmse_mm_pulses']:.2f} mm (goal <= 4.5 mm)")
+    nat = et.get("through_native_fmus")
+    if nat:
+        o, b = et["model"], et["baseline"]
+        report(f"  EMPS through the native C FMUs (axis + controller + law): force error on the "
+               f"pulses ours {100 * nat[o]['force_error_pulses']:.1f} % vs IDIM-LS "
+               f"{100 * nat[b]['force_error_pulses']:.1f} %, open loop "
+               f"{nat[o]['position_rmse_mm_pulses']:.2f} vs "
+               f"{nat[b]['position_rmse_mm_pulses']:.2f} mm")
     if "diagnosis" in res:
         d = res["diagnosis"]
         summary["emps_trajectory"]["diagnosis"] = {

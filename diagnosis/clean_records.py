@@ -42,34 +42,18 @@ from scipy.signal import butter, filtfilt, lfilter
 
 from friction.dataset import Dataset
 
+# the benchmark's grid of the truth and its motion between samples (one definition)
+from .benchmark.kinematics import FINE, fine_motion
+
 __all__ = ["FINE", "COLOUR_SAMPLES", "fine_truth", "clean_record", "clean_grid", "run_clean",
            "clean_summary", "NO_NAME", "level_truth_record"]
 
-#: the truth's integration grid, in steps per data sample
-FINE = 10
 #: time constant of the coloured noise's first-order low-pass [samples]
 COLOUR_SAMPLES = 3.0
 #: verdicts that put no name on a record
 NO_NAME = ("none", "unexplained", "base_unfit")
 
 _TRUTH_CACHE: dict = {}
-
-
-def _fine_motion(kin):
-    """Continuous motion through the plant's samples on a grid :data:`FINE` x finer.
-
-    Returns (t_f, x_f, v_f, a_f): time [s], position [m] (the exact integral of the
-    velocity, started at the first sample's position), velocity [m/s] (shape-preserving
-    cubic through the sampled velocity) and acceleration [m/s^2] (its derivative)."""
-    t = kin.t
-    n = t.size
-    t_f = t[0] + np.arange((n - 1) * FINE + 1) * (kin.dt / FINE)
-    t_f[-1] = t[-1]
-    vi = PchipInterpolator(t, kin.v)
-    v_f = vi(t_f)
-    a_f = vi.derivative()(t_f)
-    x_f = kin.x[0] + vi.antiderivative()(t_f) - vi.antiderivative()(t[0])
-    return t_f, x_f, v_f, a_f
 
 
 def fine_truth(kin, truth: str = "fine", cache_dir=None) -> dict:
@@ -104,7 +88,7 @@ def fine_truth(kin, truth: str = "fine", cache_dir=None) -> dict:
                 out = {k: z[k] for k in z.files}
             _TRUTH_CACHE[key] = out
             return out
-    t_f, x_f, v_f, a_f = _fine_motion(kin)
+    t_f, x_f, v_f, a_f = fine_motion(kin)
     law = kin.base
     kw = {"x": x_f} if "x" in law.extra_inputs else {}
     if truth == "fine":
@@ -308,18 +292,11 @@ def run_clean(count: int = 500, plants=None, *, quick: bool = False, workers: in
         (count per verdict), ``per_plant``.
     """
     from .benchmark import PLANT_NAMES, plant_kinematics
+    from .benchmark.runner import load_checkpoint
     plants = list(plants or PLANT_NAMES)
     say = progress or (lambda msg: None)
     jobs = clean_grid(plants, count, seed)
-    done = {}
-    if checkpoint is not None and os.path.exists(checkpoint):
-        with open(checkpoint) as fh:
-            for line in fh:
-                try:
-                    row = json.loads(line)
-                except json.JSONDecodeError:
-                    continue
-                done[row.get("key")] = row
+    done = load_checkpoint(checkpoint, {j["key"] for j in jobs})
     todo = [j for j in jobs if j["key"] not in done]
     if done:
         say(f"[clean] resuming: {len(jobs) - len(todo)} of {len(jobs)} records read from "

@@ -1,0 +1,154 @@
+"""Benchmark cases: datasets whose truth carries an effect the base law lacks.
+
+* **generic** (:func:`make_case`): a multi-sine motion of a mass-like axis and one classic
+  LuGre parameter set (:data:`BASE`);
+* **per plant** (:func:`make_plant_case`): a plant's simulated contact motion
+  (:mod:`.kinematics`), a truth force along it (:mod:`.truths`) calibrated to the requested
+  strength, and white noise.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from friction.dataset import Dataset
+
+from .kinematics import _PLANT_RUNS, PLANT_NAMES, plant_kinematics
+from .truths import BASE, _base_parts, _bump_centre, _generic_truth, _truth  # noqa: F401
+
+__all__ = ["BASE", "CASES", "PLANT_NAMES", "PLANT_CASES", "EFFECT_SIZE", "make_case",
+           "expected", "BenchCase", "applicable", "make_plant_case"]
+
+CASES = ("acceleration", "load", "asymmetry", "stribeck_shape", "position", "inertia",
+         "delay", "drift", "clean", "outside")
+PLANT_CASES = CASES
+#: per-plant cases: effect RMS (truth - base) per unit strength, as a fraction of std(F_base)
+EFFECT_SIZE = 0.15
+
+
+def _motion(n, dt, rng):
+    t = np.arange(n) * dt
+    v = np.zeros(n)
+    # a multi-sine velocity with slowly varying amplitude: both directions, reversals, plateaus
+    for f, amp in ((0.7, 0.05), (1.9, 0.03), (4.3, 0.012)):
+        v += amp * np.sin(2 * np.pi * f * t + rng.uniform(0, 2 * np.pi))
+    v *= 0.6 + 0.4 * np.sin(2 * np.pi * 0.13 * t) ** 2
+    x = np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * dt)))
+    a = np.gradient(v, t)
+    return t, x, v, a
+
+
+def make_case(effect: str, strength: float = 1.0, noise: float = 0.02, n: int = 12000,
+              dt: float = 1e-3, seed: int = 0, return_truth: bool = False):
+    """One generic benchmark dataset whose truth carries ``effect`` (relative ``strength``).
+
+    Parameters
+    ----------
+    effect : str
+        One of :data:`CASES`.
+    strength : float
+        Relative size of the effect [-].
+    noise : float
+        White measurement noise, as a fraction of std(F) [-].
+    n : int
+        Samples.
+    dt : float
+        Sample interval [s].
+    seed : int
+        Seed of the motion phases and the noise.
+    return_truth : bool
+        Also return the noise-free truth force [N].
+
+    Returns
+    -------
+    Dataset, or (Dataset, ndarray) with ``return_truth``.
+    """
+    rng = np.random.default_rng(seed)
+    t, x, v, a = _motion(n, dt, rng)
+    F0, load = _generic_truth(effect, strength, t, x, v, a)
+    sd = float(np.std(F0))
+    F = F0 + noise * sd * rng.standard_normal(n)
+    data = Dataset.from_arrays(t, F, x=x, v=v, a=a, load=load, name=f"{effect}-s{strength}")
+    return (data, F0) if return_truth else data
+
+
+def expected(effect: str) -> str:
+    """Verdict the benchmark expects for a case of ``effect``."""
+    return {"clean": "none", "outside": "unexplained"}.get(effect, effect)
+
+
+@dataclass
+class BenchCase:
+    """One per-plant case: the dataset, its noise-free truth force and what is expected."""
+    plant: str
+    effect: str
+    strength: float
+    noise: float
+    data: Dataset
+    truth: np.ndarray
+    base: object
+    expected: str = ""
+    effect_rms: float = 0.0  # RMS(truth - base) / std(base) [-]
+    info: dict = field(default_factory=dict)
+
+
+def applicable(plant: str, effect: str, quick: bool = False) -> bool:
+    """Whether a per-plant case exists: the isolator's mre_lugre has no Stribeck curve, and a
+    ``position`` defect needs a record whose held-out part revisits the fit part's
+    positions (not the press's one-way stroke, see :func:`_bump_centre`)."""
+    if plant == "mre_isolator" and effect == "stribeck_shape":
+        return False
+    if effect == "position":
+        return _bump_centre(plant_kinematics(plant, quick)) is not None
+    return True
+
+
+def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float = 0.02,
+                    seed: int = 0, quick: bool = False) -> BenchCase:
+    """A per-plant case: the plant's kinematics, a truth force carrying ``effect``, noise.
+
+    Parameters
+    ----------
+    plant : str
+        One of :data:`PLANT_NAMES`.
+    effect : str
+        One of :data:`PLANT_CASES`.
+    strength : float
+        Relative size of the effect [-]: the truth's deviation from the base law has an
+        RMS of ``strength x EFFECT_SIZE`` x std(F_base) (the ``delay`` lag is capped at
+        ``MAX_DELAY_SAMPLES``, the ``load`` slope at 0.96 of proportionality).
+    noise : float
+        White measurement noise, as a fraction of std(F) [-].
+    seed : int
+        Noise seed.
+    quick : bool
+        Use the short protocol of :func:`plant_kinematics`.
+    """
+    if plant in _PLANT_RUNS and effect in PLANT_CASES and not applicable(plant, effect, quick):
+        raise ValueError(f"{effect!r} does not apply to {plant!r} (no Stribeck curve in its "
+                         f"base law, or no position revisited by its held-out part)")
+    kin = plant_kinematics(plant, quick)
+    Fb = _base_parts(kin)[0]
+    sdb = float(np.std(Fb)) or 1.0
+    amp = 0.0
+    if effect == "clean":
+        F0 = Fb
+    else:
+        # calibrate the amplitude factor so the effect's RMS is strength x EFFECT_SIZE of
+        # std(F_base) on every plant (one rescaling: exact for effects linear in it)
+        F1 = _truth(kin, effect, 1.0)
+        r1 = float(np.sqrt(np.mean((F1 - Fb) ** 2))) / sdb
+        amp = strength * EFFECT_SIZE / r1 if r1 > 0 else strength
+        F0 = _truth(kin, effect, amp)
+        r2 = float(np.sqrt(np.mean((F0 - Fb) ** 2))) / sdb
+        if r2 > 0 and abs(r2 / (strength * EFFECT_SIZE) - 1.0) > 0.05:  # nonlinear in amp
+            amp *= strength * EFFECT_SIZE / r2
+            F0 = _truth(kin, effect, amp)
+    sd = float(np.std(F0)) or 1.0
+    rng = np.random.default_rng(seed)
+    F = F0 + noise * sd * rng.standard_normal(F0.size)
+    data = Dataset.from_arrays(kin.t, F, x=kin.x, v=kin.v, a=kin.a, load=kin.load,
+                               name=f"{plant}-{effect}-s{strength}-n{noise}", check_units=False)
+    return BenchCase(plant, effect, strength, noise, data, F0, kin.base, expected(effect),
+                     float(np.sqrt(np.mean((F0 - Fb) ** 2)) / sdb), {"amplitude": amp})

@@ -1,0 +1,201 @@
+"""Runs the benchmark's cases (in parallel, resumable) and scores them."""
+from __future__ import annotations
+
+import time
+
+from ..core import BaseFitError, diagnose
+from .cases import CASES, applicable, expected, make_case, make_plant_case
+from .kinematics import _KIN_CACHE, PLANT_NAMES, _init_worker, plant_kinematics
+from .scoring import _base_failed_row, _score, summarise
+
+__all__ = ["run_benchmark", "load_checkpoint"]
+
+#: seconds of one base identification per (plant, quick), the time baseline of each worker
+_BASE_SECONDS: dict = {}
+
+
+def _run_one(job):
+    plant, eff, s, nz, seed, quick, dseed = job
+    key = (plant, quick)
+    if key not in _BASE_SECONDS:
+        # the time baseline, measured where and while the cases run (same load, same process)
+        _BASE_SECONDS[key] = _base_identification_seconds(plant, quick, dseed)
+    if plant is None:
+        data, truth = make_case(eff, s, nz, seed=seed, return_truth=True)
+        model, erms = "lugre", None
+    else:
+        case = make_plant_case(plant, eff, s, nz, seed=seed, quick=quick)
+        data, truth, model, erms = case.data, case.truth, case.base, case.effect_rms
+    t0 = time.perf_counter()
+    row = {"plant": plant or "generic", "effect": eff, "strength": s, "noise": nz,
+           "samples": len(data), "effect_rms": erms, "base_id_seconds": _BASE_SECONDS[key],
+           "_job": job}
+    try:
+        rep = diagnose(data, model, seed=dseed)
+    except BaseFitError as exc:
+        # the diagnosis stopped on a base that fits worse than a constant: a miss of the
+        # case (never a name), scored as such instead of ending the benchmark
+        row.update(_base_failed_row(eff, exc, time.perf_counter() - t0))
+        return row
+    dt = time.perf_counter() - t0
+    row.update(_score(eff, expected(eff), rep, data, truth, dt))
+    return row
+
+
+def _base_identification_seconds(plant, quick, seed):
+    """Wall time of one base identification on the plant's clean case (the time baseline)."""
+    from identification import identify
+    from ..core import _base_law
+    if plant is None:
+        data = make_case("clean", 1.0, 0.02, seed=seed)
+        model = "lugre"
+    else:
+        case = make_plant_case(plant, "clean", 1.0, 0.02, seed=seed, quick=quick)
+        data, model = case.data, case.base
+    fit, _ = data.split(0.7)
+    law, names = _base_law(model, fit)
+    t0 = time.perf_counter()
+    identify(fit, law, names=names, seed=seed)
+    return time.perf_counter() - t0
+
+
+def _job_key(job) -> str:
+    plant, eff, s, nz, seed, quick, dseed = job
+    return f"{plant}|{eff}|{s!r}|{nz!r}|{seed}|{int(bool(quick))}|{dseed}"
+
+
+def load_checkpoint(path, keys) -> dict:
+    """Rows already scored in a checkpoint file (one JSON object per line, with its job
+    ``key``); a truncated last line (a run killed while writing) is ignored.
+
+    Parameters
+    ----------
+    path : str or None
+        The checkpoint file (None, or a file that does not exist: nothing done yet).
+    keys : set of str
+        Keys of the jobs of this run; rows of other jobs are left out.
+
+    Returns
+    -------
+    dict
+        Job key -> its row.
+    """
+    import json
+    import os
+    done = {}
+    if path is None or not os.path.exists(path):
+        return done
+    with open(path) as fh:
+        for line in fh:
+            try:
+                row = json.loads(line)
+            except json.JSONDecodeError:
+                continue
+            if isinstance(row, dict) and row.get("key") in keys:
+                done[row["key"]] = row
+    return done
+
+
+def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed=0,
+                  progress=None, plants=None, quick: bool = False, workers: int = 1,
+                  clean_repeats: int = 1, checkpoint=None) -> dict:
+    """Run every case and score it.
+
+    Parameters
+    ----------
+    effects : sequence of str
+        Effects to withhold (``clean`` and ``outside`` included by default).
+    strengths, noises : sequence of float
+        Effect strengths [-] and noise levels (fraction of std(F)) [-].
+    seed : int
+        Base seed (noise seeds are ``seed + case number``; the diagnosis uses ``seed``).
+    progress : callable, optional
+        Called with one line per case.
+    plants : None, "all" or sequence of str
+        ``None``: the generic mass-like benchmark (historical); ``"all"``: every plant of
+        :data:`PLANT_NAMES`; or a list of plant names.
+    quick : bool
+        Short plant protocols (tests).
+    workers : int
+        Processes running cases in parallel (1: in this process).
+    clean_repeats : int
+        Clean cases per (noise, strength) with different noise seeds.
+    checkpoint : str or path, optional
+        File the scored rows are appended to as they finish (JSON lines); a run started
+        again with the same file and grid skips the cases already in it (resume after an
+        interruption).
+
+    Returns
+    -------
+    dict
+        ``rows`` (one per case), ``top1_accuracy``, ``clean_false_attributions``,
+        ``outside_named_wrongly``, and (see :func:`summarise`) ``overall``, ``per_plant``
+        and ``per_effect`` figures: localisation accuracy, shrink error, seconds per case
+        and, as the time baseline, one base identification of the plant's clean case timed
+        in the same process as its cases (``time_ratio`` = seconds per case / baseline).
+    """
+    if plants == "all":
+        plants = PLANT_NAMES
+    plist = [None] if plants is None else list(plants)
+    for plant in plist:  # simulate each plant once here; workers get the kinematics
+        if plant is not None:
+            plant_kinematics(plant, quick)
+    jobs = []
+    for plant in plist:
+        for eff in effects:
+            if plant is not None and not applicable(plant, eff, quick):
+                continue
+            reps = clean_repeats if eff == "clean" else 1
+            for s in strengths:
+                for nz in noises:
+                    for r in range(reps):
+                        jobs.append((plant, eff, s, nz, seed + len(jobs) + 1, quick, seed))
+    say = progress or (lambda msg: None)
+    rows = []
+    keys = [_job_key(j) for j in jobs]
+    resumed = load_checkpoint(checkpoint, set(keys))
+    if resumed:
+        say(f"[benchmark] resuming: {len(resumed)} of {len(jobs)} cases read from {checkpoint}")
+        rows.extend(resumed[k] for k in keys if k in resumed)
+    todo = [j for j, k in zip(jobs, keys) if k not in resumed]
+    if checkpoint is not None and resumed:
+        with open(checkpoint, "rb+") as fh:  # a line cut by the interruption: end it
+            fh.seek(0, 2)
+            if fh.tell() > 0:
+                fh.seek(-1, 2)
+                if fh.read(1) != b"\n":
+                    fh.write(b"\n")
+
+    def done(row, k):
+        rows.append(row)
+        if checkpoint is not None:
+            import json
+            row["key"] = _job_key(row.pop("_job"))
+            with open(checkpoint, "a") as fh:
+                fh.write(json.dumps(row, default=float) + "\n")
+        else:
+            row.pop("_job", None)
+        k += len(resumed)
+        lc = row["loc_correct"]
+        lc = "-" if lc is None else "ok" if lc else "miss"
+        say(f"[benchmark {k}/{len(jobs)}] {row['plant']} {row['effect']} s={row['strength']} "
+            f"noise={row['noise']}: {row['verdict']} "
+            f"({'ok' if row['correct'] else 'WRONG, expected ' + row['expected']}); where "
+            f"{row['loc_family']} ({lc}); "
+            f"shrink {row['gap_closed']:.2f} vs truth {row['truth_shrink']:.2f}; "
+            f"{row['seconds']:.1f} s")
+
+    if workers > 1 and len(todo) > 1:
+        import multiprocessing as mp
+        from concurrent.futures import ProcessPoolExecutor
+        with ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("spawn"),
+                                 initializer=_init_worker, initargs=(dict(_KIN_CACHE),)) as ex:
+            for k, row in enumerate(ex.map(_run_one, todo), 1):
+                done(row, k)
+    else:
+        for k, job in enumerate(todo, 1):
+            done(_run_one(job), k)
+    if checkpoint is not None:  # the grid's order, resumed or not
+        order = {k: i for i, k in enumerate(keys)}
+        rows.sort(key=lambda r: order[r["key"]])
+    return summarise(rows)

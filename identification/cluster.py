@@ -105,8 +105,8 @@ def connect(address: str, timeout: float | None = None, *, workers: int = 1, sec
 _EXTRACTED: dict = {}
 _LOCK = threading.Lock()
 #: per worker process: what this process did (for tests and diagnostics)
-_STATS = {"chunks": 0, "rows": 0, "extracted": 0, "reused": 0, "objectives": 0,
-          "candidates": 0, "folders": []}
+_STATS = {"chunks": 0, "rows": 0, "predicted": 0, "extracted": 0, "reused": 0,
+          "objectives": 0, "candidates": 0, "folders": []}
 
 
 def _root() -> str:
@@ -300,6 +300,26 @@ class ShippedObjective:
         return c
 
 
+    def predict(self, X):
+        """Simulated outputs of the parameter rows ``X[n, D]`` on this worker (the
+        objective's ``predict``).
+
+        Parameters
+        ----------
+        X : ndarray
+            Parameter rows in the objective's units.
+
+        Returns
+        -------
+        ndarray
+            ``[n, len(data)]``; NaN rows for failed co-simulations.
+        """
+        F = self._mine().predict(X)
+        _STATS["chunks"] += 1
+        _STATS["predicted"] += int(len(X))
+        return F
+
+
 def ship(objective) -> ShippedObjective:
     """:class:`ShippedObjective` of ``objective`` (FMU files by value, data inside)."""
     return objective if isinstance(objective, ShippedObjective) else \
@@ -307,7 +327,8 @@ def ship(objective) -> ShippedObjective:
 
 
 def worker_stats() -> dict:
-    """What this process did as a worker: ``chunks`` and ``rows`` evaluated, bundles
+    """What this process did as a worker: ``chunks`` run, ``rows`` costed and rows
+    ``predicted`` (finite-difference Jacobians), bundles
     ``extracted`` (written) or ``reused`` (found on disk or in memory), ``objectives``
     received, diagnosis ``candidates`` fitted (:mod:`diagnosis.cluster`), ``folders`` used. Run it on every worker with ``client.run(worker_stats)``."""
     return {k: (list(v) if isinstance(v, list) else v) for k, v in _STATS.items()}

@@ -31,6 +31,10 @@ def _dask_costs(objective, X):
     return objective.costs(X)
 
 
+def _dask_predict(objective, X):
+    return objective.predict(X)
+
+
 def _chunks(X, n):
     n = max(1, min(n, len(X)))
     return [c for c in np.array_split(X, n) if len(c)]
@@ -112,13 +116,14 @@ class DaskExecutor:
         self._shipped = None
         self._futures = {}  # worker address -> the shipped objective's future there
         self._objective_id = None
+        self._closed = False
 
     def _placed(self, objective) -> dict:
         """``worker -> future`` of the shipped objective on every current worker: sent
         from here once per worker (a worker that joins later gets it on the next call)."""
         from .cluster import ship
         if self._shipped is None or self._objective_id != id(objective):
-            self.close()
+            self._release()
             self._shipped = ship(objective)
             self._objective_id = id(objective)
         workers = sorted(self.client.nthreads())
@@ -148,11 +153,36 @@ class DaskExecutor:
         identification.cluster.SchedulerError
             When the scheduler or a worker is lost during the evaluation.
         """
+        return np.concatenate(self._map(_dask_costs, objective, X))
+
+    def predict(self, objective, X):
+        """Simulated outputs of the parameter rows ``X[n, D]`` (the objective's
+        ``predict``: one row of ``len(objective.data)`` values per parameter row), e.g.
+        the D perturbed sets of a finite-difference Jacobian
+        (:meth:`identification.problem.Problem.jacobian`). After :meth:`close` (the search
+        is over) they run here.
+
+        Parameters
+        ----------
+        objective : identification.objectives.Objective
+        X : ndarray
+
+        Returns
+        -------
+        ndarray
+            ``[n, len(objective.data)]``, in the order of ``X``.
+        """
+        if self._closed:
+            return objective.predict(X)
+        return np.concatenate(self._map(_dask_predict, objective, X), axis=0)
+
+    def _map(self, fn, objective, X) -> list:
+        """``fn(shipped objective, chunk)`` over the rows of ``X``, one chunk per worker
+        thread, each on the worker that holds its objective; results in order."""
         from concurrent.futures import CancelledError
         from .cluster import SchedulerError
         try:
             placed = self._placed(objective)
-            # one chunk per worker thread, each on the worker that holds its objective
             nthreads = self.client.nthreads()
             slots = [w for w in sorted(placed) for _ in range(max(1, nthreads.get(w, 1)))]
             if not slots:
@@ -161,9 +191,9 @@ class DaskExecutor:
             futures = []
             for i, c in enumerate(_chunks(np.asarray(X), n)):
                 w = slots[i % len(slots)]
-                futures.append(self.client.submit(_dask_costs, placed[w], c, pure=False,
+                futures.append(self.client.submit(fn, placed[w], c, pure=False,
                                                   workers=[w]))
-            return np.concatenate(self.client.gather(futures))
+            return self.client.gather(futures)
         except (OSError, CancelledError, TimeoutError) as exc:
             addr = getattr(self.client, "scheduler_address", None) or "the scheduler"
             text = str(exc).strip().splitlines()
@@ -172,7 +202,12 @@ class DaskExecutor:
                                  f"keeps every finished evaluation)") from None
 
     def close(self):
-        """Release the shipped objective on the workers (the client stays connected)."""
+        """Release the shipped objective on the workers (the client stays connected);
+        later :meth:`predict` calls run here."""
+        self._release()
+        self._closed = True
+
+    def _release(self):
         for f in self._futures.values():
             try:
                 f.release()

@@ -100,9 +100,9 @@ def _delta(after, before, key):
 
 
 def _csv(path):
-    """A small synthetic LuGre record (2 s at 1 kHz, 1 % force noise) as a user's CSV."""
+    """A small synthetic LuGre record (1.2 s at 1 kHz, 1 % force noise) as a user's CSV."""
     from friction import make_model
-    t = np.arange(0.0, 2.0, 1e-3)
+    t = np.arange(0.0, 1.2, 1e-3)
     v = 0.01 * np.sin(2 * np.pi * t) + 0.004 * np.sin(2 * np.pi * 3.1 * t)
     law = make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=0.4, Fc=1.0, Fs=1.5, vs=1e-3)
     F = law.simulate(t, v) + np.random.default_rng(0).normal(0.0, 0.01, t.size)
@@ -116,7 +116,7 @@ def test_cli_identify_on_the_cluster_equals_inline(cluster, tmp_path, capsys):
     address, _ = cluster
     data = str(_csv(tmp_path / "run.csv"))
     argv = ["identify", data, "--model", "lugre", "--algorithm", "differential_evolution",
-            "--max-evals", "240", "--seed", "3", "--quiet"]
+            "--max-evals", "160", "--seed", "3", "--quiet"]
     assert main(argv + ["--json", str(tmp_path / "inline.json")]) == 0
     before = _stats(address)
     assert main(argv + ["--json", str(tmp_path / "dask.json"), "--scheduler", address]) == 0
@@ -209,7 +209,8 @@ def test_plant_fmu_identification_on_the_cluster_equals_inline(cluster, tmp_path
     """A C cart FMU compiled here + the native LuGre FMU, differential evolution over Fc,
     Fs and the cart's mass: the dask run equals the inline one, both workers co-simulate,
     each writes the FMUs once into its own temporary folder (content-hash cache: a second
-    identification finds them there)."""
+    identification finds them there). Least squares: its Jacobians' perturbed runs go to
+    the workers, same result."""
     pytest.importorskip("fmpy")
     sys.path.insert(0, str(pathlib.Path(__file__).parent))
     from user_plants import build_c_cart
@@ -222,7 +223,7 @@ def test_plant_fmu_identification_on_the_cluster_equals_inline(cluster, tmp_path
     native = built_native_fmus(("lugre",))
     cart = build_c_cart(tmp_path / "cart")
     truth = dict(sigma0=1e5, sigma1=300.0, sigma2=0.4, Fc=1.0, Fs=1.5, vs=1e-3)
-    t = np.arange(0.0, 0.6 + 1e-9, 1e-3)
+    t = np.arange(0.0, 0.4 + 1e-9, 1e-3)
 
     def force(t):
         return 2.2 * np.sin(2 * np.pi * 1.4 * t) + 0.6 * np.sin(2 * np.pi * 4.3 * t)
@@ -237,7 +238,7 @@ def test_plant_fmu_identification_on_the_cluster_equals_inline(cluster, tmp_path
                              "identify": {"m": [0.5, 3.0]}}, "rig.toml")
     law = make_model("lugre", **truth).with_values(Fc=0.7, Fs=1.1)
     kw = dict(names=["Fc", "Fs", "plant.m"], algorithm="differential_evolution", seed=5,
-              max_evals=90, fmu_dir=native, pop_size=10)
+              max_evals=60, fmu_dir=native, pop_size=10)
     inline = identify_plant_fmu(rec, cart, conn, law, **kw)
     client = connect(address, workers=2)
     try:
@@ -250,7 +251,7 @@ def test_plant_fmu_identification_on_the_cluster_equals_inline(cluster, tmp_path
         client.close()
     assert res["executor"] == "dask" and inline["executor"] == "inline"
     assert res.params == inline.params and res.fit_nrmse == inline.fit_nrmse
-    assert res.n_evals == inline.n_evals == 90 and again.params == inline.params
+    assert res.n_evals == inline.n_evals == 60 and again.params == inline.params
     rows = _delta(mid, before, "rows")
     assert all(n > 0 for n in rows.values()), rows
     # the FMUs reached each worker once, by value, into the worker's own folder...
@@ -262,6 +263,23 @@ def test_plant_fmu_identification_on_the_cluster_equals_inline(cluster, tmp_path
     # ...once: the second identification found them by their content hash
     assert _delta(after, before, "extracted") == {"w1": 1, "w2": 1}
     assert _delta(after, mid, "reused") == {"w1": 1, "w2": 1}
+    # least squares: the finite-difference Jacobian's D perturbed co-simulations per
+    # iteration go to the workers too (the residual at the iterate stays here)
+    kw_ls = dict(kw, algorithm="least_squares", max_evals=None, max_nfev=4)
+    kw_ls.pop("pop_size")
+    ls_inline = identify_plant_fmu(rec, cart, conn, law, **kw_ls)
+    client = connect(address, workers=2)
+    try:
+        before = _stats(address)
+        ls = identify_plant_fmu(rec, cart, conn, law, executor=client, **kw_ls)
+        after = _stats(address)
+    finally:
+        client.close()
+    assert ls.params == ls_inline.params and ls.fit_nrmse == ls_inline.fit_nrmse
+    assert ls.n_evals == ls_inline.n_evals
+    predicted = _delta(after, before, "predicted")
+    assert all(n > 0 for n in predicted.values()) and sum(predicted.values()) % 3 == 0, \
+        predicted
 
 
 @pytest.mark.slow

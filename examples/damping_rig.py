@@ -25,7 +25,8 @@ from plants.damping_rig import DampingRig
 from plants.studies.damping_rig import demo_figures
 
 
-def run_example(show_plot: bool = False, out_dir: str = "damping_rig_out") -> dict:
+def run_example(show_plot: bool = False, out_dir: str = "damping_rig_out",
+                quick: bool = False) -> dict:
     """Simulate the drives and waveforms; figures and JSON into ``out_dir``.
 
     Parameters
@@ -34,6 +35,8 @@ def run_example(show_plot: bool = False, out_dir: str = "damping_rig_out") -> di
         Open the figures in windows.
     out_dir : str
         Output directory (created).
+    quick : bool
+        The demo's short figures and one waveform (a smoke test).
 
     Returns
     -------
@@ -48,11 +51,11 @@ def run_example(show_plot: bool = False, out_dir: str = "damping_rig_out") -> di
 
     os.makedirs(out_dir, exist_ok=True)
     summary: dict = {}
-    files = [str(f) for f in demo_figures(out_dir, summary, quick=False)]
+    files = [str(f) for f in demo_figures(out_dir, summary, quick=quick)]
     rig = DampingRig()
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     energy = {}
-    for wave in ("sine", "triangle", "trapezoid"):
+    for wave in ("sine",) if quick else ("sine", "triangle", "trapezoid"):
         r = rig.simulate(0.5, waveform=wave, amplitude=0.01)
         k = r["time"] >= 0.25                      # last cycle at 4 Hz
         ax[0].plot(r["v"][k], r["F_meas"][k], lw=0.8, label=wave)

@@ -24,7 +24,7 @@ import sys
 
 import numpy as np
 
-from frictionlab.progress import Progress
+from friction.progress import Progress
 from plants.forging_press import TABLE1, ForgingPress
 from plants.studies.forging_press import crawl_metrics, demo_figures
 

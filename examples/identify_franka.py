@@ -12,20 +12,41 @@ from identification.real_data import franka_paper_rms, load_franka
 NAMES = ["sigma0", "sigma1", "sigma2", "sigma2_neg", "Fc", "Fc_neg", "Fs", "Fs_neg", "vs", "b"]
 
 
-def main():
+def run_identify_franka(cases=(3, 4), speeds=("slow", "middle", "high"), every: int = 5,
+                        max_evals=None) -> dict:
+    """Fit the LuGre law to each case and speed; print and return ours vs the paper's RMS.
+
+    Parameters
+    ----------
+    cases : tuple of int
+        Franka data cases (3 = joint 2, 4 = joint 7).
+    speeds : tuple of str
+        Speeds among ``"slow"``, ``"middle"``, ``"high"``.
+    every : int
+        Fit on every ``every``-th sample (scored on the whole record).
+    max_evals : int, optional
+        Evaluation budget per fit (simulations); default the algorithm's.
+
+    Returns
+    -------
+    dict
+        ``{(case, speed): (ours, paper)}``, RMS [N m].
+    """
+    out = {}
     print(f"{'case':<6}{'speed':<8}{'ours [N m]':>12}{'paper LuGre':>14}")
-    for case in (3, 4):
-        for speed in ("slow", "middle", "high"):
+    for case in cases:
+        for speed in speeds:
             d = load_franka(case, speed)
             start = make_model("lugre", sigma0=100.0, sigma1=1.0, sigma2=0.5, sigma2_neg=0.5,
                                Fc=0.3, Fc_neg=0.3, Fs=0.4, Fs_neg=0.4, vs=0.01, b=0.0)
-            # fitted on every 5th sample, scored on the whole record
-            r = identify(d.select(slice(0, None, 5)), start, algorithm="least_squares",
-                         names=NAMES)
+            r = identify(d.select(slice(0, None, every)), start, algorithm="least_squares",
+                         names=NAMES, max_evals=max_evals)
             ours = rmse(d.F, r.model.simulate(d.t, d.v))
-            print(f"{case:<6}{speed:<8}{ours:>12.4f}{franka_paper_rms(case, speed):>14.4f}",
+            out[(case, speed)] = (ours, franka_paper_rms(case, speed))
+            print(f"{case:<6}{speed:<8}{ours:>12.4f}{out[(case, speed)][1]:>14.4f}",
                   flush=True)
+    return out
 
 
 if __name__ == "__main__":
-    main()
+    run_identify_franka()

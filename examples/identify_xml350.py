@@ -11,17 +11,28 @@ least squares in Theta(0.5)). Prints the parameters of each step and the accurac
 import argparse
 import json
 
-from frictionlab.progress import Progress
+from friction.progress import Progress
 from identification.xml350_protocol import run_xml350_protocol
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="shorter records")
-    ap.add_argument("--noise-x", type=float, default=0.0, help="encoder noise RMS [m]")
-    ap.add_argument("--json", default=None)
-    args = ap.parse_args()
-    out = run_xml350_protocol(quick=args.quick, noise_x=args.noise_x,
+def run_identify_xml350(quick: bool = False, noise_x: float = 0.0, json_out=None) -> dict:
+    """Run the protocol; print the parameters of each step and the accuracies.
+
+    Parameters
+    ----------
+    quick : bool
+        Shorter records.
+    noise_x : float
+        Encoder noise RMS [m].
+    json_out : str, optional
+        Write the protocol's result as JSON here.
+
+    Returns
+    -------
+    dict
+        The result of :func:`identification.xml350_protocol.run_xml350_protocol`.
+    """
+    out = run_xml350_protocol(quick=quick, noise_x=noise_x,
                               progress=Progress(label="xml350 protocol", interval=0))
     print(f"{'parameter':<8} {'true':>12} {'init':>12} {'final':>12}")
     for n in out["final"]:
@@ -29,10 +40,16 @@ def main():
     print(f"accuracy identification {out['accuracy']['identification']:.1%} "
           f"(paper 82.8 %), validation {out['accuracy']['validation']:.1%} (paper 74.4 %)")
     print(f"samples {out['samples']}, time {out['timings']['total']:.0f} s")
-    if args.json:
-        with open(args.json, "w") as fh:
+    if json_out:
+        with open(json_out, "w") as fh:
             json.dump(out, fh, indent=2, default=float)
+    return out
 
 
 if __name__ == "__main__":
-    main()
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="shorter records")
+    ap.add_argument("--noise-x", type=float, default=0.0, help="encoder noise RMS [m]")
+    ap.add_argument("--json", default=None)
+    args = ap.parse_args()
+    run_identify_xml350(args.quick, args.noise_x, args.json)

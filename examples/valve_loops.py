@@ -28,7 +28,8 @@ from plants.valve import (FREQUENCIES, MAGNITUDES, ValveActuator, classic_lugre_
                           valve_friction)
 
 
-def run_example(show_plot: bool = False, out_dir: str = "valve_loops_out") -> dict:
+def run_example(show_plot: bool = False, out_dir: str = "valve_loops_out",
+                quick: bool = False) -> dict:
     """Simulate the sinusoid grid, save the figures and the loop features.
 
     Parameters
@@ -37,6 +38,8 @@ def run_example(show_plot: bool = False, out_dir: str = "valve_loops_out") -> di
         Open the figures in windows (otherwise they are only saved).
     out_dir : str
         Output directory (created).
+    quick : bool
+        One frequency, one magnitude, two constant-speed tests (a smoke test).
 
     Returns
     -------
@@ -51,8 +54,9 @@ def run_example(show_plot: bool = False, out_dir: str = "valve_loops_out") -> di
 
     os.makedirs(out_dir, exist_ok=True)
     plant = ValveActuator()
-    by_f = loops_at(FREQUENCIES, magnitude=8e-3, cycles=2.0, plant=plant)
-    by_m = {M: loops_at((5.0,), magnitude=M, cycles=2.0, plant=plant)[5.0] for M in MAGNITUDES}
+    freqs, magnitudes = (FREQUENCIES[:1], MAGNITUDES[:1]) if quick else (FREQUENCIES, MAGNITUDES)
+    by_f = loops_at(freqs, magnitude=8e-3, cycles=2.0, plant=plant)
+    by_m = {M: loops_at((5.0,), magnitude=M, cycles=2.0, plant=plant)[5.0] for M in magnitudes}
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     out = {"frequency": {}, "magnitude": {}}
     for f, d in by_f.items():
@@ -82,7 +86,7 @@ def run_example(show_plot: bool = False, out_dir: str = "valve_loops_out") -> di
     p2 = os.path.join(out_dir, "valve_classic_vs_modified.png")
     fig2.savefig(p2, dpi=120)
 
-    mags = np.geomspace(1e-3, 0.02, 8)
+    mags = np.geomspace(1e-3, 0.02, 1 if quick else 8)
     pts = stribeck_points(np.concatenate((-mags[::-1], mags)), plant=plant)
     vg = np.linspace(-0.021, 0.021, 801)
     fig3, ax3 = plt.subplots(figsize=(6, 4))

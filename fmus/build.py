@@ -90,7 +90,15 @@ def _forget_modules(prefixes) -> None:
 
 
 def build_fmu(recipe: FmuRecipe, out: str | os.PathLike) -> pathlib.Path:
-    """Build one FMU into folder ``out``; returns the ``.fmu`` path."""
+    """Build one FMU into folder ``out``; returns the ``.fmu`` path.
+
+    Parameters
+    ----------
+    recipe : FmuRecipe
+        The FMU's recipe (:func:`fmus.recipes.catalogue`).
+    out : str or path
+        Output folder (created).
+    """
     from pythonfmu.builder import FmuBuilder
     from fmpy import read_model_description
 
@@ -141,7 +149,13 @@ def build_fmu(recipe: FmuRecipe, out: str | os.PathLike) -> pathlib.Path:
 
 
 def validate(path) -> list[str]:
-    """``fmpy.validation.validate_fmu`` problems of one FMU (empty list: valid)."""
+    """``fmpy.validation.validate_fmu`` problems of one FMU (empty list: valid).
+
+    Parameters
+    ----------
+    path : str or path
+        The ``.fmu`` file.
+    """
     from fmpy.validation import validate_fmu
     return validate_fmu(str(path))
 

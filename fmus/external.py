@@ -31,7 +31,23 @@ def run_libcosim(fmus: dict, connections, *, step_size: float, stop_time: float,
                  parameters: dict | None = None, record=None) -> np.ndarray:
     """Co-simulate with OSP libcosim's fixed-step algorithm; returns a structured array
     (``time`` first, then ``record`` columns ``"instance.variable"``) at every step after
-    the start."""
+    the start.
+
+    Parameters
+    ----------
+    fmus : dict
+        ``{instance name: path of its .fmu}``.
+    connections : sequence of (str, str)
+        ``("instance.output", "instance.input")`` pairs.
+    step_size : float
+        Communication step [s].
+    stop_time : float
+        End of the run [s].
+    parameters : dict, optional
+        ``{instance: {variable: value}}``.
+    record : list of str, optional
+        ``"instance.variable"`` to record.
+    """
     from fmpy import read_model_description
     from libcosimpy.CosimExecution import CosimExecution
     from libcosimpy.CosimObserver import CosimObserver
@@ -94,6 +110,23 @@ def make_container(fmus: dict, connections, out_path, *, step_size: float,
     ``sequential=True``: the container steps the embedded FMUs one after the other in the
     order of ``fmus`` (our Gauss-Seidel); ``expose`` lists ``"instance.variable"`` outputs to
     expose as container outputs, named ``instance_variable``.
+
+    Parameters
+    ----------
+    fmus : dict
+        ``{instance name: path of its .fmu}``, in stepping order.
+    connections : sequence of (str, str)
+        ``("instance.output", "instance.input")`` pairs.
+    out_path : str or path
+        The container ``.fmu`` to write.
+    step_size : float
+        Communication step [s].
+    parameters : dict, optional
+        ``{instance: {variable: value}}``.
+    sequential : bool
+        See above.
+    expose : sequence of str
+        See above.
     """
     from fmu_manipulation_toolbox.assembly import Assembly
 

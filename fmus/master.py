@@ -86,6 +86,13 @@ class Connection:
 
     @staticmethod
     def split(ref: str) -> tuple[str, str]:
+        """``(instance, variable)`` of a connection end (ValueError if malformed).
+
+        Parameters
+        ----------
+        ref : str
+            A connection end ``"instance.variable"``.
+        """
         inst, dot, var = ref.partition(".")
         if not dot or not inst or not var:
             raise ValueError(f"connection end {ref!r} must be 'instance.variable'")
@@ -98,7 +105,17 @@ FMU_KINDS = ("pythonfmu", "native")
 
 def fmu_file(fmu_dir, name: str, native: bool = False) -> str:
     """Path of the FMU ``name`` in ``fmu_dir``: ``<name>.fmu`` (pythonfmu) or, with
-    ``native``, ``<name>_native.fmu`` (:mod:`fmus.native.build`)."""
+    ``native``, ``<name>_native.fmu`` (:mod:`fmus.native.build`).
+
+    Parameters
+    ----------
+    fmu_dir : str or path
+        Folder of built FMUs.
+    name : str
+        FMU name (``lugre``, ``mass``, a plant).
+    native : bool
+        The native C FMU.
+    """
     suffix = "_native" if native else ""
     return os.path.join(os.fspath(fmu_dir), f"{name}{suffix}.fmu")
 
@@ -142,6 +159,13 @@ def fmu_values(variables: Mapping, values: Mapping) -> dict:
     * Booleans (``True``, ``1``, ``"true"``), Integers and Reals by type.
 
     Raises ``ValueError`` naming an unknown variable or an untranslatable value.
+
+    Parameters
+    ----------
+    variables : Mapping
+        Variable name -> fmpy ``ScalarVariable`` of the FMU.
+    values : Mapping
+        Python-style values by name (see above).
     """
     out = {}
     for name, value in values.items():
@@ -182,7 +206,15 @@ def fmu_values(variables: Mapping, values: Mapping) -> dict:
 def law_parameters(model, exclude=()) -> dict:
     """Every parameter of a friction law (a ``friction.MODELS`` instance) as a dict for
     :class:`Master` ``parameters``, options (``shape``) and unset twins (``None``) included;
-    :func:`fmu_values` turns it into either FMU kind's values. ``exclude``: names left out."""
+    :func:`fmu_values` turns it into either FMU kind's values. ``exclude``: names left out.
+
+    Parameters
+    ----------
+    model : FrictionModel
+        The law.
+    exclude : sequence of str
+        Parameter names left out.
+    """
     import dataclasses
     return {f.name: getattr(model.params, f.name) for f in dataclasses.fields(model.params)
             if f.name not in exclude}
@@ -698,6 +730,19 @@ class Master:
         for ``n`` steps) is set at the communication point ``t_k`` (at initialization for
         ``k = 0``) and held over the step from ``t_k``; a recorded external input shows the
         value held over the step that ended at its row.
+
+        Parameters
+        ----------
+        stop_time : float, optional
+            End of the run [s] (default: the DefaultExperiment's).
+        step_size : float, optional
+            Communication step [s] (default: the DefaultExperiment's).
+        start_time : float, optional
+            Start of the run [s] (default: the DefaultExperiment's, else 0).
+        progress : None, bool, tqdm or callable(n, info), optional
+            Progress in communication steps (see above).
+        inputs : dict, optional
+            ``{"instance.variable": values}`` of the external inputs (see above).
         """
         de = self.default_experiment()
         t0 = de["start_time"] if start_time is None else float(start_time)
@@ -806,6 +851,21 @@ class Master:
 
 def simulate_cosim(fmus, connections=(), *, stop_time=None, step_size=None, start_time=None,
                    progress=None, **options) -> np.ndarray:
-    """One-shot :class:`Master` run (built, simulated, closed); returns the result array."""
+    """One-shot :class:`Master` run (built, simulated, closed); returns the result array.
+
+    Parameters
+    ----------
+    fmus : dict
+        ``{instance name: path of its .fmu}``.
+    connections : sequence of Connection or (str, str)
+        ``("instance.output", "instance.input")`` pairs.
+    stop_time, step_size, start_time : float, optional
+        As for :meth:`Master.simulate` [s].
+    progress : None, bool, tqdm or callable(n, info), optional
+        As for :meth:`Master.simulate`.
+    **options
+        Further :class:`Master` arguments (``record``, ``parameters``, ``algorithm``, ...);
+        an unknown name is a TypeError.
+    """
     with Master(fmus, connections, **options) as m:
         return m.simulate(stop_time, step_size, start_time, progress=progress)

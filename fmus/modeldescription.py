@@ -43,6 +43,11 @@ def base_unit(unit: str) -> dict[str, int] | None:
 
     Returns ``None`` when a symbol is unknown (the unit is then declared without a
     ``BaseUnit``, which FMI allows).
+
+    Parameters
+    ----------
+    unit : str
+        A unit string (``"N.s/m"``, ``"m/s^2"``, ``"m/s2"``).
     """
     exps: dict[str, int] = {}
     parts = unit.replace("*", ".").split("/")
@@ -71,7 +76,15 @@ def _fmt(x: float) -> str:
 def add_unit_and_type_definitions(root, variables) -> None:
     """``UnitDefinitions`` (SI ``BaseUnit`` exponents of every Real's unit) and
     ``TypeDefinitions`` (the Enumerations, values 1..n) of either FMU kind's variables
-    (:class:`fmus.variables.Var` items, :class:`fmus.native.variables.NVar` enum)."""
+    (:class:`fmus.variables.Var` items, :class:`fmus.native.variables.NVar` enum).
+
+    Parameters
+    ----------
+    root : xml.etree.ElementTree.Element
+        The ``fmiModelDescription`` element.
+    variables : sequence
+        The FMU's variables.
+    """
     units = sorted({v.unit for v in variables if v.type == "Real" and v.unit})
     if units:
         ud = SubElement(root, "UnitDefinitions")
@@ -110,6 +123,8 @@ def model_description_xml(variables, *, model_identifier: str, guid: str, descri
     state : bool
         The slave saves and restores its whole state, also serialized
         (``canGetAndSetFMUstate``, ``canSerializeFMUstate``).
+    generation_tool : str
+        The ``generationTool`` attribute.
     """
     now = datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")
     root = Element("fmiModelDescription", dict(

@@ -87,7 +87,19 @@ XML350_CONNECTIONS = [
 def xml350_loop_master(fmu_dir, *, friction_params: dict | None = None, record=None,
                        native: bool = False):
     """An open :class:`fmus.master.Master` of the XML-350 loop assembled from part FMUs
-    (``native``: the friction law is ``lugre_native.fmu``, the parts stay pythonfmu FMUs)."""
+    (``native``: the friction law is ``lugre_native.fmu``, the parts stay pythonfmu FMUs).
+
+    Parameters
+    ----------
+    fmu_dir : str or path
+        Folder of built FMUs.
+    friction_params : dict, optional
+        Parameter values of the LuGre law FMU.
+    record : list of str, optional
+        ``"instance.variable"`` to record.
+    native : bool
+        See above.
+    """
     from plants.xml350 import xml350_friction
     from .master import Master, fmu_file
     fmus = {"trajectory": "xml350_trajectory", "feedforward": "lugre_feedforward",
@@ -104,7 +116,17 @@ def xml350_loop_master(fmu_dir, *, friction_params: dict | None = None, record=N
 def plant_connections(plant_cls, law_cls, coupling: str = "hold") -> list[tuple[str, str]]:
     """Connections plant <-> friction law for the law's inputs (and, for the
     ``"linearised"`` coupling, the law's coupling outputs into the plant; that needs the
-    law's ``h_lin`` set, as :func:`plant_master` does)."""
+    law's ``h_lin`` set, as :func:`plant_master` does).
+
+    Parameters
+    ----------
+    plant_cls : type
+        The plant class.
+    law_cls : type
+        The friction-law class.
+    coupling : {"hold", "linearised"}
+        How the force couples (see above).
+    """
     if coupling not in COUPLINGS:
         raise ValueError(f"coupling must be one of {COUPLINGS}, got {coupling!r}")
     outs = plant_cls(external_friction=True).all_output_names
@@ -137,6 +159,11 @@ def classic_lugre_for(plant_cls):
     ``beta, eps, c0, f0 -> sigma0, sigma1, sigma2, b`` with ``Fc = Fs = beta / alpha`` (its
     saturated hysteretic force; the spring k0 x has no LuGre counterpart). Values are
     clipped into LuGre's admissible bounds (a press contact stiffer than 1e9 N/m).
+
+    Parameters
+    ----------
+    plant_cls : type
+        The plant class.
     """
     import friction
     seed = plant_cls.default_friction()
@@ -164,7 +191,13 @@ def classic_lugre_for(plant_cls):
 
 
 def plant_laws(plant_cls) -> dict:
-    """The two laws of the proof: ``{"lugre": classic LuGre, <seed name>: seed law}``."""
+    """The two laws of the proof: ``{"lugre": classic LuGre, <seed name>: seed law}``.
+
+    Parameters
+    ----------
+    plant_cls : type
+        The plant class.
+    """
     seed = plant_cls.default_friction()
     laws = {"lugre": classic_lugre_for(plant_cls)}
     laws[seed.name] = seed
@@ -193,6 +226,27 @@ def plant_master(fmu_dir, plant_name: str, law, *, algorithm: str = "gauss-seide
     ``"hold"``. ``native``: the law is the native C FMU ``<law>_native.fmu`` of ``fmu_dir``
     (the same results; its switching law reads ``low_share`` only with ``use_low_share``,
     which is set where the coupling connects it).
+
+    Parameters
+    ----------
+    fmu_dir : str or path
+        Folder of built FMUs.
+    plant_name : str
+        Registry name of the plant.
+    law : FrictionModel
+        The friction law (its FMU is ``<law.name>.fmu``).
+    algorithm : {"gauss-seidel", "jacobi"}
+        Master algorithm.
+    iterations : int
+        Fixed-point iterations per step.
+    record : list of str, optional
+        ``"instance.variable"`` to record (default the plant's outputs).
+    coupling : {"linearised", "hold"}
+        See above.
+    step : float, optional
+        Communication step [s] for ``h_lin`` (default :func:`data_step`).
+    native : bool
+        See above.
     """
     import plants
     from .master import Master, fmu_file
@@ -229,7 +283,13 @@ MAX_COUPLING_STEP = 1e-4
 def data_step(plant_cls) -> float:
     """The plant's data period 1 / data_rate [s]: the communication step of the proof at the
     data rate. A controller sampling faster (the press: 1 kHz under 100 Hz data) runs at its
-    own instants inside the plant FMU's step."""
+    own instants inside the plant FMU's step.
+
+    Parameters
+    ----------
+    plant_cls : type
+        The plant class.
+    """
     return 1.0 / plant_cls.data_rate
 
 
@@ -239,6 +299,13 @@ def coupling_step(plant_cls, max_step: float | None = MAX_COUPLING_STEP) -> floa
     :func:`data_step` divided by the smallest integer that brings it to ``max_step`` or
     below, so results fall on the data samples (``max_step=None``: :func:`data_step`
     itself, what the linearised coupling of :func:`plant_proof` uses).
+
+    Parameters
+    ----------
+    plant_cls : type
+        The plant class.
+    max_step : float, optional
+        Largest communication step [s].
     """
     h = data_step(plant_cls)
     if max_step is None:
@@ -268,6 +335,37 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
     period that divide it (a plant whose controller samples faster than its data: the press
     at 1 kHz, data at 100 Hz), for an observed order above the integrator's error floor.
     ``native``: the law is the native C FMU (``<law>_native.fmu``; :func:`plant_master`).
+
+    Parameters
+    ----------
+    fmu_dir : str or path
+        Folder of built FMUs.
+    plant_name : str
+        Registry name of the plant.
+    law : FrictionModel
+        The friction law.
+    refinements : int
+        Minimum number of communication steps run.
+    stop : float, optional
+        End of the run [s] (default: a few hundred data periods).
+    rtol : float
+        Relative tolerance of the reference integrator.
+    tol : float
+        NRMSE goal.
+    max_halvings : int
+        Most halvings of the step.
+    time_budget : float, optional
+        Wall-clock budget of the reference [s].
+    coupling : {"linearised", "hold"}
+        See :func:`plant_master`.
+    max_step : float, optional
+        Largest communication step [s] of the finer-step fallback.
+    coarser : bool
+        Also run at twice the data step.
+    plant_params : dict, optional
+        Plant parameter values (SI units) for the reference and the plant FMU.
+    native : bool
+        Use the native C law FMU.
 
     Returns
     -------

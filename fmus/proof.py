@@ -36,7 +36,13 @@ MASS_SCENARIOS = {
 
 
 def mass_scenario(law: str) -> dict:
-    """The scenario of ``law``; a new law gets a lugre-like one scaled to its force level."""
+    """The scenario of ``law``; a new law gets a lugre-like one scaled to its force level.
+
+    Parameters
+    ----------
+    law : str
+        Registry name of the law.
+    """
     if law in MASS_SCENARIOS:
         return dict(MASS_SCENARIOS[law])
     import friction
@@ -46,7 +52,13 @@ def mass_scenario(law: str) -> dict:
 
 
 def mass_connections(law: str) -> list[tuple[str, str]]:
-    """Connections mass <-> friction law (the law's extra kinematic inputs included)."""
+    """Connections mass <-> friction law (the law's extra kinematic inputs included).
+
+    Parameters
+    ----------
+    law : str
+        Registry name of the law.
+    """
     import friction
     cls = friction.MODELS[law]
     conns = [("mass.v", "friction.v"), ("friction.F", "mass.F_friction")]
@@ -63,6 +75,27 @@ def mass_cosim(fmu_dir, law: str, *, step: float, stop: float | None = None,
     """Co-simulate ``mass.fmu`` + ``<law>.fmu`` from ``fmu_dir``; returns the result array.
 
     Pass an open ``master`` (from :func:`mass_master`) to reuse loaded FMUs across runs.
+
+    Parameters
+    ----------
+    fmu_dir : str or path
+        Folder of built FMUs.
+    law : str
+        Registry name of the law.
+    step : float
+        Communication step [s].
+    stop : float, optional
+        End of the run [s] (default: the scenario's).
+    algorithm : {"gauss-seidel", "jacobi"}
+        Master algorithm.
+    scenario : dict, optional
+        The loop's scenario (default :func:`mass_scenario`).
+    master : Master, optional
+        An open master of the loop to reuse.
+    iterations : int
+        Fixed-point iterations per step.
+    native : bool
+        Use the native C law FMU.
     """
     sc = scenario or mass_scenario(law)
     stop = sc["stop"] if stop is None else stop
@@ -96,6 +129,17 @@ def mass_reference(law: str, t, scenario: dict | None = None, rtol: float = 1e-1
     through the plants' hybrid reference instead (:func:`mass_loop_plant`: regime held per
     segment, crossings located, Filippov sliding along |v| = vc); ``t`` must then be the
     uniform grid ``0, h, 2h, ...``. Returns a dict with ``x``, ``v``, ``F``.
+
+    Parameters
+    ----------
+    law : str
+        Registry name of the law.
+    t : array_like
+        Output instants [s].
+    scenario : dict, optional
+        The loop's scenario (default :func:`mass_scenario`).
+    rtol : float
+        Relative tolerance of the reference integrator.
     """
     import friction
     from friction.reference import regime_split, simulate_mass
@@ -120,7 +164,15 @@ def mass_reference(law: str, t, scenario: dict | None = None, rtol: float = 1e-1
 
 def mass_loop_plant(scenario: dict, step: float):
     """The mass + friction loop of ``scenario`` as a :class:`plants.base.Plant` class
-    (states ``x, v``; output interval ``step`` [s]), for the plants' reference integrator."""
+    (states ``x, v``; output interval ``step`` [s]), for the plants' reference integrator.
+
+    Parameters
+    ----------
+    scenario : dict
+        The loop's scenario (mass, force amplitude and frequency, law).
+    step : float
+        Output interval [s].
+    """
     from plants.base import Experiment, Plant, PlantParams
     sc = dict(scenario)
     w = 2.0 * math.pi * sc["u_freq"]
@@ -152,7 +204,15 @@ def mass_loop_plant(scenario: dict, step: float):
 
 
 def observed_order(steps, errors) -> float:
-    """Least-squares slope of log(error) against log(step) (1: first order)."""
+    """Least-squares slope of log(error) against log(step) (1: first order).
+
+    Parameters
+    ----------
+    steps : array_like
+        Communication steps [s].
+    errors : array_like
+        The errors at those steps.
+    """
     return float(np.polyfit(np.log(np.asarray(steps, float)),
                             np.log(np.asarray(errors, float)), 1)[0])
 
@@ -165,6 +225,23 @@ def mass_proof(fmu_dir, law: str, *, step: float | None = None, refinements: int
     ``step`` defaults to the scenario's (1e-4 s unless it says otherwise). Runs the
     co-simulation at ``step * 2**k`` for k = refinements-1 ... 0 and compares each
     with the reference sampled at the same instants.
+
+    Parameters
+    ----------
+    fmu_dir : str or path
+        Folder of built FMUs.
+    law : str
+        Registry name of the law.
+    step : float, optional
+        Finest communication step [s].
+    refinements : int
+        Number of steps ``step * 2**k`` run.
+    stop : float, optional
+        End of the run [s] (default: the scenario's).
+    rtol : float
+        Relative tolerance of the reference.
+    algorithm : {"gauss-seidel", "jacobi"}
+        Master algorithm.
 
     Returns
     -------

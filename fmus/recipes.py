@@ -51,6 +51,13 @@ class FmuRecipe:
         return f"fl_{self.name}"
 
     def package_name(self, pkg: str) -> str:
+        """The vendored name of a repository package inside this FMU (``_fl_<fmu>_<pkg>``).
+
+        Parameters
+        ----------
+        pkg : str
+            A repository package (``friction``, ``plants``, ``fmus``).
+        """
         return f"_fl_{self.name}_{pkg}"
 
 

@@ -83,7 +83,15 @@ _SHIM_INNER = {"linux": ("linux64", "_pythonfmu.so"), "win32": ("win64", "_pytho
 
 def behind_status_shim(resources, model_identifier: str) -> bool:
     """True when this FMU runs its linux64 or win64 binary and that binary is the status shim
-    (which turns error-level log messages into ``fmi2Error``)."""
+    (which turns error-level log messages into ``fmi2Error``).
+
+    Parameters
+    ----------
+    resources : str
+        The FMU's resources folder.
+    model_identifier : str
+        The FMU's model identifier.
+    """
     key = "linux" if sys.platform.startswith("linux") else sys.platform
     if key not in _SHIM_INNER or not resources:
         return False
@@ -112,6 +120,14 @@ class SlaveBase(Fmi2Slave):
     can_get_state = True
 
     def __init__(self, **kwargs):
+        """The slave with its variables registered and their start values set.
+
+        Parameters
+        ----------
+        **kwargs
+            What pythonfmu's runtime passes to ``Fmi2Slave`` (``instance_name``,
+            ``resources``, ...).
+        """
         super().__init__(**kwargs)
         self.modelName = self.model_identifier
         self.description = self.fmu_description
@@ -155,6 +171,13 @@ class SlaveBase(Fmi2Slave):
         raise NotImplementedError
 
     def rebuild(self, initial: bool) -> None:  # pragma: no cover - abstract
+        """Build the model from the current parameter values (ParameterError if refused).
+
+        Parameters
+        ----------
+        initial : bool
+            Called at initialization (else after a parameter changed later).
+        """
         raise NotImplementedError
 
     def compute_outputs(self) -> None:  # pragma: no cover - abstract
@@ -162,7 +185,15 @@ class SlaveBase(Fmi2Slave):
 
     def advance(self, t: float, h: float) -> bool:  # pragma: no cover - abstract
         """Integrate [t, t+h] with the inputs held; return True if the outputs at t+h were
-        set as well (otherwise ``compute_outputs`` runs)."""
+        set as well (otherwise ``compute_outputs`` runs).
+
+        Parameters
+        ----------
+        t : float
+            Current communication point [s].
+        h : float
+            Communication step [s].
+        """
         raise NotImplementedError
 
     # helpers ------------------------------------------------------------------------------
@@ -175,6 +206,13 @@ class SlaveBase(Fmi2Slave):
     def reject(self, key: str, message: str) -> None:
         """Log a rejected value at error level (the call returns ``fmi2Error`` behind the
         status shim); without the shim the next step is refused as well (``fmi2Discard``).
+
+        Parameters
+        ----------
+        key : str
+            What was rejected (the variable name).
+        message : str
+            The log message.
         """
         msg = f"{self.instance_name}: {message}"
         self.log(msg, Fmi2Status.error)
@@ -183,11 +221,25 @@ class SlaveBase(Fmi2Slave):
 
     def fail(self, key: str, message: str) -> None:
         """Record a failure that refuses every step until cleared (see ``failed``); the
-        FMI call that found it reports it with :meth:`report`."""
+        FMI call that found it reports it with :meth:`report`.
+
+        Parameters
+        ----------
+        key : str
+            What failed (cleared by the same key).
+        message : str
+            The log message.
+        """
         self.failed[key] = f"{self.instance_name}: {message}"
 
     def report(self, what: str) -> None:
-        """Log every recorded failure at error level, saying what it prevents."""
+        """Log every recorded failure at error level, saying what it prevents.
+
+        Parameters
+        ----------
+        what : str
+            What the failure prevents (the FMI call).
+        """
         for msg in self.failed.values():
             self.log(f"{msg} ({what})", Fmi2Status.error)
 
@@ -216,6 +268,13 @@ class SlaveBase(Fmi2Slave):
                 if v.causality == "parameter" and v.field >= 0 and not v.twin_of}
 
     def value(self, name: str):
+        """Current value of a variable.
+
+        Parameters
+        ----------
+        name : str
+            Variable name.
+        """
         return self.values[self.index[name]]
 
     def _ensure_model(self, initial: bool = False) -> bool:
@@ -336,7 +395,15 @@ class SlaveBase(Fmi2Slave):
                  Fmi2Status.error)
 
     def set_values(self, vrs, values):
-        """Set any variables, each checked by ``_check_set``."""
+        """Set any variables, each checked by ``_check_set``.
+
+        Parameters
+        ----------
+        vrs : sequence of int
+            Value references.
+        values : sequence
+            The values, one per reference.
+        """
         try:
             for vr, value in zip(vrs, values):
                 self._check_set(vr, value)
@@ -400,7 +467,13 @@ class SlaveBase(Fmi2Slave):
         return None if self._built is None else {}
 
     def restore_dynamic(self, data) -> None:
-        """Restore :meth:`dynamic_state` data (None: as before the first build)."""
+        """Restore :meth:`dynamic_state` data (None: as before the first build).
+
+        Parameters
+        ----------
+        data : dict or None
+            What :meth:`dynamic_state` returned.
+        """
 
     def _state_refused(self, call: str) -> None:
         self.log(f"{self.instance_name}: {call} refused: this FMU ({self.model_identifier}) "
@@ -697,6 +770,13 @@ class MassSlave(SlaveBase):
         self.x, self.v = data["x"], data["v"]
 
     def drive(self, t):
+        """The sinusoidal drive force u0 + u_amp sin(w t) [N].
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        """
         return self.u0 + self.u_amp * math.sin(self.w * t)
 
     def compute_outputs(self):

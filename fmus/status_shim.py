@@ -61,13 +61,29 @@ def _check_platform(platform: str) -> None:
 
 
 def library_name(model_identifier: str, platform: str = PLATFORM) -> str:
-    """File name of the FMU's binary in ``binaries/<platform>`` (``<id>.so`` / ``<id>.dll``)."""
+    """File name of the FMU's binary in ``binaries/<platform>`` (``<id>.so`` / ``<id>.dll``).
+
+    Parameters
+    ----------
+    model_identifier : str
+        The FMU's model identifier.
+    platform : str
+        ``linux64`` or ``win64``.
+    """
     _check_platform(platform)
     return f"{model_identifier}{_EXT[platform]}"
 
 
 def inner_name(model_identifier: str, platform: str = PLATFORM) -> str:
-    """File name of pythonfmu's library behind the shim in ``binaries/<platform>``."""
+    """File name of pythonfmu's library behind the shim in ``binaries/<platform>``.
+
+    Parameters
+    ----------
+    model_identifier : str
+        The FMU's model identifier.
+    platform : str
+        ``linux64`` or ``win64``.
+    """
     _check_platform(platform)
     return f"{model_identifier}_pythonfmu{_EXT[platform]}"
 
@@ -198,7 +214,13 @@ def shim_library(platform: str = PLATFORM) -> pathlib.Path:
 
 def shim_or_warn(platform: str = PLATFORM) -> pathlib.Path | None:
     """:func:`shim_library`, or None with a warning that bad input then gives fmi2Discard
-    (on that platform: the FMU keeps pythonfmu's binary there)."""
+    (on that platform: the FMU keeps pythonfmu's binary there).
+
+    Parameters
+    ----------
+    platform : str
+        ``linux64`` or ``win64``.
+    """
     try:
         return shim_library(platform)
     except ShimUnavailable as exc:
@@ -217,7 +239,17 @@ def shim_or_warn(platform: str = PLATFORM) -> pathlib.Path | None:
 def shim_members(model_identifier: str, shim: pathlib.Path,
                  platform: str = PLATFORM) -> tuple[dict, dict]:
     """Archive changes that put ``shim`` in front of pythonfmu's library in
-    ``binaries/<platform>``: ``(rename, replace)`` for :func:`rewrite_fmu`."""
+    ``binaries/<platform>``: ``(rename, replace)`` for :func:`rewrite_fmu`.
+
+    Parameters
+    ----------
+    model_identifier : str
+        The FMU's model identifier.
+    shim : path
+        The compiled shim library.
+    platform : str
+        ``linux64`` or ``win64``.
+    """
     lib = f"binaries/{platform}/{library_name(model_identifier, platform)}"
     return ({lib: f"binaries/{platform}/{inner_name(model_identifier, platform)}"},
             {lib: pathlib.Path(shim).read_bytes()})
@@ -225,7 +257,17 @@ def shim_members(model_identifier: str, shim: pathlib.Path,
 
 def rewrite_fmu(fmu: pathlib.Path, replace: dict, rename: dict) -> None:
     """Rewrite the FMU archive: members in ``replace`` get new bytes (added if absent),
-    members in ``rename`` (old -> new name) move."""
+    members in ``rename`` (old -> new name) move.
+
+    Parameters
+    ----------
+    fmu : path
+        The ``.fmu`` archive (rewritten in place).
+    replace : dict
+        ``{member: bytes}``.
+    rename : dict
+        ``{old member name: new name}``.
+    """
     buf = io.BytesIO()
     with zipfile.ZipFile(fmu) as zin, zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as zout:
         for item in zin.infolist():

@@ -41,6 +41,17 @@ class LoggedSlave:
     """
 
     def __init__(self, path, name: str = "inst", logging_on: bool = True):
+        """Load the FMU and instantiate it.
+
+        Parameters
+        ----------
+        path : str or path
+            The ``.fmu`` file.
+        name : str
+            Instance name.
+        logging_on : bool
+            Ask the FMU for its log messages.
+        """
         import fmpy
         from fmpy.fmi2 import (FMU2Slave, calloc, fmi2CallbackAllocateMemoryTYPE,
                                fmi2CallbackFreeMemoryTYPE, fmi2CallbackFunctions,
@@ -65,7 +76,15 @@ class LoggedSlave:
         self.s.setupExperiment(startTime=0.0)
 
     def set(self, name, value) -> int:
-        """Set one variable with the setter of its type; returns the FMI status."""
+        """Set one variable with the setter of its type; returns the FMI status.
+
+        Parameters
+        ----------
+        name : str
+            Variable name.
+        value : float, int, bool or str
+            The value.
+        """
         from fmpy.fmi1 import FMICallException
         kind = self.types[name]
         try:
@@ -80,7 +99,15 @@ class LoggedSlave:
         return 0
 
     def step(self, t, h) -> int:
-        """fmi2DoStep; returns the FMI status."""
+        """fmi2DoStep; returns the FMI status.
+
+        Parameters
+        ----------
+        t : float
+            Current communication point [s].
+        h : float
+            Communication step [s].
+        """
         from fmpy.fmi1 import FMICallException
         try:
             self.s.doStep(t, h)
@@ -89,10 +116,26 @@ class LoggedSlave:
         return 0
 
     def get(self, name) -> float:
+        """Current value of a Real variable.
+
+        Parameters
+        ----------
+        name : str
+            Name of a Real variable.
+        """
         return self.s.getReal([self.vr[name]])[0]
 
     def init(self, **values) -> None:
-        """Set start values, then enter and exit initialization mode."""
+        """Set start values, then enter and exit initialization mode.
+
+        Parameters
+        ----------
+        **values
+            Start values by variable name; a name the FMU does not have is a TypeError.
+        """
+        unknown = sorted(set(values) - set(self.vr))
+        if unknown:
+            raise TypeError(f"{self.name}: the FMU has no variable(s) {unknown}")
         for k, v in values.items():
             self.set(k, v)
         self.s.enterInitializationMode()

@@ -76,18 +76,38 @@ class Var(Bounded):
 
 
 def exclusive_min(lower: float) -> float:
-    """The smallest double admissible under ``x > lower``."""
+    """The smallest double admissible under ``x > lower``.
+
+    Parameters
+    ----------
+    lower : float
+        The excluded lower bound.
+    """
     return math.nextafter(lower, math.inf)
 
 
 def exclusive_max(upper: float) -> float:
-    """The largest double admissible under ``x < upper``."""
+    """The largest double admissible under ``x < upper``.
+
+    Parameters
+    ----------
+    upper : float
+        The excluded upper bound.
+    """
     return math.nextafter(upper, -math.inf)
 
 
 def fmi_min_max(lower: float, upper: float, lower_open: bool, upper_open: bool) -> dict:
     """``min``/``max`` of a Real in the model description (finite bounds only; an exclusive
-    bound as the next representable double inside it)."""
+    bound as the next representable double inside it).
+
+    Parameters
+    ----------
+    lower, upper : float
+        Bounds (infinite: none).
+    lower_open, upper_open : bool
+        Whether each bound itself is excluded.
+    """
     out = {}
     if math.isfinite(lower):
         out["min"] = exclusive_min(lower) if lower_open else float(lower)
@@ -214,6 +234,13 @@ def law_feedthrough(model_cls, inputs) -> tuple:
     as at rest, but does once the contact slides). (A law whose structure changes with a
     parameter, e.g. modified LuGre with tau = 0 where F_d becomes algebraic in ``a``, is
     described at its defaults.)
+
+    Parameters
+    ----------
+    model_cls : type
+        A friction-law class.
+    inputs : sequence of str
+        The law FMU's inputs (``v`` and the law's ``a``, ``load``, ``x``).
     """
     import numpy as np
     try:
@@ -241,7 +268,15 @@ def law_feedthrough(model_cls, inputs) -> tuple:
 
 
 def state_unit(model_cls, j: int) -> str:
-    """Unit of the law's state ``j``."""
+    """Unit of the law's state ``j``.
+
+    Parameters
+    ----------
+    model_cls : type
+        A friction-law class.
+    j : int
+        Index of the state in ``state_names``.
+    """
     units = getattr(model_cls, "state_units", None)
     s = model_cls.state_names[j]
     return units[j] if units else ("m" if j == 0 else "N" if s.startswith("F") else "")
@@ -251,7 +286,15 @@ def coupling_variables(inputs, switching: bool = False) -> list[Var]:
     """Parameters ``h_lin``, ``inputs_at_step_end`` and the coupling outputs of a law FMU:
     the local linearisation of the law over the coming step (computed from the current
     inputs, so they depend directly on every input; :mod:`fmus.coupling`); with
-    ``switching`` first the outputs of :data:`fmus.coupling.SWITCH_OUTPUTS`."""
+    ``switching`` first the outputs of :data:`fmus.coupling.SWITCH_OUTPUTS`.
+
+    Parameters
+    ----------
+    inputs : sequence of str
+        The law FMU's inputs.
+    switching : bool
+        The law's coefficients jump at a speed (:func:`fmus.coupling.has_switch`).
+    """
     def out(name):
         unit, description = LAW_PORTS[name]
         return Var(name, "output", "Real", None, unit, f"{description} [{unit}]",
@@ -274,6 +317,13 @@ def law_variables(model_cls, probe: bool = False) -> list[Var]:
 
     ``probe=True`` (build time) narrows the declared dependencies of ``F`` to the inputs it
     really depends on (:func:`law_feedthrough`); otherwise all inputs are declared.
+
+    Parameters
+    ----------
+    model_cls : type
+        A friction-law class (``friction.MODELS`` value).
+    probe : bool
+        Probe the direct dependencies of ``F`` (build time).
     """
     out = param_vars(model_cls.Params, strict=True, enum_prefix=model_cls.name)
     ins = law_inputs(model_cls)
@@ -335,7 +385,13 @@ EFFECTS_POSITIVE = ("a_s", "v_c", "T", "L0")
 
 def effects_variables(friction_package: str = "friction") -> list[Var]:
     """Variables of the ``friction_effects`` block: the law's force in, the force with the
-    extensions of ``friction.extensions`` out (switches ``use_*``: Booleans)."""
+    extensions of ``friction.extensions`` out (switches ``use_*``: Booleans).
+
+    Parameters
+    ----------
+    friction_package : str
+        Module name of the ``friction`` package (its vendored name inside an FMU).
+    """
     ext = importlib.import_module(f"{friction_package}.extensions")
     out = []
     for k, (name, start, unit, desc) in enumerate(ext.EXTENSION_PARAMS):
@@ -375,7 +431,13 @@ def _option_vars(options: dict) -> list[Var]:
 
 
 def plant_feedthrough(plant_cls) -> dict:
-    """Outputs of the external-friction plant that change at once with ``F_friction``."""
+    """Outputs of the external-friction plant that change at once with ``F_friction``.
+
+    Parameters
+    ----------
+    plant_cls : type
+        A plant class.
+    """
     try:
         st = plant_cls(external_friction=True).stepper()
         st.set_inputs({"F_friction": 0.0})
@@ -391,7 +453,13 @@ def plant_feedthrough(plant_cls) -> dict:
 
 def plant_coupling_inputs(plant) -> list[Var]:
     """The coupling inputs (:data:`fmus.coupling.PLANT_INPUTS`) a plant FMU in
-    external-friction mode takes; none if its stepper does not take them."""
+    external-friction mode takes; none if its stepper does not take them.
+
+    Parameters
+    ----------
+    plant : Plant
+        A plant in external-friction mode.
+    """
     names = getattr(plant.stepper(), "coupling_names", ()) if plant.external_friction else ()
     out = []
     for n in names:
@@ -402,7 +470,15 @@ def plant_coupling_inputs(plant) -> list[Var]:
 
 def plant_variables(plant_cls, probe: bool = False) -> list[Var]:
     """Parameters (plant ``Params`` and scalar options), inputs and outputs of the FMU of a
-    plant in external-friction mode (input ``F_friction``)."""
+    plant in external-friction mode (input ``F_friction``).
+
+    Parameters
+    ----------
+    plant_cls : type
+        A plant class (``plants.PLANTS`` value).
+    probe : bool
+        Probe which outputs depend directly on ``F_friction`` (build time).
+    """
     plant = plant_cls(external_friction=True)
     numeric = set(plant.parameter_names)
     vs = [v for v in param_vars(plant_cls.Params) if v.name in numeric or v.type != "Real"]
@@ -506,7 +582,15 @@ def _block_parts(kind: str, plants_package: str):
 
 def block_variables(kind: str, plants_package: str = "plants") -> list[Var]:
     """Variables of a loop block FMU; outputs depend directly on every input (a block
-    samples at the communication point with the inputs just set)."""
+    samples at the communication point with the inputs just set).
+
+    Parameters
+    ----------
+    kind : str
+        One of :data:`BLOCKS`.
+    plants_package : str
+        Module name of the ``plants`` package (its vendored name inside an FMU).
+    """
     pv, ins, outs = _block_parts(kind, plants_package)
     vs = list(pv)
     for n in ins:

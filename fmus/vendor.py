@@ -58,7 +58,15 @@ _BRENTQ = '''def _fl_brentq(f, a, b, args=(), xtol=2e-12, rtol=8.881784197001252
 
 
 def rewrite_source(text: str, renames: dict[str, str]) -> str:
-    """Apply the import renames, the numba-cache and the lazy-scipy rewrites to a module."""
+    """Apply the import renames, the numba-cache and the lazy-scipy rewrites to a module.
+
+    Parameters
+    ----------
+    text : str
+        The module's source.
+    renames : dict
+        ``{package: its name in the FMU}``.
+    """
     for old, new in renames.items():
         text = re.sub(rf"^(\s*)from\s+{old}(\s|\.)", rf"\1from {new}\2", text, flags=re.M)
         text = re.sub(rf"^(\s*)import\s+{old}(\s*$|\.|\s+as\s)", rf"\1import {new}\2", text,
@@ -90,6 +98,19 @@ def vendor_package(src: str | pathlib.Path, dest_dir: str | pathlib.Path, new_na
     """Copy package ``src`` (a folder) to ``dest_dir/new_name`` with rewritten imports.
 
     Returns the new package folder. Sub-packages are copied recursively.
+
+    Parameters
+    ----------
+    src : str or path
+        The package folder.
+    dest_dir : str or path
+        Where the copy goes.
+    new_name : str
+        The copy's package name.
+    renames : dict
+        ``{package: its name in the FMU}`` for the imports to rewrite.
+    exclude : sequence of str
+        Module names left out (:data:`DEFAULT_EXCLUDE`).
     """
     src = pathlib.Path(src)
     out = pathlib.Path(dest_dir) / new_name

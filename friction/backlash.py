@@ -271,7 +271,15 @@ class BacklashLuGre(DirectionalStribeck, FrictionModel):
 
     # -- pieces of the law --------------------------------------------------------------
     def contact_velocity(self, state, v) -> float:
-        """Velocity of the contact [m/s] at a state (z, p) and drive velocity ``v``."""
+        """Velocity of the contact [m/s] at a state (z, p) and drive velocity ``v``.
+
+        Parameters
+        ----------
+        state : array_like, shape (2,)
+            The state (z [m], p [m]).
+        v : float
+            Drive velocity [m/s].
+        """
         d = self.params.delta
         ph = _push(float(v), float(state[1]), d, ENGAGE_BAND * d)
         return float(v) if ph == 1.0 else ph * float(v)

@@ -27,6 +27,8 @@ again in every process (measured: no cache hit across runs), seconds per law and
 from __future__ import annotations
 
 import dataclasses
+import functools
+import inspect
 import math
 from dataclasses import dataclass, field, fields
 from typing import Any, ClassVar
@@ -135,7 +137,15 @@ class FrictionParams:
 
     def resolved(self, name: str, direction: int) -> float:
         """Value of ``name`` for direction +1 / -1: a direction-dependent law keeps the "-"
-        value in ``<name>_neg``; left ``None`` (or absent) it equals the "+" value."""
+        value in ``<name>_neg``; left ``None`` (or absent) it equals the "+" value.
+
+        Parameters
+        ----------
+        name : str
+            The "+" parameter's name (``Fc``).
+        direction : int
+            +1 or -1 (the sign of the velocity).
+        """
         if direction < 0:
             neg = getattr(self, name + "_neg", None)
             if neg is not None:
@@ -146,7 +156,33 @@ class FrictionParams:
         return {f.name: getattr(self, f.name) for f in fields(self)}
 
     def replace(self, **changes) -> "FrictionParams":
+        """
+
+        Parameters
+        ----------
+        **changes
+            New field values by name (validated; an unknown name is a TypeError).
+        """
         return dataclasses.replace(self, **changes)
+
+
+def _checked_inputs(fn):
+    """``fn`` (a law's ``steady_state``, ``force``...) refusing a keyword that is neither
+    one of its parameters nor one of :attr:`FrictionModel.INPUT_NAMES` (TypeError)."""
+    sig = inspect.signature(fn)
+    allowed = frozenset(FrictionModel.INPUT_NAMES) | {
+        p.name for p in sig.parameters.values()
+        if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)}
+
+    @functools.wraps(fn)
+    def checked(self, *args, **kwargs):
+        if kwargs and not allowed.issuperset(kwargs):
+            bad = sorted(set(kwargs) - allowed)
+            raise TypeError(f"{type(self).__name__}.{fn.__name__}() got an unexpected keyword "
+                            f"argument {bad[0]!r} (the law's inputs are "
+                            f"{', '.join(FrictionModel.INPUT_NAMES)})")
+        return fn(self, *args, **kwargs)
+    return checked
 
 
 class FrictionModel:
@@ -163,7 +199,29 @@ class FrictionModel:
     #: direction-dependent twins: name -> name of the "-" value in theta_layout
     twins: ClassVar[dict[str, str]] = {}
 
+    #: the inputs besides velocity that ``steady_state``, ``steady_state_state``,
+    #: ``derivatives`` and ``force`` accept by keyword (each law uses those in
+    #: ``extra_inputs`` and ignores the others); any other keyword is a TypeError
+    INPUT_NAMES: ClassVar[tuple[str, ...]] = ("a", "load", "x")
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        for name in ("steady_state", "steady_state_state", "derivatives", "force"):
+            fn = cls.__dict__.get(name)
+            if fn is not None and not hasattr(fn, "__wrapped__"):
+                setattr(cls, name, _checked_inputs(fn))
+
     def __init__(self, params: FrictionParams | None = None, **kwargs):
+        """A law with parameters ``params``, or the defaults changed by ``kwargs``.
+
+        Parameters
+        ----------
+        params : FrictionParams, optional
+            The law's parameter dataclass (``Params``); default its defaults.
+        **kwargs
+            Parameter values (SI units) replacing those of ``params``; an unknown name is a
+            TypeError, a value out of its bounds a :class:`ParameterError`.
+        """
         if params is None:
             params = self.Params(**kwargs)
         elif kwargs:
@@ -190,20 +248,58 @@ class FrictionModel:
         raise NotImplementedError
 
     def steady_state(self, v, **inputs) -> np.ndarray:  # pragma: no cover - abstract
+        """Steady-state friction force [N] at constant velocity.
+
+        Parameters
+        ----------
+        v : array_like
+            Velocity [m/s].
+        **inputs : array_like
+            The law's other inputs (:attr:`INPUT_NAMES`): ``a`` [m/s^2], ``load`` [N],
+            ``x`` [m]; another keyword is a TypeError.
+        """
         raise NotImplementedError
 
     def derivatives(self, state, v, **inputs) -> np.ndarray:  # pragma: no cover
-        """Continuous-time state derivative d(state)/dt at velocity ``v`` [m/s]."""
+        """Continuous-time state derivative d(state)/dt at velocity ``v`` [m/s].
+
+        Parameters
+        ----------
+        state : array_like, shape (n_states,)
+            The law's state, in the units of ``state_names`` (``z`` [m], ...).
+        v : float
+            Velocity [m/s].
+        **inputs : float
+            The law's other inputs (:attr:`INPUT_NAMES`): ``a`` [m/s^2], ``load`` [N],
+            ``x`` [m]; another keyword is a TypeError.
+        """
         raise NotImplementedError
 
     def force(self, state, v, **inputs) -> float:  # pragma: no cover
-        """Friction force [N] for a continuous state and velocity ``v`` [m/s]."""
+        """Friction force [N] for a continuous state and velocity ``v`` [m/s].
+
+        Parameters
+        ----------
+        state : array_like, shape (n_states,)
+            The law's state, in the units of ``state_names`` (``z`` [m], ...).
+        v : float
+            Velocity [m/s].
+        **inputs : float
+            The law's other inputs (:attr:`INPUT_NAMES`): ``a`` [m/s^2], ``load`` [N],
+            ``x`` [m]; another keyword is a TypeError.
+        """
         raise NotImplementedError
 
     def conservative_force(self, x) -> np.ndarray:
         """The part of the law's force that is not friction (a parallel spring and offset,
         as in the MRE isolator's k0 x + f0) [N] at displacement ``x`` [m]; zero for pure
-        friction laws. Effects on the friction level scale the rest only."""
+        friction laws. Effects on the friction level scale the rest only.
+
+        Parameters
+        ----------
+        x : array_like
+            Displacement [m].
+        """
         return np.zeros_like(np.asarray(x, dtype=float))
 
     # -- written once -------------------------------------------------------------------
@@ -459,6 +555,19 @@ class FrictionModel:
         The kernel runs the population in parallel (numba ``prange``). Parameter vectors
         are not bound-checked here (the optimiser keeps them inside its box); rows whose
         values are inadmissible may give NaN, which objectives treat as +inf cost.
+
+        Parameters
+        ----------
+        t, v : array_like, shape (N,)
+            Time [s] (strictly increasing) and velocity [m/s] of the prescribed motion.
+        names : sequence of str
+            The parameters the columns of ``X`` set (the others keep this model's values).
+        X : array_like, shape (npop, len(names))
+            One parameter set per row, in the units of the parameters.
+        a, load, x : array_like, shape (N,), optional
+            Acceleration [m/s^2], load [N], displacement [m] where the law needs them.
+        method : {"exact", "euler"}
+            Bristle update (:data:`METHODS`).
         """
         if method not in METHODS:
             raise ValueError(f"method must be one of {sorted(METHODS)}, got {method!r}")
@@ -467,5 +576,17 @@ class FrictionModel:
         return self._population_kernel(t, v, a, load, x, Theta, METHODS[method])
 
     def with_values(self, **values) -> "FrictionModel":
-        """A copy of this model with some parameters changed (validated)."""
+        """A copy of this model with some parameters changed (validated).
+
+        Parameters
+        ----------
+        **values
+            Parameter values (SI units) by name; an unknown name is a TypeError, a value out of
+            its bounds a :class:`ParameterError`.
+        """
         return type(self)(self.params.replace(**values))
+
+
+# the base's own steady_state_state refuses unknown inputs too (a law without states
+# returns before it calls derivatives)
+FrictionModel.steady_state_state = _checked_inputs(FrictionModel.steady_state_state)

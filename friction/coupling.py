@@ -33,7 +33,13 @@ __all__ = ["INPUT_INFO", "COUPLING_OUTPUTS", "SWITCH_OUTPUTS", "SHARE_INPUT", "M
 
 def fmi_unit(unit: str) -> str:
     """The one spelling of a unit in the FMUs' model descriptions: exponents without ``^``
-    (``m/s^2`` -> ``m/s2``, ``m^3/s`` -> ``m3/s``)."""
+    (``m/s^2`` -> ``m/s2``, ``m^3/s`` -> ``m3/s``).
+
+    Parameters
+    ----------
+    unit : str
+        A unit as the library spells it (``m/s^2``).
+    """
     return unit.replace("^", "")
 
 
@@ -47,7 +53,13 @@ INPUT_INFO = {
 
 
 def law_inputs(model_cls) -> list[str]:
-    """Kinematic inputs of a law's FMU: ``v`` and whichever of ``a``, ``load``, ``x``."""
+    """Kinematic inputs of a law's FMU: ``v`` and whichever of ``a``, ``load``, ``x``.
+
+    Parameters
+    ----------
+    model_cls : type
+        A friction-law class (``friction.MODELS`` value).
+    """
     return ["v"] + [n for n in ("a", "load", "x") if n in model_cls.extra_inputs]
 
 
@@ -118,7 +130,13 @@ PLANT_PORTS = {
 
 
 def has_switch(model_cls) -> bool:
-    """Whether the law's coefficients jump at a switching speed (``regimes()``)."""
+    """Whether the law's coefficients jump at a switching speed (``regimes()``).
+
+    Parameters
+    ----------
+    model_cls : type
+        A friction-law class.
+    """
     return callable(getattr(model_cls, "regimes", None))
 
 
@@ -155,6 +173,8 @@ def law_linearisation(kernel, theta, state, inputs: dict, h: float,
         Horizon [s] (> 0).
     dv_dt : float, optional
         Expected acceleration over the step [m/s^2].
+    d2v_dt2 : float
+        Expected rate of change of the acceleration over the step [m/s^3].
     """
     v = float(inputs["v"])
     x = float(inputs.get("x", 0.0))
@@ -240,6 +260,25 @@ def switch_linearisation(kernel, thetas: dict, vc: float, state, inputs: dict, h
     current state and inputs minus this side's, and the differences of its slopes. A plant
     that holds the side of its own velocity in each substep then sees the jump where it
     happens inside the step (``plants.base.PlantStepper``).
+
+    Parameters
+    ----------
+    kernel : callable
+        The law's ``_kernel(t, v, a, load, x, theta, method, state0)``.
+    thetas : dict
+        Packed parameters of each side, ``{"low": ..., "high": ...}``.
+    vc : float
+        Switching speed [m/s].
+    state : ndarray
+        Current state.
+    inputs : dict
+        Current inputs ``v`` and whichever of ``a``, ``load``, ``x`` the law takes.
+    h : float
+        Communication step [s].
+    dv_dt : float, optional
+        Velocity slope over the step [m/s^2], as for :func:`law_linearisation`.
+    d2v_dt2 : float
+        Its rate of change [m/s^3], as for :func:`law_linearisation`.
     """
     side = "low" if abs(float(inputs["v"])) < vc else "high"
     other = "high" if side == "low" else "low"

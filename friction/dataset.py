@@ -145,6 +145,10 @@ class Dataset:
             unit check never blames them.
         notes : tuple of str
             How the source file was read (kept in ``notes``).
+        name : str
+            Name of the record (a file name, "data").
+        extra : dict, optional
+            Further named columns of the same length (kept in ``Dataset.extra``).
         """
         t = as_float_array("t", t)
         check_time(t)
@@ -290,7 +294,13 @@ class Dataset:
         return out
 
     def select(self, index) -> "Dataset":
-        """Sub-dataset of the samples in ``index`` (slice or boolean/int array)."""
+        """Sub-dataset of the samples in ``index`` (slice or boolean/int array).
+
+        Parameters
+        ----------
+        index : slice or array_like of bool or int
+            The samples to keep.
+        """
         sub = lambda arr: None if arr is None else arr[index]
         return Dataset(t=self.t[index], x=self.x[index], v=self.v[index], a=self.a[index],
                        F=self.F[index], load=sub(self.load),
@@ -298,7 +308,13 @@ class Dataset:
                        name=self.name, derived=self.derived, notes=self.notes)
 
     def split(self, fraction: float = 0.7) -> tuple["Dataset", "Dataset"]:
-        """Chronological split into a fit part and a held-out part."""
+        """Chronological split into a fit part and a held-out part.
+
+        Parameters
+        ----------
+        fraction : float
+            Share of the samples, from the start, in the fit part (0 < fraction < 1).
+        """
         if not 0 < fraction < 1:
             raise ValueError(f"fraction = {fraction!r} is out of bounds: must be in (0, 1)")
         k = int(round(fraction * len(self)))
@@ -307,7 +323,13 @@ class Dataset:
         return self.select(slice(0, k)), self.select(slice(k, None))
 
     def to_csv(self, path) -> None:
-        """Write the contract CSV (header row, SI units)."""
+        """Write the contract CSV (header row, SI units).
+
+        Parameters
+        ----------
+        path : str or path
+            The file to write.
+        """
         s = self.to_structured()
         names = ["t" if n == "time" else n for n in s.dtype.names]
         with open(path, "w", newline="") as fh:
@@ -699,6 +721,18 @@ def load_mat(path, mapping=None, scale=None, check_units: bool = True):
     ``i``; indices from 0, negative from the end), e.g. ``{"v": "log[:,1]", "F":
     "log[:,0]"}`` (CLI ``--map v=log[:,1],F=log[:,0]``). Returns a :class:`Dataset`, or a
     :class:`SteadyStateMap` when v and F are given and no t.
+
+    Parameters
+    ----------
+    path : str or path
+        The ``.mat`` file.
+    mapping : dict, optional
+        ``{contract column: variable}``, e.g. ``{"t": "time", "F": "force[:,1]"}`` (a column
+        or row of a 2-D variable by ``NAME[:,j]`` / ``NAME[i,:]``).
+    scale : dict, optional
+        ``{contract column: factor}`` to SI, e.g. ``{"x": 1e-3}`` for a position in mm.
+    check_units : bool
+        Run :meth:`Dataset.check_units`.
     """
     from scipy.io import loadmat
     path = os.fspath(path)
@@ -746,7 +780,21 @@ _MAT_COLUMN = re.compile(r"^\s*(?P<var>\w+)\s*\[\s*(?::\s*,\s*(?P<rows>-?\d+)|"
 def load_dataset(path, mapping=None, scale=None, check_units: bool = True, progress=None):
     """Load CSV or ``.mat`` by extension: a :class:`Dataset`, or a :class:`SteadyStateMap`
     for a file with columns v and F and no t. ``progress``: bytes read while a long CSV is
-    read (:func:`load_csv`, :mod:`friction.progress`)."""
+    read (:func:`load_csv`, :mod:`friction.progress`).
+
+    Parameters
+    ----------
+    path : str or path
+        The file (``.mat`` or CSV).
+    mapping : dict, optional
+        ``{contract column: file column or variable}``.
+    scale : dict, optional
+        ``{contract column: factor}`` to SI.
+    check_units : bool
+        Run :meth:`Dataset.check_units`.
+    progress : None, bool, tqdm or callable(n, info), optional
+        Progress in bytes while a long CSV is read (:mod:`friction.progress`).
+    """
     if os.fspath(path).lower().endswith(".mat"):
         return load_mat(path, mapping, scale, check_units)
     return load_csv(path, mapping, scale, check_units, progress=progress)

@@ -268,18 +268,36 @@ class GMS(FrictionModel):
         return k
 
     def g(self, v) -> np.ndarray:
-        """Stribeck curve g(v) [N]."""
+        """Stribeck curve g(v) [N].
+
+        Parameters
+        ----------
+        v : array_like
+            Velocity [m/s].
+        """
         p = self.params
         return stribeck_g_np(v, p.Fc, p.Fs, p.vs, p.alpha, p.shape)
 
     def saturation(self, v) -> np.ndarray:
-        """Break-away deflections d_i(v) = g(v) / (N k_i) of the blocks [m] at velocity v."""
+        """Break-away deflections d_i(v) = g(v) / (N k_i) of the blocks [m] at velocity v.
+
+        Parameters
+        ----------
+        v : float
+            Velocity [m/s].
+        """
         return float(self.g(float(v))) * (_W / self.element_stiffness())
 
     def presliding_distance(self, level: float | None = None) -> float:
         """Travel from a state of rest without history until every block slips [m]: the
         softest block's break-away deflection at the level ``level`` [N] (default Fs, the
-        level at rest). After a reversal from sliding the transition takes twice that."""
+        level at rest). After a reversal from sliding the transition takes twice that.
+
+        Parameters
+        ----------
+        level : float, optional
+            Friction level [N] (default ``Fs``).
+        """
         level = self.params.Fs if level is None else float(level)
         return float(level * _W / self.element_stiffness()[-1])
 
@@ -287,7 +305,15 @@ class GMS(FrictionModel):
         """Presliding force [N] of a first loading from rest without history by the
         displacement ``x`` [m] at the constant level ``level`` [N] (default Fs):
         F_v(x) = sum_i k_i clip(x, -d_i, d_i), d_i = level / (N k_i). Rate terms
-        (sigma2, b) not included."""
+        (sigma2, b) not included.
+
+        Parameters
+        ----------
+        x : array_like
+            Displacement from rest [m].
+        level : float, optional
+            Friction level [N] (default ``Fs``).
+        """
         level = self.params.Fs if level is None else float(level)
         k = self.element_stiffness()
         d = level * (_W / k)

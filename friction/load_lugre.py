@@ -357,7 +357,15 @@ class LoadLuGre(FrictionModel):
         return super().simulate(t, v, load=load_arr, **kwargs)
 
     def g(self, v, load=0.0) -> np.ndarray:
-        """Loaded Stribeck curve g(v) [N]."""
+        """Loaded Stribeck curve g(v) [N].
+
+        Parameters
+        ----------
+        v : array_like
+            Velocity [m/s].
+        load : float or array_like
+            Deformation load F_sigma [N].
+        """
         return self._levels(v, load)[0]
 
     def steady_state(self, v, load=None, **inputs) -> np.ndarray:
@@ -376,7 +384,15 @@ class LoadLuGre(FrictionModel):
         return g * np.sign(v) + s2 * v
 
     def loaded_critical_velocity(self, load: float, regime: str = "high") -> float:
-        """Critical velocity of Eq. (13) with the loaded levels of ``regime`` [m/s]."""
+        """Critical velocity of Eq. (13) with the loaded levels of ``regime`` [m/s].
+
+        Parameters
+        ----------
+        load : float
+            Deformation load F_sigma [N].
+        regime : {"low", "high"}
+            Whose coefficients k1, k2, k3 load the levels.
+        """
         k1, k2, k3 = self.params.coefficients(regime)
         p = self.params
         return critical_velocity(p.Fc0 + k1 * load, p.Fs0 + k2 * load, p.vs,
@@ -398,7 +414,13 @@ class LoadLuGre(FrictionModel):
         return self.params.sigma0 * state[0] + self.params.sigma1 * zd + float(s2) * v
 
     def z_max(self, load: float = 0.0) -> float:
-        """Largest steady bristle deflection max(Fc, Fs)/sigma0 at ``load`` [m]."""
+        """Largest steady bristle deflection max(Fc, Fs)/sigma0 at ``load`` [m].
+
+        Parameters
+        ----------
+        load : float
+            Deformation load F_sigma [N].
+        """
         p = self.params
         levels = [p.Fc0 + p.k1_low * load, p.Fc0 + p.k1_high * load,
                   p.Fs0 + p.k2_low * load, p.Fs0 + p.k2_high * load]

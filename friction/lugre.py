@@ -537,7 +537,13 @@ class LuGre(DirectionalStribeck, FrictionModel):
         """The ``cols`` argument of :func:`lugre_sensitivity_run` for the parameters
         ``names`` (the columns of the Jacobian): a symmetric parameter (its ``_neg`` twin
         left None and not named) also owns its twin's entry, as
-        :meth:`friction.base.FrictionModel.population_theta` sets both."""
+        :meth:`friction.base.FrictionModel.population_theta` sets both.
+
+        Parameters
+        ----------
+        names : sequence of str
+            Parameter names (``theta_layout`` names, direction twins included).
+        """
         layout = {n: i for i, n in enumerate(self.theta_layout)}
         cols = np.full(len(self.theta_layout), -1, dtype=np.int64)
         for j, n in enumerate(names):

@@ -342,6 +342,15 @@ class ModifiedLuGre(DirectionalStribeck, FrictionModel):
     _population_kernel = staticmethod(_population_kernel)
 
     def __init__(self, params=None, **kwargs):
+        """
+
+        Parameters
+        ----------
+        params : ModifiedLuGreParams, optional
+            The law's parameters; default their defaults.
+        **kwargs
+            Parameter values (SI units) replacing those of ``params`` (validated).
+        """
         super().__init__(params, **kwargs)
         if self.params.fd_form == "filtered_acceleration":
             self.state_names = ("z", "a_f")
@@ -367,7 +376,13 @@ class ModifiedLuGre(DirectionalStribeck, FrictionModel):
         return np.where(np.asarray(v) >= 0, getattr(p, name), p.resolved(name, -1))
 
     def gamma_switch(self, v) -> np.ndarray:
-        """Switch Gamma(v) in [0, 1] of Eq. (10) (``gamma_form``)."""
+        """Switch Gamma(v) in [0, 1] of Eq. (10) (``gamma_form``).
+
+        Parameters
+        ----------
+        v : array_like
+            Velocity [m/s].
+        """
         s = np.abs(np.asarray(v, dtype=float))
         p = self.params
         if p.gamma_form == "cosine":
@@ -379,7 +394,15 @@ class ModifiedLuGre(DirectionalStribeck, FrictionModel):
         return np.where(arg > 0, e / (1.0 + e), 1.0 / (1.0 + e))
 
     def fd_steady(self, v, a) -> np.ndarray:
-        """F_d^ss(v, a) [N] of Eq. (11): zero at a = 0, |F_d| up with |a|, down with |v|."""
+        """F_d^ss(v, a) [N] of Eq. (11): zero at a = 0, |F_d| up with |a|, down with |v|.
+
+        Parameters
+        ----------
+        v : array_like
+            Velocity [m/s].
+        a : array_like
+            Acceleration [m/s^2].
+        """
         v = np.asarray(v, dtype=float)
         a = np.asarray(a, dtype=float)
         p = self.params

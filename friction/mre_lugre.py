@@ -206,7 +206,14 @@ class MRELuGre(FrictionModel):
     # -- constructors ---------------------------------------------------------------------
     @classmethod
     def from_paper_units(cls, **values) -> "MRELuGre":
-        """Model from values in the paper's units (N/mm, 1/mm, N.s/mm, N); others default."""
+        """Model from values in the paper's units (N/mm, 1/mm, N.s/mm, N); others default.
+
+        Parameters
+        ----------
+        **values
+            Parameter values in the paper's units (``beta`` [N/mm], ``alpha`` [1/mm], ``c0``
+            [N.s/mm], ``k0`` [N/mm], ``eps`` [N.s/mm], ``f0`` [N]); an unknown name is a TypeError.
+        """
         conv = {}
         for k, val in values.items():
             conv[k] = val * PAPER_UNIT_SCALE[k] if k in PAPER_UNIT_SCALE else val
@@ -224,13 +231,21 @@ class MRELuGre(FrictionModel):
             Spring stiffness [N/m].
         eps : float
             Gain on dy/dt [N.s/m].
+        **kwargs
+            Further parameter values (SI units), as for :class:`MRELuGreParams`.
         """
         fixed = {k: _si(k, val) for k, val in SIMPLIFIED_FIXED.items()}
         return cls(alpha=alpha, k0=k0, eps=eps, **fixed, **kwargs)
 
     @classmethod
     def at_current(cls, current: float) -> "MRELuGre":
-        """Simplified model with the current-dependent parameters of Eqs. (14a*-c*)."""
+        """Simplified model with the current-dependent parameters of Eqs. (14a*-c*).
+
+        Parameters
+        ----------
+        current : float
+            Coil current [A].
+        """
         return cls.simplified(**parameters_at_current(current))
 
     # -- analytic pieces ------------------------------------------------------------------
@@ -269,7 +284,17 @@ class MRELuGre(FrictionModel):
         return 0.2
 
     def loop_area(self, t, v, x=None, *, method: str = "exact") -> float:
-        """Dissipated energy per record, the integral of F dx along the motion [J]."""
+        """Dissipated energy per record, the integral of F dx along the motion [J].
+
+        Parameters
+        ----------
+        t, v : array_like, shape (N,)
+            Time [s] and velocity [m/s] of the motion.
+        x : array_like, shape (N,), optional
+            Displacement [m] (default: integrated from ``v``).
+        method : {"exact", "euler"}
+            Update of the hysteretic state (:data:`friction.base.METHODS`).
+        """
         F = self.simulate(t, v, x=x, method=method)
         t = np.asarray(t, float)
         return float(np.trapezoid(F * np.asarray(v, float), t))

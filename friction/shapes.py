@@ -88,7 +88,13 @@ class DirectionalStribeck:
     of the direction of each velocity sample."""
 
     def g(self, v) -> np.ndarray:
-        """Stribeck curve g(v) [N] (direction-dependent values applied)."""
+        """Stribeck curve g(v) [N] (direction-dependent values applied).
+
+        Parameters
+        ----------
+        v : array_like
+            Velocity [m/s].
+        """
         v = np.asarray(v, dtype=float)
         p = self.params
         gp = stribeck_g_np(v, p.Fc, p.Fs, p.vs, p.alpha, p.shape)
@@ -97,6 +103,12 @@ class DirectionalStribeck:
         return np.where(v >= 0, gp, gn)
 
     def sigma2_of(self, v) -> np.ndarray:
-        """Viscous coefficient [N.s/m] of the direction of ``v``."""
+        """Viscous coefficient [N.s/m] of the direction of ``v``.
+
+        Parameters
+        ----------
+        v : array_like
+            Velocity [m/s].
+        """
         p = self.params
         return np.where(np.asarray(v) >= 0, p.sigma2, p.resolved("sigma2", -1))

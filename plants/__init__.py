@@ -48,7 +48,18 @@ PLANTS: dict[str, type[Plant]] = {cls.name: cls for cls in (XML350, ValveActuato
 
 
 def make_plant(name: str, friction=None, **kwargs) -> Plant:
-    """Create a plant by registry name (see :data:`PLANTS`); kwargs go to the constructor."""
+    """Create a plant by registry name (see :data:`PLANTS`); kwargs go to the constructor.
+
+    Parameters
+    ----------
+    name : str
+        One of :data:`PLANTS`.
+    friction : FrictionModel or str, optional
+        The contact's friction law, or a registry name (default: the plant's own law).
+    **kwargs
+        Constructor arguments of the plant class (parameter values in SI units,
+        ``external_friction``, ``params``); an unknown name is a TypeError.
+    """
     try:
         cls = PLANTS[name]
     except KeyError:

@@ -98,7 +98,13 @@ class Experiment:
 
 
 def structured(columns: dict[str, np.ndarray]) -> np.ndarray:
-    """Structured array (fmpy result layout) from ordered columns; ``time`` must come first."""
+    """Structured array (fmpy result layout) from ordered columns; ``time`` must come first.
+
+    Parameters
+    ----------
+    columns : dict of str to ndarray
+        Equal-length columns in order, ``time`` first.
+    """
     names = list(columns)
     if names[0] != "time":
         raise ValueError(f"first column must be 'time', got {names[0]!r}")
@@ -182,18 +188,89 @@ class Plant:
         return np.zeros(len(self.discrete_names))
 
     def derivatives(self, t, s, d, F, u) -> np.ndarray:  # pragma: no cover - abstract
+        """Time derivative of the continuous state.
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        s : ndarray, shape (n_states,)
+            Continuous state (``state_names``, SI units).
+        d : ndarray, shape (n_discrete,)
+            Discrete state held since the last sample (``discrete_names``).
+        F : float
+            Friction force on the contact [N].
+        u : dict
+            External inputs by name (``all_input_names``), SI units.
+        """
         raise NotImplementedError
 
     def contact(self, t, s, d, u) -> tuple[float, float, float | None]:  # pragma: no cover
+        """The contact's kinematics ``(x, v, load)`` [m, m/s, N] (load None without one).
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        s : ndarray, shape (n_states,)
+            Continuous state (SI units).
+        d : ndarray, shape (n_discrete,)
+            Discrete state.
+        u : dict
+            External inputs by name.
+        """
         raise NotImplementedError
 
     def contact_acceleration(self, t, s, ds, d, u) -> float:
+        """Acceleration of the contact [m/s^2] (default: the derivative of state ``v``).
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        s : ndarray, shape (n_states,)
+            Continuous state (SI units).
+        ds : ndarray, shape (n_states,)
+            Its time derivative (:meth:`derivatives`).
+        d : ndarray, shape (n_discrete,)
+            Discrete state.
+        u : dict
+            External inputs by name.
+        """
         return float(ds[self.state_names.index("v")])
 
     def discrete_update(self, t, s, d, u) -> np.ndarray:
+        """The discrete state after the sample at ``t`` (controllers; default unchanged).
+
+        Parameters
+        ----------
+        t : float
+            Sample time [s].
+        s : ndarray, shape (n_states,)
+            Continuous state (SI units).
+        d : ndarray, shape (n_discrete,)
+            Discrete state before the sample.
+        u : dict
+            External inputs by name.
+        """
         return d
 
     def output(self, t, s, d, F, u) -> dict[str, float]:  # pragma: no cover - abstract
+        """The outputs by name (``output_names``), SI units.
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        s : ndarray, shape (n_states,)
+            Continuous state (SI units).
+        d : ndarray, shape (n_discrete,)
+            Discrete state.
+        F : float
+            Friction force on the contact [N].
+        u : dict
+            External inputs by name.
+        """
         raise NotImplementedError
 
     def build_parts(self) -> tuple:
@@ -220,7 +297,13 @@ class Plant:
         return tuple(self.Params.numeric_names())
 
     def with_options(self, **options) -> "Plant":
-        """A copy of this plant with experiment options changed (unknown names: TypeError)."""
+        """A copy of this plant with experiment options changed (unknown names: TypeError).
+
+        Parameters
+        ----------
+        **options
+            Experiment options by name (``options``); an unknown name is a TypeError.
+        """
         unknown = set(options) - set(self.options)
         if unknown:
             raise TypeError(f"{self.name}: unknown experiment option(s) {sorted(unknown)}; "
@@ -230,7 +313,13 @@ class Plant:
         return new
 
     def with_params(self, **values) -> "Plant":
-        """A copy with some plant parameters changed (validated)."""
+        """A copy with some plant parameters changed (validated).
+
+        Parameters
+        ----------
+        **values
+            Plant parameter values (SI units) by name (validated; an unknown name is a TypeError).
+        """
         new = self._copy()
         new.params = self.params.replace(**values)
         return new

@@ -44,7 +44,13 @@ class Mass(FrictionParams):
     g: float = param(0.0, "m/s^2", "gravity component along +s", lower=-100, upper=100)
 
     def acceleration(self, force: float) -> float:
-        """Acceleration [m/s^2] under the total external force [N] (+s positive)."""
+        """Acceleration [m/s^2] under the total external force [N] (+s positive).
+
+        Parameters
+        ----------
+        force : float
+            Total external force on the mass [N] (+s positive).
+        """
         return force / self.m + self.g
 
     def weight(self) -> float:
@@ -85,6 +91,12 @@ class PositionSource:
     traj: Callable[[float], tuple[float, float, float]]
 
     def kinematics(self, t: float) -> tuple[float, float, float]:
-        """Position [m], velocity [m/s] and acceleration [m/s^2] at time ``t`` [s]."""
+        """Position [m], velocity [m/s] and acceleration [m/s^2] at time ``t`` [s].
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        """
         s, v, a = self.traj(t)
         return float(s), float(v), float(a)

@@ -48,6 +48,17 @@ class DiscreteBlock:
         return np.zeros(len(self.state_names))
 
     def step(self, t: float, state: np.ndarray, inputs: dict) -> tuple[np.ndarray, dict]:
+        """One sample: ``(new_state, outputs)``, the outputs a dict by ``output_names``.
+
+        Parameters
+        ----------
+        t : float
+            Sample time [s].
+        state : ndarray
+            The block's state before the sample (``state_names``).
+        inputs : dict
+            Input values by name (``input_names``), SI units.
+        """
         raise NotImplementedError  # pragma: no cover - abstract
 
     @property
@@ -85,6 +96,13 @@ class PID(DiscreteBlock):
     ``x_f`` (target [m], used by the state-dependent gains), ``u_ff`` (added feedforward
     [m/s^2]). Outputs: ``u`` (total acceleration command [m/s^2]), ``u_sd`` (feedback +
     acceleration feedforward), ``e`` (position error [m]).
+
+    Parameters
+    ----------
+    params : PIDParams, optional
+        The gains and sample time; default their defaults.
+    **gains
+        Parameter values replacing those of ``params`` (validated; unknown: TypeError).
     """
     input_names = ("x_d", "v_d", "a_d", "x", "x_f", "u_ff")
     output_names = ("u", "u_sd", "e")
@@ -99,7 +117,15 @@ class PID(DiscreteBlock):
         self.sample_time = params.Ts
 
     def gains(self, x, x_f) -> tuple[float, float, float]:
-        """Gains (k_p, k_i, k_d) at measured position ``x`` and target ``x_f`` (Eq. 15)."""
+        """Gains (k_p, k_i, k_d) at measured position ``x`` and target ``x_f`` (Eq. 15).
+
+        Parameters
+        ----------
+        x : float
+            Measured position [m].
+        x_f : float
+            Target position of the move [m].
+        """
         p = self.params
         w = p.beta / (abs(x_f - x) + p.beta)
         return ((1 + p.alpha_p * w) * p.Kp, (1 + p.alpha_i * w) * p.Ki,
@@ -122,7 +148,15 @@ class PID(DiscreteBlock):
 class StateDependentPID(PID):
     """State-dependent PID of seed 003 Eq. (15) with the paper's empirical factors:
     beta = 4e-4 m, alpha_p = -0.66, alpha_i = 9, alpha_d = 0 (gains x0.34, x10, x1 at the
-    target)."""
+    target).
+
+    Parameters
+    ----------
+    params : PIDParams, optional
+        The gains, their state-dependent factors and the sample time.
+    **gains
+        Parameter values replacing those of ``params`` (validated; unknown: TypeError).
+    """
 
     def __init__(self, params: PIDParams | None = None, **gains):
         defaults = dict(alpha_p=-0.66, alpha_i=9.0, alpha_d=0.0, beta=4e-4)
@@ -193,6 +227,13 @@ class DiscreteStepper:
     sets inputs, reads outputs, then steps the plant reproduces the monolithic loop with
     no extra delay); ``do_step(t, h)`` runs samples due in ``[t, t+h)`` with the held
     inputs and leaves a sample at ``t+h`` pending. Outputs are held between samples.
+
+    Parameters
+    ----------
+    block : DiscreteBlock
+        The sampled block.
+    start : float
+        Start time [s].
     """
 
     def __init__(self, block: DiscreteBlock, start: float = 0.0):
@@ -204,6 +245,13 @@ class DiscreteStepper:
         self.reset()
 
     def reset(self, start: float | None = None) -> None:
+        """
+
+        Parameters
+        ----------
+        start : float, optional
+            New start time [s].
+        """
         if start is not None:
             self.start = float(start)
         self.time = self.start
@@ -213,6 +261,13 @@ class DiscreteStepper:
         self._out = {n: 0.0 for n in self.output_names}
 
     def set_inputs(self, values: dict) -> None:
+        """
+
+        Parameters
+        ----------
+        values : dict
+            Input values by name (``input_names``), SI units.
+        """
         for k, val in values.items():
             if k not in self.inputs:
                 raise KeyError(f"unknown input {k!r}; inputs are {list(self.inputs)}")
@@ -234,6 +289,15 @@ class DiscreteStepper:
         return dict(self._out)
 
     def do_step(self, t: float, h: float) -> bool:
+        """
+
+        Parameters
+        ----------
+        t : float
+            Current time [s].
+        h : float
+            Step length [s].
+        """
         if abs(t - self.time) > 1e-9 * max(1.0, abs(t)):
             raise ValueError(f"do_step(t={t!r}) but the stepper is at time {self.time!r}")
         if not h > 0:

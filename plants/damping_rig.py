@@ -114,6 +114,14 @@ class DampingRig(Plant):
     open-loop experiment (0 for the kinematic drives) [N], ``F`` friction.
     Options: ``drive`` ("linear", "piezo", "open_loop"), ``waveform`` ("sine", "triangle",
     "trapezoid"), ``freq`` [Hz], ``amplitude`` [m].
+
+    Parameters
+    ----------
+    friction : FrictionModel or str, optional
+        The ring's friction law (default :func:`rig_friction`).
+    **kwargs
+        Plant parameter values (SI units), ``external_friction`` or ``params``, as for
+        :class:`plants.base.Plant`.
     """
 
     name = "damping_rig"
@@ -192,7 +200,13 @@ class DampingRig(Plant):
         return sp, vp
 
     def motor_force(self, t) -> float:
-        """Open-loop motor force u = U sin(w t) [N] (Eq. 18)."""
+        """Open-loop motor force u = U sin(w t) [N] (Eq. 18).
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        """
         p = self.params
         return p.U * math.sin(p.w_u * t)
 

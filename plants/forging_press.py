@@ -164,6 +164,14 @@ class ForgingPress(Plant):
     input) [N], ``x_ref`` [m], ``v_ref`` [m/s], ``u`` valve
     command [-], ``F`` friction [N]. Options: ``schedule`` ((speed, duration), ...),
     ``workpiece`` (False: the no-load constant-speed tests of Section 4).
+
+    Parameters
+    ----------
+    friction : FrictionModel or str, optional
+        The guide's friction law (default :func:`press_friction`).
+    **kwargs
+        Plant parameter values (SI units), ``external_friction`` or ``params``, as for
+        :class:`plants.base.Plant`.
     """
 
     name = "forging_press"
@@ -270,7 +278,15 @@ class ForgingPress(Plant):
         return self._theta_arr
 
     def deformation(self, x, x_p):
-        """(F_sigma [N], plastic rate dx_p/dt [m/s]) at beam travel x and plastic reduction x_p."""
+        """(F_sigma [N], plastic rate dx_p/dt [m/s]) at beam travel x and plastic reduction x_p.
+
+        Parameters
+        ----------
+        x : float
+            Beam travel [m].
+        x_p : float
+            Plastic reduction of the workpiece [m].
+        """
         if not self.opts["workpiece"]:
             return 0.0, 0.0
         p = self.params
@@ -338,7 +354,13 @@ class ForgingPress(Plant):
 
     # -- analysis ---------------------------------------------------------------------------------
     def friction_from_eq1(self, res) -> np.ndarray:
-        """Comprehensive friction F_r [N] from the recorded signals by Eq. 1 (the paper's way)."""
+        """Comprehensive friction F_r [N] from the recorded signals by Eq. 1 (the paper's way).
+
+        Parameters
+        ----------
+        res : ndarray
+            A simulation result (structured array with ``p1``, ``p2``, ``F_sigma``, ``a``).
+        """
         p = self.params
         return (res["p1"] * p.A1 + p.m * p.g - res["F_sigma"] - res["p2"] * p.A2
                 - p.m * res["a"])

@@ -37,13 +37,37 @@ class PartialCompliant:
     """
 
     def force(self, s_rel: float, v_rel: float) -> float:  # pragma: no cover - abstract
-        """Tension [N] for relative position ``s_b - s_a`` [m] and velocity [m/s]."""
+        """Tension [N] for relative position ``s_b - s_a`` [m] and velocity [m/s].
+
+        Parameters
+        ----------
+        s_rel : float
+            Relative position ``s_b - s_a`` [m].
+        v_rel : float
+            Relative velocity [m/s].
+        """
         raise NotImplementedError
 
     def reaction_on_b(self, s_rel: float, v_rel: float) -> float:
-        """Force [N] the element exerts on the body at flange b (+s positive): ``-f``."""
+        """Force [N] the element exerts on the body at flange b (+s positive): ``-f``.
+
+        Parameters
+        ----------
+        s_rel : float
+            Relative position ``s_b - s_a`` [m].
+        v_rel : float
+            Relative velocity [m/s].
+        """
         return -self.force(s_rel, v_rel)
 
     def reaction_on_a(self, s_rel: float, v_rel: float) -> float:
-        """Force [N] the element exerts on the body at flange a (+s positive): ``+f``."""
+        """Force [N] the element exerts on the body at flange a (+s positive): ``+f``.
+
+        Parameters
+        ----------
+        s_rel : float
+            Relative position ``s_b - s_a`` [m].
+        v_rel : float
+            Relative velocity [m/s].
+        """
         return self.force(s_rel, v_rel)

@@ -45,7 +45,21 @@ class FrictionStep:
         return np.array(values) if key in self.needs else self._empty
 
     def force(self, state, x, v, a=0.0, load=None) -> float:
-        """Friction force [N] at the given state and kinematics."""
+        """Friction force [N] at the given state and kinematics.
+
+        Parameters
+        ----------
+        state : array_like
+            The law's state (``state_names``).
+        x : float
+            Displacement [m].
+        v : float
+            Velocity [m/s].
+        a : float
+            Acceleration [m/s^2].
+        load : float, optional
+            Load [N].
+        """
         one = np.zeros(1)
         F, _ = self.law._kernel(one, np.array([v]), self._extra("a", [a]),
                                 self._extra("load", [load if load is not None else 0.0]),
@@ -58,6 +72,15 @@ class FrictionStep:
 
         ``k0``, ``k1`` are ``(x, v, a, load)`` at the start and the end. Returns
         ``(new_state, force_at_end)``.
+
+        Parameters
+        ----------
+        state : ndarray
+            The law's state at the start of the step.
+        h : float
+            Step length [s].
+        k0, k1 : tuple of float
+            ``(x, v, a, load)`` [m, m/s, m/s^2, N] at the start and at the end of the step.
         """
         t = self._t2
         t[1] = h
@@ -80,6 +103,15 @@ class FrictionComponent:
     the inputs at both ends - exactly ``law.simulate`` on the sampled motion. ``F`` depends
     on the current inputs (direct feedthrough), so a Gauss-Seidel master reads it after
     setting ``v`` at each communication point.
+
+    Parameters
+    ----------
+    law : FrictionModel
+        The friction law.
+    method : {"exact", "euler"}
+        Bristle update.
+    start : float
+        Start time [s].
     """
 
     def __init__(self, law: FrictionModel, method: str = "exact", start: float = 0.0):
@@ -94,6 +126,13 @@ class FrictionComponent:
         self.reset()
 
     def reset(self, start: float | None = None) -> None:
+        """
+
+        Parameters
+        ----------
+        start : float, optional
+            New start time [s].
+        """
         if start is not None:
             self.start = float(start)
         self.time = self.start
@@ -111,6 +150,13 @@ class FrictionComponent:
             self._pending = 0.0
 
     def set_inputs(self, values: dict) -> None:
+        """
+
+        Parameters
+        ----------
+        values : dict
+            Input values by name (``v`` and the law's ``x``, ``a``, ``load``), SI units.
+        """
         for k in values:
             if k not in self.inputs:
                 raise KeyError(f"{self.law.name}: unknown input {k!r}; inputs are "
@@ -126,6 +172,15 @@ class FrictionComponent:
                                      i.get("load"))}
 
     def do_step(self, t: float, h: float) -> bool:
+        """
+
+        Parameters
+        ----------
+        t : float
+            Current time [s].
+        h : float
+            Step length [s].
+        """
         if abs(t - self.time) > 1e-9 * max(1.0, abs(t)):
             raise ValueError(f"do_step(t={t!r}) but the component is at time {self.time!r}")
         if not h > 0:

@@ -25,14 +25,34 @@ class LinearMotor(FrictionParams):
                          lower_open=True)
 
     def current_derivative(self, i: float, i_cmd: float) -> float:
-        """di/dt [A/s] of the closed current loop."""
+        """di/dt [A/s] of the closed current loop.
+
+        Parameters
+        ----------
+        i : float
+            Coil current [A].
+        i_cmd : float
+            Current command [A] (clipped to ``i_max``).
+        """
         i_cmd = min(max(i_cmd, -self.i_max), self.i_max)
         return 2.0 * math.pi * self.f_current * (i_cmd - i)
 
     def force(self, i: float) -> float:
-        """Thrust [N] at current ``i`` [A]."""
+        """Thrust [N] at current ``i`` [A].
+
+        Parameters
+        ----------
+        i : float
+            Coil current [A].
+        """
         return self.Kf * i
 
     def current_for(self, force: float) -> float:
-        """Current command [A] for a desired thrust [N]."""
+        """Current command [A] for a desired thrust [N].
+
+        Parameters
+        ----------
+        force : float
+            Desired thrust [N].
+        """
         return force / self.Kf

@@ -66,6 +66,17 @@ class MREIsolator(Plant):
     Outputs: ``x`` shear displacement [m], ``v`` shear velocity [m/s], ``a`` [m/s^2],
     ``x_table`` [m], ``x_ref`` [m], ``F_meas`` load-cell force [N], ``F`` isolator force [N].
     Options: ``freq`` [Hz], ``amplitude`` [m], ``ramp_cycles`` (fade-in length, cycles).
+
+    Parameters
+    ----------
+    friction : FrictionModel or str, optional
+        The isolator's law (default :func:`isolator_law` at the parameter ``current``).
+    external_friction : bool
+        The law runs outside (its force is the input ``F_friction``).
+    params : MREIsolatorParams, optional
+        Plant parameters; default their defaults.
+    **overrides
+        Plant parameter values (SI units) replacing those of ``params``.
     """
 
     name = "mre_isolator"
@@ -95,7 +106,13 @@ class MREIsolator(Plant):
         return isolator_law(2.0)
 
     def reference(self, t):
-        """Table reference (x, v, a): A sin(2 pi f t) [m, m/s, m/s^2]."""
+        """Table reference (x, v, a): A sin(2 pi f t) [m, m/s, m/s^2].
+
+        Parameters
+        ----------
+        t : float or array_like
+            Time [s].
+        """
         A, f = float(self.opts["amplitude"]), float(self.opts["freq"])
         if not 0 < A <= 0.05:
             raise ValueError(f"amplitude = {A!r} m is out of bounds: must be in (0, 0.05] m")

@@ -26,7 +26,17 @@ def quantize(x, resolution: float):
 
 class PositionSensor:
     """Incremental encoder: position quantised to ``resolution`` [m] (seed 003: 1 nm),
-    optional white noise of standard deviation ``noise`` [m]."""
+    optional white noise of standard deviation ``noise`` [m].
+
+    Parameters
+    ----------
+    resolution : float
+        Quantisation step [m] (>= 0; 0: none).
+    noise : float
+        Standard deviation of the white noise [m] (>= 0).
+    seed : int
+        Seed of the noise generator.
+    """
 
     def __init__(self, resolution: float = 1e-9, noise: float = 0.0, seed: int = 0):
         if resolution < 0:
@@ -37,14 +47,28 @@ class PositionSensor:
         self._rng = np.random.default_rng(seed)
 
     def measure(self, x):
-        """Measured position [m] of the true position ``x`` (scalar or array)."""
+        """Measured position [m] of the true position ``x`` (scalar or array).
+
+        Parameters
+        ----------
+        x : float or array_like
+            True position [m].
+        """
         if self.noise > 0:
             x = x + self.noise * self._rng.standard_normal(np.shape(x))
         return quantize(x, self.resolution)
 
 
 class VelocitySensor:
-    """Velocity measurement: the true value plus white noise ``noise`` [m/s]."""
+    """Velocity measurement: the true value plus white noise ``noise`` [m/s].
+
+    Parameters
+    ----------
+    noise : float
+        Standard deviation of the white noise [m/s] (>= 0).
+    seed : int
+        Seed of the noise generator.
+    """
 
     def __init__(self, noise: float = 0.0, seed: int = 0):
         if noise < 0:
@@ -53,6 +77,13 @@ class VelocitySensor:
         self._rng = np.random.default_rng(seed)
 
     def measure(self, v):
+        """
+
+        Parameters
+        ----------
+        v : float or array_like
+            True velocity [m/s].
+        """
         return v + self.noise * self._rng.standard_normal(np.shape(v)) if self.noise else v
 
 

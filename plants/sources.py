@@ -64,6 +64,13 @@ class Triangle:
     ``4 A f`` alternating in sign (acceleration zero between the reversals).
 
     Starts at 0 moving in +s (like a sine), peaks at ``A`` at a quarter period.
+
+    Parameters
+    ----------
+    amplitude : float
+        Peak position [m].
+    frequency : float
+        Frequency [Hz] (> 0).
     """
 
     def __init__(self, amplitude: float, frequency: float):
@@ -184,6 +191,8 @@ class PRBS:
         Length [s].
     seed : int
         LFSR start register.
+    order : int
+        Length of the LFSR register (period ``2**order - 1`` bits).
     """
 
     def __init__(self, rms: float = 5e-3, f_max: float = 500.0, duration: float = 2.0,
@@ -376,7 +385,19 @@ class SCurve:
 
 
 class Sampled:
-    """A trajectory given by samples ``(t, s, v, a)``, interpolated linearly."""
+    """A trajectory given by samples ``(t, s, v, a)``, interpolated linearly.
+
+    Parameters
+    ----------
+    t : array_like
+        Sample times [s] (increasing).
+    s : array_like
+        Position samples [m].
+    v : array_like, optional
+        Velocity samples [m/s] (default: the gradient of ``s``).
+    a : array_like, optional
+        Acceleration samples [m/s^2] (default: the gradient of ``v``).
+    """
 
     def __init__(self, t, s, v=None, a=None):
         self.t = np.asarray(t, float)

@@ -96,6 +96,19 @@ class PlantStepper:
 
     def __init__(self, plant: Plant, *, substep: float | None = None, start: float = 0.0,
                  friction_method: str = "exact"):
+        """
+
+        Parameters
+        ----------
+        plant : Plant
+            The plant to step (internal or external friction).
+        substep : float, optional
+            Internal step [s] (default ``plant.max_substep``).
+        start : float
+            Start time [s].
+        friction_method : {"exact", "euler"}
+            Bristle update of the internal law.
+        """
         self.plant = plant
         self.coupling_names = self.COUPLING_INPUTS if plant.external_friction else ()
         self.input_names = plant.all_input_names
@@ -118,7 +131,13 @@ class PlantStepper:
 
     # -- public API -------------------------------------------------------------------------
     def reset(self, start: float | None = None) -> None:
-        """Back to the initial state at time ``start`` (default: the stepper's start)."""
+        """Back to the initial state at time ``start`` (default: the stepper's start).
+
+        Parameters
+        ----------
+        start : float, optional
+            New start time [s].
+        """
         if start is not None:
             self.start = float(start)
         p = self.plant
@@ -143,7 +162,14 @@ class PlantStepper:
         self._sample_due(self.time)
 
     def set_inputs(self, values: dict) -> None:
-        """Set external inputs (held until changed); unknown names raise ``KeyError``."""
+        """Set external inputs (held until changed); unknown names raise ``KeyError``.
+
+        Parameters
+        ----------
+        values : dict
+            Input values by name (``input_names`` and, in external-friction mode, the coupling
+            inputs), SI units.
+        """
         for k, val in values.items():
             if k in self.coupling_names:
                 self._lin[self.coupling_names.index(k)] = float(val)
@@ -156,7 +182,13 @@ class PlantStepper:
             self._F = self.u["F_friction"]
 
     def set_parameters(self, **values) -> None:
-        """Change plant parameters (validated); call before ``reset`` for initial values."""
+        """Change plant parameters (validated); call before ``reset`` for initial values.
+
+        Parameters
+        ----------
+        **values
+            Plant parameter values (SI units) by name.
+        """
         self.plant = self.plant.with_params(**values)
 
     def outputs(self) -> dict[str, float]:
@@ -171,7 +203,15 @@ class PlantStepper:
         return out
 
     def do_step(self, t: float, h: float) -> bool:
-        """Integrate from ``t`` to ``t + h`` [s]; returns True."""
+        """Integrate from ``t`` to ``t + h`` [s]; returns True.
+
+        Parameters
+        ----------
+        t : float
+            Current time [s] (the stepper's time).
+        h : float
+            Step length [s] (> 0).
+        """
         if abs(t - self.time) > 1e-9 * max(1.0, abs(t)):
             raise ValueError(f"do_step(t={t!r}) but the stepper is at time {self.time!r}")
         if not h > 0:

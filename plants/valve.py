@@ -162,6 +162,11 @@ class ValveActuator(Plant):
         ``speed = 0``: the lift sinusoid; otherwise a constant-speed stroke (seed 000's
         steady-state tests under velocity control) from the start lift, reaching ``speed``
         [m/s] with a constant acceleration over ``t_acc`` [s].
+
+        Parameters
+        ----------
+        t : float or array_like
+            Time [s].
         """
         speed = float(self.opts["speed"])
         if speed == 0.0:

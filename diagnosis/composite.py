@@ -149,7 +149,9 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     ctx : Context
         The diagnosis context the effects read.
     extras0 : dict, optional
-        Start values of extras [their units] (default each extra's ``x0`` or data start).
+        Start values of extras [their units] (default each extra's ``x0`` or data start,
+        and the law's values from the ``start_law`` hook of an effect that has one; given,
+        even empty, the law starts from its values as they are).
     max_nfev : int
         Most trial points of each least-squares run (scipy's ``max_nfev``).
     progress : callable(n, info), optional
@@ -163,6 +165,15 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     equations, a float32 Jacobian): memory O(N D / 2) instead of scipy's several N x D
     float64 copies.
     """
+    if extras0 is None:
+        # a candidate that changes the law (backlash's gap, gms's stiffness split) may start
+        # its new parameters on the data, where a least squares from the base's values
+        # stays (``start_law(law, names, fit, ctx) -> law``, :mod:`diagnosis.
+        # effects_backlash`); a warm start (greedy stacking) keeps its values
+        for eff in effects:
+            start_law = getattr(eff, "start_law", None)
+            if start_law is not None:
+                law = start_law(law, base_names, fit, ctx)
     nb = len(base_names)
     # no law parameter to fit (the transfer scores calibrate only a candidate's own): the
     # law stays at its values

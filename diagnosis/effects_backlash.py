@@ -197,14 +197,18 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
     A base law fitted without the play absorbs it in a distorted way (a soft bristle with a
     huge static level mimics the flat segments), and from there no gap improves the fit.
     So: the lost motion is first estimated without a model (median of
-    :func:`reversal_travels`), the base law is re-identified on the contact's motion behind
-    that play (:func:`contact_record`, :func:`identification.identify`), and the gap and
+    :func:`reversal_travels`), the base law is re-fitted on the contact's motion behind
+    that play (:func:`contact_record`, :func:`diagnosis.composite.fit_composite` from the
+    base's values: one least squares, a fifth of what :func:`identification.identify`'s
+    starts cost), and the gap and
     the option (``hold``: the force the contact holds while the drive crosses the play,
     read at a preloaded contact; ``free``: nothing, the contact a free mass whose bristle
     unloads) are then chosen on ``fit`` among :data:`GAP_GRID` gaps from a fifth to 1.5 x
-    the estimate x both options x the law's values re-identified or as fitted (a record
-    without play keeps the base's), each a compiled run from the record's start state."""
-    from identification import identify
+    the estimate x both options x the law's values re-identified (also with sigma1 = 0) or
+    as fitted (a record without play keeps the base's), each a compiled run from the
+    record's start state. With no LuGre parameter in ``names`` (a transfer calibration of
+    the gap alone) nothing is re-identified."""
+    from .composite import fit_composite
     travels = reversal_travels(fit, ctx)
     stroke = max(ctx.x_hi - ctx.x_lo, 1e-12)
     floor = max(ctx.sv * ctx.dt, 1e-7)
@@ -212,12 +216,17 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
     gap0 = min(max(gap0, floor), GAP_STROKE_MAX * stroke)
     lugre_names = [n for n in names if n != "delta"]
     lugre = make_model("lugre", **{n: getattr(law.params, n) for n in _LUGRE_VALUES})
-    law_u = identify(contact_record(fit, 0.5 * gap0), lugre, names=lugre_names,
-                     seed=0)["model"]
+    law_u = (fit_composite(lugre, lugre_names, [], contact_record(fit, 0.5 * gap0), ctx,
+                           extras0={})[0].law if lugre_names else lugre)
     undone = {n: float(getattr(law_u.params, n)) for n in lugre_names}
     as_fitted = {n: float(getattr(law.params, n)) for n in lugre_names}
+    starts = [undone, as_fitted]
+    if undone.get("sigma1", 0.0) > 0.0:
+        # the damping identified on the contact's motion puts a force jump sigma1 v at each
+        # engagement, which a contact pushed through a compliant coupling does not show
+        starts.append(dict(undone, sigma1=0.0))
     best = (math.inf, None)
-    for vals in (undone, as_fitted):
+    for vals in starts:
         for mode in ("hold", "free"):
             for g in gap0 * np.geomspace(0.2, 1.5, GAP_GRID):
                 trial = law.with_values(delta=0.5 * float(g), gap=mode, **vals)

@@ -46,7 +46,7 @@ def _fit_one(name, law, base_names, fit, ctx):
     when it does not apply (the client decides what to report)."""
     from identification.cluster import _STATS
     from .composite import fit_composite
-    from .effects import CANDIDATES
+    from .core import CANDIDATES  # the registry diagnose() uses, wherever it lives
     _STATS["candidates"] += 1
     cand = CANDIDATES[name].specialise(law)
     best = None
@@ -73,8 +73,7 @@ def applicable(names, law, fit, ctx, val_sets) -> list:
     -------
     list of str
     """
-    from .core import _missing_columns
-    from .effects import CANDIDATES
+    from .core import CANDIDATES, _missing_columns
     out = []
     for n in names:
         cand = CANDIDATES[n].specialise(law)

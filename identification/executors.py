@@ -117,6 +117,8 @@ class DaskExecutor:
         self._futures = {}  # worker address -> the shipped objective's future there
         self._objective_id = None
         self._closed = False
+        #: the scheduler's address (for messages once it is gone)
+        self.address = getattr(client, "scheduler_address", None) or "the scheduler"
 
     def _placed(self, objective) -> dict:
         """``worker -> future`` of the shipped objective on every current worker: sent
@@ -178,28 +180,45 @@ class DaskExecutor:
 
     def _map(self, fn, objective, X) -> list:
         """``fn(shipped objective, chunk)`` over the rows of ``X``, one chunk per worker
-        thread, each on the worker that holds its objective; results in order."""
+        thread, each on the worker that holds its objective; results in order. A worker
+        lost meanwhile: the whole call runs again on the workers left (evaluations are
+        deterministic, so nothing changes but the time); the scheduler lost, or no worker
+        left: :class:`identification.cluster.SchedulerError`."""
         from concurrent.futures import CancelledError
+        from distributed.scheduler import KilledWorker
         from .cluster import SchedulerError
+        lost = (OSError, CancelledError, TimeoutError, KilledWorker)
+        for attempt in range(3):
+            try:
+                placed = self._placed(objective)
+                nthreads = self.client.nthreads()
+                slots = [w for w in sorted(placed) for _ in range(max(1, nthreads.get(w, 1)))]
+                if not slots:
+                    raise OSError("no worker is connected")
+                n = self.chunks or len(slots)
+                futures = []
+                for i, c in enumerate(_chunks(np.asarray(X), n)):
+                    w = slots[i % len(slots)]
+                    futures.append(self.client.submit(fn, placed[w], c, pure=False,
+                                                      workers=[w], allow_other_workers=True))
+                return self.client.gather(futures)
+            except lost as exc:
+                alive = self.client.status == "running" and self._workers_left()
+                if alive and attempt < 2:
+                    self._release()  # ship again to the workers that are left
+                    self._objective_id = None
+                    continue
+                text = str(exc).strip().splitlines()
+                raise SchedulerError(f"lost the dask cluster at {self.address} during the "
+                                     f"run: {text[0] if text else type(exc).__name__} (a "
+                                     f"--checkpoint keeps every finished evaluation)") \
+                    from None
+
+    def _workers_left(self) -> bool:
         try:
-            placed = self._placed(objective)
-            nthreads = self.client.nthreads()
-            slots = [w for w in sorted(placed) for _ in range(max(1, nthreads.get(w, 1)))]
-            if not slots:
-                raise OSError("no worker is connected")
-            n = self.chunks or len(slots)
-            futures = []
-            for i, c in enumerate(_chunks(np.asarray(X), n)):
-                w = slots[i % len(slots)]
-                futures.append(self.client.submit(fn, placed[w], c, pure=False,
-                                                  workers=[w]))
-            return self.client.gather(futures)
-        except (OSError, CancelledError, TimeoutError) as exc:
-            addr = getattr(self.client, "scheduler_address", None) or "the scheduler"
-            text = str(exc).strip().splitlines()
-            raise SchedulerError(f"lost the dask cluster at {addr} during the run: "
-                                 f"{text[0] if text else type(exc).__name__} (a --checkpoint "
-                                 f"keeps every finished evaluation)") from None
+            return bool(self.client.nthreads())
+        except Exception:  # noqa: BLE001 - the scheduler itself is gone
+            return False
 
     def close(self):
         """Release the shipped objective on the workers (the client stays connected);

@@ -300,3 +300,30 @@ def test_cli_diagnose_on_the_cluster_equals_inline(cluster, tmp_path, capsys):
         rep.pop("timing", None)
     assert dask == inline
     assert sum(fits.values()) == 4 and all(n > 0 for n in fits.values()), fits
+
+
+def test_a_worker_lost_between_populations_costs_time_not_results(cluster, tmp_path):
+    """The worker process of w2 is killed after the objective reached it: the next
+    population runs again on the worker left (then on w2's restart), the same costs. Last in
+    the file: the nanny restarts w2 with fresh counters."""
+    from friction import make_model
+    from friction.dataset import load_dataset
+    from identification.executors import DaskExecutor
+    from identification.objectives import InProcessObjective
+    address, _ = cluster
+    obj = InProcessObjective(make_model("lugre"), load_dataset(_csv(tmp_path / "r.csv")),
+                             ["Fc", "Fs"])
+    X = np.array([[1.0, 1.5], [1.1, 1.4], [0.9, 1.6], [1.2, 1.3]])
+    client = connect(address, workers=2)
+    try:
+        exe = DaskExecutor(client)
+        first = exe.costs(obj, X)
+        names = {a: w["name"] for a, w in client.scheduler_info()["workers"].items()}
+        w2 = next(a for a, n in names.items() if n == "w2")
+        pid = client.run(os.getpid, workers=[w2])[w2]
+        os.kill(pid, signal.SIGKILL)
+        again = exe.costs(obj, X)
+        exe.close()
+    finally:
+        client.close()
+    assert np.array_equal(first, obj.costs(X)) and np.array_equal(again, first)

@@ -384,3 +384,54 @@ def backlash_truth(form: str, t, v, gap: float, params: dict, fine: int = FINE) 
 
 #: truth forms of the backlash effect (benchmark)
 TRUTHS = ("rigid", "compliant", "impact")
+
+
+# -- the truth forms as the benchmark calls them ----------------------------------------------
+#: lost motion of the generic benchmark case at strength 1 [m] (the issue's 1-3 mm)
+GENERIC_GAP = 2e-3
+#: lost motion of a plant case at strength 1, as a share of the plant's stroke [-]
+PLANT_GAP_SHARE = 0.05
+
+
+def lugre_values(law) -> dict:
+    """The LuGre contact parameters of a classic LuGre ``law`` (sigma0 [N/m], sigma1,
+    sigma2 [N s/m], Fc, Fs [N], vs [m/s], alpha [-]) for the truth forms."""
+    p = law.params
+    return {n: float(getattr(p, n)) for n in ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs",
+                                              "alpha")}
+
+
+def truth_applies(kin) -> bool:
+    """A plant case of backlash needs a classic LuGre base (the candidate's) and at least
+    four reversals of the motion."""
+    if kin.base.name != "lugre":
+        return False
+    s = np.sign(kin.v[np.abs(kin.v) > 0.02 * np.percentile(np.abs(kin.v), 99)])
+    return int(np.sum(s[1:] != s[:-1])) >= 4
+
+
+def _plant_truth(form):
+    def truth(kin, s: float) -> np.ndarray:
+        gap = PLANT_GAP_SHARE * s * float(np.ptp(kin.x))
+        return backlash_truth(form, kin.t, kin.v, gap, lugre_values(kin.base))
+    truth.__name__ = truth.__qualname__ = f"backlash_{form}_truth"
+    truth.__doc__ = (f"Backlash truth ``{form}`` (:func:`backlash_truth`) along a plant's "
+                     f"motion ``kin`` with its LuGre base as the contact, lost motion "
+                     f"{PLANT_GAP_SHARE:g} x ``s`` x the stroke [m].")
+    return truth
+
+
+def _generic_truth(form):
+    def truth(s, t, x, v, a):
+        from .benchmark.truths import BASE
+        return backlash_truth(form, t, v, GENERIC_GAP * s, BASE), None
+    truth.__name__ = truth.__qualname__ = f"backlash_{form}_generic"
+    truth.__doc__ = (f"Backlash truth ``{form}`` on the generic benchmark axis (LuGre BASE), "
+                     f"lost motion {GENERIC_GAP:g} x ``s`` [m]; returns (F [N], None).")
+    return truth
+
+
+#: per-plant truths ``truth(kin, s) -> F`` [N] and generic ones ``truth(s, t, x, v, a) ->
+#: (F, load)`` of the forms :data:`TRUTHS`
+PLANT_TRUTHS = {form: _plant_truth(form) for form in TRUTHS}
+GENERIC_TRUTHS = {form: _generic_truth(form) for form in TRUTHS}

@@ -294,3 +294,46 @@ def gms_truth(form: str, t, v, params: dict, presliding: float, fine: int = FINE
 
 #: truth forms of the presliding-hysteresis effect (benchmark)
 TRUTHS = ("maxwell4", "maxwell10", "dahl", "elastoplastic")
+
+
+# -- the truth forms as the benchmark calls them ----------------------------------------------
+#: presliding distance of the generic benchmark case at strength 1 [m]
+GENERIC_PRESLIDING = 1e-3
+#: presliding distance of a plant case at strength 1, as a share of the stroke [-]
+PLANT_PRESLIDING_SHARE = 0.03
+
+
+def truth_applies(kin) -> bool:
+    """A plant case of presliding hysteresis needs a classic LuGre base (the candidate's
+    steady-state curve) and at least four reversals of the motion."""
+    from .effects_backlash import truth_applies as reversing_lugre
+    return reversing_lugre(kin)
+
+
+def _plant_truth(form):
+    def truth(kin, s: float) -> np.ndarray:
+        from .effects_backlash import lugre_values
+        pre = PLANT_PRESLIDING_SHARE * s * float(np.ptp(kin.x))
+        return gms_truth(form, kin.t, kin.v, lugre_values(kin.base), pre)
+    truth.__name__ = truth.__qualname__ = f"gms_{form}_truth"
+    truth.__doc__ = (f"Presliding truth ``{form}`` (:func:`gms_truth`) along a plant's motion "
+                     f"``kin`` with its LuGre base's curve, presliding distance "
+                     f"{PLANT_PRESLIDING_SHARE:g} x ``s`` x the stroke [m].")
+    return truth
+
+
+def _generic_truth(form):
+    def truth(s, t, x, v, a):
+        from .benchmark.truths import BASE
+        return gms_truth(form, t, v, BASE, GENERIC_PRESLIDING * s), None
+    truth.__name__ = truth.__qualname__ = f"gms_{form}_generic"
+    truth.__doc__ = (f"Presliding truth ``{form}`` on the generic benchmark axis (LuGre "
+                     f"BASE's curve), presliding distance {GENERIC_PRESLIDING:g} x ``s`` [m]; "
+                     f"returns (F [N], None).")
+    return truth
+
+
+#: per-plant truths ``truth(kin, s) -> F`` [N] and generic ones ``truth(s, t, x, v, a) ->
+#: (F, load)`` of the forms :data:`TRUTHS`
+PLANT_TRUTHS = {form: _plant_truth(form) for form in TRUTHS}
+GENERIC_TRUTHS = {form: _generic_truth(form) for form in TRUTHS}

@@ -338,12 +338,8 @@ def plant_proof(fmu_dir, plant_name: str, law, *, refinements: int = 2,
 
     Parameters
     ----------
-    fmu_dir : str or path
-        Folder of built FMUs.
-    plant_name : str
-        Registry name of the plant.
-    law : FrictionModel
-        The friction law.
+    fmu_dir, plant_name, law
+        As for :func:`plant_master`.
     refinements : int
         Minimum number of communication steps run.
     stop : float, optional

@@ -228,10 +228,8 @@ def mass_proof(fmu_dir, law: str, *, step: float | None = None, refinements: int
 
     Parameters
     ----------
-    fmu_dir : str or path
-        Folder of built FMUs.
-    law : str
-        Registry name of the law.
+    fmu_dir, law
+        As for :func:`mass_cosim`.
     step : float, optional
         Finest communication step [s].
     refinements : int

@@ -79,10 +79,8 @@ def inner_name(model_identifier: str, platform: str = PLATFORM) -> str:
 
     Parameters
     ----------
-    model_identifier : str
-        The FMU's model identifier.
-    platform : str
-        ``linux64`` or ``win64``.
+    model_identifier, platform : str
+        As for :func:`library_name`.
     """
     _check_platform(platform)
     return f"{model_identifier}_pythonfmu{_EXT[platform]}"

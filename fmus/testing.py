@@ -103,10 +103,8 @@ class LoggedSlave:
 
         Parameters
         ----------
-        t : float
-            Current communication point [s].
-        h : float
-            Communication step [s].
+        t, h : float
+            Communication point and step [s].
         """
         from fmpy.fmi1 import FMICallException
         try:

@@ -280,13 +280,9 @@ class FrictionModel:
 
         Parameters
         ----------
-        state : array_like, shape (n_states,)
-            The law's state, in the units of ``state_names`` (``z`` [m], ...).
-        v : float
-            Velocity [m/s].
-        **inputs : float
-            The law's other inputs (:attr:`INPUT_NAMES`): ``a`` [m/s^2], ``load`` [N],
-            ``x`` [m]; another keyword is a TypeError.
+        state, v, **inputs
+            As for :meth:`derivatives`: the state, velocity [m/s] and the other inputs
+            ``a`` [m/s^2], ``load`` [N], ``x`` [m].
         """
         raise NotImplementedError
 

@@ -210,14 +210,9 @@ class Plant:
 
         Parameters
         ----------
-        t : float
-            Time [s].
-        s : ndarray, shape (n_states,)
-            Continuous state (SI units).
-        d : ndarray, shape (n_discrete,)
-            Discrete state.
-        u : dict
-            External inputs by name.
+        t, s, d, u
+            Time [s], continuous state, discrete state and inputs, as for
+            :meth:`derivatives`.
         """
         raise NotImplementedError
 
@@ -226,16 +221,10 @@ class Plant:
 
         Parameters
         ----------
-        t : float
-            Time [s].
-        s : ndarray, shape (n_states,)
-            Continuous state (SI units).
+        t, s, d, u
+            As for :meth:`derivatives`.
         ds : ndarray, shape (n_states,)
-            Its time derivative (:meth:`derivatives`).
-        d : ndarray, shape (n_discrete,)
-            Discrete state.
-        u : dict
-            External inputs by name.
+            The time derivative of ``s`` (:meth:`derivatives`).
         """
         return float(ds[self.state_names.index("v")])
 
@@ -244,14 +233,9 @@ class Plant:
 
         Parameters
         ----------
-        t : float
-            Sample time [s].
-        s : ndarray, shape (n_states,)
-            Continuous state (SI units).
-        d : ndarray, shape (n_discrete,)
-            Discrete state before the sample.
-        u : dict
-            External inputs by name.
+        t, s, d, u
+            Sample time [s], continuous state, discrete state before the sample and inputs,
+            as for :meth:`derivatives`.
         """
         return d
 
@@ -260,16 +244,8 @@ class Plant:
 
         Parameters
         ----------
-        t : float
-            Time [s].
-        s : ndarray, shape (n_states,)
-            Continuous state (SI units).
-        d : ndarray, shape (n_discrete,)
-            Discrete state.
-        F : float
-            Friction force on the contact [N].
-        u : dict
-            External inputs by name.
+        t, s, d, F, u
+            As for :meth:`derivatives`.
         """
         raise NotImplementedError
 

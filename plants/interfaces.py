@@ -53,10 +53,8 @@ class PartialCompliant:
 
         Parameters
         ----------
-        s_rel : float
-            Relative position ``s_b - s_a`` [m].
-        v_rel : float
-            Relative velocity [m/s].
+        s_rel, v_rel : float
+            As for :meth:`force`.
         """
         return -self.force(s_rel, v_rel)
 
@@ -65,9 +63,7 @@ class PartialCompliant:
 
         Parameters
         ----------
-        s_rel : float
-            Relative position ``s_b - s_a`` [m].
-        v_rel : float
-            Relative velocity [m/s].
+        s_rel, v_rel : float
+            As for :meth:`force`.
         """
         return self.force(s_rel, v_rel)

@@ -176,10 +176,8 @@ class FrictionComponent:
 
         Parameters
         ----------
-        t : float
-            Current time [s].
-        h : float
-            Step length [s].
+        t, h : float
+            The component's current time and the step length [s].
         """
         if abs(t - self.time) > 1e-9 * max(1.0, abs(t)):
             raise ValueError(f"do_step(t={t!r}) but the component is at time {self.time!r}")

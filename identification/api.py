@@ -291,7 +291,7 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     jac_of = None  # () -> the final residual Jacobian (N x D), for the intervals
     if info.get("jac") is not None and info.get("u") is not None:
         u_ci = np.asarray(info["u"], float)
-        if np.allclose(u_ci, u_best):
+        if np.array_equal(u_ci, u_best) or np.allclose(u_ci, u_best):
             # an algorithm may give it as a callable: computed only if an interval needs it
             # (an analytic N x D Jacobian of a long record is one more pass and N x D floats)
             jac_of = info["jac"] if callable(info["jac"]) else (lambda j=info["jac"]: j)

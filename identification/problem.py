@@ -254,8 +254,13 @@ class Problem:
             return None
         if self.exhausted:
             raise BudgetExhausted
-        u = np.clip(np.asarray(u, float), 0.0, 1.0)
-        x = self.space.to_physical(u)
+        u = np.minimum(np.maximum(np.asarray(u, float), 0.0), 1.0)
+        # to_physical and dx/du in one go (a least-squares run asks once per pass)
+        lo, hi = self.space._ends()
+        w = hi - lo
+        log = self.space.log
+        y = lo + u * w
+        x = np.where(log, np.exp(np.where(log, y, 0.0)), y)
         out = self.objective.normal_equations(x)
         if out is None:
             return None
@@ -263,12 +268,15 @@ class Problem:
         self.n_evals += 1
         c = math.sqrt(c2) if math.isfinite(c2) and np.isfinite(H).all() else math.inf
         if c < self.best_cost:
-            self._track(u[None, :], np.array([c]))
-        self.tick()
+            self.best_cost = c
+            self.best_u = u.copy()
+            self.trace.append((self.n_evals, time.perf_counter() - self._t0, c))
+        if self.progress is not None:
+            self.tick()
         if not math.isfinite(c):
             return math.inf, np.zeros_like(g), np.zeros_like(H)
-        s = self._dx_du(u, x)
-        return float(c2), g * s, H * np.outer(s, s)
+        s = np.where(log, x * w, w)  # dx/du
+        return float(c2), g * s, H * (s[:, None] * s[None, :])
 
     def _dx_du(self, u, x=None):
         """Slope of the physical value along each cube coordinate."""

@@ -197,7 +197,8 @@ def _trial(x, J_h, diag_h, g_h, d, uf, s, V, Delta, alpha0, has_alpha, lb, ub, t
     """The trust-region step of one trial (scipy's ``solve_lsq_trust_region`` then
     ``select_step``: the interior step, its reflection at the first face, or the scaled
     gradient step, whichever the quadratic model prefers) and the strictly feasible new
-    point. Returns (x_new, step, step_h, predicted reduction, alpha)."""
+    point. Returns (x_new, step, step_h, predicted reduction, alpha, |step|, |step_h|,
+    |x|)."""
     m, n = J_h.shape
     p_h, alpha = _solve_tr(n, m, uf, s, V, Delta, alpha0, has_alpha)
     p = d * p_h
@@ -268,7 +269,8 @@ def _trial(x, J_h, diag_h, g_h, d, uf, s, V, Delta, alpha0, has_alpha, lb, ub, t
         else:
             step, step_h, pred = ag, ag_h, -ag_value
     x_new = _strictly_feasible(x + step, lb, ub, 0.0)
-    return x_new, step, step_h, pred, alpha
+    return (x_new, step, step_h, pred, alpha, np.linalg.norm(step), np.linalg.norm(step_h),
+            np.linalg.norm(x))
 
 
 def trf_exact(fun_jac, x0, lb, ub, *, ftol=1e-8, xtol=1e-8, gtol=1e-8, max_nfev=None,
@@ -345,9 +347,8 @@ def trf_exact(fun_jac, x0, lb, ub, *, ftol=1e-8, xtol=1e-8, gtol=1e-8, max_nfev=
         theta = max(0.995, 1.0 - g_norm)
         actual = -1.0
         while actual <= 0 and nfev < max_nfev:
-            x_new, step, step_h, pred, alpha = _trial(x, J_h, diag_h, g_h, d, uf, s, V,
-                                                     Delta, alpha, has_alpha, lb, ub,
-                                                     theta)
+            x_new, step, step_h, pred, alpha, step_norm, step_h_norm, x_norm = _trial(
+                x, J_h, diag_h, g_h, d, uf, s, V, Delta, alpha, has_alpha, lb, ub, theta)
             if cost_of is None:
                 f_new, J_new = fun_jac(x_new)
                 cost_new = 0.5 * float(np.dot(f_new, f_new)) \
@@ -355,7 +356,6 @@ def trf_exact(fun_jac, x0, lb, ub, *, ftol=1e-8, xtol=1e-8, gtol=1e-8, max_nfev=
             else:
                 cost_new = float(cost_of(x_new))
             nfev += 1
-            step_h_norm = float(np.linalg.norm(step_h))
             if not math.isfinite(cost_new):
                 Delta = 0.25 * step_h_norm
                 continue
@@ -374,7 +374,7 @@ def trf_exact(fun_jac, x0, lb, ub, *, ftol=1e-8, xtol=1e-8, gtol=1e-8, max_nfev=
                 Delta_new = 2.0 * Delta
             # check_termination
             ftol_ok = actual < ftol * cost and ratio > 0.25
-            xtol_ok = float(np.linalg.norm(step)) < xtol * (xtol + float(np.linalg.norm(x)))
+            xtol_ok = step_norm < xtol * (xtol + x_norm)
             if ftol_ok and xtol_ok:
                 status = 4
             elif ftol_ok:

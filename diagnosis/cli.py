@@ -41,11 +41,19 @@ def run_diagnose_cli(args) -> int:
     if args.load_column:
         mapping["load"] = args.load_column
     scale = _scale(args.scale)
-    sets = [load_dataset(p, mapping=mapping, scale=scale) for p in args.data]
-    rep = diagnose(sets[0], args.model, validation=sets[1:] or None, seed=args.seed,
-                   candidates=_candidates(args), progress=None if quiet else say,
-                   noise_level=_noise_level(args, mapping, scale),
-                   executor=getattr(args, "executor", None))
+    sets = [load_dataset(p, mapping=mapping, scale=scale, progress=not quiet)
+            for p in args.data]
+    from frictionlab.progress import as_progress
+
+    from .composite import reporting
+    # the joint fits tick a bar (residual evaluations, at most once a second): a long
+    # record's fits are not silent between the candidates' lines
+    with as_progress(not quiet, "diagnose fits", unit="eval") as fits, \
+            reporting(fits if not quiet else None):
+        rep = diagnose(sets[0], args.model, validation=sets[1:] or None, seed=args.seed,
+                       candidates=_candidates(args), progress=None if quiet else say,
+                       noise_level=_noise_level(args, mapping, scale),
+                       executor=getattr(args, "executor", None))
     from .report_html import write_html
     return _emit(rep, args, write_html)
 
@@ -108,7 +116,8 @@ def _run_trajectory(args, quiet) -> int:
     recs = [load_record(p, o, mapping=mapping, scale=scale) for p, o in zip(args.data, options)]
     rep = diagnose_trajectory(recs[0], plant, args.model, validation=recs[1:] or None,
                               candidates=_candidates(args), engine=args.engine,
-                              progress=None if quiet else say)
+                              progress=None if quiet else say,
+                              executor=getattr(args, "executor", None))
     from .trajectory_report import write_trajectory_html
     return _emit(rep, args, write_trajectory_html)
 
@@ -129,6 +138,7 @@ def _run_plant_fmu(args, quiet) -> int:
                              args.connect, args.model, candidates=_candidates(args),
                              native=getattr(args, "law_fmu", "native") == "native",
                              start=getattr(args, "start", None),
-                             progress=None if quiet else say)
+                             progress=None if quiet else say,
+                             executor=getattr(args, "executor", None))
     from .trajectory_report import write_trajectory_html
     return _emit(rep, args, write_trajectory_html)

@@ -211,3 +211,21 @@ def test_candidate_fit_on_the_normal_equations(effect, monkeypatch):
         assert got.extras[k] == pytest.approx(val, rel=1e-4, abs=1e-9), k
     assert ticks and all(n >= 1 for n, _ in ticks)
     assert ticks[-1][1].startswith(f"fit {effect} cost=")
+
+
+@pytest.mark.slow
+def test_diagnose_peak_memory_scales_to_2M_rows_within_1_5_GB(tmp_path):
+    """``frictionlab diagnose`` on 250,000 and 500,000 rows: the peak memory's growth per
+    row, extrapolated to 2,000,000 rows, stays within 1.5 GB (2.77 GB at 2,000,000 rows
+    before the candidate fits ran on the normal equations), and the fits print progress."""
+    cli = [os.path.join(os.path.dirname(sys.executable), "frictionlab")]
+    peaks = {}
+    for n in (250_000, 500_000):
+        path = tmp_path / f"r{n}.csv"
+        _write(path, n)
+        peaks[n], err = _peak_rss_mb(cli + ["diagnose", str(path), "--model", "lugre"])
+        assert "[diagnose] fitting base" in err
+        assert "[diagnose fits]" in err
+    slope = (peaks[500_000] - peaks[250_000]) / 250_000
+    at_2M = peaks[500_000] + slope * 1_500_000
+    assert at_2M <= 1500.0, (peaks, at_2M)

@@ -264,3 +264,35 @@ def test_the_native_fmus_need_nothing_but_the_c_library(native, tmp_path):
                               text=True, check=True).stdout
         for fn in ("fmi2Instantiate", "fmi2DoStep", "fmi2SetReal", "fmi2GetReal"):
             assert fn in syms
+
+
+def test_the_balanced_model_meets_both_goals_in_process():
+    """The stored balanced LuGre (open-loop weight 2, chosen by the estimation-only rule of
+    :func:`balanced_fit`, every parameter named) on the held-out pulse record, in process:
+    closed-loop force error <= 6 % and open-loop RMSE from rest <= 4.5 mm (4.53 %, 4.48 mm;
+    the margin is 0.02 mm, through the native FMUs it is 4.51 mm); the rule picks 2 from
+    the stored sweep."""
+    try:
+        P = studies.load_record("pulses")
+    except FileNotFoundError as exc:
+        pytest.skip(str(exc))
+    sc = studies.scores(studies.stored_model("lugre (balanced)"), P)
+    assert sc["closed_loop"]["force_error"] <= 0.06
+    assert sc["open_loop_from_rest"]["rmse_mm"] <= 4.5
+    sweep = studies.WEIGHT_SWEEP
+    assert min(sweep, key=lambda w: max(sweep[w]["estimation_ratios"])) == 2.0
+
+
+@pytest.mark.slow
+def test_balanced_fit_picks_the_stored_weight():
+    """balanced_fit from the stored LuGre over weights 1.5 and 2 picks 2 on the estimation
+    record alone and lands on the stored balanced model's figures."""
+    try:
+        E = studies.load_record("estimation")
+    except FileNotFoundError as exc:
+        pytest.skip(str(exc))
+    res = studies.balanced_fit(E, studies.stored_model("lugre"), weights=(1.5, 2.0))
+    assert res["chosen"] == 2.0
+    for w, (cl, ol) in ((w, v["estimation_ratios"]) for w, v in res["weights"].items()):
+        assert cl == pytest.approx(studies.WEIGHT_SWEEP[w]["estimation_ratios"][0], abs=0.01)
+        assert ol == pytest.approx(studies.WEIGHT_SWEEP[w]["estimation_ratios"][1], abs=0.01)

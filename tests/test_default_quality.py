@@ -45,3 +45,17 @@ def test_noise_level_stop_only_at_the_noise_level():
     off = identify(c.data, far, names=c.names, bounds=c.bounds, noise_stop=False)
     assert off.fit_nrmse == pytest.approx(r.fit_nrmse, rel=1e-6)
     assert off.n_evals > 100  # screening and every start
+
+
+def test_counting_median_is_numpys():
+    """The noise level's median (a histogram finds the middle ranks' bin, only its values
+    are sorted) equals np.median exactly: odd and even sizes, ties, far outliers, heavy
+    tails, a constant array."""
+    from identification.algorithms.local import _median
+    rng = np.random.default_rng(0)
+    for n in [1, 2, 3, 4, 5, 17, 100, 101, 9999, 10000]:
+        for a in (rng.standard_normal(n), rng.integers(0, 3, n).astype(float),
+                  np.concatenate([rng.standard_normal(n), [1e12, -1e12]]),
+                  rng.standard_cauchy(n) ** 3, np.round(rng.standard_normal(n), 1),
+                  np.full(n, 2.5)):
+            assert _median(a.copy()) == np.median(a)

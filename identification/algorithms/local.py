@@ -352,10 +352,55 @@ def _noise_level(F):
     d2 = np.empty(n)
     for k in range(n):
         d2[k] = F[k + 2] - 2.0 * F[k + 1] + F[k]
-    med = np.median(d2)
+    med = _median(d2)
     for k in range(n):
         d2[k] = abs(d2[k] - med)
-    return 1.4826 * np.median(d2) / math.sqrt(6.0) / sd
+    return 1.4826 * _median(d2) / math.sqrt(6.0) / sd
+
+
+@njit(cache=True)
+def _median(a):
+    """``np.median`` of a finite 1-D array, exactly, by counting: a histogram of 2048
+    bins over [min, max] (the bin index is monotone in the value, so the bins keep the
+    order) finds the bin(s) holding the middle rank(s), and only their values are sorted.
+    Two passes of arithmetic instead of a selection's data-dependent branches (0.13
+    instead of 0.23 ms for the two medians of a 10,000-sample noise level)."""
+    n = a.size
+    lo = a.min()
+    hi = a.max()
+    if lo == hi:
+        return lo
+    nb = 2048
+    sc = nb / (hi - lo)
+    counts = np.zeros(nb, np.int64)
+    for x in a:
+        counts[min(int((x - lo) * sc), nb - 1)] += 1
+    k1 = (n - 1) // 2
+    k2 = n // 2
+    c = 0
+    b1 = -1
+    b2 = -1
+    below = 0
+    for b in range(nb):
+        if b1 < 0 and c + counts[b] > k1:
+            b1 = b
+            below = c
+        if c + counts[b] > k2:
+            b2 = b
+            break
+        c += counts[b]
+    m = 0
+    for b in range(b1, b2 + 1):
+        m += counts[b]
+    buf = np.empty(m)
+    j = 0
+    for x in a:
+        b = min(int((x - lo) * sc), nb - 1)
+        if b >= b1 and b <= b2:
+            buf[j] = x
+            j += 1
+    buf.sort()
+    return 0.5 * (buf[k1 - below] + buf[k2 - below])
 
 
 def at_noise_floor(problem, cost):

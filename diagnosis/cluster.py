@@ -1,4 +1,5 @@
-"""The force-level diagnosis' candidate fits on a ``dask.distributed`` cluster.
+"""The diagnosis' candidate fits on a ``dask.distributed`` cluster (force level and
+trajectory level).
 
 Every candidate effect is re-identified jointly with the base law on the fit record
 (:func:`diagnosis.composite.fit_composite`), independently of the others: they are mapped
@@ -7,12 +8,19 @@ scattered to every worker once. Each task runs exactly what :func:`diagnosis.dia
 in-process, so the report is the same; scoring on the held-out records, the greedy stacking
 and the verdict stay in the client.
 
+At the trajectory level (:func:`diagnosis.trajectory.diagnose_trajectory`, the user's plant
+FMU included) each candidate's fit is a series of plant simulations; the procedure's own
+fit function (a closure over the plant, its engine and the records) is shipped by value
+(:class:`identification.cluster.ShippedCall`: ``cloudpickle``, the plant FMU, the law FMUs and
+the connection's further FMUs as bytes, written once per machine), once per worker, and
+called once per candidate.
+
 >>> from identification.cluster import connect                      # doctest: +SKIP
 >>> rep = diagnose("fit.csv", "lugre", executor=connect("tcp://10.0.0.5:8786"))
 """
 from __future__ import annotations
 
-__all__ = ["candidate_fits", "applicable", "as_client"]
+__all__ = ["candidate_fits", "applicable", "as_client", "trajectory_fits"]
 
 
 def as_client(executor):
@@ -127,3 +135,39 @@ def candidate_fits(executor, names, law, base_names, fit, ctx, val_sets=()) -> d
     finally:
         for f in futures + [fit_f, ctx_f, law_f]:
             f.release()
+
+
+def trajectory_fits(executor, names, run_one, tm, engine) -> dict:
+    """The trajectory level's candidate fits on the cluster behind ``executor``.
+
+    Parameters
+    ----------
+    executor : None, dask.distributed.Client or DaskExecutor
+        ``None``: nothing runs here (``{}``).
+    names : list of str
+        Candidates to fit (those that apply).
+    run_one : callable
+        ``run_one(name) -> result``: the procedure's fit of one candidate (a closure).
+    tm : diagnosis.trajectory.TrajectoryModel
+        Its plant runner (the plant whose FMU files travel; its progress bar stays here).
+    engine : object
+        The simulation engine (its open FMU instances are closed before shipping and
+        reopened here when next used).
+
+    Returns
+    -------
+    dict
+        ``name -> run_one(name)`` as the workers computed it.
+    """
+    client = as_client(executor)
+    if client is None or not names:
+        return {}
+    from identification.cluster import ShippedCall, run_shipped
+    if hasattr(engine, "close"):
+        engine.close()  # FMU instances belong to this process; the workers open their own
+    progress, tm.progress = tm.progress, None  # a terminal bar does not travel
+    try:
+        call = ShippedCall(run_one, [tm.plant, getattr(engine, "plant", None)])
+    finally:
+        tm.progress = progress
+    return dict(zip(names, run_shipped(client, call, list(names))))

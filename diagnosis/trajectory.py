@@ -562,7 +562,7 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                         engine: str = "plant", fit_names=None, fit_fraction: float = 0.7,
                         max_sims: int = 24, max_sims_base: int = 60, spread: float = 3.0,
                         greedy: bool = True, fmu_dir=None, fmu_step: float | None = None,
-                        fit_plant=None, progress=None) -> DiagnosisReport:
+                        fit_plant=None, progress=None, executor=None) -> DiagnosisReport:
     """Locate and name the sim-to-real gap of a plant model from measured trajectories.
 
     Parameters
@@ -611,6 +611,11 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     progress : callable, bool or None
         ``callable(message)`` for stage lines; ``True``: lines on stderr. Simulation counts
         go to a :class:`frictionlab.progress.Progress` when progress is on.
+    executor : None or dask.distributed.Client
+        Where the candidates' fits run: here (default), or one task per candidate on a dask
+        cluster, the plant, the records and the FMU files shipped to each worker once
+        (:func:`diagnosis.cluster.trajectory_fits`); the report is the same but for its
+        timings. The base fit, the held-out scores and the greedy stacking stay here.
 
     Returns
     -------
@@ -918,6 +923,17 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     base_start = {c.name: v for c, v in zip(base_setup.coords,
                                             [c.to_phys(x) for c, x in zip(base_setup.coords,
                                                                            u_base)])}
+    def fit_one(name):  # one candidate's fit and the simulations it ran
+        sims0, secs0 = tm.sims, tm.sim_seconds
+        try:
+            out = fit_effects([name], base_law, base_start, max_sims)
+        except _NotApplicable as exc:
+            return None, str(exc), 0, 0.0
+        return out, "", tm.sims - sims0, tm.sim_seconds - secs0
+
+    from .cluster import trajectory_fits  # on a cluster: every applicable one at once
+    remote = trajectory_fits(executor, [n for n in names if applicable(n)[0]], fit_one, tm,
+                             eng)
     for k, name in enumerate(names, 1):
         ok, why = applicable(name)
         if not ok:
@@ -925,11 +941,13 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
             continue
         say(f"[diagnose-trajectory] candidate {k}/{len(names)}: {name}")
         sims0, secs0 = tm.sims, tm.sim_seconds
-        try:
-            s, u, cost = fit_effects([name], base_law, base_start, max_sims)
-        except _NotApplicable as exc:
-            skipped[name] = str(exc)
+        out, why, n_sims, n_secs = remote[name] if name in remote else fit_one(name)
+        if out is None:
+            skipped[name] = why
             continue
+        s, u, cost = out
+        if name in remote:  # the worker's simulations count as this run's
+            tm.sims, tm.sim_seconds = sims0 + n_sims, secs0 + n_secs
         after, _ = score(s, u)
         cost_sims = {"simulations": tm.sims - sims0, "seconds": tm.sim_seconds - secs0}
         fitted[name] = (s, u)

@@ -160,11 +160,10 @@ def _dispatch(args) -> int:
             return run_benchmark_cli(args)
         if not args.benchmark and (not args.data or not (args.model or args.plant_fmu)):
             raise ValueError("diagnose needs DATA and --model (or --benchmark)")
-        if getattr(args, "scheduler", None) and (args.benchmark or args.plant
-                                                 or args.plant_fmu):
-            raise ValueError("--scheduler applies to the force-level diagnosis (its "
-                             "candidate fits) and to identify (with --plant-fmu too); the "
-                             "trajectory level and the benchmark run in this process")
+        if getattr(args, "scheduler", None) and args.benchmark:
+            raise ValueError("--scheduler applies to identify and to the diagnosis of your "
+                             "data (its candidate fits); the built-in benchmark runs in "
+                             "this process")
         from diagnosis.cli import run_diagnose_cli
         with _scheduler(args):
             return run_diagnose_cli(args) or 0

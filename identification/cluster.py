@@ -29,7 +29,7 @@ import tempfile
 import threading
 
 __all__ = ["connect", "SchedulerError", "FileBundle", "ShippedObjective", "ship",
-           "worker_stats", "CONNECT_TIMEOUT"]
+           "ShippedCall", "run_shipped", "worker_stats", "CONNECT_TIMEOUT"]
 
 #: seconds to wait for the scheduler to answer (and again for its first worker) [s]
 CONNECT_TIMEOUT = 5.0
@@ -189,11 +189,16 @@ class FileBundle:
 
 
 def _law_fmus(obj) -> list:
-    """Law FMU names a co-simulation objective opens from its ``fmu_dir``."""
-    names = [obj.model.name]
-    if type(obj).__name__ == "ClosedLoopCoSimObjective":
-        names.append("mass")
-    return names
+    """Law FMU names an object opens from its ``fmu_dir``: a co-simulation objective its
+    law's (and the closed loop's ``mass``), the user's plant as the trajectory diagnosis'
+    plant (:class:`diagnosis.plant_fmu.FMUPlantModel`) its base law's, ``lugre`` and the
+    ``friction_effects`` block."""
+    if getattr(obj, "model", None) is not None:
+        names = [obj.model.name]
+        if type(obj).__name__ == "ClosedLoopCoSimObjective":
+            names.append("mass")
+        return names
+    return sorted({obj.friction.name, "lugre", "friction_effects"})
 
 
 def _files_of(obj) -> dict:
@@ -206,10 +211,13 @@ def _files_of(obj) -> dict:
     conn = getattr(obj, "conn", None)
     for inst, path in (getattr(conn, "fmus", None) or {}).items():
         files[f"conn:{inst}"] = path
-    if getattr(obj, "fmu_dir", None) and getattr(obj, "model", None) is not None:
+    if getattr(obj, "fmu_dir", None) and (getattr(obj, "model", None) is not None
+                                          or getattr(obj, "friction", None) is not None):
         from fmus.master import fmu_file
         for law in _law_fmus(obj):
-            files[f"law:{law}"] = fmu_file(obj.fmu_dir, law, getattr(obj, "native", False))
+            path = fmu_file(obj.fmu_dir, law, getattr(obj, "native", False))
+            if os.path.isfile(path):
+                files[f"law:{law}"] = path
     return files
 
 
@@ -318,6 +326,116 @@ class ShippedObjective:
         _STATS["chunks"] += 1
         _STATS["predicted"] += int(len(X))
         return F
+
+
+class ShippedCall:
+    """A function (a closure, with everything it captures) shipped by value, with the FMU
+    files of the objects it opens them through, for workers without the client's files.
+
+    Parameters
+    ----------
+    fn : callable
+        Pickled with ``cloudpickle`` together with ``holders`` (shared references stay
+        shared: a holder captured by ``fn`` is the one repointed on the worker).
+    holders : sequence
+        Objects with FMU paths (``plant_fmu``, ``conn.fmus``, ``fmu_dir``; see
+        :func:`ship`) that ``fn`` reaches; their files travel as one :class:`FileBundle`.
+
+    Notes
+    -----
+    On a worker each thread calls its own copy (unpickled from the same bytes), so FMU
+    instances opened by ``fn`` are never shared between threads.
+    """
+
+    def __init__(self, fn, holders=()):
+        import cloudpickle
+        holders = list({id(h): h for h in holders if h is not None}.values())
+        files = {}
+        for i, h in enumerate(holders):
+            files.update({f"{i}:{k}": p for k, p in _files_of(h).items()})
+        self.bundle = FileBundle(files) if files else None
+        self.n_holders = len(holders)
+        self.payload = cloudpickle.dumps((fn, holders))
+        self._copies = {}
+
+    def __getstate__(self):
+        return {"payload": self.payload, "bundle": self.bundle, "n_holders": self.n_holders}
+
+    def __setstate__(self, state):
+        self.__dict__.update(state)
+        self._copies = {}
+        self._remote = True
+
+    def _mine(self):
+        tid = threading.get_ident()
+        fn = self._copies.get(tid)
+        if fn is None:
+            import cloudpickle
+            fn, holders = cloudpickle.loads(self.payload)
+            if self.bundle is not None and getattr(self, "_remote", False):
+                paths = self.bundle.paths()
+                for i, h in enumerate(holders):
+                    mine = {k.split(":", 1)[1]: p for k, p in paths.items()
+                            if k.split(":", 1)[0] == str(i)}
+                    _repoint(h, mine)
+            self._copies[tid] = fn
+        return fn
+
+    def __call__(self, *args, **kwargs):
+        """``fn(*args, **kwargs)`` on this thread's copy."""
+        _STATS["candidates"] += 1
+        return self._mine()(*args, **kwargs)
+
+
+def run_shipped(client, call: ShippedCall, args: list) -> list:
+    """``call(a)`` for every ``a`` of ``args`` on the workers of ``client``: ``call`` (its
+    bytes and files) sent to each worker once, the tasks placed round the workers' threads;
+    results in the order of ``args``.
+
+    Parameters
+    ----------
+    client : dask.distributed.Client
+    call : ShippedCall
+    args : list
+        One argument per task.
+
+    Returns
+    -------
+    list
+
+    Raises
+    ------
+    SchedulerError
+        When the scheduler or every worker is lost.
+    """
+    from concurrent.futures import CancelledError
+    address = getattr(client, "scheduler_address", None) or "the scheduler"
+    placed = {}
+    try:
+        nthreads = client.nthreads()
+        for w in sorted(nthreads):
+            placed[w] = client.scatter(call, workers=[w], hash=False)
+        slots = [w for w in sorted(placed) for _ in range(max(1, nthreads[w]))]
+        if not slots:
+            raise OSError("no worker is connected")
+        futures = [client.submit(_apply, placed[slots[i % len(slots)]], a, pure=False,
+                                 workers=[slots[i % len(slots)]])
+                   for i, a in enumerate(args)]
+        return client.gather(futures)
+    except (OSError, CancelledError, TimeoutError) as exc:
+        text = str(exc).strip().splitlines()
+        raise SchedulerError(f"lost the dask cluster at {address} during the run: "
+                             f"{text[0] if text else type(exc).__name__}") from None
+    finally:
+        for f in placed.values():
+            try:
+                f.release()
+            except Exception:  # noqa: BLE001
+                pass
+
+
+def _apply(call, arg):
+    return call(arg)
 
 
 def ship(objective) -> ShippedObjective:

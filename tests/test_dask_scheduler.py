@@ -116,7 +116,8 @@ def test_cli_identify_on_the_cluster_equals_inline(cluster, tmp_path, capsys):
     address, _ = cluster
     data = str(_csv(tmp_path / "run.csv"))
     argv = ["identify", data, "--model", "lugre", "--algorithm", "differential_evolution",
-            "--max-evals", "160", "--seed", "3", "--quiet"]
+            "--max-evals", "120", "--seed", "3", "--quiet",
+            "--fix", "sigma0=1e5,sigma1=300,alpha=2,b=0"]
     assert main(argv + ["--json", str(tmp_path / "inline.json")]) == 0
     before = _stats(address)
     assert main(argv + ["--json", str(tmp_path / "dask.json"), "--scheduler", address]) == 0
@@ -158,10 +159,9 @@ def test_unreachable_scheduler_is_one_line_exit_2_and_nothing_lost(tmp_path, cap
     assert code == 2 and len(err.splitlines()) == 1 and address in err, err
     assert main(["identify", data, "--model", "lugre", "--scheduler", "nonsense://x"]) == 2
     assert "nonsense://x" in capsys.readouterr().err
-    # the trajectory level runs in this process: refused before connecting, not ignored
-    assert main(["diagnose", data, "--model", "lugre", "--plant", "xml350",
-                 "--scheduler", address]) == 2
-    assert "--scheduler applies to the force-level" in capsys.readouterr().err
+    # the built-in benchmark runs in this process: refused before connecting, not ignored
+    assert main(["diagnose", "--benchmark", "--scheduler", address]) == 2
+    assert "the built-in benchmark runs in this process" in capsys.readouterr().err
 
 
 def test_a_scheduler_without_workers_is_refused():
@@ -300,6 +300,70 @@ def test_cli_diagnose_on_the_cluster_equals_inline(cluster, tmp_path, capsys):
         rep.pop("timing", None)
     assert dask == inline
     assert sum(fits.values()) == 4 and all(n > 0 for n in fits.values()), fits
+
+
+def _plain(rep) -> dict:
+    """A report as JSON without its timings (wall-clock seconds differ run to run)."""
+    d = json.loads(rep.to_json())
+    d.pop("timing", None)
+    for e in (d.get("effect_details") or {}).values():
+        e.pop("seconds", None)
+    for e in d.get("effects") or []:
+        (e.get("fitted") or {}).pop("seconds", None)
+    return d
+
+
+@pytest.mark.slow
+def test_plant_fmu_diagnosis_on_the_cluster_equals_inline(cluster, tmp_path):
+    """The trajectory level through the user's plant FMU: each candidate's fit (a series of
+    co-simulations of the C cart) runs on a worker, the closure with the plant, the records
+    and the FMU files shipped once per worker; the report equals the in-process one."""
+    pytest.importorskip("fmpy")
+    sys.path.insert(0, str(pathlib.Path(__file__).parent))
+    from user_plants import build_c_cart
+    from friction import make_model
+    from friction.reference import simulate_mass
+    from fmus.connect import MeasuredRecord, parse_connection
+    from fmus.testing import built_native_fmus
+    from diagnosis.plant_fmu import diagnose_plant_fmu
+    address, tmpdirs = cluster
+    native = built_native_fmus(("friction_effects", "lugre"))
+    cart = build_c_cart(tmp_path / "cart")
+    truth = make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=0.4, Fc=1.0, Fs=1.5,
+                       vs=1e-3).with_values(Fc_neg=0.7)  # a direction asymmetry
+
+    def run(f1, name):
+        t = np.arange(0.0, 0.5 + 1e-9, 1e-3)
+
+        def force(t):
+            return 2.2 * np.sin(2 * np.pi * f1 * t) + 0.6 * np.sin(2 * np.pi * 4.3 * t)
+
+        x = simulate_mass(truth, 1.5, t, force, rtol=1e-6)["x"]
+        return MeasuredRecord(t, {"u": force(t) / 2.0, "x": x}, name)
+
+    fit, held = run(1.4, "fit"), run(1.9, "held")
+    conn = parse_connection({"step": 2e-4, "friction": {"input": "F_c", "sign": -1,
+                                                        "v": "vel", "x": "pos"},
+                             "inputs": {"u": "u"}, "compare": {"pos": {"column": "x",
+                                                                       "unit": "m"}},
+                             "parameters": {"k_u": 2.0, "m": 1.5}}, "rig.toml")
+    kw = dict(candidates=["asymmetry", "inertia", "delay"], fmu_dir=native, max_sims=4,
+              max_sims_base=6, fit_names=["Fc"], greedy=False)
+    inline = diagnose_plant_fmu(fit, [held], cart, conn, "lugre", **kw)
+    client = connect(address, workers=2)
+    try:
+        before = _stats(address)
+        rep = diagnose_plant_fmu(fit, [held], cart, conn, "lugre", executor=client, **kw)
+        after = _stats(address)
+    finally:
+        client.close()
+    assert _plain(rep) == _plain(inline)
+    assert len(rep["effects"]) == 3
+    fits = _delta(after, before, "candidates")
+    assert sum(fits.values()) == 3 and all(n > 0 for n in fits.values()), fits
+    for w, s in after.items():  # the FMUs written into each worker's own folder
+        assert any(f.startswith(tmpdirs[w]) and "cart.fmu" in os.listdir(f)
+                   for f in s["folders"]), s["folders"]
 
 
 def test_a_worker_lost_between_populations_costs_time_not_results(cluster, tmp_path):

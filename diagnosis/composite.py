@@ -73,10 +73,21 @@ class Composite:
         return _apply_effects(F, self.effects, self.extras, data, self.ctx, self.law)
 
     def describe(self) -> dict:
-        return {"law": self.law.name,
-                "params": {n: float(getattr(self.law.params, n)) for n in self.base_names},
-                "effects": [e.name for e in self.effects],
-                "extras": {k: float(v) for k, v in self.extras.items()}}
+        """Law name, fitted law parameters ``params``, effect names, fitted ``extras`` and,
+        for effects that change the law and declare their own parameters from it
+        (``own_parameters(law) -> dict``, e.g. backlash's ``backlash_gap`` [m]), those as
+        ``parameters``."""
+        out = {"law": self.law.name,
+               "params": {n: float(getattr(self.law.params, n)) for n in self.base_names},
+               "effects": [e.name for e in self.effects],
+               "extras": {k: float(v) for k, v in self.extras.items()}}
+        own = {}
+        for e in self.effects:
+            if getattr(e, "own_parameters", None) is not None:
+                own.update(e.own_parameters(self.law))
+        if own:
+            out["parameters"] = own
+        return out
 
 
 def _law_inputs(law, data) -> dict:

@@ -74,6 +74,9 @@ __all__ = ["Backlash", "BACKLASH", "gap_start", "TRUTHS", "backlash_truth", "GAP
 GAP_GRID = 8
 #: the largest lost motion estimated, as a share of the fit record's stroke [-]
 GAP_STROKE_MAX = 0.3
+#: trial points of the base's re-fit on the contact's motion in :func:`gap_start` (a start,
+#: not converged: the joint fit follows)
+START_NFEV = 15
 #: share of the force swing at a reversal that marks the end of the lost motion in
 #: :func:`reversal_travels` [-] (beyond the half way a ``free`` contact drops to at once)
 REVERSAL_SHARE = 0.75
@@ -116,7 +119,7 @@ class Backlash(Candidate):
     def own_law_names(self, law):
         return ("delta",)
 
-    def parameters(self, law) -> dict:
+    def own_parameters(self, law) -> dict:
         """The candidate's own parameters of a fitted ``law``: ``backlash_gap`` [m] (the
         lost motion at a reversal, 2 delta)."""
         return {"backlash_gap": 2.0 * float(law.params.delta)}
@@ -199,8 +202,7 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
     So: the lost motion is first estimated without a model (median of
     :func:`reversal_travels`), the base law is re-fitted on the contact's motion behind
     that play (:func:`contact_record`, :func:`diagnosis.composite.fit_composite` from the
-    base's values: one least squares, a fifth of what :func:`identification.identify`'s
-    starts cost), and the gap and
+    base's values: one least squares of :data:`START_NFEV` trial points), and the gap and
     the option (``hold``: the force the contact holds while the drive crosses the play,
     read at a preloaded contact; ``free``: nothing, the contact a free mass whose bristle
     unloads) are then chosen on ``fit`` among :data:`GAP_GRID` gaps from a fifth to 1.5 x
@@ -217,7 +219,7 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
     lugre_names = [n for n in names if n != "delta"]
     lugre = make_model("lugre", **{n: getattr(law.params, n) for n in _LUGRE_VALUES})
     law_u = (fit_composite(lugre, lugre_names, [], contact_record(fit, 0.5 * gap0), ctx,
-                           extras0={})[0].law if lugre_names else lugre)
+                           extras0={}, max_nfev=START_NFEV)[0].law if lugre_names else lugre)
     undone = {n: float(getattr(law_u.params, n)) for n in lugre_names}
     as_fitted = {n: float(getattr(law.params, n)) for n in lugre_names}
     starts = [undone, as_fitted]

@@ -118,7 +118,7 @@ class GMSCandidate(Candidate):
     def own_law_names(self, law):
         return ("spread", "C")
 
-    def parameters(self, law) -> dict:
+    def own_parameters(self, law) -> dict:
         """The candidate's own parameters of a fitted GMS ``law``: ``spread`` [-], ``C``
         [N/s], the block stiffnesses ``k1..k4`` [N/m] and the presliding distance
         ``presliding`` [m] (from rest to every block slipping, at Fs)."""

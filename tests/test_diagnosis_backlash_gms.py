@@ -43,7 +43,7 @@ def test_backlash_candidate_is_the_base_behind_a_play_and_reports_the_lost_motio
     assert law.name == "backlash_lugre" and law.params.gap == "hold"
     for n in ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "alpha", "b"):
         assert getattr(law.params, n) == getattr(base.params, n)
-    assert eb.BACKLASH.parameters(law) == {"backlash_gap": pytest.approx(2e-3)}
+    assert eb.BACKLASH.own_parameters(law) == {"backlash_gap": pytest.approx(2e-3)}
     (var, names), = eb.BACKLASH.modify_law(base, ["sigma0", "Fc"], _ctx())
     assert names == ["sigma0", "Fc", "delta"] and var.name == "backlash_lugre"
     # a gap of 0 is the base law bit for bit (the play operator cuts nothing)
@@ -77,7 +77,7 @@ def test_gms_candidate_shares_the_base_curve_and_stiffness():
     names = eg.GMS_CANDIDATE.names_for(["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs",
                                         "alpha", "b"])
     assert names == ["sigma0", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "spread", "C"]
-    par = eg.GMS_CANDIDATE.parameters(law)
+    par = eg.GMS_CANDIDATE.own_parameters(law)
     assert par["spread"] == 20.0 and par["C"] == 3e3
     assert par["presliding"] == pytest.approx(BASE["Fs"] / 4 / k[-1])
     # the steady state is the base's Stribeck curve
@@ -196,7 +196,7 @@ def test_joint_fit_starts_the_gap_on_the_data_and_finds_it():
     base, names, base_nrmse = fit_base(data, "lugre", ctx)
     (law, nm), = eb.BACKLASH.modify_law(base.law, names, ctx)
     comp, nr = fit_composite(law, nm, [eb.BACKLASH], data, ctx)
-    assert eb.BACKLASH.parameters(comp.law)["backlash_gap"] == pytest.approx(2e-3, rel=0.05)
+    assert eb.BACKLASH.own_parameters(comp.law)["backlash_gap"] == pytest.approx(2e-3, rel=0.05)
     assert nr < 0.6 * base_nrmse
     warm, _ = fit_composite(law, nm, [eb.BACKLASH], data, ctx, extras0={}, max_nfev=1)
     assert warm.law.params.delta == pytest.approx(law.params.delta, rel=1e-3)

@@ -20,7 +20,9 @@ Both clusters are started first; then the inline run and the cluster runs altern
 ``--repeats`` times and each keeps its best (the machine is shared).
 
 Run: ``nice python benchmarks/bench_dask.py [--evals N] [--seconds T] [--step H]
-[--repeats R]``
+[--repeats R] [--scheduler ADDRESS]`` (``--scheduler``: time an existing cluster, e.g. other
+machines with ``frictionlab`` installed, against the inline run instead of the local 1- and
+2-worker clusters).
 
 Measured figures (2 cores shared with five other engineers' jobs)
 -----------------------------------------------------------------
@@ -205,6 +207,9 @@ def main(argv=None) -> int:
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--workers", default="1,2", help="cluster sizes to time (comma-separated)")
     ap.add_argument("--repeats", type=int, default=2, help="alternating rounds (best kept)")
+    ap.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                    help="time an existing cluster (e.g. tcp://10.0.0.5:8786) against the "
+                    "inline run instead of starting local ones")
     args = ap.parse_args(argv)
     from identification.cluster import connect
 
@@ -216,7 +221,16 @@ def main(argv=None) -> int:
     with tempfile.TemporaryDirectory(prefix="bench_dask_") as root, \
             contextlib.ExitStack() as stack:
         clients = {}
-        for n in sizes:  # every cluster up first, then the runs alternate (shared machine)
+        if args.scheduler:  # the user's cluster: as many workers as it has
+            client = connect(args.scheduler)
+            stack.callback(client.close)
+            n = len(client.nthreads())
+            sizes, times = [n], {"inline": [], n: []}
+            clients[n] = client
+            warm = max(client.run(_warm).values())
+            print(f"cluster of {n}: {args.scheduler}, workers' first import {warm:.1f} s")
+        for n in sizes if not args.scheduler else ():
+            # every cluster up first, then the runs alternate (shared machine)
             cl = stack.enter_context(Cluster(n, pathlib.Path(root) / f"c{n}"))
             clients[n] = connect(cl.address, timeout=60, workers=n)
             stack.callback(clients[n].close)

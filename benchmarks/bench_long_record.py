@@ -24,13 +24,19 @@ identify, before (735f957)  6.43 GB      4:19 quiet    silent load; fit 239 s, i
 identify, now               1.22 GB      12 s quiet    load 2.6 s with progress; fit
                                                        2.5 s (11 evaluations, the start
                                                        from the guess reaches the noise)
-identify, now, a law that   1.45 GB      49 s quiet    fit 23 s (203 evaluations); the
-does not fit (Lorentzian                               peak is the identifiability
-data, gaussian law)                                    report's profile refits
+identify, a law that does   1.45 GB      49 s quiet    fit 23 s (203 evaluations); the
+not fit (Lorentzian data,                              peak was the identifiability
+gaussian law), 2447f16                                 report's profile refits
+identify, that record, now  1.15 GB      193 s at      profile refits on the normal
+(--misfit)                               load 9-11     equations (analytic LuGre
+                                                       sensitivities: no N x D Jacobian)
 diagnose, before            4.77 GB      10:02 loaded
-diagnose, now               2.77 GB      1:55 quiet    the peak: diagnosis.composite's
+diagnose, 2447f16           2.77 GB      1:55 quiet    the peak: diagnosis.composite's
                                                        candidate fits (scipy, 2-point
                                                        Jacobian on 1.4M rows)
+diagnose, now (--misfit     0.55 GB      21 min at     candidate fits on the normal
+record)                                  load 9, nice  equations of a float32 2-point
+                                                       Jacobian; progress lines
 ==========================  ===========  ============  ===============================
 
 Usage::

@@ -200,3 +200,18 @@ def test_joint_fit_starts_the_gap_on_the_data_and_finds_it():
     assert nr < 0.6 * base_nrmse
     warm, _ = fit_composite(law, nm, [eb.BACKLASH], data, ctx, extras0={}, max_nfev=1)
     assert warm.law.params.delta == pytest.approx(law.params.delta, rel=1e-3)
+
+
+def test_gms_practical_size_is_a_presliding_distance_of_a_sample_and_a_half():
+    ctx = _ctx()
+    step = ctx.sv * ctx.dt
+    law = eg.GMS_CANDIDATE.law_for(make_model("lugre", **BASE), spread=10.0)
+    pre = law.presliding_distance()
+    p = {"sigma0": BASE["sigma0"], "spread": 10.0, "Fs": BASE["Fs"]}
+    assert pre > 5 * step and eg.GMS_CANDIDATE.practical(p, ctx) == ""
+    # spread 10: the softest block carries Fs / 4 at 4.45 Fs / sigma0
+    stiff = dict(p, sigma0=BASE["Fs"] / (0.2 * step))   # 0.89 samples
+    assert "samples of travel" in eg.GMS_CANDIDATE.practical(stiff, ctx)
+    soft = dict(p, sigma0=BASE["Fs"] / (0.5 * step))    # 2.2 samples
+    assert eg.GMS_CANDIDATE.practical(soft, ctx) == ""
+    assert eg.GMS_CANDIDATE.practical({"spread": 3.0}, ctx) == ""

@@ -349,7 +349,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                         "imprint": float(np.sqrt(np.mean((held_residuals["base"]
                                                           - held_residuals[name]) ** 2))
                                          / (np.std(F_all) or 1.0)),
-                        "size_reason": cand.practical(comp.extras, ctx),
+                        # the law's fitted values too: a law-changing candidate's size
+                        # is a law parameter (backlash's gap)
+                        "size_reason": cand.practical({**comp.describe()["params"],
+                                                       **comp.extras}, ctx),
                         "n_params": len(cand.force_extras(ctx)) + max(len(comp.base_names)
                                                                  - len(base_names), 0),
                         "fit_before": base_fit, "fit_after": cost,

@@ -4,7 +4,8 @@ record (issue 16 item 5: 2,000,000 rows in <= 1.5 GB).
 The record: a classic LuGre (sigma0 4e5 N/m, sigma1 120, sigma2 2.5, Fc 2 N, Fs 3.2 N,
 vs 4 mm/s, alpha 1.5, b 0.05 N) along a three-tone velocity (0.5, 1.3, 3.1 Hz; up to
 32 mm/s) at 1 kHz, white noise of 0.02 N, written as the contract CSV (t, x, v, F). Each
-command runs in its own process; its peak resident memory is read with
+command runs in its own process; its peak resident memory and CPU time (user + system, a
+figure less bent by other jobs than the wall time) are read with
 ``getrusage(RUSAGE_CHILDREN)`` in a wrapper process whose only child it is, and the
 command's progress lines (stderr) are kept: the first line's time says how long the
 command was silent.
@@ -78,8 +79,8 @@ _WRAPPER = ("import resource, subprocess, sys, time\n"
             "wall = time.perf_counter() - t0\n"
             "sys.stderr.write(r.stderr)\n"
             "sys.stdout.write(r.stdout)\n"
-            "print('@@', r.returncode, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss,"
-            " wall)\n")
+            "ru = resource.getrusage(resource.RUSAGE_CHILDREN)\n"
+            "print('@@', r.returncode, ru.ru_maxrss, wall, ru.ru_utime + ru.ru_stime)\n")
 
 
 def command(tree: str | None) -> list:
@@ -98,6 +99,7 @@ def measure(args: list, env=None) -> dict:
     tail = [ln for ln in out.stdout.splitlines() if ln.startswith("@@ ")][-1].split()
     first = next((ln for ln in out.stderr.splitlines() if ln.startswith("[")), "")
     return dict(rc=int(tail[1]), peak_mb=int(tail[2]) / 1024.0, wall=float(tail[3]),
+                cpu=float(tail[4]),
                 stdout=out.stdout, stderr=out.stderr, first_progress=first)
 
 
@@ -130,15 +132,16 @@ def main(argv=None):
         r = measure(command(args.tree) + cli, env=env)
         rows.append((name, r))
         fit = next((ln for ln in r["stdout"].splitlines() if ln.startswith("fit NRMSE")), "")
-        print(f"{name}: rc {r['rc']}, peak {r['peak_mb']:.0f} MB, wall {r['wall']:.1f} s; "
+        print(f"{name}: rc {r['rc']}, peak {r['peak_mb']:.0f} MB, wall {r['wall']:.1f} s, "
+              f"CPU {r['cpu']:.1f} s; "
               f"first progress line: {r['first_progress'] or '(none)'}; {fit}", flush=True)
         if r["rc"] != 0:
             print(r["stderr"][-2000:])
-    print(f"\n| command | rows | peak memory [MB] | wall [s] | goal <= 1536 MB |")
-    print("|---|---|---|---|---|")
+    print(f"\n| command | rows | peak memory [MB] | wall [s] | CPU [s] | goal <= 1536 MB |")
+    print("|---|---|---|---|---|---|")
     for name, r in rows:
         ok = r["peak_mb"] <= 1536
-        print(f"| {name} | {args.rows} | {r['peak_mb']:.0f} | {r['wall']:.1f} | "
+        print(f"| {name} | {args.rows} | {r['peak_mb']:.0f} | {r['wall']:.1f} | {r['cpu']:.1f} | "
               f"{'-' if ok is None else ('x' if ok else ' ')} |")
     if not args.keep:
         import shutil

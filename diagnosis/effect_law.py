@@ -8,14 +8,14 @@ import numpy as np
 from numba import njit
 
 from friction import FrictionModel
-from friction.extensions import EXTENSIONS, POSITION_NAMES, extension_force, pack_extensions
+from friction.extensions import extension_force, pack_extensions
 
-from .effects import Context
+from .effects import FORCE_EFFECTS, INPUTS, LEVELS, Context
 
 __all__ = ["EffectLaw", "FORCE_EFFECTS"]
 
-#: candidates evaluated inside the friction law by :class:`EffectLaw`
-FORCE_EFFECTS = EXTENSIONS
+# FORCE_EFFECTS (re-exported): the candidates evaluated inside the friction law by
+# :class:`EffectLaw`, the records of :mod:`diagnosis.effects` with ``plant_entry="force"``
 
 
 # -- friction law + force effects -----------------------------------------------------------
@@ -50,10 +50,8 @@ def _effect_kernel(base_kernel, nb: int, ns: int):
     return kern
 
 
-#: parameters whose zero makes a force effect vanish
-_LEVELS = {"acceleration": ("f_a",),
-           "position": POSITION_NAMES,
-           "drift": ("k_drift",), "load": ("k_L",)}
+#: parameters whose zero makes a force effect vanish (the records' ``levels``)
+_LEVELS = LEVELS
 
 
 def _pack_effects(effects: dict, ctx: Context) -> np.ndarray:
@@ -98,12 +96,8 @@ class EffectLaw(FrictionModel):
         self.params = base.params
         self.state_names = tuple(base.state_names) + ("t_abs",)
         needs = set(base.extra_inputs)
-        if "acceleration" in self.effects:
-            needs.add("a")
-        if "position" in self.effects:
-            needs.add("x")
-        if "load" in self.effects:
-            needs.add("load")
+        for k in self.effects:
+            needs.update(INPUTS[k])
         self.extra_inputs = tuple(n for n in ("a", "load", "x") if n in needs)
         self._e = _pack_effects(self.effects, ctx)
         self.theta = np.concatenate([np.asarray(base.theta, float), self._e])

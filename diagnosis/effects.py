@@ -1,553 +1,270 @@
-"""Library of named candidate effects: real extensions of a base friction law.
+"""The library of named effects: **one record per effect** (:class:`Effect`, :data:`EFFECTS`).
 
-Every candidate changes the model in one of four ways, applied in this order:
+A record gathers everything the library knows about an effect, so adding one touches one
+place. Every list the rest of the package uses is derived from :data:`EFFECTS`:
 
-1. ``modify_law``   - a different law or more free parameters of the law itself
-                      (``stribeck_shape``: free exponent / Lorentzian; ``presliding``: bristle
-                      dynamics added to a static map);
-2. ``multiplicative`` - the law's force scaled (``load``: levels grow with the normal load;
-                      ``drift``: levels change over time);
-3. ``additive``     - a force term added (``acceleration``, ``asymmetry``, ``position``,
-                      ``inertia``);
-4. ``shift``        - the whole prediction shifted in time (``delay``).
+==================================  ============================================================
+derived name                        what it is
+==================================  ============================================================
+:data:`EFFECT_NAMES`                the candidates, in the order they are tried
+:data:`CANDIDATES`                  name -> candidate builder (:class:`.candidates.Candidate`)
+:data:`FORCE_EFFECTS`               effects evaluated on the law's output force
+                                    (:class:`.effect_law.EffectLaw`, ``friction_effects`` block)
+:data:`FMU_EFFECTS`                 effects the trajectory level's FMU engine can express
+:data:`LEVELS`, :data:`INPUTS`      force effects -> parameters whose zero switches them off,
+                                    signals their formula reads
+:data:`EXPECTED_FAMILIES`           region families the gap of each effect concentrates in
+                                    (benchmark localisation)
+:data:`EXPECTED_EVIDENCE`           evidence families of each effect (benchmark)
+``diagnosis.benchmark.CASES``       effects with truth forms, plus ``clean`` and ``outside``
+==================================  ============================================================
 
-so candidates compose: the greedy sequence of :mod:`diagnosis.core` stacks them.
-Each candidate declares its own parameters with a physical box computed from the fit data
-(``context``), so no candidate has a free scale an optimiser could abuse: ``extras`` are those
-of the effect's formula at every level, ``force_extras`` add what measured friction data need
-(the filter of a differentiated acceleration channel, the load slope of the viscous part).
+How to add an effect
+--------------------
+1. Write its candidate: a subclass of :class:`diagnosis.candidates.Candidate` (import it from
+   :mod:`diagnosis.candidates`, never from this module, which imports yours) with
+   ``extras(ctx)`` (its parameters: name, start, box from the fit data's scales, unit),
+   ``apply(F, p, data, ctx)`` (its formula on the base law's force) or ``modify_law`` (a law
+   of the friction package with more free parameters), and where needed ``force_extras``,
+   ``start``, ``practical``, ``applicable``, ``specialise``, ``own_law_names``. It may live
+   in its own module, e.g. ``diagnosis/effects_backlash.py``, with its truth forms.
+2. Write its truth forms for the benchmark: functions ``truth(kin, s) -> F`` [N] (``kin`` a
+   :class:`diagnosis.benchmark.PlantKinematics`: the plant's ``t, x, v, a, load`` and its
+   ``base`` law; ``s`` an amplitude factor the benchmark calibrates to the requested
+   strength), each a mechanism of different physics from the candidate's formula,
+   integrated on a grid finer than the data (:data:`diagnosis.benchmark.kinematics.FINE`,
+   :func:`~diagnosis.benchmark.kinematics.fine_motion`); optionally a generic truth
+   ``truth(s, t, x, v, a) -> (F, load)`` on the mass-like axis of
+   :func:`diagnosis.benchmark.make_case`, and ``applies(kin) -> bool`` for plants it does
+   not apply to.
+3. Add one :class:`Effect` to :data:`EFFECTS` below (its position is the order candidates
+   are tried and benchmark cases are run), giving
+
+   * ``candidate``: the builder, constructed with the effect's ``name``, a one-line
+     ``description`` and its ``stage`` (``modify_law``, ``multiplicative``, ``additive``,
+     ``shift``: the order effects compose in);
+   * ``plant_entry``: how the trajectory level puts it into a simulated plant - ``"law"``
+     (the candidate's ``modify_law``: a law of the friction package, so the friction FMU of
+     that law carries it), ``"twins"`` (the law's direction twins and offset), ``"force"``
+     (its formula on the law's output, inside :class:`.effect_law.EffectLaw`; needs the
+     formula in :func:`friction.extensions.extension_force`), ``"mass"`` (the plant's
+     moving mass), ``"delay"`` (a time shift of the output) or ``""`` (force level only);
+   * ``fmu``: whether the trajectory level's FMU engine can express it (a ``"force"``
+     entry only when :data:`friction.extensions.EXTENSIONS` has it: the ``friction_effects``
+     block runs that formula; a ``"law"`` entry when its law has an FMU);
+   * ``levels`` and ``inputs`` (``"force"`` entries): the parameters whose zero switches it
+     off, and the signals its formula reads besides ``v`` (``a``, ``x``, ``load``);
+   * ``families`` / ``evidence``: where its gap should show (region families of
+     :func:`diagnosis.benchmark.localise`: ``direction``, ``accel/decel``, ``pre-sliding``,
+     ``|v|``, ``|a|``, ``x``, ``t``, ``load``, ``frequency``; evidence families add
+     ``dF/dt``);
+   * ``truths``: form name -> ``"module:function"`` (or the function) of step 2, the first
+     the benchmark's default; ``generic_truth`` and ``truth_applies`` likewise.
+
+   Its parameters, units and bounds are the candidate's (:meth:`Effect.parameters`).
+4. Nothing else: the force level, the trajectory level, the FMU engine, the report and the
+   benchmark read the record. ``tests/test_diagnosis_layout.py`` checks every record
+   (truths resolve, force entries are extensions, FMU claims hold).
 """
 from __future__ import annotations
 
+import importlib
 from dataclasses import dataclass, field
-from typing import ClassVar
+from typing import Callable, Mapping, Union
 
-import numpy as np
-from scipy.signal import lfilter
+from friction.extensions import EXTENSIONS, POSITION_NAMES
 
-from friction import make_model
-from friction.dataset import Dataset
-from friction.extensions import (DRIFT_NAMES, POSITION_FORM_NAMES, POSITION_NAMES,
-                                 drift_change, pack_extensions, position_change)
+# the candidate builders, and what the rest of the package has always imported from here
+from .candidates import (Acceleration, Asymmetry, AsymmetryTwins, Candidate,  # noqa: F401
+                         Context, Delay, Drift, Extra, Inertia, Load, Position, Presliding,
+                         StribeckShape, make_context, MAX_FILTER_SAMPLES)
 
-__all__ = ["Candidate", "CANDIDATES", "EFFECT_NAMES", "Context", "make_context"]
+__all__ = ["Effect", "EFFECTS", "EFFECT_NAMES", "CANDIDATES", "FORCE_EFFECTS", "FMU_EFFECTS",
+           "LEVELS", "INPUTS", "EXPECTED_FAMILIES", "EXPECTED_EVIDENCE", "PLANT_ENTRIES", "Candidate",
+           "Context", "Extra", "make_context", "Acceleration", "Load", "Drift", "Asymmetry",
+           "AsymmetryTwins", "Position", "Inertia", "Delay", "StribeckShape", "Presliding",
+           "MAX_FILTER_SAMPLES", "resolve"]
 
-EFFECT_NAMES = ("acceleration", "load", "asymmetry", "stribeck_shape", "presliding",
-                "position", "inertia", "delay", "drift")
+#: how an effect enters a simulated plant (the trajectory level), see :class:`Effect`
+PLANT_ENTRIES = ("law", "twins", "force", "mass", "delay", "")
 
-
-@dataclass
-class Context:
-    """Scales of the fit data that fix each candidate's parameter box."""
-    sF: float       # force scale [N] (99th percentile of |F|)
-    sv: float       # velocity scale [m/s]
-    sa: float       # acceleration scale [m/s^2]
-    x_lo: float
-    x_hi: float     # position range of the fit data [m]
-    t0: float
-    T: float        # fit data start and duration [s]
-    dt: float       # sample interval [s]
-    L0: float | None  # mean load of the fit data [N]
-    L_span: float   # load spread of the fit data [N]
-    L_hi: float = 0.0  # largest load of the fit data [N]
+#: a function, or where to find it: ``"package.module:function"`` (imported when first used,
+#: so a record can name a benchmark truth without importing the benchmark)
+Ref = Union[str, Callable, None]
 
 
-def make_context(fit) -> Context:
-    sF = float(np.percentile(np.abs(fit.F), 99)) or 1.0
-    sv = float(np.percentile(np.abs(fit.v), 99)) or 1e-3
-    sa = float(np.percentile(np.abs(fit.a), 99)) or 1e-3
-    L0 = float(np.mean(fit.load)) if fit.load is not None else None
-    L_span = float(np.ptp(fit.load)) if fit.load is not None else 0.0
-    L_hi = float(np.max(fit.load)) if fit.load is not None else 0.0
-    return Context(sF, sv, sa, float(np.min(fit.x)), float(np.max(fit.x)), float(fit.t[0]),
-                   float(fit.t[-1] - fit.t[0]), fit.dt, L0, L_span, L_hi)
+def resolve(ref: Ref):
+    """The function a :data:`Ref` names (``None`` stays ``None``)."""
+    if ref is None or callable(ref):
+        return ref
+    module, _, name = ref.partition(":")
+    return getattr(importlib.import_module(module), name)
 
 
-@dataclass
-class Extra:
-    """One extra parameter of a candidate: name, start value and box (physical units).
+@dataclass(frozen=True)
+class Effect:
+    """Everything about one named effect (see the module docstring for how to add one).
 
-    ``grid`` > 0: the fit starts from the best of that many evenly spaced values over the box
-    (for parameters the residual is not convex in, or whose gradient vanishes at the start,
-    such as a time shift or a filter time constant at 0).
+    Parameters
+    ----------
+    candidate : Candidate
+        The builder of the diagnosis' candidate (name, description, stage, parameters,
+        formula or law).
+    plant_entry : str
+        How the trajectory level puts it into a plant: one of :data:`PLANT_ENTRIES`.
+    fmu : bool
+        The trajectory level's FMU engine can express it.
+    levels : tuple of str
+        ``"force"`` entries: parameters whose zero switches the effect off.
+    inputs : tuple of str
+        ``"force"`` entries: signals the formula reads besides the velocity (``"a"``,
+        ``"x"``, ``"load"``; time is the law's own state).
+    families : tuple of str
+        Region families its held-out gap concentrates in (benchmark localisation).
+    evidence : tuple of str
+        Families of the residual's evidence correlations it points at (benchmark).
+    truths : mapping
+        Truth form name -> ``truth(kin, s) -> F`` [N] (or its ``"module:function"``); the
+        first is the one the benchmark runs.
+    generic_truth : str or callable, optional
+        ``truth(s, t, x, v, a) -> (F, load)`` of the generic benchmark.
+    truth_applies : str or callable, optional
+        ``applies(kin) -> bool``: whether the truths exist for a plant (default: always).
     """
-    name: str
-    x0: float
-    lo: float
-    hi: float
-    unit: str = ""
-    grid: int = 0
-
-
-@dataclass
-class Candidate:
-    """A named effect. Subclasses override the hooks they need."""
-    name: str
-    description: str
-    stage: str = "additive"   # modify_law | multiplicative | additive | shift
-    tags: tuple = field(default_factory=tuple)
-    #: optional data columns the effect reads (fit and held-out data must both have them)
-    needs: ClassVar[tuple] = ()
-
-    def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
-        return True, ""
-
-    def modify_law(self, law, base_names, ctx: Context):
-        """Return the list of (law, base_names) variants to try (best on fit is kept)."""
-        return [(law, list(base_names))]
-
-    def extras(self, ctx: Context) -> list[Extra]:
-        """Parameters of the effect's formula at every level (the trajectory level's
-        :class:`diagnosis.effect_law.EffectLaw` implements exactly these)."""
-        return []
-
-    def trajectory_extras(self, ctx: Context) -> list[Extra]:
-        """The parameters the trajectory level fits (each evaluation a plant simulation):
-        :meth:`extras` by default; a candidate whose further forms need a start chosen on
-        the data (:attr:`start`, a force-level residual) offers only its first form there."""
-        return self.extras(ctx)
-
-    def force_extras(self, ctx: Context) -> list[Extra]:
-        """All parameters fitted at the force level: :meth:`extras` plus those only measured
-        friction data need (their zero, the default of :meth:`apply`, is the plain formula)."""
-        return self.extras(ctx)
-
-    def apply(self, F, p: dict, data, ctx: Context) -> np.ndarray:
-        return F
-
-    #: ``start(fit, Ff, r, ctx) -> dict``: start values of extras chosen on the data (time
-    #: scales, wavelengths, positions a gradient cannot find from a zero amplitude), given
-    #: the base's friction part ``Ff`` [N] and residual ``r`` [N] on the fit record
-    #: (:func:`diagnosis.composite.fit_composite`); ``None``: the extras' ``x0``
-    start = None
-
-    #: ``undo(data, p, ctx) -> Dataset``: the data with the effect at ``p`` taken out, for
-    #: effects the base fit absorbs in a distorted way (see :func:`diagnosis.composite.
-    #: fit_composite`); ``None``: no such start
-    undo = None
-
-    def practical(self, p: dict, ctx: Context) -> str:
-        """Why the fitted parameters ``p`` are too small to be this effect in practice,
-        whatever the held-out scores ('' when they are not; see
-        :func:`diagnosis.core.practical_size`)."""
-        return ""
-
-    def specialise(self, law) -> "Candidate":
-        """The form of this effect for ``law`` (default: the same for every law)."""
-        return self
-
-    def own_law_names(self, law) -> tuple:
-        """Parameters of the law itself that belong to this effect, whether or not the base
-        already frees them (the transfer scores calibrate them with the effect's own; by
-        default only the names :meth:`modify_law` adds to the base's)."""
-        return ()
-
-
-def _sig_neg(v, ctx):
-    # smooth indicator of the negative direction: a sign change is not a step in measured data
-    return 0.5 * (1.0 - np.tanh(v / (0.02 * ctx.sv)))
-
-
-#: longest time constant of the acceleration filters of ``acceleration`` and ``inertia``
-#: [samples]: a measured acceleration is differentiated and filtered, and at a low sample
-#: rate (the press's 100 Hz) it chatters from sample to sample during fast events
-MAX_FILTER_SAMPLES = 8
-
-
-def _first_order(u, dt, tau):
-    """Causal first-order lag tau dy/dt + y = u (step-invariant, starts settled)."""
-    if tau <= 0.0:
-        return u
-    e = np.exp(-dt / tau)
-    return lfilter([1.0 - e], [1.0, -e], u, zi=[u[0] * e])[0]
-
-
-def _zero_phase(u, dt, tau):
-    """The first-order lag run forward and backward: smoothing without a time shift."""
-    if tau <= 0.0:
-        return u
-    return _first_order(_first_order(u, dt, tau)[::-1], dt, tau)[::-1]
-
-
-class Acceleration(Candidate):
-    def extras(self, ctx):
-        return [Extra("f_a", 0.0, -ctx.sF, ctx.sF, "N"),
-                Extra("a_s", 0.3 * ctx.sa, 0.02 * ctx.sa, 3 * ctx.sa, "m/s^2"),
-                Extra("v_c", ctx.sv, 0.05 * ctx.sv, 20 * ctx.sv, "m/s")]
-
-    def force_extras(self, ctx):
-        # the frictional lag of seed 000 (Eq. 11, its "lag" form: tau dF_d/dt + F_d =
-        # F_d^ss(v, a)); started at one sample (at 0 the residual is flat in it)
-        lag = Extra("tau_lag", ctx.dt, 0.0, MAX_FILTER_SAMPLES * ctx.dt, "s")
-        return self.extras(ctx) + [lag]
-
-    def apply(self, F, p, data, ctx):
-        # acceleration-dependent part (seed 000): grows with |a|, fades with |v|, zero at a = 0,
-        # and lags behind them as a whole. (Lagging the acceleration alone, the form before,
-        # closed 0.57-0.60 of held-out gaps that the truth closes 0.83-0.92 on the rig, the
-        # press and the isolator; lagging the part, 0.81-0.84.)
-        Fd = p["f_a"] * np.tanh(data.a / p["a_s"]) * np.exp(-np.abs(data.v) / p["v_c"])
-        return F + _first_order(Fd, data.dt, p.get("tau_lag", 0.0))
-
-
-class Load(Candidate):
-    needs = ("load",)
-
-    def applicable(self, law, fit, ctx):
-        if fit.load is None:
-            return False, "the data has no load column"
-        if ctx.L0 is None or not ctx.L0 > 0 or ctx.L_span <= 1e-9 * abs(ctx.L0):
-            return False, "the load does not vary in the fit data"
-        return True, ""
-
-    def extras(self, ctx):
-        # k_L = 1: friction proportional to the load (Amontons); 0: independent of it. Seed
-        # 004's levels are affine in the load (Fc = Fc0 + k1 F_sigma, k1 < 0 at low speed),
-        # so k_L may be negative down to where the level would vanish at the largest load
-        k_lo = -min(1.0, 0.9 * ctx.L0 / max(ctx.L_hi - ctx.L0, 1e-12 * ctx.L0))
-        return [Extra("k_L", 0.0, k_lo, 1.0, "1")]
-
-    def force_extras(self, ctx):
-        # seed 004 gives the viscous coefficient its own load slope (k3 of Eq. 11; on the
-        # press it is most of the load effect), so the level factor alone cannot carry it
-        # a seal pressurised from one side (the pneumatic cylinder's O-ring) grows with the
-        # load in one direction of motion and hardly in the other: k_L_neg is the level
-        # slope for v < 0 (k_L then holds for v > 0)
-        s = 2.0 * ctx.sF / ctx.sv
-        k = self.extras(ctx)[0]
-        return [k, Extra("k_L_neg", 0.0, k.lo, k.hi, "1"), Extra("k_v", 0.0, -s, s, "N.s/m")]
-
-    def apply(self, F, p, data, ctx):
-        # friction levels affine in the normal load (seed 004 Eqs. 9-11), relative to the
-        # fit data's mean load: F (1 + k_L (L - L0) / L0), never of the opposite sign, with
-        # its own slope k_L_neg for v < 0 where fitted, plus a viscous part k_v v (L - L0) / L0
-        rel = (data.load - ctx.L0) / ctx.L0
-        k = p["k_L"]
-        if "k_L_neg" in p:
-            s = _sig_neg(data.v, ctx)
-            k = k * (1.0 - s) + p["k_L_neg"] * s
-        F = F * np.clip(1.0 + k * rel, 0.0, None)
-        k_v = p.get("k_v", 0.0)
-        return F + k_v * rel * data.v if k_v else F
-
-
-class Drift(Candidate):
-    """Friction level changing over time: ``F (1 + d(t))`` with ``d`` a linear trend, a
-    saturating change of time constant ``tau_sat`` and a step at ``t_step``
-    (:func:`friction.extensions.drift_change`). A warm-up that levels off within the record
-    is the saturating part (the linear form alone closed 23 % of a +60 % warm-up of time
-    constant T/3: it cannot bend), a change of lubricant or a regulated temperature is the
-    step; their time scales are chosen on the data (:meth:`start`)."""
-
-    def extras(self, ctx):
-        T = ctx.T or 1.0
-        return [Extra("k_drift", 0.0, -2.0, 2.0, "1"),
-                Extra("k_sat", 0.0, -2.0, 2.0, "1"),
-                # a saturating change over the fit record, not a start-up transient of its
-                # first samples (which would free the level of the record's start)
-                Extra("tau_sat", 0.3 * T, self.STEP_MARGIN / 3.0 * T, 3.0 * T, "s"),
-                Extra("k_step", 0.0, -1.0, 1.0, "1"),
-                # a step is seen on both sides within the fit record: one at its very end
-                # would only set a free level for whatever follows (the held-out part)
-                Extra("t_step", ctx.t0 + 0.5 * T, ctx.t0 + self.STEP_MARGIN * T,
-                      ctx.t0 + (1.0 - self.STEP_MARGIN) * T, "s"),
-                Extra("w_step", 0.01 * T, max(ctx.dt, 1e-4 * T), 0.1 * T, "s")]
-
-    #: shortest share of the fit record on either side of the step, and over which the
-    #: saturating part may complete 95 % of its change (tau_sat >= STEP_MARGIN / 3 x T) [-]
-    STEP_MARGIN = 0.15
-
-    def trajectory_extras(self, ctx):
-        # the saturating and step parts start from a force-level residual (:meth:`start`);
-        # the trajectory level keeps the linear trend
-        return self.extras(ctx)[:1]
-
-    def _packed(self, p, ctx):
-        return pack_extensions({"drift": {n: p[n] for n in DRIFT_NAMES if n in p}},
-                               t0=ctx.t0, T=ctx.T or 1.0)
-
-    def apply(self, F, p, data, ctx):
-        # friction level changing over time (warming, running-in, a lubricant change)
-        return F * (1.0 + drift_change(data.t, self._packed(p, ctx)))
-
-    def start(self, fit, Ff, r, ctx) -> dict:
-        """Start values from the base's fit residual ``r`` [N] against its friction part
-        ``Ff`` [N]: ``r ~ Ff d(t)`` is linear in the amplitudes; the saturation time
-        constant and the step's time and width are chosen on a grid by least squares."""
-        T = ctx.T or 1.0
-        s = fit.t - ctx.t0
-        sub = _subsample(fit.t.size)
-        t, f, rr = fit.t[sub], Ff[sub], r[sub]
-        lin = f * (t - ctx.t0) / T
-        ex = {e.name: e for e in self.extras(ctx)}
-        best = (np.inf, None)
-        for tau in np.geomspace(ex["tau_sat"].lo, ex["tau_sat"].hi, 24):
-            sat = f * (1.0 - np.exp(-np.clip(t - ctx.t0, 0.0, None) / tau))
-            sse, _ = _lsq(np.column_stack([lin, sat]), rr)
-            if sse < best[0]:
-                best = (sse, tau)
-        tau = best[1]
-        sat = f * (1.0 - np.exp(-np.clip(t - ctx.t0, 0.0, None) / tau))
-        _, c = _lsq(np.column_stack([lin, sat]), rr)
-        r1 = rr - np.column_stack([lin, sat]) @ c
-        best = (np.inf, None, None)
-        for w in (ex["w_step"].lo, 0.01 * T, 0.05 * T):
-            w = float(np.clip(w, ex["w_step"].lo, ex["w_step"].hi))
-            for ts in np.linspace(ex["t_step"].lo, ex["t_step"].hi, 49):
-                st = f * 0.5 * (1.0 + np.tanh(0.5 * (t - ts) / w))
-                sse, _ = _lsq(st[:, None], r1)
-                if sse < best[0]:
-                    best = (sse, ts, w)
-        _, ts, w = best
-        st = f * 0.5 * (1.0 + np.tanh(0.5 * (t - ts) / w))
-        _, c = _lsq(np.column_stack([lin, sat, st]), rr)
-        del s
-        out = {"k_drift": c[0], "k_sat": c[1], "tau_sat": tau, "k_step": c[2], "t_step": ts,
-               "w_step": w}
-        return {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
-
-
-def _subsample(n, most: int = 6000) -> np.ndarray:
-    """Evenly spaced indices of at most ``most`` of ``n`` samples (for start grids)."""
-    return np.arange(0, n, max(1, -(-n // most)))
-
-
-def _lsq(A, b):
-    """Least squares of ``A c ~ b``: (sum of squared residuals, c)."""
-    c, *_ = np.linalg.lstsq(A, b, rcond=1e-10)
-    res = b - A @ c
-    return float(res @ res), c
-
-
-class Asymmetry(Candidate):
-    def extras(self, ctx):
-        return [Extra("b", 0.0, -ctx.sF, ctx.sF, "N"),
-                Extra("dF_neg", 0.0, -ctx.sF, ctx.sF, "N"),
-                Extra("dsigma2_neg", 0.0, -2 * ctx.sF / ctx.sv, 2 * ctx.sF / ctx.sv, "N.s/m")]
-
-    def apply(self, F, p, data, ctx):
-        # direction-dependent levels and an offset (seeds 000, 003)
-        s = _sig_neg(data.v, ctx)
-        return F + p["b"] - p["dF_neg"] * s + p["dsigma2_neg"] * data.v * s
-
-    def specialise(self, law):
-        # a law with direction twins carries the asymmetry inside itself, so the levels act
-        # through the bristle state in sticking and crawling too (the additive form only
-        # sees the sign of v, which is undecided near rest)
-        if set(law.twins) >= {"Fc", "Fs", "sigma2"} and hasattr(law.params, "b"):
-            return AsymmetryTwins(self.name, self.description, "modify_law", self.tags)
-        return self
-
-
-class AsymmetryTwins(Candidate):
-    """``asymmetry`` for laws with direction twins: Fc, Fs, sigma2 for v < 0 and the offset
-    b become free parameters of the law itself."""
-    TWINS = ("Fc", "Fs", "sigma2")
-
-    def modify_law(self, law, base_names, ctx):
-        p = law.params
-        start = {law.twins[n]: float(getattr(p, n)) for n in self.TWINS}
-        names = list(base_names) + [law.twins[n] for n in self.TWINS if law.twins[n]
-                                    not in base_names]
-        if "b" not in names:
-            names.append("b")
-        return [(law.with_values(**start), names)]
-
-    def own_law_names(self, law):
-        # the offset is this effect's too: identify's default base frees it on the fit
-        # record, but a held-out condition with its own offset is the asymmetry's to carry
-        return tuple(law.twins[n] for n in self.TWINS) + ("b",)
-
-
-class Position(Candidate):
-    """Friction level varying along the stroke, ``F (1 + m(x))``
-    (:func:`friction.extensions.position_change`): a 12-knot map for trends and defects a
-    tenth of the stroke wide, a periodic waviness (two harmonics) whose wavelength is chosen
-    on the data, and a local defect whose centre and width are chosen on the data
-    (:meth:`start`). The 12-knot map alone closed 1 % of a waviness of period 7 % of the
-    stroke: its knots are 9 % apart."""
-    stage_doc = "friction level scaled along the stroke"
-    NAMES = POSITION_NAMES + POSITION_FORM_NAMES
-    #: shortest wavelength and narrowest defect, in samples of travel at the top speed:
-    #: finer than this along the motion the data cannot tell a map from noise
-    MIN_SAMPLES = 8.0
-
-    def _span(self, ctx):
-        return max(ctx.x_hi - ctx.x_lo, 1e-12)
-
-    def extras(self, ctx):
-        span = self._span(ctx)
-        step = self.MIN_SAMPLES * ctx.sv * ctx.dt
-        lam_lo = min(max(0.01 * span, step), 0.25 * span)
-        w_lo = min(max(0.004 * span, 0.5 * step), 0.05 * span)
-        return ([Extra(n, 0.0, -1.0, 1.0, "1") for n in POSITION_NAMES]
-                + [Extra("lambda_x", 0.1 * span, lam_lo, 0.5 * span, "m")]
-                + [Extra(n, 0.0, -1.0, 1.0, "1") for n in ("p_c1", "p_s1", "p_c2", "p_s2")]
-                + [Extra("d_x", 0.0, -1.0, 1.0, "1"),
-                   Extra("x_d", 0.5 * (ctx.x_lo + ctx.x_hi), ctx.x_lo, ctx.x_lo + span, "m"),
-                   Extra("w_d", 0.05 * span, w_lo, 0.2 * span, "m")])
-
-    def trajectory_extras(self, ctx):
-        # the waviness and the local defect start from a force-level residual
-        # (:meth:`start`); the trajectory level keeps the knot map
-        return self.extras(ctx)[:len(POSITION_NAMES)]
-
-    def _packed(self, p, ctx):
-        return pack_extensions({"position": {n: p[n] for n in self.NAMES if n in p}},
-                               x_lo=ctx.x_lo, x_hi=ctx.x_lo + self._span(ctx))
-
-    def apply(self, F, p, data, ctx):
-        # friction level varying along the stroke: a friction map over the fit record's
-        # stroke (a worn section, guide waviness or screw pitch, a local defect)
-        return F * (1.0 + position_change(data.x, self._packed(p, ctx)))
-
-    def start(self, fit, Ff, r, ctx) -> dict:
-        """Start values from the base's fit residual ``r`` [N] against its friction part
-        ``Ff`` [N]: ``r ~ Ff m(x)`` is linear in the knot values and amplitudes; the
-        wavelength is chosen on a grid even in wavenumber (a quarter period of slip over the
-        stroke between neighbours), the defect's centre and width on a grid, each by least
-        squares on what the parts before it leave."""
-        span = self._span(ctx)
-        ex = {e.name: e for e in self.extras(ctx)}
-        sub = _subsample(fit.t.size)
-        x, f, rr = fit.x[sub], Ff[sub], r[sub]
-        knots = np.linspace(ctx.x_lo, ctx.x_lo + span, len(POSITION_NAMES) + 1)
-        H = np.column_stack([np.interp(x, knots, np.eye(knots.size)[k])
-                             for k in range(1, knots.size)]) * f[:, None]
-        _, c = _lsq(H, rr)
-        r1 = rr - H @ c
-
-        def periodic(lam):
-            ph = 2.0 * np.pi * (x - ctx.x_lo) / lam
-            return np.column_stack([np.cos(ph), np.sin(ph), np.cos(2 * ph),
-                                    np.sin(2 * ph)]) * f[:, None]
-        k_lo, k_hi = 1.0 / ex["lambda_x"].hi, 1.0 / ex["lambda_x"].lo
-        waves = np.arange(k_lo, k_hi, 0.25 / span)
-        sse = [_lsq(periodic(1.0 / k), r1)[0] for k in waves]
-        lam = float(1.0 / waves[int(np.argmin(sse))])
-        P = periodic(lam)
-        _, pc = _lsq(P, r1)
-        r2 = r1 - P @ pc
-        best = (np.inf, None, None)
-        for w in np.geomspace(ex["w_d"].lo, ex["w_d"].hi, 8):
-            for xd in np.linspace(ctx.x_lo, ctx.x_lo + span, 61):
-                g = f * np.exp(-0.5 * ((x - xd) / w) ** 2)
-                e, _ = _lsq(g[:, None], r2)
-                if e < best[0]:
-                    best = (e, xd, w)
-        _, xd, w = best
-        G = (f * np.exp(-0.5 * ((x - xd) / w) ** 2))[:, None]
-        _, allc = _lsq(np.column_stack([H, P, G]), rr)
-        out = dict(zip(POSITION_NAMES, allc[:len(POSITION_NAMES)]))
-        out.update(zip(("p_c1", "p_s1", "p_c2", "p_s2"), allc[len(POSITION_NAMES):-1]))
-        out.update(lambda_x=lam, d_x=allc[-1], x_d=xd, w_d=w)
-        return {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
-
-
-class Inertia(Candidate):
-    def extras(self, ctx):
-        m = ctx.sF / ctx.sa
-        return [Extra("dm", 0.0, -m, m, "kg")]
-
-    def force_extras(self, ctx):
-        # the inverse dynamics smooths the acceleration it uses offline (zero phase), the a
-        # column of the data may not be; started at one sample (at 0 the residual is flat)
-        smooth = Extra("tau_af", ctx.dt, 0.0, MAX_FILTER_SAMPLES * ctx.dt, "s")
-        return self.extras(ctx) + [smooth]
-
-    def apply(self, F, p, data, ctx):
-        # mass error of the inverse dynamics leaks dm * a into the "measured" friction
-        return F + p["dm"] * _zero_phase(data.a, data.dt, p.get("tau_af", 0.0))
-
-
-class Delay(Candidate):
-    MAX_SAMPLES = 25
-    #: shortest shift named ``delay`` [samples]. Sampling and differentiation alone shift
-    #: a record by up to about a sample: an integrating converter averages the force over
-    #: the sample period (half a sample late), backward differences of encoder counts put
-    #: the velocity half a sample late, and the base law's update at the sample rate differs
-    #: from the continuous contact by a fraction of a sample; a shift within this is the
-    #: record's discretisation, not a delay of its force channel
-    MIN_SAMPLES = 1.5
-
-    def extras(self, ctx):
-        d = self.MAX_SAMPLES * ctx.dt
-        return [Extra("delay", 0.0, -d, d, "s", grid=51)]
-
-    def apply(self, F, p, data, ctx):
-        # the force channel lags (delay > 0) the motion channels
-        return np.interp(data.t - p["delay"], data.t, F)
-
-    def practical(self, p, ctx) -> str:
-        """Why the fitted shift is too small to name ('' when it is large enough)."""
-        n = abs(p["delay"]) / ctx.dt
-        if n < self.MIN_SAMPLES:
-            return (f"its shift of {n:.2f} samples is below {self.MIN_SAMPLES:g} samples, what "
-                    f"sampling and differentiation alone make")
-        return ""
-
-    def undo(self, data, p, ctx):
-        """``data`` with its force channel shifted back by ``p["delay"]`` (for a
-        re-identification of the base law without the shift)."""
-        F = np.interp(data.t + p["delay"], data.t, data.F)
-        return Dataset(t=data.t, x=data.x, v=data.v, a=data.a, F=F, load=data.load,
-                       name=data.name)
-
-
-class StribeckShape(Candidate):
-    def applicable(self, law, fit, ctx):
-        if not hasattr(law.params, "shape") or not hasattr(law.params, "alpha"):
-            return False, f"{law.name} has no Stribeck-shape parameters"
-        return True, ""
-
-    def modify_law(self, law, base_names, ctx):
-        names = list(base_names)
-        with_alpha = names + ([] if "alpha" in names else ["alpha"])
-        if law.params.shape == "gaussian":
-            # a base that already fits its exponent (identify's default set) has only the
-            # other shape left to try
-            variants = [] if "alpha" in names else [(law, with_alpha)]
-            return variants + [(law.with_values(shape="lorentzian"), names)]
-        # the exponent acts on the gaussian form only: a lorentzian base gets the gaussian
-        # family with a free exponent, started at alpha = 1 (an exponential tail, closest
-        # to the lorentzian's heavy one) and at 2 (was: the gaussian at alpha = 2 only, so
-        # a lorentzian base could never change its Stribeck exponent)
-        return [(law.with_values(shape="gaussian", alpha=1.0), with_alpha),
-                (law.with_values(shape="gaussian", alpha=2.0), with_alpha)]
-
-
-class Presliding(Candidate):
-    def applicable(self, law, fit, ctx):
-        if law.state_names:
-            return False, f"{law.name} already has bristle dynamics"
-        if law.name != "stribeck":
-            return False, "presliding is added to the static Stribeck map only"
-        return True, ""
-
-    def modify_law(self, law, base_names, ctx):
-        p = law.params
-        lugre = make_model("lugre", sigma0=max(1e3, 1e3 * ctx.sF / max(ctx.sv, 1e-9) * 1e-1),
-                           sigma1=0.0, sigma2=p.sigma2, Fc=p.Fc, Fs=p.Fs, vs=p.vs, alpha=p.alpha,
-                           b=p.b, shape=p.shape, Fc_neg=p.Fc_neg, Fs_neg=p.Fs_neg,
-                           vs_neg=p.vs_neg, sigma2_neg=p.sigma2_neg)
-        return [(lugre, list(base_names) + ["sigma0", "sigma1"])]
-
-
-CANDIDATES: dict[str, Candidate] = {
-    "acceleration": Acceleration("acceleration", "acceleration-dependent part / frictional lag "
-                                 "(seed 000)", "additive"),
-    "load": Load("load", "friction levels depend on the normal load (seed 004)",
+    candidate: Candidate
+    plant_entry: str = ""
+    fmu: bool = False
+    levels: tuple = ()
+    inputs: tuple = ()
+    families: tuple = ()
+    evidence: tuple = ()
+    truths: Mapping[str, Ref] = field(default_factory=dict)
+    generic_truth: Ref = None
+    truth_applies: Ref = None
+
+    def __post_init__(self):
+        if self.plant_entry not in PLANT_ENTRIES:
+            raise ValueError(f"plant_entry = {self.plant_entry!r} is out of bounds: choose "
+                             f"from {PLANT_ENTRIES}")
+        if self.plant_entry == "force" and not self.levels:
+            raise ValueError(f"effect {self.name!r}: a force entry needs its levels")
+
+    @property
+    def name(self) -> str:
+        """The effect's name (the candidate's)."""
+        return self.candidate.name
+
+    @property
+    def description(self) -> str:
+        """One line on what the effect is."""
+        return self.candidate.description
+
+    def parameters(self, ctx: Context, level: str = "force") -> list:
+        """The effect's parameters with their units and bounds for the fit data ``ctx``.
+
+        Parameters
+        ----------
+        ctx : Context
+            Scales of the fit data (:func:`make_context`).
+        level : {"force", "trajectory", "formula"}
+            Those fitted at the friction-force level (:meth:`Candidate.force_extras`), at
+            the trajectory level (:meth:`Candidate.trajectory_extras`) or the formula's own
+            (:meth:`Candidate.extras`).
+
+        Returns
+        -------
+        list of Extra
+            Name, start, lower and upper bound (physical units) and unit of each.
+        """
+        get = {"force": self.candidate.force_extras, "formula": self.candidate.extras,
+               "trajectory": self.candidate.trajectory_extras}
+        if level not in get:
+            raise ValueError(f"level must be one of {sorted(get)}, got {level!r}")
+        return get[level](ctx)
+
+    def truth(self, form: str | None = None) -> Callable:
+        """The truth form ``form`` (default: the first) as a function ``(kin, s) -> F``."""
+        if not self.truths:
+            raise ValueError(f"effect {self.name!r} has no truth forms")
+        form = next(iter(self.truths)) if form is None else form
+        if form not in self.truths:
+            raise ValueError(f"unknown truth form {form!r} of {self.name!r}; choose from "
+                             f"{list(self.truths)}")
+        return resolve(self.truths[form])
+
+    def applies(self, kin) -> bool:
+        """Whether the truth forms exist for the plant motion ``kin``."""
+        fn = resolve(self.truth_applies)
+        return True if fn is None else bool(fn(kin))
+
+
+_T = "diagnosis.benchmark.truths:"
+
+#: every named effect, in the order the candidates are tried
+EFFECTS: dict[str, Effect] = {e.name: e for e in (
+    Effect(Acceleration("acceleration", "acceleration-dependent part / frictional lag "
+                        "(seed 000)", "additive"),
+           plant_entry="force", fmu=True, levels=("f_a",), inputs=("a",),
+           families=("accel/decel", "|a|"), evidence=("|a|",),
+           truths={"lagged_fd": _T + "acceleration_truth"},
+           generic_truth=_T + "acceleration_generic"),
+    Effect(Load("load", "friction levels depend on the normal load (seed 004)",
+                "multiplicative"),
+           plant_entry="force", fmu=True, levels=("k_L",), inputs=("load",),
+           families=("load",), evidence=("load",),
+           truths={"load_lugre": _T + "load_truth"}, generic_truth=_T + "load_generic"),
+    Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
+                     "additive"),
+           plant_entry="twins", fmu=True, families=("direction",), evidence=("direction",),
+           truths={"twins": _T + "asymmetry_truth"}, generic_truth=_T + "asymmetry_generic"),
+    Effect(StribeckShape("stribeck_shape", "Stribeck exponent / Lorentzian shape",
+                         "modify_law"),
+           plant_entry="law", fmu=True, families=("|v|", "pre-sliding"),
+           truths={"exponential_tail": _T + "stribeck_shape_truth"},
+           generic_truth=_T + "stribeck_shape_generic",
+           truth_applies=_T + "has_stribeck_curve"),
+    Effect(Presliding("presliding", "bristle dynamics missing from a static map",
+                      "modify_law"),
+           plant_entry="law", fmu=True, families=("pre-sliding",)),
+    Effect(Position("position", "friction level varying along the stroke", "multiplicative"),
+           plant_entry="force", fmu=True, levels=POSITION_NAMES, inputs=("x",),
+           families=("x",), evidence=("x",),
+           truths={"local_defect": _T + "position_truth"},
+           generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
+    Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
+           plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
+           truths={"filtered_acceleration": _T + "inertia_truth"},
+           generic_truth=_T + "inertia_generic"),
+    Effect(Delay("delay", "time shift between force and motion channels", "shift"),
+           plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
+           evidence=("dF/dt", "|a|"),
+           truths={"acquisition": _T + "delay_truth"}, generic_truth=_T + "delay_generic"),
+    Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
-    "asymmetry": Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
-                           "additive"),
-    "stribeck_shape": StribeckShape("stribeck_shape", "Stribeck exponent / Lorentzian shape",
-                                    "modify_law"),
-    "presliding": Presliding("presliding", "bristle dynamics missing from a static map",
-                             "modify_law"),
-    "position": Position("position", "friction level varying along the stroke",
-                         "multiplicative"),
-    "inertia": Inertia("inertia", "mass error in the inverse dynamics", "additive"),
-    "delay": Delay("delay", "time shift between force and motion channels", "shift"),
-    "drift": Drift("drift", "friction level changing over time (e.g. warming)",
-                   "multiplicative"),
-}
+           plant_entry="force", fmu=True, levels=("k_drift",), families=("t",),
+           evidence=("t",),
+           truths={"saturating_warm_up": _T + "drift_truth"},
+           generic_truth=_T + "drift_generic"),
+)}
+
+#: names of the candidate effects, in the order they are tried
+EFFECT_NAMES = tuple(EFFECTS)
+#: name -> candidate builder
+CANDIDATES: dict[str, Candidate] = {n: e.candidate for n, e in EFFECTS.items()}
+#: effects evaluated on the law's output force (in the packed order of
+#: :data:`friction.extensions.EXTENSIONS`, the ``friction_effects`` block's)
+FORCE_EFFECTS = tuple(sorted((n for n, e in EFFECTS.items() if e.plant_entry == "force"),
+                             key=lambda n: EXTENSIONS.index(n) if n in EXTENSIONS
+                             else len(EXTENSIONS)))
+#: effects the trajectory level's FMU engine can express: law, plant and shift entries, then
+#: the force effects of the ``friction_effects`` block
+FMU_EFFECTS = tuple(n for n, e in EFFECTS.items() if e.fmu and e.plant_entry != "force") \
+    + tuple(n for n in FORCE_EFFECTS if EFFECTS[n].fmu)
+#: force effects -> the parameters whose zero makes them vanish
+LEVELS = {n: EFFECTS[n].levels for n in FORCE_EFFECTS}
+#: force effects -> the signals their formula reads besides the velocity
+INPUTS = {n: EFFECTS[n].inputs for n in FORCE_EFFECTS}
+#: region families where each effect should concentrate the held-out gap
+EXPECTED_FAMILIES = {n: e.families for n, e in EFFECTS.items() if e.families}
+#: families each effect should point at by the signed evidence correlations
+EXPECTED_EVIDENCE = {n: e.evidence for n, e in EFFECTS.items() if e.evidence}

@@ -4,7 +4,8 @@ plant is re-simulated against measured positions.
 The friction-force level (:func:`diagnosis.diagnose`) needs friction recovered by inverse
 dynamics. Many machines only give a trajectory: the XML-350 stage's tracking error, the
 valve's lift. Here every candidate of :mod:`diagnosis.effects` becomes a change of the
-*simulated plant*:
+*simulated plant*, as its record's ``plant_entry`` says (``twins``, ``law``, ``force``,
+``mass``, ``delay``; :class:`diagnosis.effects.Effect`). For the built-in effects:
 
 ==================  ========================================================================
 candidate           how it enters the plant model
@@ -90,10 +91,12 @@ from friction.dataset import Dataset
 
 from .report import DiagnosisReport, report_sections
 from .verdict import MIN_EXCESS_CLOSED, decide, noise_floor, rank
-from .effects import CANDIDATES, EFFECT_NAMES, make_context
+# the records of the effects: how each enters a plant, what the FMU engine can express
+from .effects import (CANDIDATES, EFFECT_NAMES, EFFECTS, FMU_EFFECTS, FORCE_EFFECTS,  # noqa: F401
+                      INPUTS, make_context)
 from .regions import band_splits, frequency_split, regime_split
 # the parts of the trajectory level, re-exported here (the public names of this module)
-from .effect_law import FORCE_EFFECTS, EffectLaw, _LEVELS  # noqa: F401
+from .effect_law import EffectLaw, _LEVELS  # noqa: F401
 from .records import (TrajectoryRecord, load_record, parse_experiment,  # noqa: F401
                       record_from_result)
 from .trajectory_report import trajectory_figures, write_trajectory_html  # noqa: F401
@@ -114,8 +117,6 @@ BASE_NAMES = {
 #: residual [-] (in units of the record's scale) of a trial point whose simulation fails
 FAILED_RESIDUAL = 1e3
 
-#: candidates the FMU engine can express (friction-FMU / plant-FMU parameters, output shift)
-FMU_EFFECTS = ("asymmetry", "stribeck_shape", "presliding", "inertia", "delay") + FORCE_EFFECTS
 #: outputs holding a plant's own position command (the tracking error's reference)
 REFERENCE_OUTPUTS = ("x_d", "S_ref", "x_ref")
 #: plant parameters that are the moving mass (``inertia`` candidate), in order of preference
@@ -196,7 +197,7 @@ class _FMUEngine:
             conns += [("friction.F", "effects.F_law"), ("effects.F", "plant.F_friction"),
                       ("plant.v", "effects.v"), ("plant.a", "effects.a"),
                       ("plant.x", "effects.x")]
-            if "load" in effects:
+            if any("load" in INPUTS[e] for e in effects):
                 outs = cls(external_friction=True).all_output_names
                 src = next((n for n in LOAD_SIGNALS if n in outs), None)
                 if src is None:
@@ -853,16 +854,17 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
             coords += plant_coords()
             extra_mass = None
             for name in effs:
-                if name == "asymmetry":
+                entry = EFFECTS[name].plant_entry  # how the effect enters the plant
+                if entry == "twins":
                     if not all(hasattr(lw.params, n) for n in ASYMMETRY_NAMES):
                         raise _NotApplicable(f"{lw.name} has no direction twins")
                     for n in ASYMMETRY_NAMES:
                         if all(c.name != n for c in coords):
                             coords.append(_law_coordinate(lw, n, ctx, spread))
-                elif name in FORCE_EFFECTS:
+                elif entry == "force":
                     for ex in CANDIDATES[name].trajectory_extras(ctx):
                         coords.append(_P(ex.name, "extra", ex.lo, ex.hi, False, ex.x0, name))
-                elif name == "inertia":
+                elif entry == "mass":
                     if mass_name is None:
                         raise _NotApplicable(f"plant {plant.name} has no mass parameter "
                                              f"{MASS_PARAMETERS}")
@@ -872,7 +874,7 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                     M0 = float(getattr(plant.params, mass_name))
                     coords.append(_P("dm", "mass", -0.5 * M0, 0.5 * M0, False, 0.0, name))
                     extra_mass = (mass_name, M0)
-                elif name == "delay":
+                elif entry == "delay":
                     d = 25 * min(fit_case.record.dt, *(c.record.dt for c in val_cases))
                     coords.append(_P("delay", "delay", -d, d, False, 0.0, name))
             for c in coords:  # warm start from the fitted base (and earlier effects)
@@ -889,9 +891,7 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         ok, why = cand.applicable(base_law, fit_data, ctx)
         if not ok:
             return ok, why
-        if name == "load" and fit_data.load is None:
-            return False, f"plant {plant.name} gives the friction no load"
-        if name == "position" and not ctx.x_hi - ctx.x_lo > 0:
+        if "x" in EFFECTS[name].inputs and not ctx.x_hi - ctx.x_lo > 0:
             return False, "the fit record does not move"
         if engine == "fmu" and name not in FMU_EFFECTS:
             return False, ("engine='fmu': the friction FMU has no parameters for this effect "

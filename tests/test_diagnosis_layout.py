@@ -79,3 +79,36 @@ def test_module_imports_alone(name):
     r = subprocess.run([sys.executable, "-c", f"import {name}"], cwd=ROOT,
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stderr[-2000:]
+
+
+def test_effect_records_hold_together():
+    """Each effect is one record (diagnosis.effects.EFFECTS); the lists the package uses are
+    derived from it and its references resolve."""
+    from friction.extensions import EXTENSIONS
+    from diagnosis import effects
+    from diagnosis.benchmark import CASES, EXPECTED_EVIDENCE, EXPECTED_FAMILIES
+    from diagnosis.effect_law import FORCE_EFFECTS
+    from diagnosis.trajectory import FMU_EFFECTS
+    from diagnosis.effects import make_context
+    from diagnosis.benchmark import make_case
+    ctx = make_context(make_case("load", n=2000))
+    for name, e in effects.EFFECTS.items():
+        assert e.name == name == e.candidate.name
+        assert e.plant_entry in effects.PLANT_ENTRIES
+        if e.plant_entry == "force":
+            # the friction_effects block and EffectLaw run friction.extensions' formula
+            assert name in EXTENSIONS and e.levels
+            assert set(e.levels) <= {x.name for x in e.parameters(ctx, "formula")}
+        for form in e.truths:
+            assert callable(e.truth(form))
+        for ref in (e.generic_truth, e.truth_applies):
+            assert ref is None or callable(effects.resolve(ref))
+        for p in e.parameters(ctx):
+            assert p.lo <= p.x0 <= p.hi and p.unit, (name, p)
+    assert effects.EFFECT_NAMES == tuple(effects.CANDIDATES) == tuple(effects.EFFECTS)
+    assert FORCE_EFFECTS == effects.FORCE_EFFECTS
+    assert FMU_EFFECTS == effects.FMU_EFFECTS
+    assert EXPECTED_FAMILIES == effects.EXPECTED_FAMILIES
+    assert EXPECTED_EVIDENCE == effects.EXPECTED_EVIDENCE
+    assert CASES[-2:] == ("clean", "outside")
+    assert set(CASES[:-2]) == {n for n, e in effects.EFFECTS.items() if e.truths}

@@ -15,13 +15,15 @@ import numpy as np
 from friction.dataset import Dataset
 
 from .kinematics import _PLANT_RUNS, PLANT_NAMES, plant_kinematics
-from .truths import BASE, _base_parts, _bump_centre, _generic_truth, _truth  # noqa: F401
+from ..effects import EFFECTS, resolve
+from .truths import BASE, BENCH_CASES, BENCH_GENERIC, _base_parts  # noqa: F401
 
 __all__ = ["BASE", "CASES", "PLANT_NAMES", "PLANT_CASES", "EFFECT_SIZE", "make_case",
            "expected", "BenchCase", "applicable", "make_plant_case"]
 
-CASES = ("acceleration", "load", "asymmetry", "stribeck_shape", "position", "inertia",
-         "delay", "drift", "clean", "outside")
+#: the cases: every effect whose record has truth forms (:mod:`diagnosis.effects`), in the
+#: records' order, then the base law alone and an effect outside the library
+CASES = tuple(n for n, e in EFFECTS.items() if e.truths) + tuple(BENCH_CASES)
 PLANT_CASES = CASES
 #: per-plant cases: effect RMS (truth - base) per unit strength, as a fraction of std(F_base)
 EFFECT_SIZE = 0.15
@@ -66,11 +68,30 @@ def make_case(effect: str, strength: float = 1.0, noise: float = 0.02, n: int = 
     """
     rng = np.random.default_rng(seed)
     t, x, v, a = _motion(n, dt, rng)
-    F0, load = _generic_truth(effect, strength, t, x, v, a)
+    F0, load = _generic_truth(effect)(strength, t, x, v, a)
     sd = float(np.std(F0))
     F = F0 + noise * sd * rng.standard_normal(n)
     data = Dataset.from_arrays(t, F, x=x, v=v, a=a, load=load, name=f"{effect}-s{strength}")
     return (data, F0) if return_truth else data
+
+
+def _generic_truth(effect: str):
+    """``truth(s, t, x, v, a) -> (F, load)`` of the generic case ``effect``."""
+    if effect in BENCH_GENERIC:
+        return BENCH_GENERIC[effect]
+    fn = resolve(EFFECTS[effect].generic_truth) if effect in EFFECTS else None
+    if fn is None:
+        raise ValueError(f"unknown benchmark effect {effect!r}; choose from {CASES}")
+    return fn
+
+
+def _plant_truth(effect: str):
+    """``truth(kin, s) -> F`` of the per-plant case ``effect`` (its record's first form)."""
+    if effect in BENCH_CASES:
+        return BENCH_CASES[effect]
+    if effect not in EFFECTS or not EFFECTS[effect].truths:
+        raise ValueError(f"unknown benchmark effect {effect!r}; choose from {PLANT_CASES}")
+    return EFFECTS[effect].truth()
 
 
 def expected(effect: str) -> str:
@@ -94,14 +115,27 @@ class BenchCase:
 
 
 def applicable(plant: str, effect: str, quick: bool = False) -> bool:
-    """Whether a per-plant case exists: the isolator's mre_lugre has no Stribeck curve, and a
-    ``position`` defect needs a record whose held-out part revisits the fit part's
-    positions (not the press's one-way stroke, see :func:`_bump_centre`)."""
-    if plant == "mre_isolator" and effect == "stribeck_shape":
-        return False
-    if effect == "position":
-        return _bump_centre(plant_kinematics(plant, quick)) is not None
-    return True
+    """Whether a per-plant case exists: the effect record's ``truth_applies`` on the plant's
+    motion (the isolator's mre_lugre has no Stribeck curve; a ``position`` defect needs a
+    record whose held-out part revisits the fit part's positions, not the press's one-way
+    stroke, see :func:`_bump_centre`).
+
+    Parameters
+    ----------
+    plant : str
+        One of :data:`PLANT_NAMES`.
+    effect : str
+        One of :data:`PLANT_CASES`.
+    quick : bool
+        Short protocol of :func:`plant_kinematics`.
+
+    Returns
+    -------
+    bool
+    """
+    if effect in BENCH_CASES or effect not in EFFECTS or EFFECTS[effect].truth_applies is None:
+        return True
+    return EFFECTS[effect].applies(plant_kinematics(plant, quick))
 
 
 def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float = 0.02,
@@ -126,9 +160,10 @@ def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float
         Use the short protocol of :func:`plant_kinematics`.
     """
     if plant in _PLANT_RUNS and effect in PLANT_CASES and not applicable(plant, effect, quick):
-        raise ValueError(f"{effect!r} does not apply to {plant!r} (no Stribeck curve in its "
-                         f"base law, or no position revisited by its held-out part)")
+        raise ValueError(f"{effect!r} does not apply to {plant!r} "
+                         f"({EFFECTS[effect].truth_applies} is false for its motion)")
     kin = plant_kinematics(plant, quick)
+    truth = _plant_truth(effect)
     Fb = _base_parts(kin)[0]
     sdb = float(np.std(Fb)) or 1.0
     amp = 0.0
@@ -137,14 +172,14 @@ def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float
     else:
         # calibrate the amplitude factor so the effect's RMS is strength x EFFECT_SIZE of
         # std(F_base) on every plant (one rescaling: exact for effects linear in it)
-        F1 = _truth(kin, effect, 1.0)
+        F1 = truth(kin, 1.0)
         r1 = float(np.sqrt(np.mean((F1 - Fb) ** 2))) / sdb
         amp = strength * EFFECT_SIZE / r1 if r1 > 0 else strength
-        F0 = _truth(kin, effect, amp)
+        F0 = truth(kin, amp)
         r2 = float(np.sqrt(np.mean((F0 - Fb) ** 2))) / sdb
         if r2 > 0 and abs(r2 / (strength * EFFECT_SIZE) - 1.0) > 0.05:  # nonlinear in amp
             amp *= strength * EFFECT_SIZE / r2
-            F0 = _truth(kin, effect, amp)
+            F0 = truth(kin, amp)
     sd = float(np.std(F0)) or 1.0
     rng = np.random.default_rng(seed)
     F = F0 + noise * sd * rng.standard_normal(F0.size)

@@ -7,24 +7,14 @@ import numpy as np
 from friction.dataset import Dataset
 from friction.metrics import nrmse
 
+# where each effect's gap should show: its record's families (one home for an effect)
+from ..effects import EXPECTED_EVIDENCE, EXPECTED_FAMILIES
 from ..regions import band_splits, regime_split
 from .cases import expected
 
 __all__ = ["EXPECTED_FAMILIES", "EXPECTED_EVIDENCE", "localise", "localise_gap",
            "truth_shrink", "summarise"]
 
-#: region families where each effect should concentrate the held-out gap (see :func:`localise`)
-EXPECTED_FAMILIES = {
-    "acceleration": ("accel/decel", "|a|"),
-    "inertia": ("|a|", "accel/decel"),
-    "delay": ("|a|", "frequency", "accel/decel"),
-    "asymmetry": ("direction",),
-    "load": ("load",),
-    "position": ("x",),
-    "drift": ("t",),
-    "presliding": ("pre-sliding",),
-    "stribeck_shape": ("|v|", "pre-sliding"),
-}
 
 
 def _regime_families(where):
@@ -51,10 +41,6 @@ _BAND_FAMILY = {"|v|": "|v|", "|a|": "|a|", "x": "x", "t": "t", "load": "load"}
 _EVIDENCE_FAMILY = {"corr_sign_v": "direction", "corr_v": "direction", "corr_a": "|a|",
                     "corr_x": "x", "corr_t": "t", "corr_load": "load", "corr_dFdt": "dF/dt",
                     "corr_level_x": "x", "corr_level_t": "t", "corr_level_load": "load"}
-#: families each effect should point at by the signed evidence correlations
-EXPECTED_EVIDENCE = {"acceleration": ("|a|",), "inertia": ("|a|",), "delay": ("dF/dt", "|a|"),
-                     "asymmetry": ("direction",), "load": ("load",), "position": ("x",),
-                     "drift": ("t",)}
 
 
 def localise(report, min_fraction: float = 0.05, method: str = "where") -> dict:

@@ -1,7 +1,14 @@
-"""Truth forces of the benchmark cases: the base law plus a withheld effect, along a motion.
+"""Truth forces of the benchmark: the base law plus a withheld effect, along a motion.
 
-Each truth differs in form from the candidate that should name it (:mod:`diagnosis.effects`);
-see the table in :mod:`diagnosis.benchmark`.
+Each effect's truth forms are functions here that its record names
+(:attr:`diagnosis.effects.Effect.truths`, ``generic_truth``, ``truth_applies``): per plant
+``truth(kin, s) -> F`` [N] along a plant's motion (:class:`.kinematics.PlantKinematics`, its
+``base`` law) with an amplitude factor ``s`` (:func:`.cases.make_plant_case` calibrates it
+to the requested strength), generic ``truth(s, t, x, v, a) -> (F, load)`` on the mass-like
+axis of :func:`.cases.make_case` with the LuGre law :data:`BASE`. Each differs in form from
+the candidate that should name it (:mod:`diagnosis.candidates`); see the table in
+:mod:`diagnosis.benchmark`. The benchmark's own cases without an effect, ``clean`` and
+``outside``, are :data:`BENCH_CASES`.
 """
 from __future__ import annotations
 
@@ -11,10 +18,10 @@ from numba import njit
 from friction import make_model
 from friction.lugre import bristle_update
 
-
 from .kinematics import FINE, PlantKinematics, fine_motion
 
-__all__ = ["BASE", "MAX_DELAY_SAMPLES", "STRIBECK_TAIL", "FIT_FRACTION"]
+__all__ = ["BASE", "MAX_DELAY_SAMPLES", "STRIBECK_TAIL", "FIT_FRACTION", "BENCH_CASES",
+           "BENCH_GENERIC"]
 
 BASE = dict(sigma0=2e4, sigma1=150.0, sigma2=8.0, Fc=2.0, Fs=2.8, vs=5e-3)
 #: longest force-channel delay of the ``delay`` truth [samples] (the candidate reaches 25)
@@ -23,46 +30,230 @@ MAX_DELAY_SAMPLES = 20.0
 STRIBECK_TAIL = 0.05
 
 
-def _generic_truth(effect, s, t, x, v, a):
-    """Noise-free truth force and load of a generic case."""
-    load = None
-    base = make_model("lugre", **BASE)
+# -- generic cases (historical): a multi-sine motion of a mass-like axis -----------------------
+def _generic_base():
+    return make_model("lugre", **BASE)
+
+
+def acceleration_generic(s, t, x, v, a):
+    """Modified LuGre (seed 000) with its lagged acceleration part."""
+    truth = make_model("modified_lugre", sigma0=BASE["sigma0"], sigma1=BASE["sigma1"],
+                       sigma2=BASE["sigma2"], Fc=BASE["Fc"], Fs=BASE["Fs"], vs=BASE["vs"])
+    truth = truth.with_values(f_a=1.5 * s, a_s=0.3, v_c=0.04, tau=0.01)
+    return truth.simulate(t, v, a=a), None
+
+
+def load_generic(s, t, x, v, a):
+    """Levels linear in a varying normal load (seed 004 style)."""
+    load = 100.0 + 60.0 * np.sin(2 * np.pi * 0.05 * t) ** 2 + 20 * (t / t[-1])
+    levels = 1.0 + 0.6 * s * (load - 100.0) / 100.0
+    return _generic_base().simulate(t, v) * levels, load
+
+
+def asymmetry_generic(s, t, x, v, a):
+    """Direction twins of the levels and the viscous slope."""
+    F = _generic_base().with_values(Fc_neg=BASE["Fc"] * (1 + 0.5 * s),
+                                    Fs_neg=BASE["Fs"] * (1 + 0.5 * s),
+                                    sigma2_neg=BASE["sigma2"] * (1 + 0.6 * s)).simulate(t, v)
+    return F, None
+
+
+def stribeck_shape_generic(s, t, x, v, a):
+    """A long Lorentzian tail: the Gaussian base cannot bend like it."""
+    F = _generic_base().with_values(shape="lorentzian", Fc=BASE["Fc"] * 0.6,
+                                    Fs=BASE["Fs"] * (1 + 1.5 * s),
+                                    vs=BASE["vs"] * 3).simulate(t, v)
+    return F, None
+
+
+def position_generic(s, t, x, v, a):
+    """A half-cosine level change along the stroke."""
+    span = np.ptp(x)
+    F = _generic_base().simulate(t, v) + 0.8 * s * np.cos(np.pi * (x - x.min()) / span) \
+        * np.tanh(v / 2e-3)
+    return F, None
+
+
+def inertia_generic(s, t, x, v, a):
+    """A 1.2 kg (x s) mass error in the inverse dynamics."""
+    return _generic_base().simulate(t, v) + 1.2 * s * a, None
+
+
+def delay_generic(s, t, x, v, a):
+    """The force channel 4.5 s samples late (linear interpolation)."""
     dt = t[1] - t[0]
-    if effect == "acceleration":
-        truth = make_model("modified_lugre", sigma0=BASE["sigma0"], sigma1=BASE["sigma1"],
-                           sigma2=BASE["sigma2"], Fc=BASE["Fc"], Fs=BASE["Fs"], vs=BASE["vs"])
-        truth = truth.with_values(f_a=1.5 * s, a_s=0.3, v_c=0.04, tau=0.01)
-        F = truth.simulate(t, v, a=a)
-    elif effect == "load":
-        load = 100.0 + 60.0 * np.sin(2 * np.pi * 0.05 * t) ** 2 + 20 * (t / t[-1])
-        levels = 1.0 + 0.6 * s * (load - 100.0) / 100.0  # seed-004 style: levels linear in load
-        F = base.simulate(t, v) * levels
-    elif effect == "asymmetry":
-        F = base.with_values(Fc_neg=BASE["Fc"] * (1 + 0.5 * s), Fs_neg=BASE["Fs"] * (1 + 0.5 * s),
-                             sigma2_neg=BASE["sigma2"] * (1 + 0.6 * s)).simulate(t, v)
-    elif effect == "stribeck_shape":
-        # a long Lorentzian tail: the Gaussian base cannot bend like it
-        F = base.with_values(shape="lorentzian", Fc=BASE["Fc"] * 0.6,
-                             Fs=BASE["Fs"] * (1 + 1.5 * s), vs=BASE["vs"] * 3).simulate(t, v)
-    elif effect == "position":
-        span = np.ptp(x)
-        F = base.simulate(t, v) + 0.8 * s * np.cos(np.pi * (x - x.min()) / span) * np.tanh(v / 2e-3)
-    elif effect == "inertia":
-        F = base.simulate(t, v) + 1.2 * s * a  # 1.2 kg mass error in the inverse dynamics
-    elif effect == "delay":
-        F0 = base.simulate(t, v)
-        F = np.interp(t - 4.5 * s * dt, t, F0)
-    elif effect == "drift":
-        warm = 1.0 + 0.5 * s * (1.0 - np.exp(-t / (0.6 * t[-1])))  # saturating warm-up
-        F = base.simulate(t, v) * warm
-    elif effect == "clean":
-        F = base.simulate(t, v)
-    elif effect == "outside":
-        # an electrical ripple at 13 Hz, unrelated to motion: no candidate can express it
-        F = base.simulate(t, v) + 0.6 * s * np.sin(2 * np.pi * 13.0 * t)
-    else:
-        raise ValueError(f"unknown benchmark effect {effect!r}; the benchmark's cases are diagnosis.benchmark.CASES")
-    return F, load
+    return np.interp(t - 4.5 * s * dt, t, _generic_base().simulate(t, v)), None
+
+
+def drift_generic(s, t, x, v, a):
+    """A saturating warm-up of the levels."""
+    warm = 1.0 + 0.5 * s * (1.0 - np.exp(-t / (0.6 * t[-1])))
+    return _generic_base().simulate(t, v) * warm, None
+
+
+def clean_generic(s, t, x, v, a):
+    """The base law itself."""
+    return _generic_base().simulate(t, v), None
+
+
+def outside_generic(s, t, x, v, a):
+    """An electrical ripple at 13 Hz, unrelated to motion: no candidate can express it."""
+    return _generic_base().simulate(t, v) + 0.6 * s * np.sin(2 * np.pi * 13.0 * t), None
+
+
+#: generic truths of the cases that are no effect of the library
+BENCH_GENERIC = {"clean": clean_generic, "outside": outside_generic}
+
+
+# -- per-plant cases: along a plant's simulated motion ----------------------------------------
+def _setting(kin: PlantKinematics):
+    # what most truths start from: base force, its friction part, friction level, scales
+    F, Ff = _base_parts(kin)
+    return F, Ff, _level(kin), kin.scales
+
+
+def clean_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The base law itself (expected verdict ``none``)."""
+    return _base_parts(kin)[0]
+
+
+def outside_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """An electrical ripple at 0.0537 x the sample rate, unrelated to the motion."""
+    F, _, Fk, _ = _setting(kin)
+    fr = 0.0537 / kin.dt
+    return F + 0.25 * s * Fk * np.sin(2 * np.pi * fr * kin.t + 0.3)
+
+
+#: per-plant truths of the cases that are no effect of the library
+BENCH_CASES = {"clean": clean_truth, "outside": outside_truth}
+
+
+def acceleration_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Modified LuGre (seed 000) with a lagged F_d; isolator: a first-order-lagged
+    a/sqrt(a^2+a_s^2) fading as 1/(1+(v/v_c)^2)."""
+    t, v, a, law, dt = kin.t, kin.v, kin.a, kin.base, kin.dt
+    F, _, Fk, sc = _setting(kin)
+    if law.name != "mre_lugre":
+        p = law.params
+        tru = make_model("modified_lugre", sigma0=p.sigma0, sigma1=p.sigma1, sigma2=p.sigma2,
+                         Fc=p.Fc, Fs=p.Fs, vs=p.vs, alpha=p.alpha, shape=p.shape,
+                         v1=1e3 * sc["v99"], v2=2e3 * sc["v99"],
+                         f_a=0.5 * s * Fk, a_s=0.1 * sc["a99"], v_c=0.2 * sc["v99"],
+                         beta=1.0, gamma=1.0, tau=3 * dt)
+        return tru.simulate(t, v, a=a)
+    a_s = 0.1 * sc["a99"]
+    u = a / np.sqrt(a * a + a_s * a_s) / (1.0 + (v / (0.2 * sc["v99"])) ** 2)
+    return F + 0.5 * s * Fk * _lag(t, u, 3 * dt)
+
+
+def load_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Seed-004 levels affine in the load inside the bristle dynamics (``load_lugre``; the
+    press: the seed's own Table 3 coefficients x ``s``)."""
+    t, v, L, law = kin.t, kin.v, kin.load, kin.base
+    if kin.plant == "forging_press":
+        q = kin.seed_law.params
+        tru = kin.seed_law.with_values(**{k: getattr(q, k) * s for k in
+                                          ("k1_low", "k2_low", "k3_low", "k1_high",
+                                           "k2_high", "k3_high")})
+        return tru.simulate(t, v, load=L)
+    if law.name != "mre_lugre":
+        p = law.params
+        L0 = float(np.mean(L))
+        # levels change by 0.4 s x the relative load change (s <= 2.4: Fc0 stays > 0)
+        k = 0.4 * min(s, 2.4) / L0
+        tru = make_model("load_lugre", sigma0=p.sigma0, sigma1=p.sigma1,
+                         Fc0=p.Fc * (1 - k * L0), Fs0=p.Fs * (1 - k * L0), vs=p.vs,
+                         sigma20=p.sigma2 * (1 - k * L0),
+                         k1_low=k * p.Fc, k2_low=k * p.Fs, k3_low=k * p.sigma2,
+                         k1_high=k * p.Fc, k2_high=k * p.Fs, k3_high=k * p.sigma2)
+        return tru.simulate(t, v, load=L)
+    F, Ff = _base_parts(kin)
+    rel = (L - np.mean(L)) / np.mean(L)
+    return F + Ff * 0.6 * s * rel
+
+
+def asymmetry_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Direction twins Fc_neg, Fs_neg, sigma2_neg (isolator: hysteretic part scaled on
+    v < 0)."""
+    law = kin.base
+    if law.name != "mre_lugre":
+        p = law.params
+        return law.with_values(Fc_neg=p.Fc * (1 + 0.4 * s), Fs_neg=p.Fs * (1 + 0.4 * s),
+                               sigma2_neg=p.sigma2 * (1 + 0.5 * s)).simulate(kin.t, kin.v)
+    F, Ff, _, sc = _setting(kin)
+    neg = 0.5 * (1 - np.tanh(kin.v / (0.01 * sc["v99"])))
+    return F + Ff * 0.4 * s * neg
+
+
+def has_stribeck_curve(kin: PlantKinematics) -> bool:
+    """Whether the plant's base law has a Stribeck curve (not the isolator's mre_lugre)."""
+    return kin.base.name != "mre_lugre"
+
+
+def stribeck_shape_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """LuGre whose Stribeck curve has an extra exponential low-speed tail (neither
+    Gaussian-alpha nor Lorentzian), integrated :data:`.kinematics.FINE` x finer than the
+    data."""
+    law = kin.base
+    if not has_stribeck_curve(kin):
+        raise ValueError("stribeck_shape: the mre_lugre base has no Stribeck curve")
+    p = law.params
+    tail = 0.4 * s * p.Fc
+    vt = STRIBECK_TAIL * kin.scales["v99"]
+
+    def g(vv):
+        return law.g(vv) + tail * np.exp(-np.abs(vv) / vt)
+    return _lugre_curve(kin, g, p.sigma0, p.sigma1, p.sigma2)
+
+
+def revisits_positions(kin: PlantKinematics) -> bool:
+    """Whether the held-out part of the record revisits the fit part's positions
+    (:func:`_bump_centre`; not the press's one-way stroke)."""
+    return _bump_centre(kin) is not None
+
+
+def position_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A local defect: friction raised by a Gaussian bump along the stroke, centred where
+    fit and held-out parts both pass."""
+    F, Ff, _, sc = _setting(kin)
+    span = sc["x_hi"] - sc["x_lo"] or 1.0
+    xc = _bump_centre(kin)
+    if xc is None:
+        raise ValueError(f"position: the held-out part of the {kin.plant} record never "
+                         f"revisits the positions of its fit part")
+    bump = np.exp(-0.5 * ((kin.x - xc) / (0.08 * span)) ** 2)
+    return F + Ff * 0.6 * s * bump
+
+
+def inertia_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A mass error times the *filtered* acceleration of the inverse dynamics."""
+    from scipy.signal import butter, filtfilt
+    F, _, Fk, sc = _setting(kin)
+    fs = 1.0 / kin.dt
+    b, aa = butter(2, min(0.2 * fs, 100.0 * max(1.0, fs / 1000.0)) / (0.5 * fs))
+    af = filtfilt(b, aa, kin.a)
+    dm = 0.3 * s * Fk / sc["a99"]
+    return F + dm * af
+
+
+def delay_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """An acquisition pipeline: transport delay of the force channel (cubic-spline
+    fractional shift of ``s`` samples, at most :data:`MAX_DELAY_SAMPLES`) followed by a
+    half-sample first-order anti-alias lag."""
+    from scipy.interpolate import CubicSpline
+    t, dt = kin.t, kin.dt
+    F = _base_parts(kin)[0]
+    d = min(s, MAX_DELAY_SAMPLES) * dt
+    Fd = CubicSpline(t, F)(np.clip(t - d, t[0], None))
+    return _lag(t, Fd, 0.5 * dt)
+
+
+def drift_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A saturating warm-up of the friction level (time constant: the record)."""
+    F, Ff = _base_parts(kin)
+    t = kin.t
+    T = t[-1] - t[0]
+    return F + Ff * 0.4 * s * (1.0 - np.exp(-(t - t[0]) / T))
 
 
 @njit(cache=True)
@@ -135,96 +326,3 @@ def _level(kin: PlantKinematics) -> float:
     if kin.base.name == "mre_lugre":
         return float(p.beta / p.alpha)
     return float(p.Fc)
-
-
-def _truth(kin: PlantKinematics, effect: str, s: float) -> np.ndarray:
-    """Noise-free truth force [N] of ``effect`` with amplitude factor ``s`` along the motion
-    (:func:`make_plant_case` calibrates ``s`` to the requested strength)."""
-    t, x, v, a, L = kin.t, kin.x, kin.v, kin.a, kin.load
-    law = kin.base
-    mre = law.name == "mre_lugre"
-    F, Ff = _base_parts(kin)
-    Fk = _level(kin)
-    sc = kin.scales
-    dt = kin.dt
-    if effect == "clean":
-        return F
-    if effect == "outside":
-        fr = 0.0537 / dt  # electrical ripple, unrelated to the motion
-        return F + 0.25 * s * Fk * np.sin(2 * np.pi * fr * t + 0.3)
-    if effect == "acceleration":
-        if not mre:
-            p = law.params
-            tru = make_model("modified_lugre", sigma0=p.sigma0, sigma1=p.sigma1, sigma2=p.sigma2,
-                             Fc=p.Fc, Fs=p.Fs, vs=p.vs, alpha=p.alpha, shape=p.shape,
-                             v1=1e3 * sc["v99"], v2=2e3 * sc["v99"],
-                             f_a=0.5 * s * Fk, a_s=0.1 * sc["a99"], v_c=0.2 * sc["v99"],
-                             beta=1.0, gamma=1.0, tau=3 * dt)
-            return tru.simulate(t, v, a=a)
-        a_s = 0.1 * sc["a99"]
-        u = a / np.sqrt(a * a + a_s * a_s) / (1.0 + (v / (0.2 * sc["v99"])) ** 2)
-        return F + 0.5 * s * Fk * _lag(t, u, 3 * dt)
-    if effect == "load":
-        if kin.plant == "forging_press":
-            # the seed's own load law, its Table 3 coefficients scaled by the strength
-            q = kin.seed_law.params
-            tru = kin.seed_law.with_values(**{k: getattr(q, k) * s for k in
-                                              ("k1_low", "k2_low", "k3_low", "k1_high",
-                                               "k2_high", "k3_high")})
-            return tru.simulate(t, v, load=L)
-        if not mre:
-            p = law.params
-            L0 = float(np.mean(L))
-            # levels change by 0.4 s x the relative load change (s <= 2.4: Fc0 stays > 0)
-            k = 0.4 * min(s, 2.4) / L0
-            tru = make_model("load_lugre", sigma0=p.sigma0, sigma1=p.sigma1,
-                             Fc0=p.Fc * (1 - k * L0), Fs0=p.Fs * (1 - k * L0), vs=p.vs,
-                             sigma20=p.sigma2 * (1 - k * L0),
-                             k1_low=k * p.Fc, k2_low=k * p.Fs, k3_low=k * p.sigma2,
-                             k1_high=k * p.Fc, k2_high=k * p.Fs, k3_high=k * p.sigma2)
-            return tru.simulate(t, v, load=L)
-        rel = (L - np.mean(L)) / np.mean(L)
-        return F + Ff * 0.6 * s * rel
-    if effect == "asymmetry":
-        if not mre:
-            p = law.params
-            return law.with_values(Fc_neg=p.Fc * (1 + 0.4 * s), Fs_neg=p.Fs * (1 + 0.4 * s),
-                                   sigma2_neg=p.sigma2 * (1 + 0.5 * s)).simulate(t, v)
-        neg = 0.5 * (1 - np.tanh(v / (0.01 * sc["v99"])))
-        return F + Ff * 0.4 * s * neg
-    if effect == "stribeck_shape":
-        if mre:
-            raise ValueError("stribeck_shape: the mre_lugre base has no Stribeck curve")
-        p = law.params
-        tail = 0.4 * s * p.Fc
-        vt = STRIBECK_TAIL * sc["v99"]
-
-        def g(vv):
-            return law.g(vv) + tail * np.exp(-np.abs(vv) / vt)
-        return _lugre_curve(kin, g, p.sigma0, p.sigma1, p.sigma2)
-    if effect == "position":
-        span = sc["x_hi"] - sc["x_lo"] or 1.0
-        xc = _bump_centre(kin)
-        if xc is None:
-            raise ValueError(f"position: the held-out part of the {kin.plant} record never "
-                             f"revisits the positions of its fit part")
-        bump = np.exp(-0.5 * ((x - xc) / (0.08 * span)) ** 2)
-        return F + Ff * 0.6 * s * bump
-    if effect == "inertia":
-        from scipy.signal import butter, filtfilt
-        fs = 1.0 / dt
-        b, aa = butter(2, min(0.2 * fs, 100.0 * max(1.0, fs / 1000.0)) / (0.5 * fs))
-        af = filtfilt(b, aa, a)
-        dm = 0.3 * s * Fk / sc["a99"]
-        return F + dm * af
-    if effect == "delay":
-        # an acquisition pipeline: transport delay of the force channel (cubic-spline
-        # fractional shift) followed by a half-sample first-order anti-alias lag
-        from scipy.interpolate import CubicSpline
-        d = min(s, MAX_DELAY_SAMPLES) * dt
-        Fd = CubicSpline(t, F)(np.clip(t - d, t[0], None))
-        return _lag(t, Fd, 0.5 * dt)
-    if effect == "drift":
-        T = t[-1] - t[0]
-        return F + Ff * 0.4 * s * (1.0 - np.exp(-(t - t[0]) / T))
-    raise ValueError(f"unknown benchmark effect {effect!r}; the benchmark's cases are diagnosis.benchmark.CASES")

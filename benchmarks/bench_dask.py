@@ -43,11 +43,13 @@ Every cluster result equals the inline one (parameters and fit NRMSE 0.519, bit 
 The workers' first import of the library (2.8-3.1 s, once per worker process) is not
 counted. Where a 1-worker run loses to inline (same one co-simulation at a time): its first
 population carries the shipping and the worker's first FMU opening (client-side 2.3 s
-against 0.9 s of evaluation on the worker in an instrumented run), later populations cost
-what the worker spends on them to within 2-3 %; a worker's evaluations measured alone
-(20 rows, alternating with local ones) are 12-17 ms against 12-16 ms here, noise on this
-machine. With a load of 8-10 on 2 cores every process gets a slice of a core, so the
-figures are the machine's as much as the method's.
+against 0.9 s of evaluation on the worker in an instrumented run); later populations cost
+the client 3-4 % more than the worker spends on them; and in the instrumented runs the
+worker's populations took 14-19 ms per co-simulation against 12-14 ms inline, a gap not
+seen when the same evaluations are timed alone alternating with local ones (worker 12-17
+ms, local 12-16 ms, with or without the nanny's malloc settings): not resolved, and within
+what this machine's load moves. With a load of 8-10 on 2 cores every process gets a slice
+of a core, so the figures are the machine's as much as the method's.
 
 Earlier the same hour (best of 2, load 11.4-12.5): inline 5.43 s, 1 worker 4.88 s,
 2 workers 4.00 s (2/1 = 0.82); one round each, ``--evals 320 --seconds 4``, load 9.5-10.5:

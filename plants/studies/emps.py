@@ -1397,7 +1397,9 @@ def run_native(model: EMPSModel, rec: EMPSRecord, paths: dict, *, closed: bool =
     communication step ``step`` [s].
 
     Returns ``{"x": position [m], "u": voltage [V] (closed loop: the controller's), "seconds"}``
-    at the record's samples."""
+    at the record's samples. The law FMU starts from its rest state (the in-process loop of
+    :func:`simulate` from the steady sliding state at the initial velocity): from the
+    record's motion the two differ for the first tens of milliseconds."""
     from fmus.connect import PlantLoop
     from fmus.master import law_parameters
     init = rec.initial() if initial is None else initial

@@ -17,8 +17,11 @@ evaluation count is projected as its wall time plus one single run per missing e
 Single co-simulation runs over the whole record are timed for the three pairings, after
 the identifications compiled everything (best of ``--repeats``, the pythonfmu pair of two).
 
-The pythonfmu run goes first: in this process a pythonfmu law FMU instantiated after a
-native one fails ``fmi2Instantiate`` (seen while writing this benchmark; not yet traced).
+The pythonfmu run goes first: in one process, after the pythonfmu plant FMU has run with the
+native law FMU, the pythonfmu law FMU built and instantiated afterwards fails
+``fmi2Instantiate`` with no log message (seen while writing this benchmark; instantiated
+first, both kinds then run in any order; the law FMUs alone in either order work; not yet
+traced).
 
 Figures, ``nice python benchmarks/bench_emps_cosim.py`` (defaults: native budget 200,
 pythonfmu budget 8), 2 cores shared with five other engineers' jobs (``uptime`` load

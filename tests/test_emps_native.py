@@ -296,3 +296,34 @@ def test_balanced_fit_picks_the_stored_weight():
     for w, (cl, ol) in ((w, v["estimation_ratios"]) for w, v in res["weights"].items()):
         assert cl == pytest.approx(studies.WEIGHT_SWEEP[w]["estimation_ratios"][0], abs=0.01)
         assert ol == pytest.approx(studies.WEIGHT_SWEEP[w]["estimation_ratios"][1], abs=0.01)
+
+
+def test_frictionlab_identify_runs_the_native_loop_from_files(estimation, native, tmp_path):
+    """The user's path end to end: the record as CSV (write_measured_csv), the connection
+    file as TOML next to the FMUs, ``frictionlab identify DATA.csv --plant-fmu
+    emps_axis_native.fmu --connect emps.toml``: the fit on 3 s of DATA_EMPS reaches the
+    voltage NRMSE of the in-process model on that window."""
+    import json
+    import shutil
+    import subprocess
+    import sys
+    for p in native.values():
+        shutil.copy(p, tmp_path)
+    E = estimation
+    studies.write_measured_csv(E, tmp_path / "emps.csv")
+    conn = studies.native_connection_dict(studies.start_model(), "closed", initial=E.initial())
+    conn["law"]["names"] = ["Fc", "sigma2", "b"]
+    (tmp_path / "emps.toml").write_text(studies.connection_toml(conn))
+    exe = shutil.which("frictionlab") or [sys.executable, "-m", "frictionlab"]
+    cmd = ([exe] if isinstance(exe, str) else exe) + [
+        "identify", "emps.csv", "--plant-fmu", "emps_axis_native.fmu", "--connect",
+        "emps.toml", "--algorithm", "least_squares", "--max-evals", "40", "--json", "id.json",
+        "--quiet"]
+    res = subprocess.run(cmd, cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert res.returncode == 0, res.stderr[-2000:]
+    out = json.loads((tmp_path / "id.json").read_text())
+    assert set(out["params"]) == {"Fc", "sigma2", "b", "plant.M"}
+    # the stored model's voltage NRMSE on the same window, in process
+    ref = studies.simulate(studies.stored_model("lugre"), E)
+    nrmse = np.sqrt(np.mean((ref["u"] - E.vir) ** 2)) / np.std(E.vir)
+    assert out["fit_nrmse"] < 1.2 * nrmse

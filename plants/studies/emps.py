@@ -60,7 +60,7 @@ __all__ = ["EMPSRecord", "load_record", "EMPSModel", "baseline_model", "simulate
            "build_fmus", "measured_record", "connection_dict", "connection_toml",
            "run_through_fmus", "identify_through_fmus", "NATIVE_FMUS", "build_native_fmus",
            "native_connection_dict", "native_connection", "run_native", "scores_native",
-           "identify_native", "balanced_fit", "OL_WEIGHTS", "WEIGHT_SWEEP", "open_loop_limit"]
+           "identify_native", "write_measured_csv", "balanced_fit", "OL_WEIGHTS", "WEIGHT_SWEEP", "open_loop_limit"]
 
 SOURCE = ("EMPS benchmark (Janot, Gautier, Brunot), nonlinearbenchmark.org; data copy "
           "forgi86/sysid-neural-continuous @ 956aa7ec")
@@ -1111,7 +1111,8 @@ def _main(argv=None) -> int:
     ap.add_argument("--identify", action="store_true", help="re-identify our models")
     ap.add_argument("--no-diagnosis", action="store_true")
     ap.add_argument("--fmus", action="store_true", help="also run the stored model through "
-                    "the EMPS plant FMUs and their connection files (written into OUT/fmus)")
+                    "the EMPS plant FMUs and their connection files (written into OUT/fmus, "
+                    "with the records as CSV for frictionlab identify --plant-fmu)")
     a = ap.parse_args(argv)
     from frictionlab.progress import report
     res = run_study(a.out, identify=a.identify, diagnose_records=not a.no_diagnosis,
@@ -1129,6 +1130,15 @@ def _main(argv=None) -> int:
         with open(os.path.join(a.out, "emps_through_fmus.json"), "w") as fh:
             json.dump(fm, fh, indent=2, default=float)
         print(json.dumps(fm, indent=2, default=float))
+        E, P = load_record("estimation"), load_record("pulses")
+        for rec in (E, P):
+            write_measured_csv(rec, os.path.join(d, f"{rec.name}.csv"))
+        with open(os.path.join(d, "emps_native_closed_start.toml"), "w") as fh:
+            fh.write(connection_toml(native_connection_dict(start_model(), "closed",
+                                                            initial=E.initial())))
+        print(f"the native loop from the command line (in {d}): frictionlab identify "
+              f"{E.name}.csv {P.name}.csv --plant-fmu emps_axis_native.fmu --connect "
+              f"emps_native_closed_start.toml --json id.json")
     return 0
 
 
@@ -1177,6 +1187,19 @@ def measured_record(rec: EMPSRecord, stop: float | None = None):
             "qg_next": ahead(rec.qg), "pulses_next": ahead(rec.pulses),
             "vir_next": ahead(rec.vir)}
     return MeasuredRecord(np.arange(n) * 1e-3, cols, rec.name)
+
+
+def write_measured_csv(rec: EMPSRecord, path, stop: float | None = None) -> str:
+    """``rec`` as the CSV a connection file of the EMPS FMUs reads (:func:`measured_record`'s
+    columns: ``t`` on the controller's clock, ``qm, vir, qg, pulses`` and the sampled
+    signals one sample ahead ``qg_next, pulses_next, vir_next``), for ``frictionlab
+    identify DATA.csv --plant-fmu emps_axis_native.fmu --connect emps_native_closed.toml``.
+    Returns the path."""
+    m = measured_record(rec, stop)
+    names = ["t"] + list(m.columns)
+    data = np.column_stack([m.t] + [m.columns[k] for k in m.columns])
+    np.savetxt(path, data, delimiter=",", header=",".join(names), comments="", fmt="%.17g")
+    return str(path)
 
 
 def connection_dict(model: EMPSModel, kind: str = "closed", identify=("M",)) -> dict:

@@ -118,8 +118,25 @@ def problem(seconds: float, step: float, noise: float = 1e-6):
 
 
 def identify(record, conn, plant, native, evals: int, pop: int, seed: int, executor):
-    """One identification (differential evolution over :data:`NAMES`); returns the result
-    and its wall time [s]."""
+    """One identification (differential evolution over :data:`NAMES`).
+
+    Parameters
+    ----------
+    record, conn, plant, native
+        As :func:`problem` returns them.
+    evals : int
+        Co-simulations (the budget).
+    pop : int
+        Population multiplier (population = ``pop`` x 5 parameters).
+    seed : int
+        Random seed (the same for every executor).
+    executor : "inline" or dask.distributed.Client
+
+    Returns
+    -------
+    (IdentificationResult, float)
+        The result and its wall time [s].
+    """
     from friction import make_model
     from identification.plant_fmu import identify_plant_fmu
     start = make_model("lugre", **TRUTH).with_values(Fc=0.7, Fs=1.1, vs=2e-3, sigma2=0.8)
@@ -206,6 +223,14 @@ def _warm() -> float:
 
 
 def main(argv=None) -> int:
+    """Run the benchmark (see the module docstring); 0 when every cluster result equals
+    the inline one, else 1.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        Command-line arguments (default ``sys.argv[1:]``).
+    """
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--evals", type=int, default=300, help="co-simulations per identification")
     ap.add_argument("--pop", type=int, default=8, help="differential evolution popsize "

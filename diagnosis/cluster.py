@@ -49,13 +49,11 @@ def as_client(executor):
                      f"in-process (None) or on a dask.distributed.Client")
 
 
-def _fit_one(name, law, base_names, fit, ctx):
+def _fit_one(name, *, law, base_names, fit, ctx):
     """Best (composite, fit NRMSE) of candidate ``name`` over its law variants, or None
     when it does not apply (the client decides what to report)."""
-    from identification.cluster import _STATS
     from .composite import fit_composite
     from .core import CANDIDATES  # the registry diagnose() uses, wherever it lives
-    _STATS["candidates"] += 1
     cand = CANDIDATES[name].specialise(law)
     best = None
     for law_v, names_v in cand.modify_law(law, base_names, ctx):
@@ -122,19 +120,12 @@ def candidate_fits(executor, names, law, base_names, fit, ctx, val_sets=()) -> d
     names = applicable(names, law, fit, ctx, val_sets)
     if not names:
         return {}
-    fit_f, ctx_f, law_f = client.scatter([fit, ctx, law], broadcast=True, hash=False)
-    futures = [client.submit(_fit_one, n, law_f, list(base_names), fit_f, ctx_f,
-                             pure=False, key=f"diagnose-candidate-{n}-{id(fit_f)}")
-               for n in names]
-    try:
-        return dict(zip(names, client.gather(futures)))
-    except (OSError, TimeoutError) as exc:
-        from identification.cluster import SchedulerError
-        raise SchedulerError(f"lost the dask scheduler at {client.scheduler_address} "
-                             f"during the candidate fits: {exc}") from None
-    finally:
-        for f in futures + [fit_f, ctx_f, law_f]:
-            f.release()
+    import functools
+    from identification.cluster import ShippedCall, run_shipped
+    # the fit record, its context and the base law go to each worker once, with the call
+    call = ShippedCall(functools.partial(_fit_one, law=law, base_names=list(base_names),
+                                         fit=fit, ctx=ctx))
+    return dict(zip(names, run_shipped(client, call, list(names))))
 
 
 def trajectory_fits(executor, names, run_one, tm, engine) -> dict:

@@ -406,26 +406,44 @@ def run_shipped(client, call: ShippedCall, args: list) -> list:
     Raises
     ------
     SchedulerError
-        When the scheduler or every worker is lost.
+        When the scheduler or every worker is lost (a lost worker's tasks run again on
+        the workers left).
     """
     from concurrent.futures import CancelledError
+    from distributed.scheduler import KilledWorker
     address = getattr(client, "scheduler_address", None) or "the scheduler"
+    lost = (OSError, CancelledError, TimeoutError, KilledWorker)
     placed = {}
     try:
-        nthreads = client.nthreads()
-        for w in sorted(nthreads):
-            placed[w] = client.scatter(call, workers=[w], hash=False)
-        slots = [w for w in sorted(placed) for _ in range(max(1, nthreads[w]))]
-        if not slots:
-            raise OSError("no worker is connected")
-        futures = [client.submit(_apply, placed[slots[i % len(slots)]], a, pure=False,
-                                 workers=[slots[i % len(slots)]])
-                   for i, a in enumerate(args)]
-        return client.gather(futures)
-    except (OSError, CancelledError, TimeoutError) as exc:
-        text = str(exc).strip().splitlines()
-        raise SchedulerError(f"lost the dask cluster at {address} during the run: "
-                             f"{text[0] if text else type(exc).__name__}") from None
+        for attempt in range(3):
+            try:
+                nthreads = client.nthreads()
+                for w in sorted(nthreads):
+                    if w not in placed:
+                        placed[w] = client.scatter(call, workers=[w], hash=False)
+                slots = [w for w in sorted(nthreads) for _ in range(max(1, nthreads[w]))]
+                if not slots:
+                    raise OSError("no worker is connected")
+                futures = [client.submit(_apply, placed[slots[i % len(slots)]], a,
+                                         pure=False, workers=[slots[i % len(slots)]],
+                                         allow_other_workers=True)
+                           for i, a in enumerate(args)]
+                return client.gather(futures)
+            except lost as exc:
+                # a worker lost: its copy is gone; the tasks run again on those left
+                # (each is deterministic), twice at most
+                try:
+                    left = client.status == "running" and bool(client.nthreads())
+                except Exception:  # noqa: BLE001 - the scheduler itself is gone
+                    left = False
+                if left and attempt < 2:
+                    for f in placed.values():
+                        f.release()
+                    placed = {}
+                    continue
+                text = str(exc).strip().splitlines()
+                raise SchedulerError(f"lost the dask cluster at {address} during the run: "
+                                     f"{text[0] if text else type(exc).__name__}") from None
     finally:
         for f in placed.values():
             try:
@@ -439,14 +457,33 @@ def _apply(call, arg):
 
 
 def ship(objective) -> ShippedObjective:
-    """:class:`ShippedObjective` of ``objective`` (FMU files by value, data inside)."""
+    """:class:`ShippedObjective` of ``objective`` (FMU files by value, data inside).
+
+    Parameters
+    ----------
+    objective : identification.objectives.Objective or ShippedObjective
+        The FMU files it opens are found through its ``plant_fmu``, its connection's
+        ``fmus`` and the law FMUs of its ``fmu_dir``; an objective without FMUs (the
+        in-process one) travels with its data only. A shipped one is returned as it is.
+
+    Returns
+    -------
+    ShippedObjective
+    """
     return objective if isinstance(objective, ShippedObjective) else \
         ShippedObjective(objective)
 
 
 def worker_stats() -> dict:
     """What this process did as a worker: ``chunks`` run, ``rows`` costed and rows
-    ``predicted`` (finite-difference Jacobians), bundles
-    ``extracted`` (written) or ``reused`` (found on disk or in memory), ``objectives``
-    received, diagnosis ``candidates`` fitted (:mod:`diagnosis.cluster`), ``folders`` used. Run it on every worker with ``client.run(worker_stats)``."""
+    ``predicted`` (finite-difference Jacobians), bundles ``extracted`` (written) or
+    ``reused`` (found on disk or in memory), ``objectives`` received, diagnosis
+    ``candidates`` fitted (:mod:`diagnosis.cluster`), ``folders`` used. Run it on every
+    worker with ``client.run(worker_stats)``.
+
+    Returns
+    -------
+    dict
+        Counts since the process started (a copy).
+    """
     return {k: (list(v) if isinstance(v, list) else v) for k, v in _STATS.items()}

@@ -391,3 +391,27 @@ def test_a_worker_lost_between_populations_costs_time_not_results(cluster, tmp_p
     finally:
         client.close()
     assert np.array_equal(first, obj.costs(X)) and np.array_equal(again, first)
+
+
+def test_a_worker_dying_in_a_shipped_call_reruns_on_the_workers_left(cluster, tmp_path):
+    """run_shipped (the diagnosis' candidate fits): a task that kills its worker process
+    the first time it runs; the calls run again on the workers left, same results. Last
+    in the file (a worker restarts)."""
+    from identification.cluster import ShippedCall, run_shipped
+    address, _ = cluster
+    marker = tmp_path / "killed-once"
+
+    def task(x):
+        import os as os_
+        import signal as signal_
+        if x == 3 and not marker.exists():
+            marker.write_text("a worker died here")
+            os_.kill(os_.getpid(), signal_.SIGKILL)
+        return x * x
+
+    client = connect(address, workers=2)
+    try:
+        out = run_shipped(client, ShippedCall(task), [0, 1, 2, 3])
+    finally:
+        client.close()
+    assert out == [0, 1, 4, 9] and marker.exists()

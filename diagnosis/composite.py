@@ -18,7 +18,7 @@ from scipy.optimize import least_squares
 from friction.base import FrictionModel
 from identification.space import ParameterSpace
 
-from .effects import Candidate, Context
+from .candidates import Candidate, Context
 
 __all__ = ["Composite", "fit_composite", "law_space", "reporting", "STATIC_LEVELS",
            "STATIC_LEVEL_SPAN", "LONG_JACOBIAN_BYTES"]

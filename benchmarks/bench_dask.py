@@ -26,35 +26,32 @@ machines with ``frictionlab`` installed, against the inline run instead of the l
 
 Measured figures (2 cores shared with five other engineers' jobs)
 -----------------------------------------------------------------
-2026-11-24 02:34 UTC, ``--evals 240 --seconds 2 --repeats 3`` (2 s at 1 kHz, step 0.1 ms:
-20,000 communication steps per co-simulation; 6 generations of 40), load average 8.4-10.3
-on 2 cores throughout (``uptime``):
+Best of three alternating rounds; load average (``uptime``) over the run; every cluster
+result equal to the inline one (parameters and fit NRMSE, bit for bit); the workers' first
+import of the library (0.8-3.1 s, once per worker process) not counted.
 
-=============  ==========  ==========  ==========  =============
-               run 1 [s]   run 2 [s]   run 3 [s]   best ms/eval
-=============  ==========  ==========  ==========  =============
-inline         5.40        5.57        3.98        16.6
-1 worker       11.11       6.65        7.11        27.7
-2 workers      9.12        4.34        4.35        18.1
-=============  ==========  ==========  ==========  =============
+===========================================  ======  ========  =========  =============
+run (UTC, 2026-11-24; options; load)         inline  1 worker  2 workers  2 / 1 workers
+===========================================  ======  ========  =========  =============
+02:40, ``--evals 240 --seconds 2``, 4.4-5.2  2.69 s  3.20 s    2.52 s     **0.79**
+02:41, ``--evals 400 --seconds 4``, 5.1-7.0  7.44 s  9.90 s    8.16 s     **0.82**
+02:34, ``--evals 240 --seconds 2``, 8.4-10.3 3.98 s  6.65 s    4.34 s     **0.65**
+02:16, ``--evals 240 --seconds 2``, 11.4-12.5 (best of 2)
+                                             5.43 s  4.88 s    4.00 s     **0.82**
+===========================================  ======  ========  =========  =============
 
-**2 workers / 1 worker = 0.65 (1.53x)** on the best of three; 2 workers / inline = 1.09.
-Every cluster result equals the inline one (parameters and fit NRMSE 0.519, bit for bit).
-The workers' first import of the library (2.8-3.1 s, once per worker process) is not
-counted. Where a 1-worker run loses to inline (same one co-simulation at a time): its first
-population carries the shipping and the worker's first FMU opening (client-side 2.3 s
-against 0.9 s of evaluation on the worker in an instrumented run); later populations cost
-the client 3-4 % more than the worker spends on them; and in the instrumented runs the
-worker's populations took 14-19 ms per co-simulation against 12-14 ms inline, a gap not
-seen when the same evaluations are timed alone alternating with local ones (worker 12-17
-ms, local 12-16 ms, with or without the nanny's malloc settings): not resolved, and within
-what this machine's load moves. With a load of 8-10 on 2 cores every process gets a slice
-of a core, so the figures are the machine's as much as the method's.
-
-Earlier the same hour (best of 2, load 11.4-12.5): inline 5.43 s, 1 worker 4.88 s,
-2 workers 4.00 s (2/1 = 0.82); one round each, ``--evals 320 --seconds 4``, load 9.5-10.5:
-1 worker 14.2 s, 2 workers 12.2 s (0.86); ``--evals 320 --seconds 2``, load 9-10: 8.5 s vs
-6.5 s (0.76).
+(``--seconds 2``: 20,000 communication steps per co-simulation, 11-30 ms each here; 6
+generations of 40.) So 2 workers take 0.65-0.82 of 1 worker's time on this machine, not
+0.5: with a load of 4-12 on 2 cores, a second worker process adds a slice of a core, not a
+core. Against inline, 2 workers are 0.94-1.10: a 1-worker run loses to inline by its first
+population (the shipping and the worker's first FMU opening: client-side 2.3 s against
+0.9 s of evaluation on the worker in an instrumented run at load ~9), later populations
+cost the client 3-4 % more than the worker spends on them, and in the instrumented runs
+the worker's co-simulations took 14-19 ms against 12-14 ms inline, a gap not seen when the
+same evaluations are timed alone alternating with local ones (worker 12-17 ms, local 12-16
+ms, with or without the nanny's malloc settings): not resolved; within what this machine's
+load moves. Costlier plant runs (seconds each) and workers on their own cores are where the
+cluster pays; this machine cannot show that.
 """
 from __future__ import annotations
 

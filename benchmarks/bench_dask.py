@@ -30,15 +30,16 @@ Best of three alternating rounds; load average (``uptime``) over the run; every 
 result equal to the inline one (parameters and fit NRMSE, bit for bit); the workers' first
 import of the library (0.8-3.1 s, once per worker process) not counted.
 
-===========================================  ======  ========  =========  =============
-run (UTC, 2026-11-24; options; load)         inline  1 worker  2 workers  2 / 1 workers
-===========================================  ======  ========  =========  =============
-02:40, ``--evals 240 --seconds 2``, 4.4-5.2  2.69 s  3.20 s    2.52 s     **0.79**
-02:41, ``--evals 400 --seconds 4``, 5.1-7.0  7.44 s  9.90 s    8.16 s     **0.82**
-02:34, ``--evals 240 --seconds 2``, 8.4-10.3 3.98 s  6.65 s    4.34 s     **0.65**
-02:16, ``--evals 240 --seconds 2``, 11.4-12.5 (best of 2)
-                                             5.43 s  4.88 s    4.00 s     **0.82**
-===========================================  ======  ========  =========  =============
+==============================================  ======  ========  =========  =============
+run (UTC, 2026-11-24; options; load)            inline  1 worker  2 workers  2 / 1 workers
+==============================================  ======  ========  =========  =============
+02:40, ``--evals 240 --seconds 2``, 4.4-5.2     2.69 s  3.20 s    2.52 s     **0.79**
+02:41, ``--evals 400 --seconds 4``, 5.1-7.0     7.44 s  9.90 s    8.16 s     **0.82**
+02:34, ``--evals 240 --seconds 2``, 8.4-10.3    3.98 s  6.65 s    4.34 s     **0.65**
+02:16, ``--evals 240 --seconds 2``, 11.4-12.5*  5.43 s  4.88 s    4.00 s     **0.82**
+==============================================  ======  ========  =========  =============
+
+``*``: best of 2.
 
 (``--seconds 2``: 20,000 communication steps per co-simulation, 11-30 ms each here; 6
 generations of 40.) So 2 workers take 0.65-0.82 of 1 worker's time on this machine, not

@@ -7,9 +7,10 @@ objective cannot be sent with the paths of its FMUs. :func:`ship` wraps it in a
 objective and its measured data. :class:`identification.executors.DaskExecutor` scatters
 that wrapper to every worker once per identification (``client.scatter(...,
 broadcast=True)``); after that only parameter rows travel. On a worker the bundle is written
-once per machine into ``<tempdir>/frictionlab-shipped/<sha256>/`` (a second worker process
-on the same machine, or a second identification with the same FMUs, finds it there) and the
-objective's paths are pointed at it. Each worker thread evaluates on its own copy of the
+once per machine into ``<tempdir>/frictionlab-shipped-<uid>/<sha256>/`` (private to the user;
+a second worker process on the same machine, or a second identification with the same FMUs,
+finds it there after checking the files' hashes) and the objective's paths are pointed at
+it. Each worker thread evaluates on its own copy of the
 objective (an FMU instance is not thread-safe).
 
 >>> from identification.cluster import connect                        # doctest: +SKIP
@@ -110,7 +111,19 @@ _STATS = {"chunks": 0, "rows": 0, "predicted": 0, "extracted": 0, "reused": 0,
 
 
 def _root() -> str:
-    return os.path.join(tempfile.gettempdir(), "frictionlab-shipped")
+    """This user's folder for shipped files: ``<tmp>/frictionlab-shipped`` (``-<uid>`` on
+    POSIX), private (0700) and owned by this user; anything else is refused (a folder
+    another user controls could swap the FMUs this process loads)."""
+    uid = getattr(os, "getuid", lambda: None)()
+    root = os.path.join(tempfile.gettempdir(),
+                        "frictionlab-shipped" + ("" if uid is None else f"-{uid}"))
+    os.makedirs(root, mode=0o700, exist_ok=True)
+    if uid is not None:
+        st = os.stat(root)
+        if st.st_uid != uid or st.st_mode & 0o022:
+            raise PermissionError(f"{root} is not a private folder of this user: remove it "
+                                  f"or set TMPDIR elsewhere")
+    return root
 
 
 class FileBundle:
@@ -132,6 +145,7 @@ class FileBundle:
 
     def __init__(self, paths: dict):
         self.files = {}
+        self._sha = {}
         h = hashlib.sha256()
         for key in sorted(paths):
             path = os.fspath(paths[key])
@@ -141,8 +155,9 @@ class FileBundle:
             if any(n == name and k != key for k, (n, _) in self.files.items()):
                 raise ValueError(f"two shipped files are named {name!r}: rename one")
             self.files[key] = (name, data)
+            self._sha[name] = hashlib.sha256(data).digest()
             h.update(key.encode() + b"\0" + name.encode() + b"\0")
-            h.update(hashlib.sha256(data).digest())
+            h.update(self._sha[name])
         self.digest = h.hexdigest()
         self.nbytes = sum(len(d) for _, d in self.files.values())
 
@@ -154,10 +169,13 @@ class FileBundle:
             if hit is not None and self._complete(hit):
                 _STATS["reused"] += 1
                 return hit
-            final = os.path.join(_root(), self.digest)
-            if not self._complete(final):
-                os.makedirs(_root(), exist_ok=True)
-                tmp = tempfile.mkdtemp(prefix=f".{self.digest[:12]}-", dir=_root())
+            root = _root()
+            final = os.path.join(root, self.digest)
+            if not self._complete(final, verify=True):
+                if os.path.isdir(final):  # a broken or altered copy: replaced
+                    import shutil
+                    shutil.rmtree(final, ignore_errors=True)
+                tmp = tempfile.mkdtemp(prefix=f".{self.digest[:12]}-", dir=root)
                 for name, data in self.files.values():
                     with open(os.path.join(tmp, name), "wb") as fh:
                         fh.write(data)
@@ -167,7 +185,7 @@ class FileBundle:
                 except OSError:  # another process wrote it first
                     import shutil
                     shutil.rmtree(tmp, ignore_errors=True)
-                    if not self._complete(final):
+                    if not self._complete(final, verify=True):
                         raise
                     _STATS["reused"] += 1
             else:
@@ -176,11 +194,20 @@ class FileBundle:
             _STATS["folders"].append(final)
             return final
 
-    def _complete(self, folder) -> bool:
-        return os.path.isdir(folder) and all(
-            os.path.isfile(os.path.join(folder, n))
-            and os.path.getsize(os.path.join(folder, n)) == len(d)
-            for n, d in self.files.values())
+    def _complete(self, folder, verify: bool = False) -> bool:
+        """Whether ``folder`` holds every file at its size (and, with ``verify``, its
+        SHA-256: a copy found on disk is checked once before this process loads it)."""
+        if not os.path.isdir(folder):
+            return False
+        for n, d in self.files.values():
+            path = os.path.join(folder, n)
+            if not os.path.isfile(path) or os.path.getsize(path) != len(d):
+                return False
+            if verify:
+                with open(path, "rb") as fh:
+                    if hashlib.sha256(fh.read()).digest() != self._sha[n]:
+                        return False
+        return True
 
     def paths(self) -> dict:
         """``key -> path`` of the files on this machine (written on first use)."""

@@ -197,6 +197,13 @@ def test_file_bundle_is_written_once_per_machine_by_content(tmp_path, monkeypatc
     monkeypatch.setattr(cl, "_EXTRACTED", {})               # another process, same machine
     assert pickle.loads(pickle.dumps(bundle)).paths() == there
     assert cl._STATS["extracted"] == n0 + 1
+    assert oct(os.stat(os.path.dirname(os.path.dirname(there["plant"]))).st_mode & 0o777) \
+        == "0o700"                                          # the user's private folder
+    pathlib.Path(there["plant"]).write_bytes(b"FIRST")      # altered, same size: not used
+    monkeypatch.setattr(cl, "_EXTRACTED", {})
+    assert pickle.loads(pickle.dumps(bundle)).paths() == there
+    assert pathlib.Path(there["plant"]).read_bytes() == b"first"
+    assert cl._STATS["extracted"] == n0 + 2
     a.write_bytes(b"changed")                               # new content: a new folder
     assert FileBundle({"plant": a, "law:lugre": b}).digest != bundle.digest
     c = tmp_path / "sub" / "a.fmu"

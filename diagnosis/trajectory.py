@@ -93,18 +93,21 @@ from .report import DiagnosisReport, report_sections
 from .verdict import MIN_EXCESS_CLOSED, decide, noise_floor, rank
 # the records of the effects: how each enters a plant, what the FMU engine can express
 from .effects import (CANDIDATES, EFFECT_NAMES, EFFECTS, FMU_EFFECTS, FORCE_EFFECTS,  # noqa: F401
-                      INPUTS, make_context)
+                      make_context)
 from .regions import band_splits, frequency_split, regime_split
 # the parts of the trajectory level, re-exported here (the public names of this module)
 from .effect_law import EffectLaw, _LEVELS  # noqa: F401
 from .records import (TrajectoryRecord, load_record, parse_experiment,  # noqa: F401
                       record_from_result)
 from .trajectory_report import trajectory_figures, write_trajectory_html  # noqa: F401
+# the plant runs (engines), re-exported: their public names were this module's
+from .engines import (REFERENCE_OUTPUTS, TrajectoryModel, _make_engine,  # noqa: F401
+                      _options_for, simulate_record)
 
 __all__ = ["TrajectoryRecord", "record_from_result", "load_record", "parse_experiment",
            "EffectLaw", "simulate_record", "trajectory_figures", "write_trajectory_html",
            "diagnose_trajectory", "FORCE_EFFECTS", "FMU_EFFECTS", "REFERENCE_OUTPUTS",
-           "MASS_PARAMETERS", "TrajectoryModel", "BASE_NAMES"]
+           "MASS_PARAMETERS", "TrajectoryModel", "TrajectoryDiagnosis", "BASE_NAMES"]
 
 #: parameters of each law that the trajectory level screens for its base re-fit (a
 #: "standard" configuration: symmetric, Gaussian alpha = 2, no offset). The force level's
@@ -117,8 +120,6 @@ BASE_NAMES = {
 #: residual [-] (in units of the record's scale) of a trial point whose simulation fails
 FAILED_RESIDUAL = 1e3
 
-#: outputs holding a plant's own position command (the tracking error's reference)
-REFERENCE_OUTPUTS = ("x_d", "S_ref", "x_ref")
 #: plant parameters that are the moving mass (``inertia`` candidate), in order of preference
 MASS_PARAMETERS = ("M", "m", "mass")
 #: candidates whose held-out NRMSE is within this fraction of the noise floor of the best
@@ -126,167 +127,6 @@ MASS_PARAMETERS = ("M", "m", "mass")
 TIE_FLOOR = 0.05
 #: direction twins the ``asymmetry`` candidate frees (with the offset ``b``)
 ASYMMETRY_NAMES = ("b", "Fc_neg", "Fs_neg", "sigma2_neg")
-
-
-# -- simulation engines ---------------------------------------------------------------------
-def _reference_output(plant) -> str | None:
-    names = plant.all_output_names
-    return next((r for r in REFERENCE_OUTPUTS if r in names), None)
-
-
-def _options_for(plant, record_options: dict) -> dict:
-    """Experiment options of one run. A friction feedforward is part of the controller that
-    ran on the machine, not of the friction model under test: unless the record names its
-    ``compensator``, it is the plant's default law (what the plant FMU uses too), never the
-    candidate being simulated."""
-    opts = dict(record_options)
-    if "compensator" in plant.options and opts.get("compensation",
-                                                  plant.opts.get("compensation", False)):
-        if opts.get("compensator", plant.opts.get("compensator")) is None:
-            opts["compensator"] = plant.default_friction()
-    return opts
-
-
-class _PlantEngine:
-    """In-process plant simulation (``Plant.simulate(method="fast")``)."""
-    name = "plant"
-
-    def __init__(self, plant):
-        self.plant = plant
-
-    def run(self, law, plant_params: dict, options: dict, stop: float, signals):
-        p = self.plant.with_params(**plant_params) if plant_params else self.plant._copy()
-        p.friction = law
-        res = p.simulate(stop, method="fast", **_options_for(self.plant, options))
-        return res["time"], {s: np.asarray(res[s], float) for s in signals}
-
-
-class _FMUEngine:
-    """Plant FMU (external friction) + friction-law FMU through :class:`fmus.master.Master`."""
-    name = "fmu"
-
-    def __init__(self, plant, fmu_dir=None, step: float | None = None):
-        from fmus.plant_fmus import coupling_step
-        self.plant = plant
-        self.fmu_dir = fmu_dir
-        self.step = float(step) if step else coupling_step(type(plant)) / 4.0
-        self.masters = {}
-
-    def _master(self, law_name, signals, effects=()):
-        import os
-        from fmus.master import Master
-        from fmus.plant_fmus import LOAD_SIGNALS, plant_connections
-        key = (law_name, tuple(signals), tuple(effects))
-        if key in self.masters:
-            return self.masters[key]
-        import friction
-        fmu_dir = self.fmu_dir
-        need = {self.plant.name, law_name, "lugre"} | ({"friction_effects"} if effects else set())
-        if fmu_dir is None or not all(os.path.isfile(os.path.join(fmu_dir, f"{n}.fmu"))
-                                      for n in need):
-            from fmus.testing import built_fmus
-            fmu_dir = self.fmu_dir = str(built_fmus(tuple(sorted(need))))
-        cls = type(self.plant)
-        fmus = {"plant": os.path.join(fmu_dir, f"{cls.name}.fmu"),
-                "friction": os.path.join(fmu_dir, f"{law_name}.fmu")}
-        conns = plant_connections(cls, friction.MODELS[law_name])
-        if effects:
-            # the effects block sits between the law and the plant (friction.extensions)
-            fmus["effects"] = os.path.join(fmu_dir, "friction_effects.fmu")
-            conns = [c for c in conns if c != ("friction.F", "plant.F_friction")]
-            conns += [("friction.F", "effects.F_law"), ("effects.F", "plant.F_friction"),
-                      ("plant.v", "effects.v"), ("plant.a", "effects.a"),
-                      ("plant.x", "effects.x")]
-            if any("load" in INPUTS[e] for e in effects):
-                outs = cls(external_friction=True).all_output_names
-                src = next((n for n in LOAD_SIGNALS if n in outs), None)
-                if src is None:
-                    raise ValueError(f"plant {cls.name!r} has no load output for the load "
-                                     f"effect (looked for {LOAD_SIGNALS})")
-                conns.append((f"plant.{src}", "effects.load"))
-        m = Master(fmus, conns, record=[f"plant.{s}" for s in signals])
-        self.masters[key] = m
-        return m
-
-    def run(self, law, plant_params: dict, options: dict, stop: float, signals):
-        effects = ()
-        block = {}
-        if isinstance(law, EffectLaw):
-            from friction.extensions import EXTENSION_INDEX
-            effects = tuple(sorted(law.effects))
-            block = {n: float(law._e[i]) for n, i in EXTENSION_INDEX.items()}
-            # the block's clock starts at 0 with the run; the law's at its time0
-            block["t0"] -= law.time0
-            law = law.base
-        bad = {k: type(v).__name__ for k, v in options.items()
-               if v is not None and not isinstance(v, (bool, int, float, str))}
-        if bad:
-            raise NotImplementedError(f"engine='fmu': experiment option(s) {bad} are not "
-                                      f"scalars; the plant FMU exposes only scalar options")
-        m = self._master(law.name, signals, effects)
-        fmu_vars = m.instances["plant"].vars
-        pvals = {n: getattr(self.plant.params, n) for n in self.plant.parameter_names}
-        pvals.update(plant_params)
-        default = type(self.plant.params)()
-        missing = [n for n in pvals if n not in fmu_vars
-                   and pvals[n] != getattr(default, n, None)]
-        if missing:
-            raise NotImplementedError(f"engine='fmu': the plant FMU has no parameter(s) "
-                                      f"{missing} (rebuild the FMUs)")
-        pvals = {n: v for n, v in pvals.items() if n in fmu_vars}
-        opts = {k: v for k, v in options.items() if v is not None}
-        lvals = {f.name: getattr(law.params, f.name) for f in dataclasses.fields(law.params)
-                 if getattr(law.params, f.name) is not None}
-        m.parameters = {"plant": {**pvals, **opts}, "friction": lvals,
-                        **({"effects": block} if effects else {})}
-        n = int(math.ceil(stop / self.step - 1e-9))
-        res = m.simulate(start_time=0.0, stop_time=n * self.step, step_size=self.step)
-        return res["time"], {s: np.asarray(res[f"plant.{s}"], float) for s in signals}
-
-    def close(self):
-        for m in self.masters.values():
-            m.close()
-        self.masters.clear()
-
-
-def _make_engine(engine, plant, fmu_dir=None, fmu_step=None):
-    if hasattr(plant, "trajectory_engine"):
-        # a plant that brings its own co-simulation (the user's plant FMU,
-        # diagnosis.plant_fmu.FMUPlantModel)
-        return plant.trajectory_engine(engine)
-    if engine == "plant":
-        return _PlantEngine(plant)
-    if engine == "fmu":
-        return _FMUEngine(plant, fmu_dir, fmu_step)
-    raise ValueError(f"engine must be 'plant' or 'fmu', got {engine!r}")
-
-
-def simulate_record(plant, law: FrictionModel, record: TrajectoryRecord, *,
-                    engine: str = "plant", plant_params: dict | None = None,
-                    delay: float = 0.0, fmu_dir=None, fmu_step: float | None = None
-                    ) -> np.ndarray:
-    """Simulated output of ``plant`` with friction ``law`` at the record's samples [m].
-
-    Parameters
-    ----------
-    plant : Plant
-    law : FrictionModel
-        Friction law inside the plant (an :class:`EffectLaw` for force effects).
-    record : TrajectoryRecord
-    engine : {"plant", "fmu"}
-        In-process plant or plant FMU + friction FMU (see the module docstring).
-    plant_params : dict, optional
-        Plant parameters changed for this run (e.g. the mass).
-    delay : float
-        Measured channel lagging the simulation by ``delay`` [s].
-    """
-    eng = _make_engine(engine, plant, fmu_dir, fmu_step)
-    try:
-        return TrajectoryModel(plant, eng)._output(law, plant_params or {}, record,
-                                                   record.t[-1], delay)[0]
-    finally:
-        if hasattr(eng, "close"):
-            eng.close()
 
 
 # -- model setups: base + candidate effects ---------------------------------------------------
@@ -393,55 +233,6 @@ class _Setup:
         if pp:
             out["plant_params"] = pp
         return out
-
-
-class TrajectoryModel:
-    """Runs one plant with a given friction law on measured records.
-
-    Parameters
-    ----------
-    plant : Plant
-        The plant model (its friction is replaced per run).
-    engine : object
-        ``_PlantEngine`` or ``_FMUEngine`` (see :func:`simulate_record`).
-    progress : callable, optional
-        ``progress(n, info)`` after each simulation (a :class:`frictionlab.progress.Progress`).
-
-    Attributes
-    ----------
-    sims : int
-        Plant simulations run so far; ``sim_seconds`` [s] their wall time.
-    ref_name : str or None
-        Output holding the plant's position command (tracking-error reference).
-    """
-
-    def __init__(self, plant, engine, progress=None):
-        self.plant = plant
-        self.engine = engine
-        self.sims = 0
-        self.sim_seconds = 0.0
-        self.progress = progress
-        self.signal_default = plant.main_output
-        self.ref_name = _reference_output(plant)
-
-    def _output(self, law, plant_params, record, stop, delay=0.0):
-        sig = record.signal or self.signal_default
-        signals = [sig] + ([self.ref_name] if self.ref_name else [])
-        if isinstance(law, EffectLaw) and record.t_start != law.time0:
-            law = law.with_time0(record.t_start)
-        t0 = time.perf_counter()
-        ts, out = self.engine.run(law, plant_params, record.options, stop, signals)
-        self.sim_seconds += time.perf_counter() - t0
-        self.sims += 1
-        if self.progress is not None:
-            self.progress(1, f"{law.name} on {record.name}")
-        y = out[sig]
-        if not np.all(np.isfinite(y)):
-            raise FloatingPointError(f"simulation of {record.name} with {law.name} diverged")
-        # a lagging measurement channel sees the simulated output delay seconds late
-        y_at = np.interp(record.t - delay, ts, y)
-        ref = np.interp(record.t, ts, out[self.ref_name]) if self.ref_name else None
-        return y_at, ref
 
 
 @dataclass
@@ -640,201 +431,268 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
     >>> rep["verdict"]["cause"], rep["level"]                             # doctest: +SKIP
     ('inertia', 'trajectory')
     """
-    import plants as _plants
-    from frictionlab.progress import Progress, report as _report
+    return TrajectoryDiagnosis(
+        measured, plant, model, validation, candidates, engine=engine, fit_names=fit_names,
+        fit_fraction=fit_fraction, max_sims=max_sims, max_sims_base=max_sims_base,
+        spread=spread, greedy=greedy, fmu_dir=fmu_dir, fmu_step=fmu_step, fit_plant=fit_plant,
+        progress=progress, executor=executor).run()
 
-    t_start = time.perf_counter()
-    if isinstance(plant, str):
-        plant = _plants.make_plant(plant)
-    if plant.external_friction:
-        raise ValueError("plant must carry its friction law (external_friction=False)")
-    if not isinstance(measured, TrajectoryRecord):
-        raise TypeError(f"measured must be a TrajectoryRecord, got {type(measured).__name__}")
-    sig = measured.signal or plant.main_output
-    if sig not in plant.all_output_names:
-        raise ValueError(f"plant {plant.name} has no output {sig!r}; outputs: "
-                         f"{list(plant.all_output_names)}")
-    unit = (getattr(plant, "signals", {}) or {}).get(sig, ("m",))[0]
-    if unit != "m" and not getattr(plant, "any_signal", False):
-        raise ValueError(f"plant {plant.name}: the compared output {sig!r} is in {unit!r}, not "
-                         f"a position; a force measurement is diagnosed at the friction-force "
-                         f"level (diagnosis.diagnose)")
-    if callable(progress):
-        say = progress
-    elif progress:
-        say = _report
-    else:
-        def say(msg):
-            return None
-    counter = Progress(label="diagnose-trajectory", interval=2.0, enabled=bool(progress))
-    explicit = candidates is not None
-    names = list(candidates) if explicit else list(EFFECT_NAMES)
-    unknown = [n for n in names if n not in CANDIDATES]
-    if unknown:
-        raise ValueError(f"unknown candidate effect(s) {unknown}; choose from "
-                         f"{list(EFFECT_NAMES)}")
-    if not 0.2 <= fit_fraction < 1.0:
-        raise ValueError(f"fit_fraction = {fit_fraction!r} is out of bounds: must be in "
-                         f"[0.2, 1)")
-    if engine == "fmu" and explicit:
-        for n in names:
-            if n not in FMU_EFFECTS:
-                raise NotImplementedError(
-                    f"candidate {n!r}: engine='fmu' cannot express it - the friction FMU has "
-                    f"no parameters for it (it needs EffectLaw inside the plant); use "
-                    f"engine='plant'")
-    eng = _make_engine(engine, plant, fmu_dir, fmu_step)
-    tm = TrajectoryModel(plant, eng, counter)
-    law0 = _start_law(model, plant)
 
-    # -- cases: fit window and held-out windows
-    if validation is None:
-        rec = measured
-        t_split = rec.t[0] + fit_fraction * (rec.t[-1] - rec.t[0])
-        fit_case = _Case(rec, rec.t <= t_split, float(rec.t[rec.t <= t_split][-1]))
-        val_cases = [_Case(rec, rec.t > t_split, float(rec.t[-1]))]
-    else:
-        vals = validation if isinstance(validation, (list, tuple)) else [validation]
-        for v in vals:
-            if not isinstance(v, TrajectoryRecord):
-                raise TypeError(f"validation records must be TrajectoryRecord, got "
-                                f"{type(v).__name__}")
-        fit_case = _Case(measured, np.ones(measured.t.size, bool), float(measured.t[-1]))
-        val_cases = [_Case(v, np.ones(v.t.size, bool), float(v.t[-1])) for v in vals]
+class TrajectoryDiagnosis:
+    """One trajectory-level diagnosis, step by step (:func:`diagnose_trajectory` runs it and
+    documents the parameters, which are the same).
 
-    # normalisation: std of the measured tracking error (reference from the plant's command)
-    say(f"[diagnose-trajectory] {plant.name}: base {law0.name}, engine {engine}")
-    for c in [fit_case] + val_cases:
-        _, ref = tm._output(law0, {}, c.record, c.stop)
-        c.ref = ref
-        y = c.record.y[c.mask]
-        e = (ref[c.mask] - y) if ref is not None else y
-        c.sd = float(np.std(e)) or 1.0
+    The steps, each a method, in the order :meth:`run` calls them: :meth:`fit_base` (screen
+    and fit the base law's visible parameters), :meth:`locate` (noise floor and where the
+    held-out gap lies), :meth:`try_candidate` for each candidate (fit base + effect on the
+    fit record, score held out), :meth:`stack` (greedy stacking), :meth:`decide` (the
+    verdict, :func:`diagnosis.verdict.decide`) and :meth:`report`. Their results are kept as
+    attributes (``base_setup``, ``u_base``, ``before``, ``floor``, ``effects``,
+    ``fitted``, ...); a fit or a score is one call of :meth:`fit` or :meth:`score`.
+    """
 
-    fit_data = _kinematics(plant, law0, fit_case.record)
-    sel = fit_case.mask
-    ctx = make_context(Dataset(t=fit_data.t[sel], x=fit_data.x[sel], v=fit_data.v[sel],
-                               a=fit_data.a[sel], F=fit_data.F[sel],
-                               load=None if fit_data.load is None else fit_data.load[sel]))
-    ctx.t0 = float(fit_case.record.t_start + fit_data.t[sel][0])
+    def __init__(self, measured, plant, model="lugre", validation=None, candidates=None, *,
+                 engine: str = "plant", fit_names=None, fit_fraction: float = 0.7,
+                 max_sims: int = 24, max_sims_base: int = 60, spread: float = 3.0,
+                 greedy: bool = True, fmu_dir=None, fmu_step: float | None = None,
+                 fit_plant=None, progress=None, executor=None):
+        import plants as _plants
+        from frictionlab.progress import Progress, report as _report
 
-    def residual(setup, u, case):
-        law, pp, delay, _ = setup.build(u, ctx)
+        self.t_start = time.perf_counter()
+        if isinstance(plant, str):
+            plant = _plants.make_plant(plant)
+        if plant.external_friction:
+            raise ValueError("plant must carry its friction law (external_friction=False)")
+        if not isinstance(measured, TrajectoryRecord):
+            raise TypeError(f"measured must be a TrajectoryRecord, got "
+                            f"{type(measured).__name__}")
+        sig = measured.signal or plant.main_output
+        if sig not in plant.all_output_names:
+            raise ValueError(f"plant {plant.name} has no output {sig!r}; outputs: "
+                             f"{list(plant.all_output_names)}")
+        unit = (getattr(plant, "signals", {}) or {}).get(sig, ("m",))[0]
+        if unit != "m" and not getattr(plant, "any_signal", False):
+            raise ValueError(f"plant {plant.name}: the compared output {sig!r} is in {unit!r}, "
+                             f"not a position; a force measurement is diagnosed at the "
+                             f"friction-force level (diagnosis.diagnose)")
+        if callable(progress):
+            self.say = progress
+        elif progress:
+            self.say = _report
+        else:
+            self.say = _silent
+        counter = Progress(label="diagnose-trajectory", interval=2.0, enabled=bool(progress))
+        explicit = candidates is not None
+        self.names = list(candidates) if explicit else list(EFFECT_NAMES)
+        unknown = [n for n in self.names if n not in CANDIDATES]
+        if unknown:
+            raise ValueError(f"unknown candidate effect(s) {unknown}; choose from "
+                             f"{list(EFFECT_NAMES)}")
+        if not 0.2 <= fit_fraction < 1.0:
+            raise ValueError(f"fit_fraction = {fit_fraction!r} is out of bounds: must be in "
+                             f"[0.2, 1)")
+        if engine == "fmu" and explicit:
+            for n in self.names:
+                if n not in FMU_EFFECTS:
+                    raise NotImplementedError(
+                        f"candidate {n!r}: engine='fmu' cannot express it - the friction FMU "
+                        f"has no parameters for it (it needs EffectLaw inside the plant); use "
+                        f"engine='plant'")
+        self.plant, self.measured, self.engine = plant, measured, engine
+        self.fit_names, self.fit_plant, self.spread = fit_names, fit_plant, spread
+        self.max_sims, self.max_sims_base, self.greedy = max_sims, max_sims_base, greedy
+        self.executor = executor
+        self.eng = _make_engine(engine, plant, fmu_dir, fmu_step)
+        self.tm = TrajectoryModel(plant, self.eng, counter)
+        self.law0 = _start_law(model, plant)
+        self._cases(measured, validation, fit_fraction)
+        self.mass_name = getattr(plant, "mass_parameter", None) or \
+            next((n for n in MASS_PARAMETERS if n in plant.parameter_names), None)
+
+    def __getstate__(self):
+        # what a cluster worker gets with :meth:`fit_one`: everything but the client
+        state = dict(self.__dict__)
+        state["executor"] = None
+        return state
+
+    def _cases(self, measured, validation, fit_fraction):
+        """Fit and held-out windows, their normalisation and the fit record's scales."""
+        if validation is None:
+            rec = measured
+            t_split = rec.t[0] + fit_fraction * (rec.t[-1] - rec.t[0])
+            self.fit_case = _Case(rec, rec.t <= t_split, float(rec.t[rec.t <= t_split][-1]))
+            self.val_cases = [_Case(rec, rec.t > t_split, float(rec.t[-1]))]
+        else:
+            vals = validation if isinstance(validation, (list, tuple)) else [validation]
+            for v in vals:
+                if not isinstance(v, TrajectoryRecord):
+                    raise TypeError(f"validation records must be TrajectoryRecord, got "
+                                    f"{type(v).__name__}")
+            self.fit_case = _Case(measured, np.ones(measured.t.size, bool),
+                                  float(measured.t[-1]))
+            self.val_cases = [_Case(v, np.ones(v.t.size, bool), float(v.t[-1])) for v in vals]
+
+        # normalisation: std of the measured tracking error (reference from the plant's
+        # command)
+        self.say(f"[diagnose-trajectory] {self.plant.name}: base {self.law0.name}, engine "
+                 f"{self.engine}")
+        for c in [self.fit_case] + self.val_cases:
+            _, ref = self.tm._output(self.law0, {}, c.record, c.stop)
+            c.ref = ref
+            y = c.record.y[c.mask]
+            e = (ref[c.mask] - y) if ref is not None else y
+            c.sd = float(np.std(e)) or 1.0
+
+        fit_data = _kinematics(self.plant, self.law0, self.fit_case.record)
+        sel = self.fit_case.mask
+        ctx = make_context(Dataset(t=fit_data.t[sel], x=fit_data.x[sel], v=fit_data.v[sel],
+                                   a=fit_data.a[sel], F=fit_data.F[sel],
+                                   load=None if fit_data.load is None else fit_data.load[sel]))
+        ctx.t0 = float(self.fit_case.record.t_start + fit_data.t[sel][0])
+        self.fit_data, self.ctx = fit_data, ctx
+
+    # -- evaluations ---------------------------------------------------------------------------
+    def residual(self, setup, u, case) -> np.ndarray:
+        """Position residual [-] (per the case's spread) of ``setup`` at unit point ``u``."""
+        law, pp, delay, _ = setup.build(u, self.ctx)
         try:
-            y, _ = tm._output(law, pp, case.record, case.stop, delay)
+            y, _ = self.tm._output(law, pp, case.record, case.stop, delay)
         except (ValueError, ArithmeticError) as exc:
             # a trial point the plant cannot run (diverged, or drove the press through its
             # workpiece): a residual far worse than any run, so the search steps back
-            say(f"[diagnose-trajectory] trial point failed: {exc}")
+            self.say(f"[diagnose-trajectory] trial point failed: {exc}")
             return np.full(int(case.mask.sum()), FAILED_RESIDUAL)
-        r = (case.record.y - y)[case.mask] / case.sd
-        return r
+        return (case.record.y - y)[case.mask] / case.sd
 
-    def score(setup, u) -> tuple[float, list]:
+    def score(self, setup, u) -> tuple[float, list]:
+        """Held-out NRMSE [-] of ``setup`` at ``u`` (pooled over the held-out records,
+        normalised by the measured tracking error's spread) and the residuals [m]; ``(inf,
+        None)`` when a held-out run fails."""
         rs = []
-        for c in val_cases:
-            law, pp, delay, _ = setup.build(u, ctx)
+        for c in self.val_cases:
+            law, pp, delay, _ = setup.build(u, self.ctx)
             try:
-                y, _ = tm._output(law, pp, c.record, c.stop, delay)
+                y, _ = self.tm._output(law, pp, c.record, c.stop, delay)
             except (ValueError, ArithmeticError) as exc:
-                say(f"[diagnose-trajectory] held-out run failed: {exc}")
+                self.say(f"[diagnose-trajectory] held-out run failed: {exc}")
                 return math.inf, None
             rs.append((c.record.y - y)[c.mask])
         num = np.concatenate(rs)
         den = np.concatenate([((c.ref[c.mask] - c.record.y[c.mask]) if c.ref is not None
-                               else c.record.y[c.mask]) for c in val_cases])
+                               else c.record.y[c.mask]) for c in self.val_cases])
         return float(np.sqrt(np.mean(num ** 2)) / (np.std(den) or 1.0)), rs
 
-    def fit(setup, u0, budget):
-        u, r, n = _solve(lambda u: residual(setup, u, fit_case), u0, max_sims=budget)
+    def fit(self, setup, u0, budget: int):
+        """Least squares of ``setup`` on the fit record from ``u0`` within ``budget``
+        simulations: ``(u, RMS residual [-], simulations)``."""
+        u, r, n = _solve(lambda u: self.residual(setup, u, self.fit_case), u0,
+                         max_sims=budget)
         return u, float(np.sqrt(np.mean(r ** 2))), n
 
-    # -- 1. base fit: the parameters the trajectory sees
-    base_all = BASE_NAMES.get(law0.name) or [n for n in law0.free_names()
-                                             if not n.endswith("_neg") and n not in ("alpha", "b")]
-    if fit_names is None:
-        say("[diagnose-trajectory] screening base parameters")
-        full = _Setup(law0, [_law_coordinate(law0, n, ctx, spread) for n in base_all])
-        u_ref = full.unit0()
-        r0 = residual(full, u_ref, fit_case)
-        sens = {}
-        for j, c in enumerate(full.coords):
-            u = u_ref.copy()
-            step = c.to_unit(c.x0 * 1.1) if c.log else c.to_unit(c.x0 + 0.1 * (c.hi - c.lo))
-            u[j] = np.clip(step, 0.0, 1.0)
-            sens[c.name] = float(np.sqrt(np.mean((residual(full, u, fit_case) - r0) ** 2)))
-        top = max(sens.values()) or 1.0
-        fit_names = sorted([n for n in base_all if sens[n] >= 0.2 * top],
-                           key=lambda n: -sens[n])[:4]
-    else:
-        sens = None
-        bad = [n for n in fit_names if n not in law0.Params.numeric_names()]
-        if bad:
-            raise ValueError(f"fit_names {bad} are not parameters of {law0.name}")
-    fit_names = list(fit_names)
-
-    def plant_coords():
+    def plant_coords(self) -> list:
         """Fresh coordinates of the plant parameters fitted with every setup."""
         out = []
-        for n, box in (fit_plant or {}).items():
+        for n, box in (self.fit_plant or {}).items():
             lo, hi = float(box[0]), float(box[1])
             log = bool(box[2]) if len(box) > 2 and box[2] is not None else \
                 bool(lo > 0 and hi / lo > 20)
-            x0 = float(getattr(plant.params, n))
+            x0 = float(getattr(self.plant.params, n))
             out.append(_P(f"plant.{n}", "plant", lo, hi, log, min(max(x0, lo), hi)))
         return out
 
-    unknown = [n for n in (fit_plant or {}) if n not in plant.parameter_names]
-    if unknown:
-        raise ValueError(f"fit_plant {unknown} are not parameters of plant {plant.name}")
-    say(f"[diagnose-trajectory] base fit of {fit_names + [c.name for c in plant_coords()]}")
-    base_setup = _Setup(law0, [_law_coordinate(law0, n, ctx, spread) for n in fit_names]
-                        + plant_coords())
-    u_base, base_fit, _ = fit(base_setup, base_setup.unit0(), max_sims_base)
-    base_law, base_pp, _, base_vals = base_setup.build(u_base, ctx)
-    before, r_val = score(base_setup, u_base)
-    if r_val is None:
-        raise ValueError("the fitted base model cannot run the held-out record(s) (see the "
-                         "message above); check the records' experiment options")
+    # -- 1. base fit: the parameters the trajectory sees ------------------------------------
+    def fit_base(self) -> None:
+        """Screen the base law's parameters (unless ``fit_names`` were given), fit them on
+        the fit record and score the base held out (``before``)."""
+        law0, ctx, spread, say = self.law0, self.ctx, self.spread, self.say
+        base_all = BASE_NAMES.get(law0.name) or [
+            n for n in law0.free_names() if not n.endswith("_neg") and n not in ("alpha", "b")]
+        fit_names = self.fit_names
+        if fit_names is None:
+            say("[diagnose-trajectory] screening base parameters")
+            full = _Setup(law0, [_law_coordinate(law0, n, ctx, spread) for n in base_all])
+            u_ref = full.unit0()
+            r0 = self.residual(full, u_ref, self.fit_case)
+            sens = {}
+            for j, c in enumerate(full.coords):
+                u = u_ref.copy()
+                step = c.to_unit(c.x0 * 1.1) if c.log else c.to_unit(c.x0 + 0.1 * (c.hi - c.lo))
+                u[j] = np.clip(step, 0.0, 1.0)
+                sens[c.name] = float(np.sqrt(np.mean(
+                    (self.residual(full, u, self.fit_case) - r0) ** 2)))
+            top = max(sens.values()) or 1.0
+            fit_names = sorted([n for n in base_all if sens[n] >= 0.2 * top],
+                               key=lambda n: -sens[n])[:4]
+        else:
+            sens = None
+            bad = [n for n in fit_names if n not in law0.Params.numeric_names()]
+            if bad:
+                raise ValueError(f"fit_names {bad} are not parameters of {law0.name}")
+        self.fit_names, self.sens = list(fit_names), sens
 
-    # -- 2. where (held-out residual by regime, band, frequency)
-    kin_plant = plant.with_params(**base_pp) if base_pp else plant
-    val_data = [_kinematics(kin_plant, base_law, c.record) for c in val_cases]
-    parts = []
-    for c, d, r in zip(val_cases, val_data, r_val):
-        m = c.mask
-        e = (c.ref[m] - c.record.y[m]) if c.ref is not None else c.record.y[m]
-        parts.append((Dataset(t=d.t[m], x=d.x[m], v=d.v[m], a=d.a[m], F=e, name=d.name), r))
-    if len(parts) == 1:
-        val_cat, r_cat = parts[0]
-    else:
-        cat = lambda k: np.concatenate([getattr(p[0], k) for p in parts])
-        n_all = sum(p[0].t.size for p in parts)
-        val_cat = Dataset(t=np.arange(n_all) * measured.dt, x=cat("x"), v=cat("v"),
-                          a=cat("a"), F=cat("F"), name="held-out")
-        r_cat = np.concatenate([p[1] for p in parts])
-    white = float(np.mean([noise_floor(d, r) * np.std(d.F) for d, r in parts])
-                  / (np.std(np.concatenate([d.F for d, _ in parts])) or 1.0))
-    # reproducibility floor: a closed loop with a quantised encoder (or any switching) does
-    # not repeat itself to the nanometre - a 1e-4 relative change of the base parameters
-    # re-rolls its quantisation sequence. What two such runs differ by, no smooth model can
-    # predict; it counts as noise next to the white measurement noise.
-    u_p = np.clip(u_base + 1e-4 * np.where(u_base < 0.5, 1.0, -1.0), 0.0, 1.0)
-    _, r_pert = score(base_setup, u_p)
-    den = np.std(np.concatenate([d.F for d, _ in parts])) or 1.0
-    repro = 0.0 if r_pert is None else float(
-        np.sqrt(np.mean(np.concatenate([a - b for a, b in zip(r_val, r_pert)]) ** 2)) / den)
-    floor = float(np.hypot(white, repro))
-    where = regime_split(val_cat, r_cat)
-    bands = band_splits(val_cat, r_cat)
-    freq = frequency_split(parts[0][0], parts[0][1])
+        unknown = [n for n in (self.fit_plant or {}) if n not in self.plant.parameter_names]
+        if unknown:
+            raise ValueError(f"fit_plant {unknown} are not parameters of plant "
+                             f"{self.plant.name}")
+        say(f"[diagnose-trajectory] base fit of "
+            f"{self.fit_names + [c.name for c in self.plant_coords()]}")
+        base_setup = _Setup(law0, [_law_coordinate(law0, n, ctx, spread)
+                                   for n in self.fit_names] + self.plant_coords())
+        u_base, self.base_fit, _ = self.fit(base_setup, base_setup.unit0(), self.max_sims_base)
+        self.base_law, self.base_pp, _, self.base_vals = base_setup.build(u_base, ctx)
+        self.before, self.r_val = self.score(base_setup, u_base)
+        if self.r_val is None:
+            raise ValueError("the fitted base model cannot run the held-out record(s) (see "
+                             "the message above); check the records' experiment options")
+        self.base_setup, self.u_base = base_setup, u_base
+        # every candidate starts from the fitted base
+        self.base_start = {c.name: c.to_phys(x) for c, x in zip(base_setup.coords, u_base)}
 
-    # -- 3. which: each candidate re-identified on the fit record, scored held out
-    mass_name = getattr(plant, "mass_parameter", None) or \
-        next((n for n in MASS_PARAMETERS if n in plant.parameter_names), None)
+    # -- 2. where: noise floor and the held-out residual by regime, band, frequency ---------
+    def locate(self) -> None:
+        """Noise floor (white + reproducibility) and where the base's held-out residual
+        lies (``where``, ``bands``, ``freq``)."""
+        plant, val_cases = self.plant, self.val_cases
+        kin_plant = plant.with_params(**self.base_pp) if self.base_pp else plant
+        self.val_data = [_kinematics(kin_plant, self.base_law, c.record) for c in val_cases]
+        parts = []
+        for c, d, r in zip(val_cases, self.val_data, self.r_val):
+            m = c.mask
+            e = (c.ref[m] - c.record.y[m]) if c.ref is not None else c.record.y[m]
+            parts.append((Dataset(t=d.t[m], x=d.x[m], v=d.v[m], a=d.a[m], F=e, name=d.name),
+                          r))
+        if len(parts) == 1:
+            val_cat, r_cat = parts[0]
+        else:
+            cat = lambda k: np.concatenate([getattr(p[0], k) for p in parts])  # noqa: E731
+            n_all = sum(p[0].t.size for p in parts)
+            val_cat = Dataset(t=np.arange(n_all) * self.measured.dt, x=cat("x"), v=cat("v"),
+                              a=cat("a"), F=cat("F"), name="held-out")
+            r_cat = np.concatenate([p[1] for p in parts])
+        self.white = float(np.mean([noise_floor(d, r) * np.std(d.F) for d, r in parts])
+                           / (np.std(np.concatenate([d.F for d, _ in parts])) or 1.0))
+        # reproducibility floor: a closed loop with a quantised encoder (or any switching)
+        # does not repeat itself to the nanometre - a 1e-4 relative change of the base
+        # parameters re-rolls its quantisation sequence. What two such runs differ by, no
+        # smooth model can predict; it counts as noise next to the white measurement noise.
+        u_base = self.u_base
+        u_p = np.clip(u_base + 1e-4 * np.where(u_base < 0.5, 1.0, -1.0), 0.0, 1.0)
+        _, r_pert = self.score(self.base_setup, u_p)
+        den = np.std(np.concatenate([d.F for d, _ in parts])) or 1.0
+        self.repro = 0.0 if r_pert is None else float(
+            np.sqrt(np.mean(np.concatenate([a - b for a, b in zip(self.r_val, r_pert)]) ** 2))
+            / den)
+        self.floor = float(np.hypot(self.white, self.repro))
+        self.where = regime_split(val_cat, r_cat)
+        self.bands = band_splits(val_cat, r_cat)
+        self.freq = frequency_split(parts[0][0], parts[0][1])
 
-    def setups_for(effs, law, base_coords_vals):
-        """Model setups (variants) with the effects ``effs`` on top of ``law``."""
+    # -- 3. which: each candidate re-identified on the fit record, scored held out ----------
+    def setups_for(self, effs, law, base_coords_vals) -> list:
+        """Model setups (variants) with the effects ``effs`` on top of ``law``, each
+        coordinate started from ``base_coords_vals`` where it has a value."""
+        ctx, spread, plant, fit_names = self.ctx, self.spread, self.plant, self.fit_names
         variants = [(law, list(fit_names))]
         for name in effs:
             cand = CANDIDATES[name]
@@ -850,8 +708,8 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         for lw, nm in variants:
             coords = [_law_coordinate(lw, n, ctx, spread) if n in base_coords_vals
                       or n in fit_names or n in ASYMMETRY_NAMES
-                      else _wide_coordinate(lw, n, fit_data) for n in dict.fromkeys(nm)]
-            coords += plant_coords()
+                      else _wide_coordinate(lw, n, self.fit_data) for n in dict.fromkeys(nm)]
+            coords += self.plant_coords()
             extra_mass = None
             for name in effs:
                 entry = EFFECTS[name].plant_entry  # how the effect enters the plant
@@ -865,17 +723,19 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                     for ex in CANDIDATES[name].trajectory_extras(ctx):
                         coords.append(_P(ex.name, "extra", ex.lo, ex.hi, False, ex.x0, name))
                 elif entry == "mass":
+                    mass_name = self.mass_name
                     if mass_name is None:
                         raise _NotApplicable(f"plant {plant.name} has no mass parameter "
                                              f"{MASS_PARAMETERS}")
-                    if mass_name in (fit_plant or {}):
+                    if mass_name in (self.fit_plant or {}):
                         raise _NotApplicable(f"the mass {mass_name} is fitted with the base "
                                              f"(fit_plant)")
                     M0 = float(getattr(plant.params, mass_name))
                     coords.append(_P("dm", "mass", -0.5 * M0, 0.5 * M0, False, 0.0, name))
                     extra_mass = (mass_name, M0)
                 elif entry == "delay":
-                    d = 25 * min(fit_case.record.dt, *(c.record.dt for c in val_cases))
+                    d = 25 * min(self.fit_case.record.dt,
+                                 *(c.record.dt for c in self.val_cases))
                     coords.append(_P("delay", "delay", -d, d, False, 0.0, name))
             for c in coords:  # warm start from the fitted base (and earlier effects)
                 if c.name in base_coords_vals:
@@ -886,21 +746,24 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
             out.append(s)
         return out
 
-    def applicable(name) -> tuple[bool, str]:
+    def applicable(self, name) -> tuple[bool, str]:
+        """Whether candidate ``name`` can be tried here, and why not."""
         cand = CANDIDATES[name]
-        ok, why = cand.applicable(base_law, fit_data, ctx)
+        ok, why = cand.applicable(self.base_law, self.fit_data, self.ctx)
         if not ok:
             return ok, why
-        if "x" in EFFECTS[name].inputs and not ctx.x_hi - ctx.x_lo > 0:
+        if "x" in EFFECTS[name].inputs and not self.ctx.x_hi - self.ctx.x_lo > 0:
             return False, "the fit record does not move"
-        if engine == "fmu" and name not in FMU_EFFECTS:
+        if self.engine == "fmu" and name not in FMU_EFFECTS:
             return False, ("engine='fmu': the friction FMU has no parameters for this effect "
                            "(it needs EffectLaw inside the plant; use engine='plant')")
         return True, ""
 
-    def fit_effects(effs, law, start_vals, budget):
+    def fit_effects(self, effs, law, start_vals, budget):
+        """The best fit on the fit record of ``effs`` on top of ``law`` over its setups:
+        ``(setup, u, RMS residual [-])``."""
         best = None
-        for s in setups_for(effs, law, start_vals):
+        for s in self.setups_for(effs, law, start_vals):
             u0 = s.unit0()
             # non-convex coordinates get a coarse grid first: a time shift, and decades-wide
             # parameters a candidate adds without a fitted start (bristle stiffness)
@@ -911,115 +774,157 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
                     for g in grid:
                         u = u0.copy()
                         u[j] = g
-                        r = residual(s, u, fit_case)
+                        r = self.residual(s, u, self.fit_case)
                         costs.append(float(r @ r))
                     u0[j] = grid[int(np.argmin(costs))]
-            u, cost, _ = fit(s, u0, budget)
+            u, cost, _ = self.fit(s, u0, budget)
             if best is None or cost < best[2]:
                 best = (s, u, cost)
         return best
 
-    effects, skipped, fitted = [], {}, {}
-    base_start = {c.name: v for c, v in zip(base_setup.coords,
-                                            [c.to_phys(x) for c, x in zip(base_setup.coords,
-                                                                           u_base)])}
-    def fit_one(name):  # one candidate's fit and the simulations it ran
+    def fit_one(self, name):
+        """One candidate's fit and the simulations it ran: ``(fit or None, why not,
+        simulations, seconds)`` (what a cluster worker runs, :mod:`diagnosis.cluster`)."""
+        tm = self.tm
         sims0, secs0 = tm.sims, tm.sim_seconds
         try:
-            out = fit_effects([name], base_law, base_start, max_sims)
+            out = self.fit_effects([name], self.base_law, self.base_start, self.max_sims)
         except _NotApplicable as exc:
             return None, str(exc), 0, 0.0
         return out, "", tm.sims - sims0, tm.sim_seconds - secs0
 
-    from .cluster import trajectory_fits  # on a cluster: every applicable one at once
-    remote = trajectory_fits(executor, [n for n in names if applicable(n)[0]], fit_one, tm,
-                             eng)
-    for k, name in enumerate(names, 1):
-        ok, why = applicable(name)
-        if not ok:
-            skipped[name] = why
-            continue
-        say(f"[diagnose-trajectory] candidate {k}/{len(names)}: {name}")
-        sims0, secs0 = tm.sims, tm.sim_seconds
-        out, why, n_sims, n_secs = remote[name] if name in remote else fit_one(name)
-        if out is None:
-            skipped[name] = why
-            continue
-        s, u, cost = out
-        if name in remote:  # the worker's simulations count as this run's
-            tm.sims, tm.sim_seconds = sims0 + n_sims, secs0 + n_secs
-        after, _ = score(s, u)
-        cost_sims = {"simulations": tm.sims - sims0, "seconds": tm.sim_seconds - secs0}
-        fitted[name] = (s, u)
-        n_par = sum(1 for c in s.coords if c.name not in fit_names and c.target != "plant")
-        effects.append({"name": name, "validation_before": before, "validation_after": after,
-                        "gap_closed": (before - after) / before if before > 0 else 0.0,
-                        "excess_closed": (before - after) / max(before - floor, 1e-12),
-                        "n_params": n_par, "fit_before": base_fit, "fit_after": cost,
-                        "fitted": {**s.describe(u, ctx), **cost_sims}})
-    # near-ties go to the simpler effect; held-out scores closer than a twentieth of the
-    # noise floor are a tie too: with a gap barely above the floor, excess fractions differ
-    # by noise alone
-    tied_names = rank(effects, floor, TIE_FLOOR)
+    def try_candidates(self) -> None:
+        """Every candidate fitted (on the cluster behind ``executor`` when given) and scored
+        held out (``effects``, ``fitted``, ``skipped``), ranked (``tied_names``)."""
+        from .cluster import trajectory_fits  # on a cluster: every applicable one at once
+        self.effects, self.skipped, self.fitted = [], {}, {}
+        remote = trajectory_fits(self.executor,
+                                 [n for n in self.names if self.applicable(n)[0]],
+                                 self.fit_one, self.tm, self.eng)
+        for k, name in enumerate(self.names, 1):
+            ok, why = self.applicable(name)
+            if not ok:
+                self.skipped[name] = why
+                continue
+            self.say(f"[diagnose-trajectory] candidate {k}/{len(self.names)}: {name}")
+            row = self.try_candidate(name, remote.get(name))
+            if isinstance(row, str):
+                self.skipped[name] = row
+            else:
+                self.effects.append(row)
+        # near-ties go to the simpler effect; held-out scores closer than a twentieth of the
+        # noise floor are a tie too: with a gap barely above the floor, excess fractions
+        # differ by noise alone
+        self.tied_names = rank(self.effects, self.floor, TIE_FLOOR)
 
-    # -- 4. greedy stacking
-    sequence = []
-    final_val = before
-    if greedy and effects and effects[0]["excess_closed"] >= MIN_EXCESS_CLOSED:
+    def try_candidate(self, name, remote=None):
+        """Candidate ``name`` fitted (or its fit ``remote`` from a worker) and scored held
+        out: its row of the report's ``effects``, or why it was skipped."""
+        tm, before, floor = self.tm, self.before, self.floor
+        sims0, secs0 = tm.sims, tm.sim_seconds
+        out, why, n_sims, n_secs = remote if remote is not None else self.fit_one(name)
+        if out is None:
+            return why
+        s, u, cost = out
+        if remote is not None:  # the worker's simulations count as this run's
+            tm.sims, tm.sim_seconds = sims0 + n_sims, secs0 + n_secs
+        after, _ = self.score(s, u)
+        cost_sims = {"simulations": tm.sims - sims0, "seconds": tm.sim_seconds - secs0}
+        self.fitted[name] = (s, u)
+        n_par = sum(1 for c in s.coords if c.name not in self.fit_names and c.target != "plant")
+        return {"name": name, "validation_before": before, "validation_after": after,
+                "gap_closed": (before - after) / before if before > 0 else 0.0,
+                "excess_closed": (before - after) / max(before - floor, 1e-12),
+                "n_params": n_par, "fit_before": self.base_fit, "fit_after": cost,
+                "fitted": {**s.describe(u, self.ctx), **cost_sims}}
+
+    # -- 4. greedy stacking ------------------------------------------------------------------
+    def stack(self) -> None:
+        """Stack further effects on the best one while each closes a further 3 % of the
+        held-out gap (``sequence``, ``final_val``)."""
+        effects = self.effects
+        self.sequence = []
+        self.final_val = self.before
+        if not (self.greedy and effects and effects[0]["excess_closed"] >= MIN_EXCESS_CLOSED):
+            return
         used = [effects[0]["name"]]
         cur_val = effects[0]["validation_after"]
-        s_cur, u_cur = fitted[used[0]]
-        sequence.append({"add": used[0], "validation": cur_val})
+        s_cur, u_cur = self.fitted[used[0]]
+        self.sequence.append({"add": used[0], "validation": cur_val})
         for e in effects[1:3]:
             if e["gap_closed"] < 0.05:
                 continue
             if CANDIDATES[e["name"]].stage == "modify_law" and any(
                     CANDIDATES[n].stage == "modify_law" for n in used):
                 continue
-            say(f"[diagnose-trajectory] greedy: {' + '.join(used)} + {e['name']}")
+            self.say(f"[diagnose-trajectory] greedy: {' + '.join(used)} + {e['name']}")
             start = s_cur.values(u_cur)
             try:
-                s2, u2, _ = fit_effects(used + [e["name"]], s_cur.law, start, max_sims)
+                s2, u2, _ = self.fit_effects(used + [e["name"]], s_cur.law, start,
+                                             self.max_sims)
             except _NotApplicable:
                 continue
-            v2, _ = score(s2, u2)
+            v2, _ = self.score(s2, u2)
             if v2 < cur_val * 0.97:  # keep only effects that close a further 3 %
                 used.append(e["name"])
                 s_cur, u_cur, cur_val = s2, u2, v2
-                sequence.append({"add": e["name"], "validation": v2})
-        final_val = cur_val
+                self.sequence.append({"add": e["name"], "validation": v2})
+        self.final_val = cur_val
 
-    # -- 5. verdict (the force level's rules)
-    verdict = decide(effects, before, floor, noise_abs=1e-9)
-    if verdict["cause"] not in ("none", "unexplained") and tied_names:
-        verdict["tied_with"] = tied_names  # the held-out data cannot tell these apart
-    if hasattr(eng, "close"):
-        eng.close()
-    report = DiagnosisReport(
-        level="trajectory",
-        baseline={"model": law0.name, "metric": "nrmse", "fit": base_fit, "validation": before,
-                  "signal": fit_case.record.signal or plant.main_output,
-                  "normalised_by": ("std of the measured tracking error "
-                                    f"({tm.ref_name} - {plant.main_output})"
-                                    if tm.ref_name else "std of the measured signal")},
-        **report_sections(where, bands, freq, effects, verdict, sequence, before, final_val,
-                          floor),
-        plant=plant.name,
-        engine=engine,
-        noise_floor_parts={"white": white, "reproducibility": repro},
-        effect_details={e["name"]: e["fitted"] for e in effects},
-        base={"law": base_law.name, "fit_names": fit_names, "params": base_vals,
-              "sensitivity": sens},
-        skipped=skipped,
-        timing={"seconds": time.perf_counter() - t_start, "simulations": tm.sims,
-                "simulation_seconds": tm.sim_seconds,
-                "fit_samples": int(fit_case.mask.sum()),
-                "validation_samples": int(sum(c.mask.sum() for c in val_cases))},
-    )
-    report._models = {"base": (base_setup, u_base), **fitted}  # for plots; not serialised
-    report._data = {"fit": fit_case, "validation": val_cases, "ctx": ctx, "plant": plant,
-                    "val_data": val_data}
-    return report
+    # -- 5. verdict (the force level's rules) ------------------------------------------------
+    def decide(self) -> dict:
+        """The verdict (:func:`diagnosis.verdict.decide`), with ``tied_with`` where the
+        held-out data cannot tell the named effect from others."""
+        verdict = decide(self.effects, self.before, self.floor, noise_abs=1e-9)
+        if verdict["cause"] not in ("none", "unexplained") and self.tied_names:
+            verdict["tied_with"] = self.tied_names  # the held-out data cannot tell these apart
+        return verdict
+
+    def report(self, verdict: dict) -> DiagnosisReport:
+        """The report of the steps run so far with ``verdict``."""
+        tm, plant, fit_case, val_cases = self.tm, self.plant, self.fit_case, self.val_cases
+        report = DiagnosisReport(
+            level="trajectory",
+            baseline={"model": self.law0.name, "metric": "nrmse", "fit": self.base_fit,
+                      "validation": self.before,
+                      "signal": fit_case.record.signal or plant.main_output,
+                      "normalised_by": ("std of the measured tracking error "
+                                        f"({tm.ref_name} - {plant.main_output})"
+                                        if tm.ref_name else "std of the measured signal")},
+            **report_sections(self.where, self.bands, self.freq, self.effects, verdict,
+                              self.sequence, self.before, self.final_val, self.floor),
+            plant=plant.name,
+            engine=self.engine,
+            noise_floor_parts={"white": self.white, "reproducibility": self.repro},
+            effect_details={e["name"]: e["fitted"] for e in self.effects},
+            base={"law": self.base_law.name, "fit_names": self.fit_names,
+                  "params": self.base_vals, "sensitivity": self.sens},
+            skipped=self.skipped,
+            timing={"seconds": time.perf_counter() - self.t_start, "simulations": tm.sims,
+                    "simulation_seconds": tm.sim_seconds,
+                    "fit_samples": int(fit_case.mask.sum()),
+                    "validation_samples": int(sum(c.mask.sum() for c in val_cases))},
+        )
+        # for plots; not serialised
+        report._models = {"base": (self.base_setup, self.u_base), **self.fitted}
+        report._data = {"fit": fit_case, "validation": val_cases, "ctx": self.ctx,
+                        "plant": plant, "val_data": self.val_data}
+        return report
+
+    def run(self) -> DiagnosisReport:
+        """All steps in order; the engine is closed before the report is made."""
+        self.fit_base()
+        self.locate()
+        self.try_candidates()
+        self.stack()
+        verdict = self.decide()
+        if hasattr(self.eng, "close"):
+            self.eng.close()
+        return self.report(verdict)
+
+
+def _silent(msg) -> None:
+    return None
 
 
 class _NotApplicable(Exception):

@@ -20,7 +20,7 @@ def trajectory_figures(report) -> dict[str, str]:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from .trajectory import TrajectoryModel, _PlantEngine  # the report re-runs the model
+    from .engines import TrajectoryModel, _PlantEngine  # the report re-runs the model
 
     d = report._data
     plant, ctx = d["plant"], d["ctx"]

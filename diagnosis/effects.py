@@ -78,6 +78,9 @@ from friction.extensions import EXTENSIONS, POSITION_NAMES
 from .candidates import (Acceleration, Asymmetry, AsymmetryTwins, Candidate,  # noqa: F401
                          Context, Delay, Drift, Extra, Inertia, Load, Position, Presliding,
                          StribeckShape, make_context, MAX_FILTER_SAMPLES)
+# candidates in modules of their own, with their truth forms
+from .effects_backlash import Backlash  # noqa: E402
+from .effects_gms import GMSCandidate  # noqa: E402
 
 __all__ = ["Effect", "EFFECTS", "EFFECT_NAMES", "CANDIDATES", "FORCE_EFFECTS", "FMU_EFFECTS",
            "LEVELS", "INPUTS", "EXPECTED_FAMILIES", "EXPECTED_EVIDENCE", "PLANT_ENTRIES", "Candidate",
@@ -180,7 +183,9 @@ class Effect:
                "trajectory": self.candidate.trajectory_extras}
         if level not in get:
             raise ValueError(f"level must be one of {sorted(get)}, got {level!r}")
-        return get[level](ctx)
+        # a law-changing candidate's own parameters are law parameters (backlash's gap)
+        own = getattr(self.candidate, "law_extras", None)
+        return get[level](ctx) + (own(ctx) if own is not None else [])
 
     def truth(self, form: str | None = None) -> Callable:
         """The truth form ``form`` (default: the first) as a function ``(kin, s) -> F``."""
@@ -199,6 +204,8 @@ class Effect:
 
 
 _T = "diagnosis.benchmark.truths:"
+_B = "diagnosis.effects_backlash:"
+_G = "diagnosis.effects_gms:"
 
 #: every named effect, in the order the candidates are tried
 EFFECTS: dict[str, Effect] = {e.name: e for e in (
@@ -245,6 +252,20 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            evidence=("t",),
            truths={"saturating_warm_up": _T + "drift_truth"},
            generic_truth=_T + "drift_generic"),
+    Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
+                    "modify_law"),
+           plant_entry="law", fmu=True, families=("pre-sliding", "accel/decel"),
+           truths={"rigid": _B + "backlash_rigid_truth",
+                   "compliant": _B + "backlash_compliant_truth",
+                   "impact": _B + "backlash_impact_truth"},
+           generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
+    Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
+                        "Maxwell-slip)", "modify_law"),
+           plant_entry="law", fmu=True, families=("pre-sliding",),
+           truths={"maxwell10": _G + "gms_maxwell10_truth",
+                   "maxwell4": _G + "gms_maxwell4_truth", "dahl": _G + "gms_dahl_truth",
+                   "elastoplastic": _G + "gms_elastoplastic_truth"},
+           generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 
 #: names of the candidate effects, in the order they are tried

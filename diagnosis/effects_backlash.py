@@ -65,9 +65,9 @@ from numba import njit
 
 from friction import make_model
 
-from .effects import Candidate, Context
+from .candidates import Candidate, Context
 
-__all__ = ["Backlash", "BACKLASH", "gap_start", "TRUTHS", "backlash_truth", "GAP_GRID",
+__all__ = ["Backlash", "gap_start", "TRUTHS", "backlash_truth", "GAP_GRID",
            "FINE", "fine_grid", "reversal_travels", "contact_record"]
 
 #: gaps tried by :func:`gap_start` around the model-free estimate of the lost motion
@@ -118,6 +118,12 @@ class Backlash(Candidate):
 
     def own_law_names(self, law):
         return ("delta",)
+
+    def law_extras(self, ctx: Context) -> list:
+        """The candidate's own parameter as the record lists it: the half-gap ``delta``
+        [m] with the joint fit's box (:func:`identification.space.default_bounds` of the
+        backlash_lugre law) and this candidate's start."""
+        return _law_extras(self.modify_law(make_model("lugre"), [], ctx)[0][0], ("delta",))
 
     def own_parameters(self, law) -> dict:
         """The candidate's own parameters of a fitted ``law``: ``backlash_gap`` [m] (the
@@ -193,6 +199,16 @@ def contact_record(fit, delta: float):
                    name=fit.name)
 
 
+def _law_extras(law, names) -> list:
+    """Extras (name, start, box, unit) of the law parameters ``names`` of ``law``: its values
+    and the joint fit's box without data (:func:`identification.space.default_bounds`)."""
+    from identification.space import default_bounds
+    from .candidates import Extra
+    units = {i.name: i.unit for i in law.Params.info()}
+    box = default_bounds(law, list(names))
+    return [Extra(n, float(getattr(law.params, n)), *box[n], units[n]) for n in names]
+
+
 def gap_start(law, names, fit, ctx: Context) -> dict:
     """Start of the joint fit: values of ``law`` (a :class:`friction.backlash.BacklashLuGre`)
     for its parameters ``names`` and the option ``gap``.
@@ -242,10 +258,6 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
 
 _LUGRE_VALUES = ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape",
                  "Fc_neg", "Fs_neg", "vs_neg", "sigma2_neg")
-
-
-BACKLASH = Backlash("backlash", "lost motion at the reversals between drive and contact",
-                    "modify_law")
 
 
 # -- truth forms (benchmark) ------------------------------------------------------------------
@@ -437,3 +449,11 @@ def _generic_truth(form):
 #: (F, load)`` of the forms :data:`TRUTHS`
 PLANT_TRUTHS = {form: _plant_truth(form) for form in TRUTHS}
 GENERIC_TRUTHS = {form: _generic_truth(form) for form in TRUTHS}
+# module-level names, so the effect record can name them ("module:function") and a worker
+# process can unpickle them
+backlash_rigid_truth = PLANT_TRUTHS["rigid"]
+backlash_compliant_truth = PLANT_TRUTHS["compliant"]
+backlash_impact_truth = PLANT_TRUTHS["impact"]
+backlash_rigid_generic = GENERIC_TRUTHS["rigid"]
+backlash_compliant_generic = GENERIC_TRUTHS["compliant"]
+backlash_impact_generic = GENERIC_TRUTHS["impact"]

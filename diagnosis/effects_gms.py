@@ -61,10 +61,10 @@ from numba import njit
 from friction import make_model
 from friction.gms import N_ELEMENTS, element_stiffness
 
-from .effects import Candidate, Context
+from .candidates import Candidate, Context
 from .effects_backlash import fine_grid
 
-__all__ = ["GMSCandidate", "GMS_CANDIDATE", "gms_start", "TRUTHS", "gms_truth", "FINE",
+__all__ = ["GMSCandidate", "gms_start", "TRUTHS", "gms_truth", "FINE",
            "SPREADS"]
 
 #: truth integration grid, steps per data sample
@@ -140,6 +140,12 @@ class GMSCandidate(Candidate):
                     f"samples")
         return ""
 
+    def law_extras(self, ctx: Context) -> list:
+        """The candidate's own parameters as the record lists them: ``spread`` [-] and
+        ``C`` [N/s] with the joint fit's box (the gms law's search ranges) and starts."""
+        from .effects_backlash import _law_extras
+        return _law_extras(self.law_for(make_model("lugre")), ("spread", "C"))
+
     def own_parameters(self, law) -> dict:
         """The candidate's own parameters of a fitted GMS ``law``: ``spread`` [-], ``C``
         [N/s], the block stiffnesses ``k1..k4`` [N/m] and the presliding distance
@@ -173,10 +179,6 @@ def gms_start(law, names, fit, ctx: Context) -> dict:
                 if sse < best[0]:
                     best = (sse, vals)
     return best[1]
-
-
-GMS_CANDIDATE = GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
-                             "Maxwell-slip)", "modify_law")
 
 
 # -- truth forms (benchmark) ------------------------------------------------------------------
@@ -359,3 +361,9 @@ def _generic_truth(form):
 #: (F, load)`` of the forms :data:`TRUTHS`
 PLANT_TRUTHS = {form: _plant_truth(form) for form in TRUTHS}
 GENERIC_TRUTHS = {form: _generic_truth(form) for form in TRUTHS}
+# module-level names, so the effect record can name them ("module:function")
+gms_maxwell4_truth = PLANT_TRUTHS["maxwell4"]
+gms_maxwell10_truth = PLANT_TRUTHS["maxwell10"]
+gms_dahl_truth = PLANT_TRUTHS["dahl"]
+gms_elastoplastic_truth = PLANT_TRUTHS["elastoplastic"]
+gms_maxwell10_generic = GENERIC_TRUTHS["maxwell10"]

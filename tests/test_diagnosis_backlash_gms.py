@@ -9,24 +9,21 @@ import pytest
 
 from diagnosis import effects_backlash as eb
 from diagnosis import effects_gms as eg
-from diagnosis.effects import make_context
+from diagnosis.effects import CANDIDATES, EFFECTS, make_context
 from friction import make_model
 from friction.dataset import Dataset
 from friction.metrics import nrmse
+from diagnosis.benchmark import BASE, _motion as benchmark_motion
 
-#: the benchmark's LuGre contact (diagnosis.benchmark BASE)
-BASE = dict(sigma0=2e4, sigma1=150.0, sigma2=8.0, Fc=2.0, Fs=2.8, vs=5e-3)
+BACKLASH = CANDIDATES["backlash"]
+GMS = CANDIDATES["gms"]
 
 
 def _motion(n, dt, seed):
-    """The benchmark's multi-sine drive (both directions, ~16 reversals in 8.4 s)."""
+    """The benchmark's multi-sine drive (both directions, ~16 reversals in 8.4 s) and the
+    generator that drew it (for the noise)."""
     rng = np.random.default_rng(seed)
-    t = np.arange(n) * dt
-    v = np.zeros(n)
-    for f, amp in ((0.7, 0.05), (1.9, 0.03), (4.3, 0.012)):
-        v += amp * np.sin(2 * np.pi * f * t + rng.uniform(0, 2 * np.pi))
-    v *= 0.6 + 0.4 * np.sin(2 * np.pi * 0.13 * t) ** 2
-    x = np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * dt)))
+    t, x, v, _ = benchmark_motion(n, dt, rng)
     return t, x, v, rng
 
 
@@ -39,18 +36,18 @@ def _record(F0, t, x, v, rng, noise=0.02, name="rec"):
 # -- candidate laws --------------------------------------------------------------------------
 def test_backlash_candidate_is_the_base_behind_a_play_and_reports_the_lost_motion():
     base = make_model("lugre", **BASE, alpha=1.5, b=0.1)
-    law = eb.BACKLASH.law_for(base, 1e-3)
+    law = BACKLASH.law_for(base, 1e-3)
     assert law.name == "backlash_lugre" and law.params.gap == "hold"
     for n in ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "alpha", "b"):
         assert getattr(law.params, n) == getattr(base.params, n)
-    assert eb.BACKLASH.own_parameters(law) == {"backlash_gap": pytest.approx(2e-3)}
-    (var, names), = eb.BACKLASH.modify_law(base, ["sigma0", "Fc"], _ctx())
+    assert BACKLASH.own_parameters(law) == {"backlash_gap": pytest.approx(2e-3)}
+    (var, names), = BACKLASH.modify_law(base, ["sigma0", "Fc"], _ctx())
     assert names == ["sigma0", "Fc", "delta"] and var.name == "backlash_lugre"
     # a gap of 0 is the base law bit for bit (the play operator cuts nothing)
     t, x, v, _ = _motion(3000, 1e-3, 0)
-    np.testing.assert_array_equal(eb.BACKLASH.law_for(base, 0.0).simulate(t, v),
+    np.testing.assert_array_equal(BACKLASH.law_for(base, 0.0).simulate(t, v),
                                   base.simulate(t, v))
-    ok, why = eb.BACKLASH.applicable(make_model("stribeck"), None, None)
+    ok, why = BACKLASH.applicable(make_model("stribeck"), None, None)
     assert not ok and "stribeck" in why
 
 
@@ -62,29 +59,29 @@ def _ctx():
 def test_backlash_practical_size_is_a_sample_and_a_half_of_travel():
     ctx = _ctx()
     step = ctx.sv * ctx.dt
-    assert "samples of travel" in eb.BACKLASH.practical({"delta": 0.5 * step}, ctx)
-    assert eb.BACKLASH.practical({"backlash_gap": 2.0 * step}, ctx) == ""
+    assert "samples of travel" in BACKLASH.practical({"delta": 0.5 * step}, ctx)
+    assert BACKLASH.practical({"backlash_gap": 2.0 * step}, ctx) == ""
 
 
 def test_gms_candidate_shares_the_base_curve_and_stiffness():
     base = make_model("lugre", **BASE, alpha=1.5, b=0.1)
-    law = eg.GMS_CANDIDATE.law_for(base, spread=20.0, C=3e3)
+    law = GMS.law_for(base, spread=20.0, C=3e3)
     assert law.name == "gms"
     for n in ("sigma0", "sigma2", "Fc", "Fs", "vs", "alpha", "b"):
         assert getattr(law.params, n) == getattr(base.params, n)
     k = law.element_stiffness()
     assert k.sum() == pytest.approx(BASE["sigma0"]) and k[0] / k[-1] == pytest.approx(20.0)
-    names = eg.GMS_CANDIDATE.names_for(["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs",
+    names = GMS.names_for(["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs",
                                         "alpha", "b"])
     assert names == ["sigma0", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "spread", "C"]
-    par = eg.GMS_CANDIDATE.own_parameters(law)
+    par = GMS.own_parameters(law)
     assert par["spread"] == 20.0 and par["C"] == 3e3
     assert par["presliding"] == pytest.approx(BASE["Fs"] / 4 / k[-1])
     # the steady state is the base's Stribeck curve
     vv = np.array([-0.05, -1e-3, 2e-3, 0.04])
     np.testing.assert_allclose(law.steady_state(vv), base.steady_state(vv), rtol=1e-12)
     twin = base.with_values(Fc_neg=1.5)
-    ok, why = eg.GMS_CANDIDATE.applicable(twin, None, None)
+    ok, why = GMS.applicable(twin, None, None)
     assert not ok and "Fc_neg" in why
 
 
@@ -156,8 +153,8 @@ def test_candidate_law_runs_in_its_native_law_fmu_to_1e_10(which):
     from fmus.native.build import SUFFIX
     from fmus.testing import LoggedSlave, built_native_fmus
     base = make_model("lugre", **BASE, alpha=1.7, b=0.05)
-    law = (eb.BACKLASH.law_for(base, 4e-4).with_values(gap="free") if which == "backlash"
-           else eg.GMS_CANDIDATE.law_for(base, spread=30.0, C=4e3))
+    law = (BACKLASH.law_for(base, 4e-4).with_values(gap="free") if which == "backlash"
+           else GMS.law_for(base, spread=30.0, C=4e3))
     path = built_native_fmus((law.name,)) / f"{law.name}{SUFFIX}.fmu"
     t, x, v, _ = _motion(3000, 1e-3, 2)
     ref = law.simulate(t, v)
@@ -194,24 +191,100 @@ def test_joint_fit_starts_the_gap_on_the_data_and_finds_it():
     data = _record(eb.backlash_truth("rigid", t, v, 2e-3, BASE), t, x, v, rng)
     ctx = make_context(data)
     base, names, base_nrmse = fit_base(data, "lugre", ctx)
-    (law, nm), = eb.BACKLASH.modify_law(base.law, names, ctx)
-    comp, nr = fit_composite(law, nm, [eb.BACKLASH], data, ctx)
-    assert eb.BACKLASH.own_parameters(comp.law)["backlash_gap"] == pytest.approx(2e-3, rel=0.05)
+    (law, nm), = BACKLASH.modify_law(base.law, names, ctx)
+    comp, nr = fit_composite(law, nm, [BACKLASH], data, ctx)
+    assert BACKLASH.own_parameters(comp.law)["backlash_gap"] == pytest.approx(2e-3, rel=0.05)
     assert nr < 0.6 * base_nrmse
-    warm, _ = fit_composite(law, nm, [eb.BACKLASH], data, ctx, extras0={}, max_nfev=1)
+    warm, _ = fit_composite(law, nm, [BACKLASH], data, ctx, extras0={}, max_nfev=1)
     assert warm.law.params.delta == pytest.approx(law.params.delta, rel=1e-3)
 
 
 def test_gms_practical_size_is_a_presliding_distance_of_a_sample_and_a_half():
     ctx = _ctx()
     step = ctx.sv * ctx.dt
-    law = eg.GMS_CANDIDATE.law_for(make_model("lugre", **BASE), spread=10.0)
+    law = GMS.law_for(make_model("lugre", **BASE), spread=10.0)
     pre = law.presliding_distance()
     p = {"sigma0": BASE["sigma0"], "spread": 10.0, "Fs": BASE["Fs"]}
-    assert pre > 5 * step and eg.GMS_CANDIDATE.practical(p, ctx) == ""
+    assert pre > 5 * step and GMS.practical(p, ctx) == ""
     # spread 10: the softest block carries Fs / 4 at 4.45 Fs / sigma0
     stiff = dict(p, sigma0=BASE["Fs"] / (0.2 * step))   # 0.89 samples
-    assert "samples of travel" in eg.GMS_CANDIDATE.practical(stiff, ctx)
+    assert "samples of travel" in GMS.practical(stiff, ctx)
     soft = dict(p, sigma0=BASE["Fs"] / (0.5 * step))    # 2.2 samples
-    assert eg.GMS_CANDIDATE.practical(soft, ctx) == ""
-    assert eg.GMS_CANDIDATE.practical({"spread": 3.0}, ctx) == ""
+    assert GMS.practical(soft, ctx) == ""
+    assert GMS.practical({"spread": 3.0}, ctx) == ""
+
+
+# -- what the force-level diagnosis names -----------------------------------------------------
+def _diagnose(F0, t, x, v, rng, candidates):
+    from diagnosis import diagnose
+    return diagnose(_record(F0, t, x, v, rng), "lugre", candidates=candidates)
+
+
+def test_lost_motion_of_2_mm_is_named_backlash_with_its_gap():
+    # issue 15: a device whose force lags by a constant displacement at every reversal
+    t, x, v, rng = _motion(8000, 1e-3, 5)
+    rep = _diagnose(eb.backlash_truth("rigid", t, v, 2e-3, BASE), t, x, v, rng,
+                    ["backlash", "gms", "delay"])
+    assert rep["verdict"]["cause"] == "backlash", rep.summary()
+    gap = 2.0 * rep["effect_details"]["backlash"]["params"]["delta"]
+    assert gap == pytest.approx(2e-3, rel=0.2)
+    assert rep["effect_details"]["backlash"]["parameters"]["backlash_gap"] == gap
+
+
+def test_maxwell_slip_presliding_is_named_gms():
+    t, x, v, rng = _motion(12000, 1e-3, 0)
+    rep = _diagnose(eg.gms_truth("maxwell10", t, v, BASE, 1e-3), t, x, v, rng,
+                    ["gms", "backlash", "acceleration"])
+    assert rep["verdict"]["cause"] == "gms", rep.summary()
+    par = rep["effect_details"]["gms"]["parameters"]
+    assert par["spread"] > 2.0 and par["C"] > 0
+
+
+def test_a_clean_record_names_neither():
+    t, x, v, rng = _motion(8000, 1e-3, 6)
+    rep = _diagnose(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng,
+                    ["backlash", "gms"])
+    assert rep["verdict"]["cause"] not in ("backlash", "gms"), rep.summary()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("gap", [1e-3, 3e-3])
+def test_backlash_among_every_candidate(gap):
+    from diagnosis.effects import EFFECT_NAMES
+    t, x, v, rng = _motion(12000, 1e-3, 0)
+    rep = _diagnose(eb.backlash_truth("rigid", t, v, gap, BASE), t, x, v, rng,
+                    list(EFFECT_NAMES))
+    assert rep["verdict"]["cause"] == "backlash", rep.summary()
+    assert 2.0 * rep["effect_details"]["backlash"]["params"]["delta"] == pytest.approx(
+        gap, rel=0.2)
+
+
+@pytest.mark.slow
+def test_clean_record_among_every_candidate_names_neither():
+    from diagnosis.effects import EFFECT_NAMES
+    t, x, v, rng = _motion(12000, 1e-3, 0)
+    rep = _diagnose(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng,
+                    list(EFFECT_NAMES))
+    assert rep["verdict"]["cause"] == "none", rep.summary()
+
+
+def test_the_records_list_parameters_truths_localisation_and_fmu():
+    from diagnosis.effects import FMU_EFFECTS
+    from fmus.native.build import native_catalogue
+    from diagnosis.benchmark import CASES
+    ctx = _ctx()
+    for name, law, own in (("backlash", "backlash_lugre", {"delta": "m"}),
+                           ("gms", "gms", {"spread": "1", "C": "N/s"})):
+        e = EFFECTS[name]
+        assert e.plant_entry == "law" and e.fmu and name in FMU_EFFECTS
+        assert law in native_catalogue()          # the FMU that carries it
+        assert {p.name: p.unit for p in e.parameters(ctx)} == own
+        assert len(e.truths) >= 3 and "pre-sliding" in e.families and name in CASES
+        t, x, v, _ = _motion(3000, 1e-3, 0)
+        F, load = resolve_generic(e)(1.0, t, x, v, np.gradient(v, t))
+        assert load is None and np.all(np.isfinite(F))
+
+
+def resolve_generic(e):
+    from diagnosis.effects import resolve
+    return resolve(e.generic_truth)

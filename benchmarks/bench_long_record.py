@@ -35,9 +35,14 @@ diagnose, before            4.77 GB      10:02 loaded
 diagnose, 2447f16           2.77 GB      1:55 quiet    the peak: diagnosis.composite's
                                                        candidate fits (scipy, 2-point
                                                        Jacobian on 1.4M rows)
-diagnose, now (--misfit     0.55 GB      21 min at     candidate fits on the normal
-record)                                  load 9, nice  equations of a float32 2-point
-                                                       Jacobian; progress lines
+diagnose, now               0.55 GB      4:33 at       candidate fits on the normal
+                                         load 6, nice  equations of a float32 2-point
+                                         (145 s CPU)   Jacobian; progress lines
+identify, now (same run)    1.19 GB      31 s at load
+                                         6 (13.5 s
+                                         CPU)
+diagnose, now (--misfit     0.55 GB      21 min at
+record)                                  load 9, nice
 ==========================  ===========  ============  ===============================
 
 Usage::

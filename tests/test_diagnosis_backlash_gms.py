@@ -143,19 +143,34 @@ def test_presliding_truths_settle_on_the_curve_and_have_hysteresis(form):
     assert 1 < k < 120, k
 
 
-# -- the FMU route: the candidates' laws in their native FMUs ---------------------------------
+# -- the FMU route: the candidates' laws in their law FMUs ------------------------------------
+_PYTHONFMU = []
+
+
+def _pythonfmu_dir():
+    """The pythonfmu FMUs of both candidate laws, built once per test process."""
+    from fmus.testing import built_fmus
+    if not _PYTHONFMU:
+        _PYTHONFMU.append(built_fmus(("backlash_lugre", "gms")))
+    return _PYTHONFMU[0]
+
+
+# the pythonfmu build of both laws costs 15-30 s: slow
+@pytest.mark.parametrize("kind", ["native", pytest.param("pythonfmu", marks=pytest.mark.slow)])
 @pytest.mark.parametrize("which", ["backlash", "gms"])
-def test_candidate_law_runs_in_its_native_law_fmu_to_1e_10(which):
+def test_candidate_law_runs_in_its_law_fmu_to_1e_10(which, kind):
     """The friction_effects block is a stateless map of the law's output; these candidates
-    change the law's state, so they run in the law FMUs. With the inputs set at the end of
-    each step (first-order hold, ``inputs_at_step_end``) the FMU's steps are the kernel's."""
+    change the law's state, so they run in the law FMUs (C and pythonfmu). With the inputs
+    set at the end of each step (first-order hold, ``inputs_at_step_end``) the FMU's steps
+    are the kernel's."""
     from fmus.master import fmu_values, law_parameters
     from fmus.native.build import SUFFIX
     from fmus.testing import LoggedSlave, built_native_fmus
     base = make_model("lugre", **BASE, alpha=1.7, b=0.05)
     law = (BACKLASH.law_for(base, 4e-4).with_values(gap="free") if which == "backlash"
            else GMS.law_for(base, spread=30.0, C=4e3))
-    path = built_native_fmus((law.name,)) / f"{law.name}{SUFFIX}.fmu"
+    path = (built_native_fmus((law.name,)) / f"{law.name}{SUFFIX}.fmu" if kind == "native"
+            else _pythonfmu_dir() / f"{law.name}.fmu")
     t, x, v, _ = _motion(3000, 1e-3, 2)
     ref = law.simulate(t, v)
     s = LoggedSlave(path)

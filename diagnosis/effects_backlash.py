@@ -68,7 +68,8 @@ from friction import make_model
 from .candidates import Candidate, Context
 
 __all__ = ["Backlash", "gap_start", "TRUTHS", "backlash_truth", "GAP_GRID",
-           "FINE", "fine_grid", "reversal_travels", "contact_record"]
+           "FINE", "fine_grid", "reversal_travels", "contact_record",
+           "reversal_travel_floor"]
 
 #: gaps tried by :func:`gap_start` around the model-free estimate of the lost motion
 GAP_GRID = 8
@@ -89,9 +90,10 @@ class Backlash(Candidate):
     contact: the base LuGre law fed the contact's motion behind a play
     (:class:`friction.backlash.BacklashLuGre`, module docstring)."""
 
-    #: shortest lost motion named ``backlash``, in samples of travel at the record's top
-    #: speed (ctx.sv dt) [-]: a shorter flat segment at a reversal is what a sub-sample shift
-    #: of the force channel makes there (and a ``delay`` within 1.5 samples is not named)
+    #: shortest lost motion named ``backlash``: the drive must take this many samples to
+    #: cross it after a reversal [-] (:func:`reversal_travel_floor`); a play crossed within
+    #: a sample and a half is what a sub-sample shift of the force channel makes at a
+    #: reversal (and a ``delay`` within 1.5 samples is not named)
     MIN_SAMPLES = 1.5
 
     def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
@@ -136,12 +138,21 @@ class Backlash(Candidate):
         gap = p.get("backlash_gap", 2.0 * p["delta"] if "delta" in p else None)
         if gap is None:
             return ""
-        n = gap / max(ctx.sv * ctx.dt, 1e-300)
-        if n < self.MIN_SAMPLES:
-            return (f"its lost motion of {gap:.3g} m is {n:.2f} samples of travel at the top "
-                    f"speed, below {self.MIN_SAMPLES:g}: what a sub-sample shift makes at a "
-                    f"reversal")
+        floor = reversal_travel_floor(ctx, self.MIN_SAMPLES)
+        if gap < floor:
+            return (f"its lost motion of {gap:.3g} m is crossed within {self.MIN_SAMPLES:g} "
+                    f"samples of a reversal ({floor:.3g} m at the record's acceleration): "
+                    f"what a sub-sample shift makes there")
         return ""
+
+
+def reversal_travel_floor(ctx: Context, samples: float) -> float:
+    """Travel [m] of the drive in ``samples`` samples from a reversal, at the fit record's
+    99th-percentile acceleration: ``sa (samples dt)^2 / 2``. An effect that lives within
+    that travel after each reversal (a flat segment, a presliding curve) is over within the
+    samples a sub-sample shift of the force channel moves (the largest acceleration makes
+    the floor the strictest of the record's)."""
+    return 0.5 * ctx.sa * (samples * ctx.dt) ** 2
 
 
 def reversal_travels(fit, ctx: Context) -> np.ndarray:

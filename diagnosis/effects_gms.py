@@ -118,26 +118,28 @@ class GMSCandidate(Candidate):
     def own_law_names(self, law):
         return ("spread", "C")
 
-    #: shortest presliding distance named ``gms``, in samples of travel at the record's top
-    #: speed (ctx.sv dt) [-]: shorter, the blocks' hysteresis is over within the sample
-    #: after a reversal and one bristle (the base) draws the same samples
+    #: shortest presliding distance named ``gms``: the drive must take this many samples
+    #: to cross it after a reversal [-] (:func:`diagnosis.effects_backlash.
+    #: reversal_travel_floor`); shorter, the blocks' hysteresis is over within the samples a
+    #: sub-sample shift moves, and one bristle (the base) draws the same samples
     MIN_SAMPLES = 1.5
 
     def practical(self, p: dict, ctx: Context) -> str:
         """Why fitted parameters ``p`` (the law's ``sigma0`` [N/m], ``spread`` [-] and
         ``Fs`` [N], as the report gives them) are too small to name ('' when they are
-        not, or when ``p`` lacks them): a presliding distance below :data:`MIN_SAMPLES`
-        samples of travel at the top speed."""
+        not, or when ``p`` lacks them): a presliding distance crossed within
+        :data:`MIN_SAMPLES` samples of a reversal."""
+        from .effects_backlash import reversal_travel_floor
         if not all(k in p for k in ("sigma0", "spread", "Fs")):
             return ""
         k = np.empty(N_ELEMENTS)
         element_stiffness(float(p["sigma0"]), float(p["spread"]), k)
         pre = float(p["Fs"]) / N_ELEMENTS / k[-1]
-        n = pre / max(ctx.sv * ctx.dt, 1e-300)
-        if n < self.MIN_SAMPLES:
-            return (f"its presliding distance of {pre:.3g} m is {n:.2f} samples of travel at "
-                    f"the top speed, below {self.MIN_SAMPLES:g}: one bristle draws the same "
-                    f"samples")
+        floor = reversal_travel_floor(ctx, self.MIN_SAMPLES)
+        if pre < floor:
+            return (f"its presliding distance of {pre:.3g} m is crossed within "
+                    f"{self.MIN_SAMPLES:g} samples of a reversal ({floor:.3g} m at the "
+                    f"record's acceleration): one bristle draws the same samples")
         return ""
 
     def law_extras(self, ctx: Context) -> list:

@@ -97,6 +97,17 @@ class Backlash(Candidate):
     MIN_SAMPLES = 1.5
 
     def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
+        """Whether the candidate applies to the base ``law`` on ``fit``, and why not.
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The base law (a classic LuGre).
+        fit : friction.dataset.Dataset
+            The fit record (t [s], x [m], v [m/s], F [N]).
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
         if law.name != "lugre":
             return False, (f"backlash is offered on the classic LuGre base (the "
                            f"backlash_lugre law); the base is {law.name}")
@@ -104,37 +115,96 @@ class Backlash(Candidate):
 
     def law_for(self, law, delta: float):
         """The base ``law`` (classic LuGre) behind a play of half-width ``delta`` [m]: a
-        :class:`friction.backlash.BacklashLuGre` with the base's values (``gap="hold"``)."""
+        :class:`friction.backlash.BacklashLuGre` with the base's values (``gap="hold"``).
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The base law (a classic LuGre).
+        delta : float
+            Half-width of the play [m].
+        """
         vals = {n: getattr(law.params, n) for n in _LUGRE_VALUES}
         return make_model("backlash_lugre", delta=float(delta), gap="hold", **vals)
 
     def modify_law(self, law, base_names, ctx: Context):
+        """The law variants to fit: one, the base's values carried over.
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The base law (a classic LuGre).
+        base_names : list of str
+            The base law's free parameters.
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
         # start: a tenth of a percent of the stroke; :meth:`start_law` moves it onto the data
         delta = max(1e-4 * (ctx.x_hi - ctx.x_lo), 1e-6)
         return [(self.law_for(law, delta), list(base_names) + ["delta"])]
 
     def start_law(self, law, names, fit, ctx: Context):
         """``law`` (a :meth:`modify_law` variant) with its gap and what the drive feels
-        while crossing it started on the data (:func:`gap_start`)."""
+        while crossing it started on the data (:func:`gap_start`).
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The candidate's variant of the base law (:meth:`modify_law`).
+        names : list of str
+            The variant's free parameters (its own among them).
+        fit : friction.dataset.Dataset
+            The fit record (t [s], x [m], v [m/s], F [N]).
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
         return law.with_values(**gap_start(law, names, fit, ctx))
 
     def own_law_names(self, law):
+        """The law parameters that are this candidate's own (a transfer calibration fits
+        these alone).
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The base law (a classic LuGre).
+        """
         return ("delta",)
 
     def law_extras(self, ctx: Context) -> list:
         """The candidate's own parameter as the record lists it: the half-gap ``delta``
         [m] with the joint fit's box (:func:`identification.space.default_bounds` of the
-        backlash_lugre law) and this candidate's start."""
+        backlash_lugre law) and this candidate's start.
+
+        Parameters
+        ----------
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
         return _law_extras(self.modify_law(make_model("lugre"), [], ctx)[0][0], ("delta",))
 
     def own_parameters(self, law) -> dict:
         """The candidate's own parameters of a fitted ``law``: ``backlash_gap`` [m] (the
-        lost motion at a reversal, 2 delta)."""
+        lost motion at a reversal, 2 delta).
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The fitted variant (a backlash_lugre or gms law).
+        """
         return {"backlash_gap": 2.0 * float(law.params.delta)}
 
     def practical(self, p: dict, ctx: Context) -> str:
         """Why a fitted gap (``p["delta"]`` [m] or ``p["backlash_gap"]``) is too small to name
-        ('' when it is large enough; see :data:`MIN_SAMPLES`)."""
+        ('' when it is large enough; see :data:`MIN_SAMPLES`).
+
+        Parameters
+        ----------
+        p : dict
+            Fitted values by name: the candidate's extras and the law's parameters [their units].
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
         gap = p.get("backlash_gap", 2.0 * p["delta"] if "delta" in p else None)
         if gap is None:
             return ""
@@ -151,7 +221,15 @@ def reversal_travel_floor(ctx: Context, samples: float) -> float:
     99th-percentile acceleration: ``sa (samples dt)^2 / 2``. An effect that lives within
     that travel after each reversal (a flat segment, a presliding curve) is over within the
     samples a sub-sample shift of the force channel moves (the largest acceleration makes
-    the floor the strictest of the record's)."""
+    the floor the strictest of the record's).
+
+    Parameters
+    ----------
+    ctx : diagnosis.candidates.Context
+        Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+    samples : float
+        Samples after the reversal [-].
+    """
     return 0.5 * ctx.sa * (samples * ctx.dt) ** 2
 
 
@@ -164,7 +242,15 @@ def reversal_travels(fit, ctx: Context) -> np.ndarray:
 
     Reversals are sign changes of the velocity outside a dead band of 2 % of the top speed
     (a noisy velocity near rest does not chatter), measured from the turning point of the
-    position; a segment that never reaches the midpoint gives no travel."""
+    position; a segment that never reaches the midpoint gives no travel.
+
+    Parameters
+    ----------
+    fit : friction.dataset.Dataset
+        The record (t [s], x [m], v [m/s], F [N]).
+    ctx : diagnosis.candidates.Context
+        Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+    """
     v, x, F = fit.v, fit.x, fit.F
     band = 0.02 * ctx.sv
     sgn = np.sign(v) * (np.abs(v) > band)
@@ -200,7 +286,15 @@ def contact_record(fit, delta: float):
     """``fit`` as the contact behind a play of half-width ``delta`` [m] sees it: positions
     through the play operator (sharp flanks, starting centred), the velocity the drive's
     where the contact is pushed and 0 while the drive crosses the play (the data with the
-    effect taken out, for a re-identification of the base law)."""
+    effect taken out, for a re-identification of the base law).
+
+    Parameters
+    ----------
+    fit : friction.dataset.Dataset
+        The record (t [s], x [m], v [m/s], F [N]).
+    delta : float
+        Half-width of the play [m].
+    """
     from friction.dataset import Dataset
     xc = _play(np.ascontiguousarray(fit.x, dtype=float), float(delta))
     moving = np.concatenate(([False], np.diff(xc) != 0.0))
@@ -236,7 +330,19 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
     the estimate x both options x the law's values re-identified (also with sigma1 = 0) or
     as fitted (a record without play keeps the base's), each a compiled run from the
     record's start state. With no LuGre parameter in ``names`` (a transfer calibration of
-    the gap alone) nothing is re-identified."""
+    the gap alone) nothing is re-identified.
+
+    Parameters
+    ----------
+    law : friction.backlash.BacklashLuGre
+        The candidate's variant of the base law.
+    names : list of str
+        The variant's free parameters (its own among them).
+    fit : friction.dataset.Dataset
+        The fit record (t [s], x [m], v [m/s], F [N]).
+    ctx : diagnosis.candidates.Context
+        Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+    """
     from .composite import fit_composite
     travels = reversal_travels(fit, ctx)
     stroke = max(ctx.x_hi - ctx.x_lo, 1e-12)
@@ -356,7 +462,17 @@ def _mass_behind_gap(h, xd, half, m, k, c, hunt, s0, s1, s2, Fc, Fs, vs, alpha):
 
 def fine_grid(t, v, fine: int):
     """The truths' integration grid: step ``h`` [s] = the sample interval of ``t`` / ``fine``,
-    its times [s] and the velocity [m/s] linear between the samples ``v``."""
+    its times [s] and the velocity [m/s] linear between the samples ``v``.
+
+    Parameters
+    ----------
+    t : ndarray
+        Sample times [s] (uniform).
+    v : ndarray
+        Velocity at the samples [m/s].
+    fine : int
+        Integration steps per sample.
+    """
     h = float(t[1] - t[0]) / fine
     tf = t[0] + h * np.arange((t.size - 1) * fine + 1)
     return h, tf, np.interp(tf, t, v)

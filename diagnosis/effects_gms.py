@@ -84,6 +84,17 @@ class GMSCandidate(Candidate):
     (:class:`friction.gms.GMS`; module docstring)."""
 
     def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
+        """Whether the candidate applies to the base ``law`` on ``fit``, and why not.
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The base law (a classic LuGre).
+        fit : friction.dataset.Dataset
+            The fit record (t [s], x [m], v [m/s], F [N]).
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
         if law.name != "lugre":
             return False, (f"gms replaces the bristle of the classic LuGre base; the base is "
                            f"{law.name}")
@@ -98,24 +109,71 @@ class GMSCandidate(Candidate):
         """The base ``law`` (classic LuGre) with its bristle replaced by four slip-blocks of
         total stiffness sigma0: a :class:`friction.gms.GMS` with the base's values, the
         stiffness ratio ``spread`` [-] and attraction rate ``C`` [N/s] (default: a lag
-        g / C of 1 ms at the level Fs)."""
+        g / C of 1 ms at the level Fs).
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The base law (a classic LuGre).
+        spread : float
+            Stiffness ratio of the stiffest to the softest block [-].
+        C : float, optional
+            Attraction rate [N/s].
+        """
         vals = {n: getattr(law.params, n) for n in _SHARED}
         if C is None:
             C = max(float(vals["Fs"]), float(vals["Fc"])) / 1e-3
         return make_model("gms", spread=float(spread), C=float(C), **vals)
 
     def names_for(self, base_names) -> list:
-        """Free parameters of the GMS variant: the base's it shares, then spread and C."""
+        """Free parameters of the GMS variant: the base's it shares, then spread and C.
+
+        Parameters
+        ----------
+        base_names : list of str
+            The base law's free parameters.
+        """
         return [n for n in base_names if n in _SHARED] + ["spread", "C"]
 
     def modify_law(self, law, base_names, ctx: Context):
+        """The law variants to fit: one, the base's values carried over.
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The base law (a classic LuGre).
+        base_names : list of str
+            The base law's free parameters.
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
         return [(self.law_for(law), self.names_for(base_names))]
 
     def start_law(self, law, names, fit, ctx: Context):
-        """``law`` (a :meth:`modify_law` variant) started on the data (:func:`gms_start`)."""
+        """``law`` (a :meth:`modify_law` variant) started on the data (:func:`gms_start`).
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The candidate's variant of the base law (:meth:`modify_law`).
+        names : list of str
+            The variant's free parameters (its own among them).
+        fit : friction.dataset.Dataset
+            The fit record (t [s], x [m], v [m/s], F [N]).
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
         return law.with_values(**gms_start(law, names, fit, ctx))
 
     def own_law_names(self, law):
+        """The law parameters that are this candidate's own (a transfer calibration fits
+        these alone).
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The base law (a classic LuGre).
+        """
         return ("spread", "C")
 
     #: shortest presliding distance named ``gms``: the drive must take this many samples
@@ -128,7 +186,15 @@ class GMSCandidate(Candidate):
         """Why fitted parameters ``p`` (the law's ``sigma0`` [N/m], ``spread`` [-] and
         ``Fs`` [N], as the report gives them) are too small to name ('' when they are
         not, or when ``p`` lacks them): a presliding distance crossed within
-        :data:`MIN_SAMPLES` samples of a reversal."""
+        :data:`MIN_SAMPLES` samples of a reversal.
+
+        Parameters
+        ----------
+        p : dict
+            Fitted values by name: the candidate's extras and the law's parameters [their units].
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
         from .effects_backlash import reversal_travel_floor
         if not all(k in p for k in ("sigma0", "spread", "Fs")):
             return ""
@@ -144,14 +210,26 @@ class GMSCandidate(Candidate):
 
     def law_extras(self, ctx: Context) -> list:
         """The candidate's own parameters as the record lists them: ``spread`` [-] and
-        ``C`` [N/s] with the joint fit's box (the gms law's search ranges) and starts."""
+        ``C`` [N/s] with the joint fit's box (the gms law's search ranges) and starts.
+
+        Parameters
+        ----------
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
         from .effects_backlash import _law_extras
         return _law_extras(self.law_for(make_model("lugre")), ("spread", "C"))
 
     def own_parameters(self, law) -> dict:
         """The candidate's own parameters of a fitted GMS ``law``: ``spread`` [-], ``C``
         [N/s], the block stiffnesses ``k1..k4`` [N/m] and the presliding distance
-        ``presliding`` [m] (from rest to every block slipping, at Fs)."""
+        ``presliding`` [m] (from rest to every block slipping, at Fs).
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The fitted variant (a backlash_lugre or gms law).
+        """
         k = law.element_stiffness()
         out = {"spread": float(law.params.spread), "C": float(law.params.C)}
         out.update({f"k{i + 1}": float(k[i]) for i in range(N_ELEMENTS)})
@@ -163,7 +241,19 @@ def gms_start(law, names, fit, ctx: Context) -> dict:
     """Start of the joint fit of a GMS variant ``law``: ``spread`` from :data:`SPREADS`,
     ``sigma0`` from :data:`STIFFNESS_SCALES` x the base's and ``C`` from a frictional lag of
     :data:`LAG_SAMPLES` samples at the level max(Fc, Fs), the best on ``fit`` (each a
-    compiled run from the record's start state); the base's levels kept."""
+    compiled run from the record's start state); the base's levels kept.
+
+    Parameters
+    ----------
+    law : friction.gms.GMS
+        The candidate's variant of the base law.
+    names : list of str
+        The variant's free parameters (its own among them).
+    fit : friction.dataset.Dataset
+        The fit record (t [s], x [m], v [m/s], F [N]).
+    ctx : diagnosis.candidates.Context
+        Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+    """
     p = law.params
     level = max(float(p.Fc), float(p.Fs))
     best = (math.inf, {})

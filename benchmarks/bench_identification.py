@@ -34,12 +34,16 @@ commit (default's evaluations)         load       one thread  one thread  defaul
 c1222bc (9; quiet: 7-9 ms vs 20-22)    quiet      0.37-0.39   -           0.35-0.40
 now (7: compiled trust region, stop    6.3        0.15        0.18        0.05
 at 1e-4/N of the cost)                            (4.9 ms CPU vs 26.4 ms)
+now, three runs in a row               0.6        0.19-0.20   0.19-0.20   0.19-0.20
+                                                  (4.4-5.0 ms vs 22.9-24.9; default
+                                                  threads 4.3-6.2 ms vs 21.8-32.5)
 =====================================  =========  ==========  ==========  ===========
 
 Of the default's time now: 7 sensitivity passes of 0.34 ms (2.4 ms; the kernel's work),
 scipy's trust-region algorithm compiled (``identification.algorithms.trf``, the same
 iterates; 0.3 ms instead of scipy's 1.1-2.4 ms of Python), the noise level 0.13 ms, setup
-and result about 0.6 ms: 4.2 ms of thread time in all under load.
+and result about 0.6 ms: 4.2 ms of thread time in all under load, 4.3-5.0 ms wall on a
+quiet machine.
 
 Usage::
 

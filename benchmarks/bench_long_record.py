@@ -28,9 +28,12 @@ identify, now               1.22 GB      12 s quiet    load 2.6 s with progress;
 identify, a law that does   1.45 GB      49 s quiet    fit 23 s (203 evaluations); the
 not fit (Lorentzian data,                              peak was the identifiability
 gaussian law), 2447f16                                 report's profile refits
-identify, that record, now  1.15 GB      193 s at      profile refits on the normal
-(--misfit)                               load 9-11     equations (analytic LuGre
-                                                       sensitivities: no N x D Jacobian)
+identify, that record, now  1.14 GB      35 s quiet    profile refits on the normal
+(--misfit)                               (43 s CPU)    equations (analytic LuGre
+                                                       sensitivities: no N x D Jacobian);
+                                                       601dfe0 on the same file just
+                                                       before: 1.41 GB, 49 s (68 s CPU),
+                                                       same NRMSE 0.009389
 diagnose, before            4.77 GB      10:02 loaded
 diagnose, 2447f16           2.77 GB      1:55 quiet    the peak: diagnosis.composite's
                                                        candidate fits (scipy, 2-point

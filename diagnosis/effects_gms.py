@@ -50,6 +50,18 @@ Each integrated :data:`FINE` x finer than sampled; none is the candidate's own l
                     (a rate-independent hysteresis of one state, exponent != 1);
 * ``elastoplastic`` Dupont's elasto-plastic presliding (purely elastic up to half the
                     steady deflection, then a smooth transition to sliding).
+
+Figures (2 % noise unless said, force level)
+--------------------------------------------
+Benchmark axis (multi-sine, 12,000 samples, every candidate): ``maxwell10`` 1 mm ->
+``gms`` (46 % closed, 70 % of the excess; 0.5 mm, 8,000 samples: 34 %); ``maxwell4`` ->
+``unexplained`` (``gms`` first, 25 % closed, 32.5 % of the excess: the candidate's blocks
+share the level equally and its stiffnesses are geometric); ``dahl`` -> ``unexplained``
+(the base LuGre is within 1.8 x the floor, ``gms`` worse); ``elastoplastic`` ->
+``unexplained`` (``gms`` 26 %, z 2.6). Benchmark plants (default form ``maxwell10``,
+strengths 0.5 and 1 x noise 1 % and 3 %): valve 2/4, xml350 1/4, damping_rig 0/4
+(``stribeck_shape`` named twice: on that plant's motion the presliding reads as a curve
+shape); where-family 12/12 (|v|). Clean records: neither named.
 """
 from __future__ import annotations
 

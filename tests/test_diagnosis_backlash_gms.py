@@ -228,3 +228,79 @@ def test_gms_practical_size_is_a_presliding_distance_crossed_within_a_sample_and
     soft = dict(p, sigma0=4.45 * BASE["Fs"] / (1.4 * floor))
     assert GMS.practical(soft, ctx) == ""
     assert GMS.practical({"spread": 3.0}, ctx) == ""
+
+
+# -- what the force-level diagnosis names -----------------------------------------------------
+def _diagnose(F0, t, x, v, rng, candidates):
+    from diagnosis import diagnose
+    return diagnose(_record(F0, t, x, v, rng), "lugre", candidates=candidates)
+
+
+def test_lost_motion_of_2_mm_is_named_backlash_with_its_gap():
+    # issue 15: a device whose force lags by a constant displacement at every reversal
+    t, x, v, rng = _motion(8000, 1e-3, 5)
+    rep = _diagnose(eb.backlash_truth("rigid", t, v, 2e-3, BASE), t, x, v, rng,
+                    ["backlash", "gms", "delay"])
+    assert rep["verdict"]["cause"] == "backlash", rep.summary()
+    gap = 2.0 * rep["effect_details"]["backlash"]["params"]["delta"]
+    assert gap == pytest.approx(2e-3, rel=0.2)
+    assert rep["effect_details"]["backlash"]["parameters"]["backlash_gap"] == gap
+
+
+def test_maxwell_slip_presliding_is_named_gms():
+    t, x, v, rng = _motion(12000, 1e-3, 0)
+    rep = _diagnose(eg.gms_truth("maxwell10", t, v, BASE, 1e-3), t, x, v, rng,
+                    ["gms", "backlash", "acceleration"])
+    assert rep["verdict"]["cause"] == "gms", rep.summary()
+    par = rep["effect_details"]["gms"]["parameters"]
+    assert par["spread"] > 2.0 and par["C"] > 0
+
+
+def test_a_clean_record_names_neither():
+    t, x, v, rng = _motion(8000, 1e-3, 6)
+    rep = _diagnose(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng,
+                    ["backlash", "gms"])
+    assert rep["verdict"]["cause"] not in ("backlash", "gms"), rep.summary()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("gap", [1e-3, 3e-3])
+def test_backlash_among_every_candidate(gap):
+    from diagnosis.effects import EFFECT_NAMES
+    t, x, v, rng = _motion(12000, 1e-3, 0)
+    rep = _diagnose(eb.backlash_truth("rigid", t, v, gap, BASE), t, x, v, rng,
+                    list(EFFECT_NAMES))
+    assert rep["verdict"]["cause"] == "backlash", rep.summary()
+    assert 2.0 * rep["effect_details"]["backlash"]["params"]["delta"] == pytest.approx(
+        gap, rel=0.2)
+
+
+@pytest.mark.slow
+def test_clean_record_among_every_candidate_names_neither():
+    from diagnosis.effects import EFFECT_NAMES
+    t, x, v, rng = _motion(12000, 1e-3, 0)
+    rep = _diagnose(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng,
+                    list(EFFECT_NAMES))
+    assert rep["verdict"]["cause"] == "none", rep.summary()
+
+
+def test_the_records_list_parameters_truths_localisation_and_fmu():
+    from diagnosis.effects import FMU_EFFECTS
+    from fmus.native.build import native_catalogue
+    from diagnosis.benchmark import CASES
+    ctx = _ctx()
+    for name, law, own in (("backlash", "backlash_lugre", {"delta": "m"}),
+                           ("gms", "gms", {"spread": "1", "C": "N/s"})):
+        e = EFFECTS[name]
+        assert e.plant_entry == "law" and e.fmu and name in FMU_EFFECTS
+        assert law in native_catalogue()          # the FMU that carries it
+        assert {p.name: p.unit for p in e.parameters(ctx)} == own
+        assert len(e.truths) >= 3 and "pre-sliding" in e.families and name in CASES
+        t, x, v, _ = _motion(3000, 1e-3, 0)
+        F, load = resolve_generic(e)(1.0, t, x, v, np.gradient(v, t))
+        assert load is None and np.all(np.isfinite(F))
+
+
+def resolve_generic(e):
+    from diagnosis.effects import resolve
+    return resolve(e.generic_truth)

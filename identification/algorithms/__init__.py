@@ -15,6 +15,7 @@ previously 16-20x).
 """
 from __future__ import annotations
 
+from . import evolutionary, modern, structured, swarm
 from .base import Algorithm
 from .local import LeastSquares, MultistartLeastSquares
 
@@ -30,20 +31,13 @@ ALGORITHMS: dict[str, type[Algorithm]] = {
 DEFAULT_ALGORITHM = "multistart_ls"
 
 
-def _register_optional():
-    import importlib
-    for mod in ("modern", "swarm", "evolutionary", "structured"):
-        try:
-            m = importlib.import_module(f"{__name__}.{mod}")
-        except ModuleNotFoundError as exc:
-            if exc.name != f"{__name__}.{mod}":
-                raise
-            continue
-        for cls in getattr(m, "ALGORITHM_CLASSES", ()):
-            ALGORITHMS[cls.name] = cls
-
-
-_register_optional()
+# every algorithm module is the project's own: one that fails to import fails this package
+# (a third-party library an algorithm needs, e.g. cma, is imported when the algorithm runs
+# and its absence named then)
+for _module in (modern, swarm, evolutionary, structured):
+    for _cls in _module.ALGORITHM_CLASSES:
+        ALGORITHMS[_cls.name] = _cls
+del _module, _cls
 
 
 def get_algorithm(name, **options) -> Algorithm:

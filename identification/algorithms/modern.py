@@ -19,7 +19,11 @@ class CMAES(Algorithm):
     source = "cma (N. Hansen), CMA-ES with bound handling"
 
     def start(self, problem, rng, u0):
-        import cma
+        try:
+            import cma
+        except ImportError as exc:
+            raise ImportError("algorithm 'cmaes' needs the cma package (pip install cma)") \
+                from exc
         opts = {"bounds": [0.0, 1.0], "seed": int(rng.integers(1, 2**31 - 1)), "verbose": -9,
                 "tolfun": self.tol_fun, "tolx": self.tol_x, "tolflatfitness": 5}
         if self.pop_size:

@@ -10,6 +10,7 @@ from friction import make_model
 from friction.base import FrictionModel
 from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
+from friction.progress import as_progress
 
 from .algorithms import DEFAULT_ALGORITHM, get_algorithm
 from .checkpoint import CHECKPOINT_VERSION, EvaluationLog, fingerprint
@@ -45,14 +46,11 @@ def confidence_intervals(space: ParameterSpace, u, jac, cost: float, n: int,
 
 
 def _as_progress(progress, label):
+    """None when silent, else the :class:`friction.progress.Progress` of ``progress``
+    (a bar labelled ``label`` for True; close it at the end of the run)."""
     if progress is None or progress is False:
         return None
-    if progress is True:
-        from frictionlab.progress import Progress
-        return Progress(label=label)
-    if callable(progress):
-        return progress
-    raise TypeError("progress must be None, True or a callable(n, info)")
+    return as_progress(progress, label)
 
 
 def _fitted_model(model: FrictionModel, params: dict) -> FrictionModel:
@@ -254,6 +252,8 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     if log is not None and log.diverged is not None and prog is not None:
         prog(0, f"checkpoint: the run left the log at record {log.diverged + 1} of "
                 f"{log.n_logged} (changed options?) and continued live")
+    if prog is not None:
+        prog.close()  # a bar made here ends with its last line
 
     if problem.best_u is None:
         raise RuntimeError(f"{alg.name}: no finite cost found (every simulated parameter set "

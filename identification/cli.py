@@ -94,12 +94,8 @@ def static_from_json(path, model_name: str):
 
 
 def _load_progress(path, quiet):
-    """Progress lines while a long file is read (none with ``--quiet``)."""
-    if quiet:
-        return None
-    import os
-    from frictionlab.progress import Progress
-    return Progress(label=f"load {os.path.basename(path)}")
+    """Progress while a long file is read (a bar ``[load <file>]``; none with ``--quiet``)."""
+    return not quiet
 
 
 def run_identify_cli(args) -> int:

@@ -409,6 +409,8 @@ def identify_plant_fmu(data, plant_fmu, connect, model=None, *, names=None, boun
     finally:
         if exe is not None and not (executor is not None and hasattr(executor, "costs")):
             exe.close()
+    if prog is not None:
+        prog.close()  # a bar made here ends with its last line
     if problem.best_u is None:
         obj.close()
         raise RuntimeError(f"{alg.name}: no trial point ran through the plant FMU (every "

@@ -13,7 +13,7 @@ import argparse
 import os
 
 from diagnosis import diagnose_trajectory
-from diagnosis.demo import xml350_asymmetry_records
+from frictionlab.demo.diagnosis_stage import xml350_asymmetry_records
 from diagnosis.trajectory import write_trajectory_html
 
 

@@ -21,8 +21,9 @@ STAGES = ("friction", "plants", "fmus", "identification", "diagnosis")
 
 #: stage -> module holding its ``run_stage``
 STAGE_MODULES = {"friction": "frictionlab.demo.friction_stage",
-                 "plants": "plants.studies.demo", "fmus": "frictionlab.demo.fmus_stage", "identification": "identification.demo",
-                 "diagnosis": "diagnosis.demo"}
+                 "plants": "plants.studies.demo", "fmus": "frictionlab.demo.fmus_stage",
+                 "identification": "frictionlab.demo.identification_stage",
+                 "diagnosis": "frictionlab.demo.diagnosis_stage"}
 
 
 #: stages whose full-length run is opt-in (``--full``): the co-simulation proofs take ~15 min

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import os
 
-from frictionlab.progress import report as say
+from friction.progress import report as say
 
-from .core import diagnose
-from .report_html import write_html
+from diagnosis.core import diagnose
+from diagnosis.report_html import write_html
 
 
 def xml350_asymmetry_records(seed: int = 1):
@@ -28,7 +28,7 @@ def xml350_asymmetry_records(seed: int = 1):
     from plants.sources import Sine
     from plants.xml350 import XML350, xml350_friction
 
-    from .trajectory import record_from_result
+    from diagnosis.trajectory import record_from_result
 
     def sine(A, f):
         return Sine(A, f, offset=A, phase=-0.5 * math.pi)  # starts at rest
@@ -63,7 +63,7 @@ def run_stage(out: str, summary: dict, quick: bool = False) -> None:
     write_html(rep, os.path.join(out, "diagnosis_pneumatic.html"))
     res["pneumatic_o_ring"] = {"verdict": rep["verdict"], "baseline": rep["baseline"]}
     say(f"  diagnosis pneumatic O-ring (fit 1 bar, held out 5+7 bar): {rep['verdict']['cause']}")
-    from .trajectory import diagnose_trajectory, write_trajectory_html
+    from diagnosis.trajectory import diagnose_trajectory, write_trajectory_html
     fit, val, model = xml350_asymmetry_records()
     rep = diagnose_trajectory(fit, model, "lugre", validation=val,
                               candidates=["asymmetry", "inertia", "delay", "stribeck_shape"])
@@ -73,7 +73,7 @@ def run_stage(out: str, summary: dict, quick: bool = False) -> None:
                                 "seconds": rep["timing"]["seconds"]
                                 if "timing" in rep else None}
     say(f"  diagnosis XML-350 trajectory level (positions only): {rep['verdict']['cause']}")
-    from .benchmark import CASES, run_benchmark
+    from diagnosis.benchmark import CASES, run_benchmark
     bench = run_benchmark(effects=CASES, strengths=(1.0,), noises=(0.02,))
     res["benchmark"] = {k: bench[k] for k in ("top1_accuracy", "clean_false_attributions",
                                                "outside_named_wrongly")}

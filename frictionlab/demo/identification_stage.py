@@ -12,7 +12,7 @@ import time
 
 import numpy as np
 
-from frictionlab.progress import report
+from friction.progress import report
 
 __all__ = ["run_stage"]
 
@@ -28,8 +28,8 @@ def _plt():
 
 
 def _synthetic(out, entry, quick):
-    from . import identify
-    from .synthetic import make_case
+    from identification import identify
+    from identification.synthetic import make_case
     case = make_case("seed001", noise=0.02)
     r = identify(case.data, case.start, names=case.names, bounds=case.bounds, seed=0)
     entry["synthetic_seed001"] = dict(
@@ -55,8 +55,8 @@ def _synthetic(out, entry, quick):
 
 def _emps(out, entry):
     from friction import make_model
-    from . import identify
-    from .real_data import EMPS_PUBLISHED, emps_baseline, load_emps
+    from identification import identify
+    from identification.real_data import EMPS_PUBLISHED, emps_baseline, load_emps
     est, val = load_emps("estimation"), load_emps("validation")
     base = emps_baseline()
     start = make_model("lugre", sigma0=1e5, sigma1=100.0, sigma2=200.0, sigma2_neg=200.0,
@@ -102,8 +102,8 @@ def _emps(out, entry):
 
 
 def _convergence(out, entry):
-    from . import DEFAULT_ALGORITHM, identify
-    from .synthetic import make_case
+    from identification import DEFAULT_ALGORITHM, identify
+    from identification.synthetic import make_case
     case = make_case("seed003", noise=0.02)
     plt = _plt()
     fig, ax = plt.subplots(figsize=(6, 4))
@@ -131,8 +131,8 @@ def _convergence(out, entry):
 def _franka(entry):
     from friction import make_model
     from friction.metrics import rmse
-    from . import identify
-    from .real_data import franka_paper_rms, load_franka
+    from identification import identify
+    from identification.real_data import franka_paper_rms, load_franka
     d = load_franka(4, "high")
     start = make_model("lugre", sigma0=100.0, sigma1=1.0, sigma2=0.5, sigma2_neg=0.5, Fc=0.3,
                        Fc_neg=0.3, Fs=0.4, Fs_neg=0.4, vs=0.01, b=0.0)
@@ -144,8 +144,8 @@ def _franka(entry):
 
 def _rack_pinion(entry):
     from friction.metrics import rmse
-    from . import identify
-    from .real_data import load_rack_pinion
+    from identification import identify
+    from identification.real_data import load_rack_pinion
     d = load_rack_pinion()
     covered = ~np.isnan(d.extra["F_model_source"])
     res = {"rms_source_model": rmse(d.F[covered], d.extra["F_model_source"][covered]),
@@ -181,7 +181,7 @@ def run_stage(out, summary: dict, quick: bool = False) -> None:
         except FileNotFoundError as exc:
             entry["franka_case4_high"] = {"skipped": str(exc)}
         try:
-            from .xml350_protocol import run_xml350_protocol
+            from identification.xml350_protocol import run_xml350_protocol
         except ImportError as exc:  # the plant library is not there
             entry["xml350_protocol"] = {"skipped": str(exc)}
         else:

@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 
 from friction.dataset import load_dataset, parse_mapping
-from frictionlab.progress import report as say
+from friction.progress import report as say
 
 from .core import diagnose
 
@@ -43,7 +43,7 @@ def run_diagnose_cli(args) -> int:
     scale = _scale(args.scale)
     sets = [load_dataset(p, mapping=mapping, scale=scale, progress=not quiet)
             for p in args.data]
-    from frictionlab.progress import as_progress
+    from friction.progress import as_progress
 
     from .composite import reporting
     # the joint fits tick a bar (residual evaluations, at most once a second): a long

@@ -199,7 +199,7 @@ class TrajectoryModel:
     engine : object
         ``_PlantEngine`` or ``_FMUEngine`` (see :func:`simulate_record`).
     progress : callable, optional
-        ``progress(n, info)`` after each simulation (a :class:`frictionlab.progress.Progress`).
+        ``progress(n, info)`` after each simulation (a :class:`friction.progress.Progress`).
 
     Attributes
     ----------

@@ -402,7 +402,7 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         The ``inertia`` candidate is skipped when the mass is among them.
     progress : callable, bool or None
         ``callable(message)`` for stage lines; ``True``: lines on stderr. Simulation counts
-        go to a :class:`frictionlab.progress.Progress` when progress is on.
+        go to a :class:`friction.progress.Progress` when progress is on.
     executor : None or dask.distributed.Client
         Where the candidates' fits run: here (default), or one task per candidate on a dask
         cluster, the plant, the records and the FMU files shipped to each worker once
@@ -457,7 +457,7 @@ class TrajectoryDiagnosis:
                  greedy: bool = True, fmu_dir=None, fmu_step: float | None = None,
                  fit_plant=None, progress=None, executor=None):
         import plants as _plants
-        from frictionlab.progress import Progress, report as _report
+        from friction.progress import Progress, report as _report
 
         self.t_start = time.perf_counter()
         if isinstance(plant, str):

@@ -78,7 +78,7 @@ def run_benchmark_cli(args) -> int:
     """``frictionlab diagnose --benchmark --plants LIST|all``: the per-plant benchmark at one
     strength (1) and noise level (0.02 x std(F)); ``benchmarks/bench_diagnosis.py`` runs the
     full grid."""
-    from frictionlab.progress import report as say
+    from friction.progress import report as say
     plants = None if args.plants in (None, "", "generic") else (
         "all" if args.plants == "all" else args.plants.split(","))
     quiet = getattr(args, "quiet", False)

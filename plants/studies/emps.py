@@ -1077,7 +1077,7 @@ def demo_figures(out: str, summary: dict, quick: bool = False) -> None:
     ``quick`` also the trajectory-level diagnosis with the pulse record held out (about a
     minute). Re-identifying the models and the second diagnosis (a few minutes):
     ``python -m plants.studies.emps --identify``."""
-    from frictionlab.progress import report
+    from friction.progress import report
     res = run_study(out, identify=False, diagnose_records=not quick, diagnose_split=False,
                     progress=report)
     et = res["emps_trajectory"]
@@ -1114,7 +1114,7 @@ def _main(argv=None) -> int:
                     "the EMPS plant FMUs and their connection files (written into OUT/fmus, "
                     "with the records as CSV for frictionlab identify --plant-fmu)")
     a = ap.parse_args(argv)
-    from frictionlab.progress import report
+    from friction.progress import report
     res = run_study(a.out, identify=a.identify, diagnose_records=not a.no_diagnosis,
                     progress=report)
     print(json.dumps(res["emps_trajectory"], indent=2, default=float))

@@ -38,11 +38,14 @@ diagnose, before            4.77 GB      10:02 loaded
 diagnose, 2447f16           2.77 GB      1:55 quiet    the peak: diagnosis.composite's
                                                        candidate fits (scipy, 2-point
                                                        Jacobian on 1.4M rows)
-diagnose, now               0.55 GB      4:33 at       candidate fits on the normal
-                                         load 6, nice  equations of a float32 2-point
-                                         (145 s CPU)   Jacobian; progress lines
-identify, now (same run)    1.19 GB      31 s at load
-                                         6 (13.5 s
+diagnose, now               0.55 GB      2:13 at load  candidate fits on the normal
+                                         3 (146 s CPU) equations of a float32 2-point
+                                                       Jacobian; progress while loading
+                                                       and fitting; 601dfe0 right after
+                                                       on the same file: 2.72 GB, 2:13
+                                                       (134 s CPU), same verdict and
+                                                       held-out scores (to 1e-6)
+identify, now (same run)    1.19 GB      13 s (14 s
                                          CPU)
 diagnose, now (--misfit     0.55 GB      21 min at
 record)                                  load 9, nice

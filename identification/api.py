@@ -31,6 +31,21 @@ def confidence_intervals(space: ParameterSpace, u, jac, cost: float, n: int,
     factor as ``J``, so the scale cancels); the interval ``u +- z sqrt(cov_uu)`` is mapped to
     physical values (asymmetric for log-scaled parameters). Assumes white residuals:
     coloured noise makes the intervals optimistic.
+
+    Parameters
+    ----------
+    space : ParameterSpace
+        The fitted parameters and their box.
+    u : ndarray, shape (D,)
+        The optimum in unit-cube coordinates.
+    jac : ndarray, shape (N, D)
+        Jacobian of the scaled residuals in unit-cube coordinates.
+    cost : float
+        NRMSE at the optimum.
+    n : int
+        Number of residuals N.
+    level : float
+        Confidence level (0.95: 95 %).
     """
     from statistics import NormalDist
     J = np.asarray(jac, float)

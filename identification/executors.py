@@ -45,6 +45,15 @@ class InlineExecutor:
     name = "inline"
 
     def costs(self, objective, X):
+        """Costs of the parameter rows ``X`` of ``objective``, in this process.
+
+        Parameters
+        ----------
+        objective : Objective
+            The objective.
+        X : array_like, shape (npop, D)
+            Parameter sets (physical values), one per row.
+        """
         return objective.costs(X)
 
     def close(self):
@@ -77,6 +86,15 @@ class ProcessExecutor:
         return self._pool
 
     def costs(self, objective, X):
+        """Costs of the parameter rows ``X`` of ``objective``, split over the worker processes.
+
+        Parameters
+        ----------
+        objective : Objective
+            The objective (sent to each worker once).
+        X : array_like, shape (npop, D)
+            Parameter sets (physical values), one per row.
+        """
         pool = self._pool_for(objective)
         parts = list(pool.map(_worker_costs, _chunks(np.asarray(X), self.workers)))
         return np.concatenate(parts)

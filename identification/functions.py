@@ -47,6 +47,23 @@ def minimize(fun, lower, upper, algorithm="cmaes", seed: int = 0, max_evals=None
              **options) -> dict:
     """Minimise a vectorised function over a box with a population algorithm.
 
+    Parameters
+    ----------
+    fun : callable
+        ``fun(X) -> costs``: X of shape (npop, D), one cost per row.
+    lower, upper : array_like, shape (D,)
+        The box.
+    algorithm : str
+        Population algorithm (:data:`identification.ALGORITHMS`).
+    seed : int
+        Random seed.
+    max_evals : int, optional
+        Budget of function evaluations (rows).
+    x0 : array_like, shape (D,), optional
+        Start (default the box's centre).
+    **options
+        The algorithm's options; an unknown name is a TypeError.
+
     Returns
     -------
     dict

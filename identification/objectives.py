@@ -77,26 +77,59 @@ class Objective:
     data: Dataset
 
     def predict(self, X) -> np.ndarray:  # pragma: no cover - interface
+        """Predicted forces [N], one row per parameter set.
+
+        Parameters
+        ----------
+        X : array_like, shape (npop, D)
+            Parameter sets (physical values of ``names``), one per row.
+        """
         raise NotImplementedError
 
     def costs(self, X) -> np.ndarray:
+        """NRMSE of each parameter set against the measured force.
+
+        Parameters
+        ----------
+        X : array_like, shape (npop, D)
+            Parameter sets (physical values), one per row.
+        """
         F = self.predict(X)
         return self.costs_from_forces(F)
 
     def costs_from_forces(self, F) -> np.ndarray:
+        """NRMSE of each row of predicted forces against the measured force.
+
+        Parameters
+        ----------
+        F : ndarray, shape (npop, N)
+            Predicted forces [N], one row per parameter set.
+        """
         d = F - self.data.F[None, :]
         c = np.sqrt(np.mean(d * d, axis=1)) / self._sd
         return np.where(np.isfinite(c), c, np.inf)
 
     def residuals(self, x) -> np.ndarray:
-        """Scaled residual vector of one parameter set: ``sum(r**2) = nrmse**2``."""
+        """Scaled residual vector of one parameter set: ``sum(r**2) = nrmse**2``.
+
+        Parameters
+        ----------
+        x : array_like, shape (D,)
+            One parameter set (physical values).
+        """
         F = self.predict(np.atleast_2d(x))[0]
         return (F - self.data.F) * self._rscale
 
     def jacobian(self, x):
         """Analytic Jacobian of :meth:`residuals` with respect to the physical parameters
         (``N x D``), or ``None`` when the objective has none (the problem then takes
-        finite differences)."""
+        finite differences).
+
+        Parameters
+        ----------
+        x : array_like, shape (D,)
+            One parameter set (physical values).
+        """
         return None
 
     def has_jacobian(self) -> bool:
@@ -107,7 +140,13 @@ class Objective:
     def normal_equations(self, x):
         """``(sum r^2, J^T r, J^T J)`` of the scaled residual at one parameter set (physical
         values), without an ``N x D`` Jacobian in memory, or ``None`` when the objective
-        has no analytic Jacobian."""
+        has no analytic Jacobian.
+
+        Parameters
+        ----------
+        x : array_like, shape (D,)
+            One parameter set (physical values).
+        """
         return None
 
     @property

@@ -79,7 +79,15 @@ class IdentificationResult(dict):
     # -- entries computed on first read (the identifiability report and its intervals) --
     def defer(self, keys, compute) -> None:
         """Compute ``keys`` with ``compute() -> {key: value}`` when one of them is first
-        read (item, attribute, ``get``, ``items``, ``as_dict``, ``summary``)."""
+        read (item, attribute, ``get``, ``items``, ``as_dict``, ``summary``).
+
+        Parameters
+        ----------
+        keys : iterable of str
+            The keys computed later.
+        compute : callable
+            ``compute() -> {key: value}``, called once.
+        """
         self.__dict__["_deferred"] = (tuple(keys), compute)
 
     def _resolve(self, key=None) -> None:
@@ -129,7 +137,15 @@ class IdentificationResult(dict):
         return _plain(d)
 
     def to_json(self, path=None, indent: int = 2) -> str:
-        """JSON text of :meth:`as_dict`; also written to ``path`` if given."""
+        """JSON text of :meth:`as_dict`; also written to ``path`` if given.
+
+        Parameters
+        ----------
+        path : str or path, optional
+            Write the text to this file too.
+        indent : int
+            JSON indentation.
+        """
         text = json.dumps(self.as_dict(), indent=indent)
         if path is not None:
             with open(path, "w") as fh:

@@ -26,6 +26,11 @@ def default_names(model: FrictionModel) -> list[str]:
     free_names`): for the classic LuGre sigma0, sigma1, sigma2, Fc, Fs, vs, the Stribeck
     exponent alpha and the offset b; a direction twin left ``None`` (symmetric law) and a
     law's preset constants are not identified.
+
+    Parameters
+    ----------
+    model : FrictionModel
+        The law.
     """
     return list(model.free_names())
 
@@ -51,6 +56,15 @@ def default_bounds(model: FrictionModel, names, data=None) -> dict[str, tuple[fl
     ``|F|``; damping/viscous coefficients up to 2 x that force over the 99th percentile of
     ``|v|``; bristle stiffness scaled with the force level; velocities up to the largest
     speed. The box always contains the model's current value.
+
+    Parameters
+    ----------
+    model : FrictionModel
+        The law.
+    names : list of str
+        Parameters to bound.
+    data : Dataset, optional
+        The record the box is widened to.
     """
     infos = {i.name: i for i in model.Params.info()}
     out = {}
@@ -109,6 +123,19 @@ class ParameterSpace:
 
     @classmethod
     def build(cls, model: FrictionModel, names=None, bounds=None, data=None) -> "ParameterSpace":
+        """The space of ``names`` of ``model`` with their search box.
+
+        Parameters
+        ----------
+        model : FrictionModel
+            The law (its current values and parameter metadata).
+        names : list of str, optional
+            Parameters to fit (default :func:`default_names`).
+        bounds : dict, optional
+            ``{name: (low, high)}`` replacing the default box (SI units).
+        data : Dataset, optional
+            The record the default box is widened to.
+        """
         infos = {i.name: i for i in model.Params.info()}
         if names is None:
             names = default_names(model)
@@ -145,7 +172,13 @@ class ParameterSpace:
         return lo, hi
 
     def to_physical(self, U) -> np.ndarray:
-        """Unit-cube coordinates -> physical values (same shape)."""
+        """Unit-cube coordinates -> physical values (same shape).
+
+        Parameters
+        ----------
+        U : array_like, shape (..., D)
+            Unit-cube coordinates.
+        """
         U = np.asarray(U, float)
         lo, hi = self._ends()
         s = lo + U * (hi - lo)
@@ -153,13 +186,26 @@ class ParameterSpace:
             return np.where(self.log, np.exp(np.where(self.log, s, 0.0)), s)
 
     def to_unit(self, X) -> np.ndarray:
-        """Physical values -> unit-cube coordinates (not clipped)."""
+        """Physical values -> unit-cube coordinates (not clipped).
+
+        Parameters
+        ----------
+        X : array_like, shape (..., D)
+            Physical values.
+        """
         X = np.asarray(X, float)
         lo, hi = self._ends()
         s = np.where(self.log, np.log(np.maximum(X, 1e-300)), X)
         return (s - lo) / (hi - lo)
 
     def dict_of(self, x) -> dict[str, float]:
+        """``{name: value}`` of a parameter vector.
+
+        Parameters
+        ----------
+        x : array_like, shape (D,)
+            Physical values in ``names`` order.
+        """
         return {n: float(v) for n, v in zip(self.names, np.asarray(x, float))}
 
     def as_json(self) -> dict:

@@ -41,7 +41,15 @@ del _module, _cls
 
 
 def get_algorithm(name, **options) -> Algorithm:
-    """Instantiate an algorithm by registry name (or pass an instance through)."""
+    """Instantiate an algorithm by registry name (or pass an instance through).
+
+    Parameters
+    ----------
+    name : str or Algorithm
+        Registry name (:data:`ALGORITHMS`) or an instance.
+    **options
+        The algorithm's options; an unknown name is a TypeError.
+    """
     if isinstance(name, Algorithm):
         if options:
             raise TypeError("options given together with an algorithm instance")

@@ -25,7 +25,13 @@ __all__ = ["Algorithm", "chaotic_sequence", "latin_hypercube"]
 
 
 class Algorithm:
-    """Base class. Subclasses set ``name``, ``defaults`` and implement one of the shapes."""
+    """Base class. Subclasses set ``name``, ``defaults`` and implement one of the shapes.
+
+    Parameters
+    ----------
+    **options
+        The algorithm's options (``defaults`` names); an unknown name is a TypeError.
+    """
     name: str = ""
     #: "population" (needs only costs), "local" (least squares on residuals)
     kind: str = "population"
@@ -53,16 +59,58 @@ class Algorithm:
 
     # step-wise shape
     def start(self, problem, rng, u0):  # pragma: no cover - interface
+        """Step-wise shape: the initial state dict.
+
+        Parameters
+        ----------
+        problem : Problem
+            The cost over the unit cube.
+        rng : numpy.random.Generator
+            Random numbers of the run.
+        u0 : ndarray, shape (D,)
+            The start in unit-cube coordinates.
+        """
         raise NotImplementedError
 
     def step(self, problem, rng, state):  # pragma: no cover - interface
+        """Step-wise shape: one iteration; returns the next state dict.
+
+        Parameters
+        ----------
+        problem : Problem
+            The cost over the unit cube.
+        rng : numpy.random.Generator
+            Random numbers of the run.
+        state : dict
+            The state :meth:`start` or the previous step returned.
+        """
         raise NotImplementedError
 
     def finished(self, state) -> bool:
+        """Step-wise shape: whether the run is over (default: ``max_iter`` iterations done).
+
+        Parameters
+        ----------
+        state : dict
+            The current state.
+        """
         return state.get("iteration", 0) >= self.options.get("max_iter", np.inf)
 
     # one-shot shape
     def run(self, problem, rng, u0, progress=None) -> dict:  # pragma: no cover - interface
+        """One-shot shape: the whole run; returns an info dict.
+
+        Parameters
+        ----------
+        problem : Problem
+            The cost over the unit cube.
+        rng : numpy.random.Generator
+            Random numbers of the run.
+        u0 : ndarray, shape (D,)
+            The start in unit-cube coordinates.
+        progress : callable(n, info), optional
+            Progress in steps (:mod:`friction.progress`).
+        """
         raise NotImplementedError
 
 

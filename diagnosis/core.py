@@ -239,6 +239,12 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     Every record is simulated from the law's steady state at its first velocity (a record
     that starts in motion), a separate held-out record that starts at rest after an
     unscored warm-up (:func:`warm_up`); one too short to score is refused.
+    fit_fraction : float
+        Share of ``fit_data`` fitted when no validation is given (the rest is held out).
+    mapping : dict, optional
+        Column mapping of files given by path (:func:`friction.dataset.load_dataset`).
+    scale : dict, optional
+        Unit factors of files given by path.
 
     Raises
     ------

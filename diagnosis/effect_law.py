@@ -111,6 +111,13 @@ class EffectLaw(FrictionModel):
         return np.concatenate([self.base.initial_state(), [self.time0]])
 
     def with_time0(self, time0: float) -> "EffectLaw":
+        """This law with the record's start at absolute time ``time0``.
+
+        Parameters
+        ----------
+        time0 : float
+            Absolute time [s] of the record's first sample (drift effects).
+        """
         return EffectLaw(self.base, self.effects, self.ctx, time0)
 
     def with_values(self, **values) -> "EffectLaw":

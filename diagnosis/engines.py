@@ -179,6 +179,10 @@ def simulate_record(plant, law: FrictionModel, record: TrajectoryRecord, *,
         Plant parameters changed for this run (e.g. the mass).
     delay : float
         Measured channel lagging the simulation by ``delay`` [s].
+    fmu_dir : path, optional
+        Folder with the built FMUs (engine ``"fmu"``).
+    fmu_step : float, optional
+        Communication step [s] of the FMU engine.
     """
     eng = _make_engine(engine, plant, fmu_dir, fmu_step)
     try:

@@ -83,6 +83,10 @@ def record_from_result(result, options: dict | None = None, *, signal: str = "x"
         Standard deviation of white measurement noise added [m].
     seed : int
         Seed of the noise.
+    name : str
+        Name of the record.
+    t_start : float
+        Absolute time of the record's start [s] (the ``drift`` candidate uses it).
     """
     y = np.array(result[signal], dtype=float)
     if noise > 0:

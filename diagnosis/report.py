@@ -13,6 +13,15 @@ class DiagnosisReport(dict):
     """The contract's diagnosis JSON plus details; ``to_json()`` writes it."""
 
     def to_json(self, path=None, indent=2) -> str:
+        """JSON text of the report; also written to ``path`` if given.
+
+        Parameters
+        ----------
+        path : str or path, optional
+            Write the text to this file too.
+        indent : int
+            JSON indentation.
+        """
         text = json.dumps(self, indent=indent, default=_plain)
         if path is not None:
             with open(path, "w") as fh:

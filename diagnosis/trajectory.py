@@ -408,6 +408,12 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         cluster, the plant, the records and the FMU files shipped to each worker once
         (:func:`diagnosis.cluster.trajectory_fits`); the report is the same but for its
         timings. The base fit, the held-out scores and the greedy stacking stay here.
+    fit_fraction : float
+        Share of ``measured`` fitted when no validation is given.
+    max_sims_base : int
+        Plant simulations of the base fit.
+    fmu_step : float, optional
+        Communication step [s] of the FMU engine (see ``fmu_dir``).
 
     Returns
     -------

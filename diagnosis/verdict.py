@@ -113,6 +113,13 @@ def noise_floor(data, r) -> float:
     winsorised at :data:`NOISE_CLIP` robust (MAD) standard deviations first. Gaussian noise
     keeps its std (a 5-sigma clip changes it by < 1e-5); heavy-tailed measurement noise keeps
     most of its tails, unlike a pure MAD estimate.
+
+    Parameters
+    ----------
+    data : Dataset
+        The record (the spread of its force F [N] scales the NRMSE).
+    r : ndarray
+        Residual F_model - F_measured [N].
     """
     sd = float(np.std(data.F)) or 1.0
     d2 = np.diff(np.asarray(r, float), 2)

@@ -72,6 +72,7 @@ from numba import njit
 
 from friction import make_model
 from friction.gms import N_ELEMENTS, element_stiffness
+from friction import ParameterError
 
 from .candidates import Candidate, Context
 from .effects_backlash import fine_grid
@@ -276,7 +277,11 @@ def gms_start(law, names, fit, ctx: Context) -> dict:
                 vals = {"spread": spread, "C": level / (lag * ctx.dt)}
                 if s_free:
                     vals["sigma0"] = float(p.sigma0) * k0 * max(spread, 1.0) ** 0.5
-                trial = law.with_values(**vals)
+                try:
+                    trial = law.with_values(**vals)
+                except ParameterError:
+                    # a stiff base times the scale can pass the law's sigma0 bound: skip
+                    continue
                 s0 = trial.record_start_state(fit.t, fit.v, F=fit.F)
                 F = trial.simulate(fit.t, fit.v, state0=s0)
                 sse = float(np.sum((fit.F - F) ** 2))

@@ -102,8 +102,23 @@ class _ConnEngine:
         if key not in self.loops:
             p = self.plant
             self.loops[key] = PlantLoop(p.plant_fmu, p.conn, law_name, native=p.native,
-                                        fmu_dir=p.fmu_dir, effects=bool(effects))
+                                        fmu_dir=self._law_dir(law_name), effects=bool(effects))
         return self.loops[key]
+
+    def _law_dir(self, law_name):
+        # a candidate that changes the law (backlash, gms) needs that law's FMU: built once
+        # per process when the user gave no folder, else the candidate is skipped saying so
+        from fmus.master import fmu_file
+        from identification.cosim import fmu_dir_for
+        from .trajectory import _NotApplicable
+        p = self.plant
+        if os.path.exists(fmu_file(p.fmu_dir, law_name, p.native)):
+            return p.fmu_dir
+        if p.user_fmu_dir is None:
+            return fmu_dir_for([law_name], None, p.native)
+        name = os.path.basename(fmu_file(p.fmu_dir, law_name, p.native))
+        raise _NotApplicable(f"{name} is not in {p.fmu_dir}: build it with frictionlab "
+                             f"build-fmus --out {p.fmu_dir}")
 
     def run(self, law, plant_params: dict, options: dict, stop: float, signals):
         from diagnosis.effect_law import EffectLaw
@@ -159,6 +174,7 @@ class FMUPlantModel:
         V = check_plant(self.conn, self.plant_fmu, law)
         self.native = bool(native)
         laws = sorted({law.name, "lugre", "friction_effects"})
+        self.user_fmu_dir = fmu_dir
         self.fmu_dir = fmu_dir_for(laws, fmu_dir, self.native)
         self.name = os.path.splitext(os.path.basename(self.plant_fmu))[0]
         self.main_output = self.conn.compare[0].variable

@@ -520,6 +520,10 @@ def test_diagnosis_lists_what_the_connection_cannot_express(cart, native_dir, tr
                              max_sims=4, max_sims_base=6, fit_names=["Fc"], greedy=False)
     for c in ("position", "acceleration", "load"):
         assert "[friction]" in rep["skipped"][c], rep["skipped"]
+    # the law-changing candidates need their law FMUs, which the given folder lacks
+    for c, law in (("backlash", "backlash_lugre"), ("gms", "gms")):
+        assert f"{law}_native.fmu is not in" in rep["skipped"][c], rep["skipped"]
+        assert "build-fmus --out" in rep["skipped"][c]
     assert {e["name"] for e in rep["effects"]} >= {"asymmetry", "inertia", "delay"}
 
 

@@ -119,7 +119,8 @@ def main(argv=None):
     noises = (0.02,) if args.quick else (0.01, 0.03)
     t0 = time.perf_counter()
     res = run_benchmark(strengths=strengths, noises=noises, plants=args.plants.split(","),
-                        quick=args.quick, workers=args.workers, progress=print,
+                        quick=args.quick, workers=args.workers,
+                        progress=lambda n, info: print(info),
                         checkpoint=args.checkpoint)
     wall = time.perf_counter() - t0
     print(format_summary(res, f"per plant: strengths {strengths}, noise {noises} x std(F), "
@@ -127,7 +128,7 @@ def main(argv=None):
     out = {"plants": {k: res[k] for k in ("overall", "per_plant", "per_effect", "rows")}}
     if args.generic:
         g = run_benchmark(strengths=strengths, noises=noises, workers=args.workers,
-                          progress=print)
+                          progress=lambda n, info: print(info))
         print(format_summary(g, "generic mass-like motion (historical)"))
         out["generic"] = {k: g[k] for k in ("overall", "per_effect", "rows")}
     speed()

@@ -51,7 +51,7 @@ def main(argv=None):
     t0 = time.perf_counter()
     res = run_clean(args.count, args.plants.split(","), quick=not args.full,
                     workers=args.workers, checkpoint=args.checkpoint, cache_dir=args.cache,
-                    progress=print)
+                    progress=lambda n, info: print(info))
     wall = time.perf_counter() - t0
     print(f"\n== clean records: {res['records']} records, {wall:.0f} s wall on "
           f"{args.workers} worker(s) ==")

@@ -41,6 +41,7 @@ from numba import njit
 from scipy.signal import butter, filtfilt, lfilter
 
 from friction.dataset import Dataset
+from friction.progress import status_lines
 
 # the benchmark's grid of the truth and its motion between samples (one definition)
 from .benchmark.kinematics import FINE, fine_motion
@@ -294,7 +295,7 @@ def run_clean(count: int = 500, plants=None, *, quick: bool = False, workers: in
     from .benchmark import PLANT_NAMES, plant_kinematics
     from .benchmark.runner import load_checkpoint
     plants = list(plants or PLANT_NAMES)
-    say = progress or (lambda msg: None)
+    say = status_lines(progress)
     jobs = clean_grid(plants, count, seed)
     done = load_checkpoint(checkpoint, {j["key"] for j in jobs})
     todo = [j for j in jobs if j["key"] not in done]

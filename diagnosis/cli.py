@@ -4,7 +4,6 @@ from __future__ import annotations
 import json
 
 from friction.dataset import load_dataset, parse_mapping
-from friction.progress import report as say
 
 from .core import diagnose
 
@@ -25,7 +24,7 @@ def run_diagnose_cli(args) -> int:
     quiet = getattr(args, "quiet", False)
     if getattr(args, "benchmark", False):
         from .benchmark import run_benchmark
-        res = run_benchmark(progress=None if quiet else say, seed=args.seed)
+        res = run_benchmark(progress=not quiet, seed=args.seed)
         print(f"top-1 accuracy {100 * res['top1_accuracy']:.1f} % over {len(res['rows'])} cases; "
               f"clean cases named: {res['clean_false_attributions']}; out-of-library named: "
               f"{res['outside_named_wrongly']}")
@@ -51,7 +50,7 @@ def run_diagnose_cli(args) -> int:
     with as_progress(not quiet, "diagnose fits", unit="eval") as fits, \
             reporting(fits if not quiet else None):
         rep = diagnose(sets[0], args.model, validation=sets[1:] or None, seed=args.seed,
-                       candidates=_candidates(args), progress=None if quiet else say,
+                       candidates=_candidates(args), progress=not quiet,
                        noise_level=_noise_level(args, mapping, scale),
                        executor=getattr(args, "executor", None))
     from .report_html import write_html
@@ -116,7 +115,7 @@ def _run_trajectory(args, quiet) -> int:
     recs = [load_record(p, o, mapping=mapping, scale=scale) for p, o in zip(args.data, options)]
     rep = diagnose_trajectory(recs[0], plant, args.model, validation=recs[1:] or None,
                               candidates=_candidates(args), engine=args.engine,
-                              progress=None if quiet else say,
+                              progress=not quiet,
                               executor=getattr(args, "executor", None))
     from .trajectory_report import write_trajectory_html
     return _emit(rep, args, write_trajectory_html)
@@ -138,7 +137,7 @@ def _run_plant_fmu(args, quiet) -> int:
                              args.connect, args.model, candidates=_candidates(args),
                              native=getattr(args, "law_fmu", "native") == "native",
                              start=getattr(args, "start", None),
-                             progress=None if quiet else say,
+                             progress=not quiet,
                              executor=getattr(args, "executor", None))
     from .trajectory_report import write_trajectory_html
     return _emit(rep, args, write_trajectory_html)

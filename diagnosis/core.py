@@ -28,6 +28,7 @@ import numpy as np
 from friction import FrictionModel, make_model
 from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
+from friction.progress import status_lines
 
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
@@ -221,8 +222,9 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         Seed of the base identification.
     greedy : bool
         Stack further effects while each closes more of the remaining gap.
-    progress : callable, optional
-        Called with one-line status messages.
+    progress : None, bool, tqdm or callable(n, info), optional
+        As :mod:`friction.progress` says: one-line status messages (``n`` = 0); ``True``:
+        lines on stderr.
     noise_level : float, optional
         RMS of the force measurement's noise [N], e.g. the standard deviation of the force
         channel in a standstill record. Default: estimated from the held-out residual's
@@ -262,7 +264,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         ``where_frequency``, ``greedy``, ``noise_floor``, ``evidence``, ``skipped``, ``timing``.
     """
     t_start = time.perf_counter()
-    say = progress or (lambda msg: None)
+    say = status_lines(progress)
     fit = _as_dataset(fit_data, mapping, scale)
     full = None
     if validation is None:

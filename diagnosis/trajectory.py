@@ -88,6 +88,7 @@ from scipy.optimize import least_squares
 
 from friction import FrictionModel, make_model
 from friction.dataset import Dataset
+from friction.progress import status_lines
 
 from .report import DiagnosisReport, report_sections
 from .verdict import MIN_EXCESS_CLOSED, decide, noise_floor, rank
@@ -400,9 +401,9 @@ def diagnose_trajectory(measured, plant, model="lugre", validation=None, candida
         ``plant.<name>`` in the report): what an identification fitted together with the
         law, which would otherwise stay at values that compensated for the missing effect.
         The ``inertia`` candidate is skipped when the mass is among them.
-    progress : callable, bool or None
-        ``callable(message)`` for stage lines; ``True``: lines on stderr. Simulation counts
-        go to a :class:`friction.progress.Progress` when progress is on.
+    progress : None, bool, tqdm or callable(n, info)
+        As :mod:`friction.progress` says: stage lines as status (``n`` = 0), one unit per
+        plant simulation; ``True``: lines and a simulation bar on stderr.
     executor : None or dask.distributed.Client
         Where the candidates' fits run: here (default), or one task per candidate on a dask
         cluster, the plant, the records and the FMU files shipped to each worker once
@@ -463,7 +464,7 @@ class TrajectoryDiagnosis:
                  greedy: bool = True, fmu_dir=None, fmu_step: float | None = None,
                  fit_plant=None, progress=None, executor=None):
         import plants as _plants
-        from friction.progress import Progress, report as _report
+        from friction.progress import as_progress
 
         self.t_start = time.perf_counter()
         if isinstance(plant, str):
@@ -482,13 +483,8 @@ class TrajectoryDiagnosis:
             raise ValueError(f"plant {plant.name}: the compared output {sig!r} is in {unit!r}, "
                              f"not a position; a force measurement is diagnosed at the "
                              f"friction-force level (diagnosis.diagnose)")
-        if callable(progress):
-            self.say = progress
-        elif progress:
-            self.say = _report
-        else:
-            self.say = _silent
-        counter = Progress(label="diagnose-trajectory", interval=2.0, enabled=bool(progress))
+        self.say = status_lines(progress)
+        counter = as_progress(progress, "diagnose-trajectory", unit="sim", interval=2.0)
         explicit = candidates is not None
         self.names = list(candidates) if explicit else list(EFFECT_NAMES)
         unknown = [n for n in self.names if n not in CANDIDATES]
@@ -927,10 +923,6 @@ class TrajectoryDiagnosis:
         if hasattr(self.eng, "close"):
             self.eng.close()
         return self.report(verdict)
-
-
-def _silent(msg) -> None:
-    return None
 
 
 class _NotApplicable(Exception):

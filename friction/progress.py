@@ -36,7 +36,7 @@ from __future__ import annotations
 import sys
 import time
 
-__all__ = ["Progress", "as_progress", "report", "LOG_INTERVAL"]
+__all__ = ["Progress", "as_progress", "report", "status_lines", "LOG_INTERVAL"]
 
 #: seconds between a bar's lines when stderr is not a terminal
 LOG_INTERVAL = 10.0
@@ -202,3 +202,27 @@ def report(message: str, enabled: bool = True) -> None:
     if enabled:
         from tqdm.auto import tqdm
         tqdm.write(message, file=sys.stderr)
+
+
+def status_lines(progress):
+    """``say(message)`` for a run's one-off status lines (``[diagnose] candidate 3/9``),
+    from the same ``progress=`` argument as everything else (see the module).
+
+    Parameters
+    ----------
+    progress : None, bool, tqdm, Progress or callable(n, info)
+        The argument as the user gave it: None/False silent; True one line each on stderr
+        (:func:`report`); a bar gets the message as its status, a callable ``(0, message)``.
+
+    Returns
+    -------
+    callable
+        ``say(message)``.
+    """
+    if progress is None or progress is False:
+        return lambda message: None
+    if progress is True:
+        return report
+    p = as_progress(progress)
+    return lambda message: p(0, message)
+

@@ -291,7 +291,8 @@ def test_run_benchmark_generic_keeps_its_api():
 def test_run_benchmark_per_plant_scores_rows():
     lines = []
     res = run_benchmark(effects=("asymmetry", "clean"), strengths=(1.0,), noises=(0.02,),
-                        plants=["mre_isolator"], quick=True, progress=lines.append)
+                        plants=["mre_isolator"], quick=True,
+                        progress=lambda n, info: lines.append(info))
     assert len(res["rows"]) == 2 and len(lines) == 2
     f = res["per_plant"]["mre_isolator"]
     assert f["cases"] == 2 and f["clean_cases"] == 1
@@ -341,7 +342,7 @@ def test_benchmark_resumes_from_its_checkpoint(tmp_path):
     # interrupted after the first case, while writing the second
     ck.write_text(lines[0] + "\n" + lines[1][:40])
     said = []
-    again = run_benchmark(**grid, progress=said.append)
+    again = run_benchmark(**grid, progress=lambda n, info: said.append(info))
     assert said[0].startswith("[benchmark] resuming: 1 of 2")
     assert sum(m.startswith("[benchmark 2/2]") for m in said) == 1  # only the missing case
     assert [r["verdict"] for r in again["rows"]] == [r["verdict"] for r in full["rows"]]
@@ -349,7 +350,7 @@ def test_benchmark_resumes_from_its_checkpoint(tmp_path):
     assert again["top1_accuracy"] == full["top1_accuracy"]
     # the cut line was ended, so a third run finds both cases and scores none
     said = []
-    run_benchmark(**grid, progress=said.append)
+    run_benchmark(**grid, progress=lambda n, info: said.append(info))
     assert said == ["[benchmark] resuming: 2 of 2 cases read from " + str(ck)]
 
 

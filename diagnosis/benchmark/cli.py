@@ -78,12 +78,11 @@ def run_benchmark_cli(args) -> int:
     """``frictionlab diagnose --benchmark --plants LIST|all``: the per-plant benchmark at one
     strength (1) and noise level (0.02 x std(F)); ``benchmarks/bench_diagnosis.py`` runs the
     full grid."""
-    from friction.progress import report as say
     plants = None if args.plants in (None, "", "generic") else (
         "all" if args.plants == "all" else args.plants.split(","))
     quiet = getattr(args, "quiet", False)
     res = run_benchmark(plants=plants, seed=getattr(args, "seed", 0), strengths=(1.0,),
-                        noises=(0.02,), progress=None if quiet else say)
+                        noises=(0.02,), progress=not quiet)
     print(format_summary(res))
     if getattr(args, "json_out", None):
         import json

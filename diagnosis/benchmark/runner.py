@@ -3,6 +3,8 @@ from __future__ import annotations
 
 import time
 
+from friction.progress import status_lines
+
 from ..core import BaseFitError, diagnose
 from .cases import CASES, applicable, expected, make_case, make_plant_case
 from .kinematics import _KIN_CACHE, PLANT_NAMES, _init_worker, plant_kinematics
@@ -109,8 +111,9 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
         Effect strengths [-] and noise levels (fraction of std(F)) [-].
     seed : int
         Base seed (noise seeds are ``seed + case number``; the diagnosis uses ``seed``).
-    progress : callable, optional
-        Called with one line per case.
+    progress : None, bool, tqdm or callable(n, info), optional
+        As :mod:`friction.progress` says: one status line per case (``n`` = 0); ``True``:
+        lines on stderr.
     plants : None, "all" or sequence of str
         ``None``: the generic mass-like benchmark (historical); ``"all"``: every plant of
         :data:`PLANT_NAMES`; or a list of plant names.
@@ -150,7 +153,7 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
                 for nz in noises:
                     for r in range(reps):
                         jobs.append((plant, eff, s, nz, seed + len(jobs) + 1, quick, seed))
-    say = progress or (lambda msg: None)
+    say = status_lines(progress)
     rows = []
     keys = [_job_key(j) for j in jobs]
     resumed = load_checkpoint(checkpoint, set(keys))

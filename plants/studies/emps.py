@@ -49,6 +49,7 @@ import numpy as np
 
 from friction import make_model
 from friction.base import FrictionModel
+from friction.progress import as_progress, report, status_lines
 from plants.emps import (EMPS, EMPSAxis, EMPSParams, IDIM_LS, force_error, idim_friction,
                          initial_from_record, position_metrics)
 
@@ -480,17 +481,18 @@ def identify_trajectory(model: EMPSModel, rec: EMPSRecord, coords, *,
     alg = get_algorithm(algorithm, **options)
     rng = np.random.default_rng(seed)
     t0 = time.perf_counter()
+    prog = as_progress(progress, f"identify EMPS {algorithm}", unit="step")
     if alg.steppable:
         try:
             state = alg.start(problem, rng, u0)
             while not alg.finished(state) and not problem.exhausted:
                 state = alg.step(problem, rng, state)
-                if progress is not None:
-                    progress(1, f"evals {problem.n_evals} cost={problem.best_cost:.4g}")
+                prog(1, f"evals {problem.n_evals} cost={problem.best_cost:.4g}")
         except BudgetExhausted:
             pass
     else:
-        alg.run(problem, rng, u0, progress=progress)
+        alg.run(problem, rng, u0, progress=prog)
+    prog.close()
     if problem.best_u is None:
         raise RuntimeError("no parameter set could be simulated; check the start and box")
     x = space.to_physical(problem.best_u)
@@ -823,7 +825,7 @@ def run_study(out: str | None = None, *, identify: bool = False, diagnose_record
     """
     import json
     import os
-    say = progress or (lambda msg: None)
+    say = status_lines(progress)
     t0 = time.perf_counter()
     if out is not None:
         os.makedirs(out, exist_ok=True)
@@ -1077,9 +1079,8 @@ def demo_figures(out: str, summary: dict, quick: bool = False) -> None:
     ``quick`` also the trajectory-level diagnosis with the pulse record held out (about a
     minute). Re-identifying the models and the second diagnosis (a few minutes):
     ``python -m plants.studies.emps --identify``."""
-    from friction.progress import report
     res = run_study(out, identify=False, diagnose_records=not quick, diagnose_split=False,
-                    progress=report)
+                    progress=True)
     et = res["emps_trajectory"]
     summary["emps_trajectory"] = et
     cl, ol = et["closed_loop"], et["open_loop"]
@@ -1114,9 +1115,8 @@ def _main(argv=None) -> int:
                     "the EMPS plant FMUs and their connection files (written into OUT/fmus, "
                     "with the records as CSV for frictionlab identify --plant-fmu)")
     a = ap.parse_args(argv)
-    from friction.progress import report
     res = run_study(a.out, identify=a.identify, diagnose_records=not a.no_diagnosis,
-                    progress=report)
+                    progress=True)
     print(json.dumps(res["emps_trajectory"], indent=2, default=float))
     if a.fmus:
         import os

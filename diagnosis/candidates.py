@@ -36,7 +36,7 @@ from friction.extensions import (DRIFT_NAMES, POSITION_FORM_NAMES, POSITION_NAME
 
 __all__ = ["Candidate", "Context", "Extra", "make_context", "Acceleration", "Load", "Drift",
            "Asymmetry", "AsymmetryTwins", "Position", "Inertia", "Delay", "StribeckShape",
-           "Presliding", "MAX_FILTER_SAMPLES"]
+           "Presliding", "MAX_FILTER_SAMPLES", "missing_columns"]
 
 
 
@@ -535,3 +535,26 @@ class Presliding(Candidate):
                            b=p.b, shape=p.shape, Fc_neg=p.Fc_neg, Fs_neg=p.Fs_neg,
                            vs_neg=p.vs_neg, sigma2_neg=p.sigma2_neg)
         return [(lugre, list(base_names) + ["sigma0", "sigma1"])]
+
+
+def missing_columns(cand, val_sets) -> str:
+    """Why a candidate cannot be scored on the held-out sets ('' when it can).
+
+    Parameters
+    ----------
+    cand : Candidate
+        The candidate; its ``needs`` names the dataset columns its formula reads.
+    val_sets : list of friction.dataset.Dataset
+        The held-out records.
+
+    Returns
+    -------
+    str
+        The missing column and the records that lack it, or ``''``.
+    """
+    for key in cand.needs:
+        bad = [v.name for v in val_sets if getattr(v, key) is None]
+        if bad:
+            return f"the held-out data {bad} has no {key} column"
+    return ""
+

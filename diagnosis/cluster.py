@@ -53,7 +53,7 @@ def _fit_one(name, *, law, base_names, fit, ctx):
     """Best (composite, fit NRMSE) of candidate ``name`` over its law variants, or None
     when it does not apply (the client decides what to report)."""
     from .composite import fit_composite
-    from .core import CANDIDATES  # the registry diagnose() uses, wherever it lives
+    from .effects import CANDIDATES  # the registry diagnose() uses
     cand = CANDIDATES[name].specialise(law)
     best = None
     for law_v, names_v in cand.modify_law(law, base_names, ctx):
@@ -79,7 +79,8 @@ def applicable(names, law, fit, ctx, val_sets) -> list:
     -------
     list of str
     """
-    from .core import CANDIDATES, _missing_columns
+    from .candidates import missing_columns as _missing_columns
+    from .effects import CANDIDATES
     out = []
     for n in names:
         cand = CANDIDATES[n].specialise(law)

@@ -30,6 +30,7 @@ from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
 from friction.progress import status_lines
 
+from .candidates import missing_columns as _missing_columns
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
@@ -502,15 +503,6 @@ def _check_scorable(val_sets, skip, chronological: bool) -> None:
     if not sd > 0:
         raise ValueError("the held-out measured force is constant: its NRMSE is undefined "
                          "(std(F) = 0)")
-
-
-def _missing_columns(cand, val_sets) -> str:
-    """Why ``cand`` cannot be scored on the held-out sets ('' when it can)."""
-    for key in cand.needs:
-        bad = [v.name for v in val_sets if getattr(v, key) is None]
-        if bad:
-            return f"the held-out data {bad} has no {key} column"
-    return ""
 
 
 def _concat(sets) -> Dataset:

@@ -51,10 +51,8 @@ def _top_level_imports(name: str, path: str, known, lazy: bool = False) -> set:
     return out
 
 
-#: function-level imports that still close a circle, to be mended where they are written:
-#: diagnosis.cluster (the dask candidate fits) reads CANDIDATES from diagnosis.core, which
-#: calls it; the record's home is diagnosis.effects
-KNOWN_LAZY = {("diagnosis.cluster", "diagnosis.core")}
+#: function-level imports that still close a circle (none left)
+KNOWN_LAZY = set()
 
 
 @pytest.mark.parametrize("lazy", [False, True], ids=["top-level", "with-function-level"])

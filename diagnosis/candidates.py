@@ -34,7 +34,7 @@ from friction.dataset import Dataset
 from friction.extensions import (DRIFT_NAMES, POSITION_FORM_NAMES, POSITION_NAMES,
                                  drift_change, pack_extensions, position_change)
 
-__all__ = ["Candidate", "Context", "Extra", "make_context", "Acceleration", "Load", "Drift",
+__all__ = ["Candidate", "LawCandidate", "Context", "Extra", "make_context", "Acceleration", "Load", "Drift",
            "Asymmetry", "AsymmetryTwins", "Position", "Inertia", "Delay", "StribeckShape",
            "Presliding", "MAX_FILTER_SAMPLES", "missing_columns"]
 
@@ -146,6 +146,63 @@ class Candidate:
         default only the names :meth:`modify_law` adds to the base's)."""
         return ()
 
+
+
+class LawCandidate(Candidate):
+    """A candidate that changes the law itself (its variant from :meth:`modify_law`) and has
+    law parameters of its own, :attr:`OWN`, started on the data by :meth:`start_values`
+    (the ``start_law`` hook of :func:`diagnosis.composite.fit_composite`)."""
+
+    #: the law parameters that are this candidate's own
+    OWN: ClassVar[tuple] = ()
+
+    def start_values(self, law, names, fit, ctx: Context) -> dict:
+        """Start values of the variant ``law`` chosen on the fit record (see
+        :meth:`start_law`)."""
+        raise NotImplementedError
+
+    def start_law(self, law, names, fit, ctx: Context):
+        """``law`` (a :meth:`modify_law` variant) started on the data (:meth:`start_values`).
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The candidate's variant of the base law (:meth:`modify_law`).
+        names : list of str
+            The variant's free parameters (its own among them).
+        fit : friction.dataset.Dataset
+            The fit record (t [s], x [m], v [m/s], F [N]).
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
+        return law.with_values(**self.start_values(law, names, fit, ctx))
+
+    def own_law_names(self, law):
+        """The law parameters that are this candidate's own, :attr:`OWN` (a transfer
+        calibration fits these alone).
+
+        Parameters
+        ----------
+        law : FrictionModel
+            The base law (a classic LuGre).
+        """
+        return tuple(self.OWN)
+
+    def law_extras(self, ctx: Context) -> list:
+        """The candidate's own parameters as the effect record lists them: name, start (the
+        variant of a default LuGre), the joint fit's box without data
+        (:func:`identification.space.default_bounds`) and unit.
+
+        Parameters
+        ----------
+        ctx : diagnosis.candidates.Context
+            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+        """
+        from identification.space import default_bounds
+        law = self.modify_law(make_model("lugre"), [], ctx)[0][0]
+        units = {i.name: i.unit for i in law.Params.info()}
+        box = default_bounds(law, list(self.OWN))
+        return [Extra(n, float(getattr(law.params, n)), *box[n], units[n]) for n in self.OWN]
 
 def _sig_neg(v, ctx):
     # smooth indicator of the negative direction: a sign change is not a step in measured data

@@ -76,7 +76,7 @@ from numba import njit
 
 from friction import make_model
 
-from .candidates import Candidate, Context
+from .candidates import Context, LawCandidate
 
 __all__ = ["Backlash", "gap_start", "TRUTHS", "backlash_truth", "GAP_GRID",
            "FINE", "fine_grid", "reversal_travels", "contact_record",
@@ -96,7 +96,7 @@ REVERSAL_SHARE = 0.75
 FINE = 10
 
 
-class Backlash(Candidate):
+class Backlash(LawCandidate):
     """Lost motion ``backlash_gap`` = 2 delta [m] at every reversal between drive and
     contact: the base LuGre law fed the contact's motion behind a play
     (:class:`friction.backlash.BacklashLuGre`, module docstring)."""
@@ -138,6 +138,13 @@ class Backlash(Candidate):
         vals = {n: getattr(law.params, n) for n in _LUGRE_VALUES}
         return make_model("backlash_lugre", delta=float(delta), gap="hold", **vals)
 
+    OWN = ("delta",)
+
+    def start_values(self, law, names, fit, ctx: Context) -> dict:
+        """The gap and what the drive feels while crossing it, chosen on the data
+        (:func:`gap_start`; parameters as :meth:`LawCandidate.start_law`)."""
+        return gap_start(law, names, fit, ctx)
+
     def modify_law(self, law, base_names, ctx: Context):
         """The law variants to fit: one, the base's values carried over.
 
@@ -153,46 +160,6 @@ class Backlash(Candidate):
         # start: a tenth of a percent of the stroke; :meth:`start_law` moves it onto the data
         delta = max(1e-4 * (ctx.x_hi - ctx.x_lo), 1e-6)
         return [(self.law_for(law, delta), list(base_names) + ["delta"])]
-
-    def start_law(self, law, names, fit, ctx: Context):
-        """``law`` (a :meth:`modify_law` variant) with its gap and what the drive feels
-        while crossing it started on the data (:func:`gap_start`).
-
-        Parameters
-        ----------
-        law : FrictionModel
-            The candidate's variant of the base law (:meth:`modify_law`).
-        names : list of str
-            The variant's free parameters (its own among them).
-        fit : friction.dataset.Dataset
-            The fit record (t [s], x [m], v [m/s], F [N]).
-        ctx : diagnosis.candidates.Context
-            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
-        """
-        return law.with_values(**gap_start(law, names, fit, ctx))
-
-    def own_law_names(self, law):
-        """The law parameters that are this candidate's own (a transfer calibration fits
-        these alone).
-
-        Parameters
-        ----------
-        law : FrictionModel
-            The base law (a classic LuGre).
-        """
-        return ("delta",)
-
-    def law_extras(self, ctx: Context) -> list:
-        """The candidate's own parameter as the record lists it: the half-gap ``delta``
-        [m] with the joint fit's box (:func:`identification.space.default_bounds` of the
-        backlash_lugre law) and this candidate's start.
-
-        Parameters
-        ----------
-        ctx : diagnosis.candidates.Context
-            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
-        """
-        return _law_extras(self.modify_law(make_model("lugre"), [], ctx)[0][0], ("delta",))
 
     def own_parameters(self, law) -> dict:
         """The candidate's own parameters of a fitted ``law``: ``backlash_gap`` [m] (the
@@ -313,16 +280,6 @@ def contact_record(fit, delta: float):
     vc = np.where(moving, fit.v, 0.0)
     return Dataset(t=fit.t, x=xc, v=vc, a=np.gradient(vc, fit.t), F=fit.F, load=fit.load,
                    name=fit.name)
-
-
-def _law_extras(law, names) -> list:
-    """Extras (name, start, box, unit) of the law parameters ``names`` of ``law``: its values
-    and the joint fit's box without data (:func:`identification.space.default_bounds`)."""
-    from identification.space import default_bounds
-    from .candidates import Extra
-    units = {i.name: i.unit for i in law.Params.info()}
-    box = default_bounds(law, list(names))
-    return [Extra(n, float(getattr(law.params, n)), *box[n], units[n]) for n in names]
 
 
 def gap_start(law, names, fit, ctx: Context) -> dict:

@@ -74,7 +74,7 @@ from friction import make_model
 from friction.gms import N_ELEMENTS, element_stiffness
 from friction import ParameterError
 
-from .candidates import Candidate, Context
+from .candidates import Context, LawCandidate
 from .effects_backlash import fine_grid
 
 __all__ = ["GMSCandidate", "gms_start", "TRUTHS", "gms_truth", "FINE",
@@ -92,7 +92,7 @@ LAG_SAMPLES = (0.3, 3.0)
 _SHARED = ("sigma0", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape")
 
 
-class GMSCandidate(Candidate):
+class GMSCandidate(LawCandidate):
     """Presliding with N = 4 Maxwell-slip blocks in place of the base's bristle
     (:class:`friction.gms.GMS`; module docstring)."""
 
@@ -148,6 +148,19 @@ class GMSCandidate(Candidate):
         """
         return [n for n in base_names if n in _SHARED] + ["spread", "C"]
 
+    OWN = ("spread", "C")
+
+    #: shortest presliding distance named ``gms``: the drive must take this many samples
+    #: to cross it after a reversal [-] (:func:`diagnosis.effects_backlash.
+    #: reversal_travel_floor`); shorter, the blocks' hysteresis is over within the samples a
+    #: sub-sample shift moves, and one bristle (the base) draws the same samples
+    MIN_SAMPLES = 1.5
+
+    def start_values(self, law, names, fit, ctx: Context) -> dict:
+        """Spread, stiffness and attraction rate chosen on the data (:func:`gms_start`;
+        parameters as :meth:`LawCandidate.start_law`)."""
+        return gms_start(law, names, fit, ctx)
+
     def modify_law(self, law, base_names, ctx: Context):
         """The law variants to fit: one, the base's values carried over.
 
@@ -161,39 +174,6 @@ class GMSCandidate(Candidate):
             Scales of the fit record (:func:`diagnosis.candidates.make_context`).
         """
         return [(self.law_for(law), self.names_for(base_names))]
-
-    def start_law(self, law, names, fit, ctx: Context):
-        """``law`` (a :meth:`modify_law` variant) started on the data (:func:`gms_start`).
-
-        Parameters
-        ----------
-        law : FrictionModel
-            The candidate's variant of the base law (:meth:`modify_law`).
-        names : list of str
-            The variant's free parameters (its own among them).
-        fit : friction.dataset.Dataset
-            The fit record (t [s], x [m], v [m/s], F [N]).
-        ctx : diagnosis.candidates.Context
-            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
-        """
-        return law.with_values(**gms_start(law, names, fit, ctx))
-
-    def own_law_names(self, law):
-        """The law parameters that are this candidate's own (a transfer calibration fits
-        these alone).
-
-        Parameters
-        ----------
-        law : FrictionModel
-            The base law (a classic LuGre).
-        """
-        return ("spread", "C")
-
-    #: shortest presliding distance named ``gms``: the drive must take this many samples
-    #: to cross it after a reversal [-] (:func:`diagnosis.effects_backlash.
-    #: reversal_travel_floor`); shorter, the blocks' hysteresis is over within the samples a
-    #: sub-sample shift moves, and one bristle (the base) draws the same samples
-    MIN_SAMPLES = 1.5
 
     def practical(self, p: dict, ctx: Context) -> str:
         """Why fitted parameters ``p`` (the law's ``sigma0`` [N/m], ``spread`` [-] and
@@ -220,18 +200,6 @@ class GMSCandidate(Candidate):
                     f"{self.MIN_SAMPLES:g} samples of a reversal ({floor:.3g} m at the "
                     f"record's acceleration): one bristle draws the same samples")
         return ""
-
-    def law_extras(self, ctx: Context) -> list:
-        """The candidate's own parameters as the record lists them: ``spread`` [-] and
-        ``C`` [N/s] with the joint fit's box (the gms law's search ranges) and starts.
-
-        Parameters
-        ----------
-        ctx : diagnosis.candidates.Context
-            Scales of the fit record (:func:`diagnosis.candidates.make_context`).
-        """
-        from .effects_backlash import _law_extras
-        return _law_extras(self.law_for(make_model("lugre")), ("spread", "C"))
 
     def own_parameters(self, law) -> dict:
         """The candidate's own parameters of a fitted GMS ``law``: ``spread`` [-], ``C``

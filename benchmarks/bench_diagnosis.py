@@ -17,11 +17,14 @@ outside the library (see :mod:`diagnosis.benchmark`), prints per plant and overa
 
     python benchmarks/bench_diagnosis.py [--quick] [--workers N] [--generic] [--json OUT]
                                          [--checkpoint FILE]
+    python benchmarks/bench_diagnosis.py --speed-only [--repeats N]
 
 ``--quick``: one strength and noise level, short plant protocols (about 2 min).
 ``--generic``: also the historical generic mass-like benchmark.
 ``--checkpoint FILE``: finished cases are appended to FILE; an interrupted run started again
 with the same FILE resumes where it stopped.
+``--speed-only``: only the full 20,000-sample diagnosis, warm, ``--repeats`` times (default 5)
+alternating with the base identification it is compared with; best and median seconds.
 
 Results (2026-11-21 14:45 UTC, full grid: strengths 0.5/1, noise 1 %/3 % of std(F); 192
 cases, 238 s wall on 2 workers of a shared 2-core machine, one BLAS thread):
@@ -90,19 +93,81 @@ from diagnosis.benchmark import PLANT_NAMES, format_summary, make_case, run_benc
 from identification import identify  # noqa: E402
 
 
-def speed(n=20000):
-    """Full diagnosis of ``n`` samples against one base identification, same run."""
+def _speed_case(n):
     data = make_case("asymmetry", 1.0, 0.02, n=n)
     fit, _ = data.split(0.7)
+    return data, fit
+
+
+def _time_base(fit) -> float:
+    """Seconds of one base identification of the speed case's fit part."""
     t0 = time.perf_counter()
     identify(fit, "lugre", names=["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs"])
-    t_base = time.perf_counter() - t0
+    return time.perf_counter() - t0
+
+
+def _time_full(data):
+    """Seconds of one full diagnosis of the speed case, and its report."""
     t0 = time.perf_counter()
     rep = diagnose(data, "lugre")
-    t_full = time.perf_counter() - t0
+    return time.perf_counter() - t0, rep
+
+
+def speed(n=20000):
+    """Full diagnosis of ``n`` samples against one base identification, same run.
+
+    Parameters
+    ----------
+    n : int
+        Samples of the generic asymmetry case (70 % fitted).
+    """
+    data, fit = _speed_case(n)
+    t_base = _time_base(fit)
+    t_full, rep = _time_full(data)
     print(f"\nfull diagnosis of {n} samples, every candidate: {t_full:.1f} s "
           f"({t_full / t_base:.1f} x one base identification of {t_base:.2f} s); verdict "
           f"{rep['verdict']['cause']}")
+
+
+def speed_only(n=20000, repeats=5):
+    """Warm timing of the full diagnosis: one warm-up of each, then ``repeats`` rounds
+    alternating the base identification and the full diagnosis (so load changes hit both).
+
+    Parameters
+    ----------
+    n : int
+        Samples of the generic asymmetry case (70 % fitted).
+    repeats : int
+        Timed rounds.
+
+    Returns
+    -------
+    dict
+        ``full`` and ``base`` lists of seconds, ``load`` (1-minute load average before and
+        after), ``verdict``.
+    """
+    data, fit = _speed_case(n)
+    load0 = os.getloadavg()[0]
+    _time_base(fit)  # warm-up: numba kernels compiled and cached, imports done
+    _, rep = _time_full(data)
+    full, base = [], []
+    for _ in range(repeats):
+        base.append(_time_base(fit))
+        full.append(_time_full(data)[0])
+    load1 = os.getloadavg()[0]
+
+    def line(name, ts):
+        return f"{name}: best {min(ts):.2f} s, median {float(np.median(ts)):.2f} s"
+    print(f"full diagnosis of {n} samples, every candidate, {repeats} warm runs "
+          f"(load {load0:.2f} -> {load1:.2f}, OPENBLAS_NUM_THREADS="
+          f"{os.environ.get('OPENBLAS_NUM_THREADS')}):")
+    print("  " + line("full diagnosis", full))
+    print("  " + line("base identification", base))
+    print(f"  ratio: best {min(full) / min(base):.1f} x, median "
+          f"{float(np.median(full)) / float(np.median(base)):.1f} x; verdict "
+          f"{rep['verdict']['cause']}")
+    return {"full": full, "base": base, "load": [load0, load1],
+            "verdict": rep["verdict"]["cause"]}
 
 
 def main(argv=None):
@@ -114,7 +179,13 @@ def main(argv=None):
     ap.add_argument("--plants", default=",".join(PLANT_NAMES))
     ap.add_argument("--checkpoint", default=None,
                     help="JSON-lines file of finished cases; run again with it to resume")
+    ap.add_argument("--speed-only", action="store_true",
+                    help="only the warm timing of the 20,000-sample full diagnosis")
+    ap.add_argument("--repeats", type=int, default=5, help="timed rounds of --speed-only")
     args = ap.parse_args(argv)
+    if args.speed_only:
+        speed_only(repeats=args.repeats)
+        return
     strengths = (1.0,) if args.quick else (0.5, 1.0)
     noises = (0.02,) if args.quick else (0.01, 0.03)
     t0 = time.perf_counter()

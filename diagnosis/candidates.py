@@ -119,6 +119,40 @@ class Candidate:
     def apply(self, F, p: dict, data, ctx: Context) -> np.ndarray:
         return F
 
+    def jac(self, F, p: dict, data, ctx: Context):
+        """Derivatives of :meth:`apply` for a joint fit's Jacobian (:func:`diagnosis.
+        composite._stacked_jacobian`), or ``None``: differences of :meth:`apply` along each
+        column.
+
+        By default from the stage: an ``additive`` effect adds a term (``d/dF = 1``), a
+        ``multiplicative`` one scales the force by a factor (``apply(1) - apply(0)``, exact
+        for a formula affine in the force); no extra is given exactly.
+
+        Parameters
+        ----------
+        F : ndarray
+            The force the effect acts on [N].
+        p : dict
+            The extras [their units].
+        data : friction.dataset.Dataset
+            The record (t [s], x [m], v [m/s], a [m/s^2], load [N]).
+        ctx : Context
+            Scales of the fit record.
+
+        Returns
+        -------
+        None or (float or ndarray, dict)
+            ``d apply / dF`` element by element [-], and ``d apply / d p[name]`` [N per
+            unit of the extra] of the extras whose derivative is exact here (the others
+            are differenced).
+        """
+        if self.stage == "additive":
+            return 1.0, {}
+        if self.stage == "multiplicative":
+            one = np.ones_like(F)
+            return self.apply(one, p, data, ctx) - self.apply(0.0 * one, p, data, ctx), {}
+        return None
+
     #: ``start(fit, Ff, r, ctx) -> dict``: start values of extras chosen on the data (time
     #: scales, wavelengths, positions a gradient cannot find from a zero amplitude), given
     #: the base's friction part ``Ff`` [N] and residual ``r`` [N] on the fit record
@@ -461,6 +495,25 @@ class Position(Candidate):
         # friction level varying along the stroke: a friction map over the fit record's
         # stroke (a worn section, guide waviness or screw pitch, a local defect)
         return F * (1.0 + position_change(data.x, self._packed(p, ctx)))
+
+    #: extras the map is linear in: the knot values and the amplitudes
+    LINEAR = POSITION_NAMES + ("p_c1", "p_s1", "p_c2", "p_s2", "d_x")
+
+    def jac(self, F, p, data, ctx):
+        """``d apply / dF = 1 + m(x)``; the knot values' and amplitudes' columns exactly,
+        ``F`` times the map with that one set to 1 (:attr:`LINEAR`; the others are
+        differenced). Parameters as :meth:`Candidate.jac`."""
+        off = dict.fromkeys(self.LINEAR, 0.0)
+        cols = {}
+        for n in self.LINEAR:
+            q = {**p, **off, n: 1.0}
+            # the parts a column has no amplitude in switched off (<= 0: none), for speed
+            if n != "d_x":
+                q["w_d"] = 0.0
+            if n in POSITION_NAMES or n == "d_x":
+                q["lambda_x"] = 0.0
+            cols[n] = F * position_change(data.x, self._packed(q, ctx))
+        return 1.0 + position_change(data.x, self._packed(p, ctx)), cols
 
     def start(self, fit, Ff, r, ctx) -> dict:
         """Start values from the base's fit residual ``r`` [N] against its friction part

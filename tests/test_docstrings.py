@@ -414,6 +414,8 @@ SLOW_RUNS = {
                            lambda r: r["nrmse"] < 1e-2),
     "diagnose_emps": (lambda m, tmp: m.run_diagnose_emps(out=tmp),
                       lambda r: r["verdict"]["cause"] is not None),
+    "diagnose_franka": (lambda m, tmp: m.run_diagnose_franka(cases=(4,), verbose=False),
+                        lambda r: r[4]["verdict"]["cause"] is not None),
     "diagnose_xml350_trajectory": (lambda m, tmp: m.run_diagnose_xml350_trajectory(out=tmp),
                                    lambda r: r["verdict"]["cause"] is not None),
 }

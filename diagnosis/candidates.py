@@ -496,24 +496,22 @@ class Position(Candidate):
         # stroke (a worn section, guide waviness or screw pitch, a local defect)
         return F * (1.0 + position_change(data.x, self._packed(p, ctx)))
 
-    #: extras the map is linear in: the knot values and the amplitudes
-    LINEAR = POSITION_NAMES + ("p_c1", "p_s1", "p_c2", "p_s2", "d_x")
-
     def jac(self, F, p, data, ctx):
-        """``d apply / dF = 1 + m(x)``; the knot values' and amplitudes' columns exactly,
-        ``F`` times the map with that one set to 1 (:attr:`LINEAR`; the others are
-        differenced). Parameters as :meth:`Candidate.jac`."""
-        off = dict.fromkeys(self.LINEAR, 0.0)
-        cols = {}
-        for n in self.LINEAR:
-            q = {**p, **off, n: 1.0}
-            # the parts a column has no amplitude in switched off (<= 0: none), for speed
-            if n != "d_x":
-                q["w_d"] = 0.0
-            if n in POSITION_NAMES or n == "d_x":
-                q["lambda_x"] = 0.0
-            cols[n] = F * position_change(data.x, self._packed(q, ctx))
-        return 1.0 + position_change(data.x, self._packed(p, ctx)), cols
+        """``d apply / dF = 1 + m(x)``; the columns of the knot values, the waviness'
+        amplitudes and the defect's height exactly, ``F`` times the part of the map they
+        scale (the others are differenced). Parameters as :meth:`Candidate.jac`."""
+        span = self._span(ctx)
+        x = data.x
+        # the map is linear in these: piecewise-linear hats between the knots (constant
+        # beyond the stroke), the harmonics, the defect's bump
+        knots = np.linspace(ctx.x_lo, ctx.x_lo + span, len(POSITION_NAMES) + 1)
+        eye = np.eye(knots.size)
+        cols = {n: F * np.interp(x, knots, eye[k]) for k, n in enumerate(POSITION_NAMES, 1)}
+        ph = 2.0 * np.pi * (x - ctx.x_lo) / p["lambda_x"]
+        cols.update(p_c1=F * np.cos(ph), p_s1=F * np.sin(ph), p_c2=F * np.cos(2.0 * ph),
+                    p_s2=F * np.sin(2.0 * ph),
+                    d_x=F * np.exp(-0.5 * ((x - p["x_d"]) / p["w_d"]) ** 2))
+        return 1.0 + position_change(x, self._packed(p, ctx)), cols
 
     def start(self, fit, Ff, r, ctx) -> dict:
         """Start values from the base's fit residual ``r`` [N] against its friction part

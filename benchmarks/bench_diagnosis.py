@@ -17,14 +17,16 @@ outside the library (see :mod:`diagnosis.benchmark`), prints per plant and overa
 
     python benchmarks/bench_diagnosis.py [--quick] [--workers N] [--generic] [--json OUT]
                                          [--checkpoint FILE]
-    python benchmarks/bench_diagnosis.py --speed-only [--repeats N]
+    python benchmarks/bench_diagnosis.py --speed-only [--repeats N] [--scipy-jacobian]
 
 ``--quick``: one strength and noise level, short plant protocols (about 2 min).
 ``--generic``: also the historical generic mass-like benchmark.
 ``--checkpoint FILE``: finished cases are appended to FILE; an interrupted run started again
 with the same FILE resumes where it stopped.
 ``--speed-only``: only the full 20,000-sample diagnosis, warm, ``--repeats`` times (default 5)
-alternating with the base identification it is compared with; best and median seconds.
+alternating with the base identification it is compared with; best and median seconds
+(``--scipy-jacobian``: each round also with the joint fits' Jacobians from scipy's
+differences of the whole residual, as before the structured Jacobian).
 
 Results (2026-11-21 14:45 UTC, full grid: strengths 0.5/1, noise 1 %/3 % of std(F); 192
 cases, 238 s wall on 2 workers of a shared 2-core machine, one BLAS thread):
@@ -129,7 +131,7 @@ def speed(n=20000):
           f"{rep['verdict']['cause']}")
 
 
-def speed_only(n=20000, repeats=5):
+def speed_only(n=20000, repeats=5, scipy_jacobian=False):
     """Warm timing of the full diagnosis: one warm-up of each, then ``repeats`` rounds
     alternating the base identification and the full diagnosis (so load changes hit both).
 
@@ -139,35 +141,48 @@ def speed_only(n=20000, repeats=5):
         Samples of the generic asymmetry case (70 % fitted).
     repeats : int
         Timed rounds.
+    scipy_jacobian : bool
+        Also time, in each round, the diagnosis with scipy's differences of the whole
+        residual in the joint fits (:data:`diagnosis.composite.STRUCTURED_JACOBIAN` off:
+        the code before the structured Jacobian).
 
     Returns
     -------
     dict
-        ``full`` and ``base`` lists of seconds, ``load`` (1-minute load average before and
-        after), ``verdict``.
+        Lists of seconds ``full``, ``base`` (and ``full_scipy``), ``load`` (1-minute load
+        average before and after), ``verdict``.
     """
+    from diagnosis import composite
     data, fit = _speed_case(n)
     load0 = os.getloadavg()[0]
     _time_base(fit)  # warm-up: numba kernels compiled and cached, imports done
     _, rep = _time_full(data)
-    full, base = [], []
+    times = {"base": [], "full": []}
+    if scipy_jacobian:
+        times["full_scipy"] = []
     for _ in range(repeats):
-        base.append(_time_base(fit))
-        full.append(_time_full(data)[0])
+        times["base"].append(_time_base(fit))
+        times["full"].append(_time_full(data)[0])
+        if scipy_jacobian:
+            composite.STRUCTURED_JACOBIAN = False
+            try:
+                times["full_scipy"].append(_time_full(data)[0])
+            finally:
+                composite.STRUCTURED_JACOBIAN = True
     load1 = os.getloadavg()[0]
-
-    def line(name, ts):
-        return f"{name}: best {min(ts):.2f} s, median {float(np.median(ts)):.2f} s"
+    best = {k: min(v) for k, v in times.items()}
+    med = {k: float(np.median(v)) for k, v in times.items()}
     print(f"full diagnosis of {n} samples, every candidate, {repeats} warm runs "
           f"(load {load0:.2f} -> {load1:.2f}, OPENBLAS_NUM_THREADS="
-          f"{os.environ.get('OPENBLAS_NUM_THREADS')}):")
-    print("  " + line("full diagnosis", full))
-    print("  " + line("base identification", base))
-    print(f"  ratio: best {min(full) / min(base):.1f} x, median "
-          f"{float(np.median(full)) / float(np.median(base)):.1f} x; verdict "
-          f"{rep['verdict']['cause']}")
-    return {"full": full, "base": base, "load": [load0, load1],
-            "verdict": rep["verdict"]["cause"]}
+          f"{os.environ.get('OPENBLAS_NUM_THREADS')}); verdict {rep['verdict']['cause']}")
+    labels = {"full": "full diagnosis", "full_scipy": "  with scipy's Jacobian",
+              "base": "base identification"}
+    for k in ("full", "full_scipy", "base"):
+        if k in times:
+            ratio = "" if k == "base" else (f"  ({best[k] / best['base']:.1f} / "
+                                            f"{med[k] / med['base']:.1f} x base id)")
+            print(f"  {labels[k]:24s} best {best[k]:.2f} s, median {med[k]:.2f} s{ratio}")
+    return {**times, "load": [load0, load1], "verdict": rep["verdict"]["cause"]}
 
 
 def main(argv=None):
@@ -182,9 +197,11 @@ def main(argv=None):
     ap.add_argument("--speed-only", action="store_true",
                     help="only the warm timing of the 20,000-sample full diagnosis")
     ap.add_argument("--repeats", type=int, default=5, help="timed rounds of --speed-only")
+    ap.add_argument("--scipy-jacobian", action="store_true",
+                    help="--speed-only: also time the joint fits with scipy's differences")
     args = ap.parse_args(argv)
     if args.speed_only:
-        speed_only(repeats=args.repeats)
+        speed_only(repeats=args.repeats, scipy_jacobian=args.scipy_jacobian)
         return
     strengths = (1.0,) if args.quick else (0.5, 1.0)
     noises = (0.02,) if args.quick else (0.01, 0.03)

@@ -402,6 +402,8 @@ RUNS = {
                             lambda r: r["nrmse"] < 1e-3),
     "damping_rig": (lambda m, tmp: m.run_example(out_dir=tmp, quick=True),
                     lambda r: r["dissipated"]["sine"] > 0),
+    "diagnose_real": (lambda m, tmp: m.run_diagnose_real(only=("emps",), quick=True),
+                      lambda r: r["rows"][0]["verdict"] == "asymmetry"),
 }
 #: the heavy ones (a minute or more each on two shared cores), run with -m slow
 SLOW_RUNS = {

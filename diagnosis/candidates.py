@@ -92,6 +92,9 @@ class Candidate:
     tags: tuple = field(default_factory=tuple)
     #: optional data columns the effect reads (fit and held-out data must both have them)
     needs: ClassVar[tuple] = ()
+    #: extras whose derivative :meth:`jac` gives exactly; a joint fit with such an effect
+    #: takes its Jacobian from :func:`diagnosis.composite._stacked_jacobian`
+    exact_extras: ClassVar[tuple] = ()
 
     def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
         return True, ""
@@ -496,10 +499,13 @@ class Position(Candidate):
         # stroke (a worn section, guide waviness or screw pitch, a local defect)
         return F * (1.0 + position_change(data.x, self._packed(p, ctx)))
 
+    #: the map is linear in the knot values, the waviness' amplitudes and the defect's height
+    exact_extras = POSITION_NAMES + ("p_c1", "p_s1", "p_c2", "p_s2", "d_x")
+
     def jac(self, F, p, data, ctx):
-        """``d apply / dF = 1 + m(x)``; the columns of the knot values, the waviness'
-        amplitudes and the defect's height exactly, ``F`` times the part of the map they
-        scale (the others are differenced). Parameters as :meth:`Candidate.jac`."""
+        """``d apply / dF = 1 + m(x)``; the columns of :attr:`exact_extras` exactly, ``F``
+        times the part of the map they scale (the others are differenced). Parameters as
+        :meth:`Candidate.jac`."""
         span = self._span(ctx)
         x = data.x
         # the map is linear in these: piecewise-linear hats between the knots (constant

@@ -5,7 +5,8 @@ candidate extras (unit cube over their physical box)]``; the residual is
 ``(F_measured - F_model) / std(F_measured)``. The law is simulated with its compiled kernel
 (one call per evaluation), so a 20,000-sample fit takes a fraction of a second.
 
-The Jacobian of a fit with force-level effects is assembled by :func:`_stacked_jacobian`:
+The Jacobian of a fit with an effect that has exact derivative columns (the position map's
+knot values and amplitudes) is assembled by :func:`_stacked_jacobian`:
 the law's columns by forward differences of the law's force alone, carried through the
 effects by their derivative with respect to the force (:meth:`diagnosis.candidates.
 Candidate.jac`), the effects' own columns exact where the candidate gives them, else
@@ -37,9 +38,10 @@ _FORCE_STAGES = ("multiplicative", "additive", "shift")
 
 #: relative step of the forward differences of a joint fit [-] (scipy's ``diff_step``)
 DIFF_STEP = 1e-6
-#: a joint fit with force-level effects takes its Jacobian from :func:`_stacked_jacobian`
-#: (False: scipy's "2-point" differences of the whole residual, one evaluation a column;
-#: the same columns to ~1e-8, the position map's fit of 19 extras twice as slow)
+#: a joint fit with an effect that has exact columns (:attr:`diagnosis.candidates.
+#: Candidate.exact_extras`: the position map) takes its Jacobian from
+#: :func:`_stacked_jacobian` (False: scipy's "2-point" differences of the whole residual,
+#: one evaluation a column; the same columns to ~1e-8, the position fit 1.6 x as slow)
 STRUCTURED_JACOBIAN = True
 
 #: static (break-away) levels of the LuGre family and how far above the data's force scale
@@ -287,9 +289,13 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         residual = _counted(residual, prog, f"fit {'+'.join(e.name for e in effects) or 'base'}")
 
     jac = "2-point"
-    if STRUCTURED_JACOBIAN and _staged(effects) and not elastic:
-        # (an elastic law's spring part moves with the law's parameters under a
-        # friction-level effect: scipy's differences there)
+    if STRUCTURED_JACOBIAN and not elastic and any(getattr(e, "exact_extras", ())
+                                                   for e in _staged(effects)):
+        # only where an effect has exact columns: elsewhere the structured columns save
+        # little (an effect is cheap next to the law's simulations) and scipy's are kept
+        # to the last bit, so are the fits (a fit stopping in a flat valley moves by up
+        # to 1e-2 in gap_closed with the rounding of its columns); nor for an elastic law,
+        # whose spring part moves with its parameters under a friction-level effect
         def jac(u):
             return _stacked_jacobian(u, nb, lambda uj: law_force(unpack(uj)[0])[0], effects,
                                      unpack(u)[1], lambda uj: unpack(uj)[1],

@@ -38,19 +38,17 @@ import time
 import numpy as np
 from scipy.interpolate import PchipInterpolator
 from numba import njit
-from scipy.signal import butter, filtfilt, lfilter
 
 from friction.dataset import Dataset
 from friction.progress import status_lines
 
 # the benchmark's grid of the truth and its motion between samples (one definition)
-from .benchmark.kinematics import FINE, fine_motion
+from .benchmark.kinematics import (COLOUR_SAMPLES, FINE, fine_motion, measure_motion,
+                                   noise_signal)
 
 __all__ = ["FINE", "COLOUR_SAMPLES", "fine_truth", "clean_record", "clean_grid", "run_clean",
            "clean_summary", "NO_NAME", "level_truth_record"]
 
-#: time constant of the coloured noise's first-order low-pass [samples]
-COLOUR_SAMPLES = 3.0
 #: verdicts that put no name on a record
 NO_NAME = ("none", "unexplained", "base_unfit")
 
@@ -106,21 +104,6 @@ def fine_truth(kin, truth: str = "fine", cache_dir=None) -> dict:
     return out
 
 
-def _velocity(x, dt, how):
-    if how == "backward":
-        v = np.empty_like(x)
-        v[1:] = np.diff(x) / dt
-        v[0] = v[1]
-        return v
-    v = np.gradient(x, dt)
-    if how == "gradient":
-        return v
-    if how == "lowpass":
-        b, a = butter(2, 0.2)
-        return filtfilt(b, a, v)
-    raise ValueError(f"velocity must be 'backward', 'gradient' or 'lowpass', got {how!r}")
-
-
 def clean_record(kin, *, truth: str = "fine", sampling: str = "point",
                  velocity: str = "gradient", counts: float = 200.0, noise: float = 0.01,
                  colour: str = "white", seed: int = 0, cache_dir=None):
@@ -154,7 +137,6 @@ def clean_record(kin, *, truth: str = "fine", sampling: str = "point",
     ft = fine_truth(kin, truth, cache_dir)
     n = kin.t.size
     t = kin.t
-    dt = kin.dt
     idx = np.arange(n) * FINE
     if sampling == "point":
         F0 = ft["F_f"][idx]
@@ -168,20 +150,8 @@ def clean_record(kin, *, truth: str = "fine", sampling: str = "point",
         F0[1:] = (c[idx[1:]] - c[idx[1:] - FINE]) / FINE
     else:
         raise ValueError(f"sampling must be 'point' or 'average', got {sampling!r}")
-    x_true = ft["x_f"][idx]
-    v99 = float(np.percentile(np.abs(kin.v), 99)) or 1e-3
-    q = v99 * dt / float(counts)
-    x = np.round((x_true - x_true[0]) / q) * q + x_true[0]
-    v = _velocity(x, dt, velocity)
-    a = np.gradient(v, dt)
-    rng = np.random.default_rng(seed)
-    e = rng.standard_normal(n)
-    if colour == "coloured":
-        k = np.exp(-1.0 / COLOUR_SAMPLES)
-        e = lfilter([1.0 - k], [1.0, -k], e)
-        e /= np.std(e)
-    elif colour != "white":
-        raise ValueError(f"colour must be 'white' or 'coloured', got {colour!r}")
+    x, v, a = measure_motion(kin, counts, velocity)
+    e = noise_signal(n, colour, np.random.default_rng(seed))
     sd = float(np.std(F0)) or 1.0
     w = noise * sd * e
     name = f"{kin.plant}-clean-{truth}-{sampling}-{velocity}-c{counts:g}-{colour}-n{noise:g}-s{seed}"

@@ -128,7 +128,11 @@ class Effect:
         Families of the residual's evidence correlations it points at (benchmark).
     truths : mapping
         Truth form name -> ``truth(kin, s) -> F`` [N] (or its ``"module:function"``); the
-        first is the one the benchmark runs.
+        first is the benchmark's default, all run in its generalisation grid.
+    sealed : mapping
+        Truth forms of the sealed family, as ``truths``: written once, kept out of all
+        tuning, run only at the end of a piece of work and reported separately
+        (:mod:`diagnosis.benchmark.sealed`).
     generic_truth : str or callable, optional
         ``truth(s, t, x, v, a) -> (F, load)`` of the generic benchmark.
     truth_applies : str or callable, optional
@@ -142,6 +146,7 @@ class Effect:
     families: tuple = ()
     evidence: tuple = ()
     truths: Mapping[str, Ref] = field(default_factory=dict)
+    sealed: Mapping[str, Ref] = field(default_factory=dict)
     generic_truth: Ref = None
     truth_applies: Ref = None
 
@@ -188,14 +193,25 @@ class Effect:
         return get[level](ctx) + (own(ctx) if own is not None else [])
 
     def truth(self, form: str | None = None) -> Callable:
-        """The truth form ``form`` (default: the first) as a function ``(kin, s) -> F``."""
+        """The truth form ``form`` (default: the first; sealed forms included) as a function
+        ``(kin, s) -> F``."""
         if not self.truths:
             raise ValueError(f"effect {self.name!r} has no truth forms")
         form = next(iter(self.truths)) if form is None else form
-        if form not in self.truths:
+        every = {**self.truths, **self.sealed}
+        if form not in every:
             raise ValueError(f"unknown truth form {form!r} of {self.name!r}; choose from "
-                             f"{list(self.truths)}")
-        return resolve(self.truths[form])
+                             f"{list(every)}")
+        return resolve(every[form])
+
+    def forms(self, family: str = "all") -> tuple:
+        """Names of the truth forms of ``family``: ``"first"`` (the default form),
+        ``"all"`` (every open form) or ``"sealed"``."""
+        if family not in ("first", "all", "sealed"):
+            raise ValueError(f"family must be 'first', 'all' or 'sealed', got {family!r}")
+        if family == "sealed":
+            return tuple(self.sealed)
+        return tuple(self.truths)[:1] if family == "first" else tuple(self.truths)
 
     def applies(self, kin) -> bool:
         """Whether the truth forms exist for the plant motion ``kin``."""
@@ -204,6 +220,8 @@ class Effect:
 
 
 _T = "diagnosis.benchmark.truths:"
+_F = "diagnosis.benchmark.forms:"
+_S = "diagnosis.benchmark.sealed:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -213,21 +231,33 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                         "(seed 000)", "additive"),
            plant_entry="force", fmu=True, levels=("f_a",), inputs=("a",),
            families=("accel/decel", "|a|"), evidence=("|a|",),
-           truths={"lagged_fd": _T + "acceleration_truth"},
+           truths={"lagged_fd": _T + "acceleration_truth",
+                   "frictional_memory": _F + "frictional_memory_truth",
+                   "slip_memory": _F + "slip_memory_truth"},
+           sealed={"film_dynamics": _S + "film_dynamics_truth"},
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
            plant_entry="force", fmu=True, levels=("k_L",), inputs=("load",),
            families=("load",), evidence=("load",),
-           truths={"load_lugre": _T + "load_truth"}, generic_truth=_T + "load_generic"),
+           truths={"load_lugre": _T + "load_truth", "hertz_contact": _F + "hertz_contact_truth",
+                   "one_sided_seal": _F + "one_sided_seal_truth"},
+           sealed={"squeeze_film": _S + "squeeze_film_truth"},
+           generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
            plant_entry="twins", fmu=True, families=("direction",), evidence=("direction",),
-           truths={"twins": _T + "asymmetry_truth"}, generic_truth=_T + "asymmetry_generic"),
+           truths={"twins": _T + "asymmetry_truth",
+                   "stribeck_twins": _F + "stribeck_twins_truth",
+                   "viscous_twin": _F + "viscous_twin_truth"},
+           sealed={"direction_curve": _S + "direction_curve_truth"},
+           generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape", "Stribeck exponent / Lorentzian shape",
                          "modify_law"),
            plant_entry="law", fmu=True, families=("|v|", "pre-sliding"),
-           truths={"exponential_tail": _T + "stribeck_shape_truth"},
+           truths={"exponential_tail": _T + "stribeck_shape_truth",
+                   "rational": _F + "rational_truth", "hydrodynamic": _F + "hydrodynamic_truth"},
+           sealed={"stiction_spike": _S + "stiction_spike_truth"},
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -236,21 +266,33 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
     Effect(Position("position", "friction level varying along the stroke", "multiplicative"),
            plant_entry="force", fmu=True, levels=POSITION_NAMES, inputs=("x",),
            families=("x",), evidence=("x",),
-           truths={"local_defect": _T + "position_truth"},
+           truths={"local_defect": _T + "position_truth", "waviness": _F + "waviness_truth",
+                   "worn_section": _F + "worn_section_truth"},
+           sealed={"screw_runout": _S + "screw_runout_truth"},
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
-           truths={"filtered_acceleration": _T + "inertia_truth"},
+           truths={"filtered_acceleration": _T + "inertia_truth",
+                   "raw_acceleration": _F + "raw_acceleration_truth",
+                   "flexible_load": _F + "flexible_load_truth"},
+           sealed={"cable_chain": _S + "cable_chain_truth"},
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
            evidence=("dF/dt", "|a|"),
-           truths={"acquisition": _T + "delay_truth"}, generic_truth=_T + "delay_generic"),
+           truths={"acquisition": _T + "delay_truth",
+                   "antialias_filter": _F + "antialias_filter_truth",
+                   "moving_average": _F + "moving_average_truth"},
+           sealed={"encoder_latency": _S + "encoder_latency_truth"},
+           generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
            plant_entry="force", fmu=True, levels=("k_drift",), families=("t",),
            evidence=("t",),
-           truths={"saturating_warm_up": _T + "drift_truth"},
+           truths={"saturating_warm_up": _T + "drift_truth",
+                   "linear_wear_in": _F + "linear_wear_in_truth",
+                   "lubricant_step": _F + "lubricant_step_truth"},
+           sealed={"thermal": _S + "thermal_truth"},
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),

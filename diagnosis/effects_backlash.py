@@ -328,10 +328,12 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
         # the damping identified on the contact's motion puts a force jump sigma1 v at each
         # engagement, which a contact pushed through a compliant coupling does not show
         starts.append(dict(undone, sigma1=0.0))
+    # the law's own bound on delta (a record in radians can span more than the 1 m it takes)
+    hi = next(i.upper for i in law.Params.info() if i.name == "delta")
     best = (math.inf, None)
     for vals in starts:
         for mode in ("hold", "free"):
-            for g in gap0 * np.geomspace(0.2, 1.5, GAP_GRID):
+            for g in np.minimum(gap0 * np.geomspace(0.2, 1.5, GAP_GRID), 2.0 * hi):
                 trial = law.with_values(delta=0.5 * float(g), gap=mode, **vals)
                 s0 = trial.record_start_state(fit.t, fit.v, F=fit.F)
                 F = trial.simulate(fit.t, fit.v, state0=s0)

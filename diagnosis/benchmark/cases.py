@@ -14,9 +14,10 @@ import numpy as np
 
 from friction.dataset import Dataset
 
-from .kinematics import _PLANT_RUNS, PLANT_NAMES, plant_kinematics
+from .kinematics import (_PLANT_RUNS, FINE, PLANT_NAMES, fine_kinematics, measure_motion, noise_signal,
+                         plant_kinematics)
 from ..effects import EFFECTS, resolve
-from .truths import BASE, BENCH_CASES, BENCH_GENERIC, _base_parts  # noqa: F401
+from .truths import BASE, BENCH_CASES, BENCH_GENERIC, base_force
 
 __all__ = ["BASE", "CASES", "PLANT_NAMES", "PLANT_CASES", "EFFECT_SIZE", "make_case",
            "expected", "BenchCase", "applicable", "make_plant_case"]
@@ -85,13 +86,14 @@ def _generic_truth(effect: str):
     return fn
 
 
-def _plant_truth(effect: str):
-    """``truth(kin, s) -> F`` of the per-plant case ``effect`` (its record's first form)."""
+def _plant_truth(effect: str, form: str | None = None):
+    """``truth(kin, s) -> F`` of the per-plant case ``effect`` (its record's truth form
+    ``form``, sealed forms included; default: the first)."""
     if effect in BENCH_CASES:
         return BENCH_CASES[effect]
     if effect not in EFFECTS or not EFFECTS[effect].truths:
         raise ValueError(f"unknown benchmark effect {effect!r}; choose from {PLANT_CASES}")
-    return EFFECTS[effect].truth()
+    return EFFECTS[effect].truth(form)
 
 
 def expected(effect: str) -> str:
@@ -135,12 +137,52 @@ def applicable(plant: str, effect: str, quick: bool = False) -> bool:
     """
     if effect in BENCH_CASES or effect not in EFFECTS or EFFECTS[effect].truth_applies is None:
         return True
-    return EFFECTS[effect].applies(plant_kinematics(plant, quick))
+    # on the motion the truths are integrated along
+    return EFFECTS[effect].applies(fine_kinematics(plant_kinematics(plant, quick)))
+
+
+def _calibrate(truth, kin, Fb, target: float, tol: float = 0.05, most: int = 6):
+    """Amplitude factor ``s`` of ``truth(kin, s)`` whose deviation from the base force ``Fb``
+    has an RMS of ``target`` x std(Fb): secant steps on log(RMS) against log(s) (exact in
+    one for effects linear in ``s``). Returns ``(s, truth force)``."""
+    sdb = float(np.std(Fb)) or 1.0
+
+    def size(a):
+        F = truth(kin, a)
+        return F, float(np.sqrt(np.mean((F - Fb) ** 2))) / sdb
+    a, (F, r) = 1.0, size(1.0)
+    prev = None
+    best = (abs(np.log(r / target)) if r > 0 else np.inf, a, F)
+    for _ in range(most):
+        if not (r > 0 and np.isfinite(r)) or abs(r / target - 1.0) <= tol:
+            break
+        slope = 1.0
+        if prev is not None and prev[1] > 0 and prev[1] != r and prev[0] != a:
+            slope = float(np.log(r / prev[1]) / np.log(a / prev[0]))
+            if slope < 0.3:
+                # the size hardly follows the amplitude (a truth that differs from the base
+                # in more than its effect, e.g. a presliding model's sliding regime): keep
+                # the closest so far rather than drive the amplitude to nothing
+                return best[1], best[2]
+            slope = min(slope, 5.0)
+        prev = (a, r)
+        # at most a factor 4 per step: a stiff truth (a tiny presliding distance) integrates
+        # ever more slowly
+        a = a * float(np.clip((target / r) ** (1.0 / slope), 0.25, 4.0))
+        F, r = size(a)
+        if r > 0 and abs(np.log(r / target)) < best[0]:
+            best = (abs(np.log(r / target)), a, F)
+    return best[1], best[2]
 
 
 def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float = 0.02,
-                    seed: int = 0, quick: bool = False) -> BenchCase:
+                    seed: int = 0, quick: bool = False, form: str | None = None,
+                    measured: dict | None = None) -> BenchCase:
     """A per-plant case: the plant's kinematics, a truth force carrying ``effect``, noise.
+
+    The truth is integrated along the plant's continuous motion on a grid
+    :data:`.kinematics.FINE` x finer than the data and sampled at the data's instants, as
+    is the base force its effect size is measured against.
 
     Parameters
     ----------
@@ -153,37 +195,49 @@ def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float
         RMS of ``strength x EFFECT_SIZE`` x std(F_base) (the ``delay`` lag is capped at
         ``MAX_DELAY_SAMPLES``, the ``load`` slope at 0.96 of proportionality).
     noise : float
-        White measurement noise, as a fraction of std(F) [-].
+        Measurement noise RMS, as a fraction of std(F) [-].
     seed : int
         Noise seed.
     quick : bool
         Use the short protocol of :func:`plant_kinematics`.
+    form : str, optional
+        The effect record's truth form (its ``truths`` or ``sealed``; default: the first).
+    measured : dict, optional
+        Motion channels as a user records them (:func:`.kinematics.measure_motion`):
+        ``counts`` (encoder counts per sample at the top speed [-]) and ``velocity`` (how it
+        is differentiated), and the noise's ``colour`` (``"white"``/``"coloured"``);
+        default: the exact sampled motion and white noise.
+
+    Returns
+    -------
+    BenchCase
     """
     if plant in _PLANT_RUNS and effect in PLANT_CASES and not applicable(plant, effect, quick):
         raise ValueError(f"{effect!r} does not apply to {plant!r} "
                          f"({EFFECTS[effect].truth_applies} is false for its motion)")
     kin = plant_kinematics(plant, quick)
-    truth = _plant_truth(effect)
-    Fb = _base_parts(kin)[0]
+    truth = _plant_truth(effect, form)
+    Fb = base_force(kin)
     sdb = float(np.std(Fb)) or 1.0
     amp = 0.0
     if effect == "clean":
         F0 = Fb
     else:
-        # calibrate the amplitude factor so the effect's RMS is strength x EFFECT_SIZE of
-        # std(F_base) on every plant (one rescaling: exact for effects linear in it)
-        F1 = truth(kin, 1.0)
-        r1 = float(np.sqrt(np.mean((F1 - Fb) ** 2))) / sdb
-        amp = strength * EFFECT_SIZE / r1 if r1 > 0 else strength
-        F0 = truth(kin, amp)
-        r2 = float(np.sqrt(np.mean((F0 - Fb) ** 2))) / sdb
-        if r2 > 0 and abs(r2 / (strength * EFFECT_SIZE) - 1.0) > 0.05:  # nonlinear in amp
-            amp *= strength * EFFECT_SIZE / r2
-            F0 = truth(kin, amp)
+        amp, F0 = _calibrate(truth, kin, Fb, strength * EFFECT_SIZE)
     sd = float(np.std(F0)) or 1.0
     rng = np.random.default_rng(seed)
-    F = F0 + noise * sd * rng.standard_normal(F0.size)
-    data = Dataset.from_arrays(kin.t, F, x=kin.x, v=kin.v, a=kin.a, load=kin.load,
-                               name=f"{plant}-{effect}-s{strength}-n{noise}", check_units=False)
+    m = dict(measured or {})
+    e = noise_signal(F0.size, m.pop("colour", "white"), rng)
+    F = F0 + noise * sd * e
+    if m:
+        x, v, a = measure_motion(kin, **m)
+    else:  # the exact motion: the position the truths were integrated along
+        x, v, a = fine_kinematics(kin).x[::FINE], kin.v, kin.a
+    tag = "" if form is None else f"-{form}"
+    tag += "".join(f"-{val}" for val in m.values())
+    data = Dataset.from_arrays(kin.t, F, x=x, v=v, a=a, load=kin.load,
+                               name=f"{plant}-{effect}{tag}-s{strength}-n{noise}",
+                               check_units=False)
     return BenchCase(plant, effect, strength, noise, data, F0, kin.base, expected(effect),
-                     float(np.sqrt(np.mean((F0 - Fb) ** 2)) / sdb), {"amplitude": amp})
+                     float(np.sqrt(np.mean((F0 - Fb) ** 2)) / sdb),
+                     {"amplitude": amp, "form": form, "measured": dict(measured or {})})

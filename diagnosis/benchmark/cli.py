@@ -61,13 +61,26 @@ def format_summary(res, title: str = "withheld-effect benchmark") -> str:
                 rs = [r for r in res["rows"] if r["plant"] == p and r["effect"] == eff]
                 cells.append(f"{sum(r['correct'] for r in rs)}/{len(rs)}" if rs else "n/a")
             out.append(f"{eff:15s} " + " ".join(f"{c:>13s}" for c in cells))
+    if res.get("per_form"):
+        out.append(f"\n{'effect/truth form':36s} {'top-1':>9s} {'detectable':>10s} "
+                   f"{'|shrink err|':>12s}  named instead")
+        for key, e in res["per_form"].items():
+            named = ", ".join(f"{k} x{v}" for k, v in sorted(e["named"].items(),
+                                                             key=lambda kv: -kv[1]))
+            out.append(f"{key:36s} {e['correct']:4d}/{e['cases']:<4d} "
+                       f"{e['correct_detectable']:4d}/{e['detectable']:<5d} "
+                       f"{_num(e['shrink_abs_error_mean']):>12s}  {named}")
+    for r in res.get("skipped", []):
+        out.append(f"skipped: {r['plant']} {r['effect']}/{r['form']} s={r['strength']}: "
+                   f"{r['skipped']}")
     wrong = [r for r in res["rows"] if not r["correct"]]
     if wrong:
         out.append("\nmisses (plant, effect, strength, noise -> verdict; truth shrink; "
                    "candidate ranking):")
         for r in wrong:
             und = "(undetectable)" if r["detectable"] is False else ""
-            out.append(f"  {r['plant']:13s} {r['effect']:14s} s={r['strength']:<4g} "
+            out.append(f"  {r['plant']:13s} {r['effect']:14s} {r.get('form', '')[:18]:18s} "
+                       f"{r.get('measured', '')[:14]:14s} s={r['strength']:<4g} "
                        f"noise={r['noise']:<5g} -> {r['verdict']:13s} truth shrink "
                        f"{r['truth_shrink']:5.2f} {und}"
                        f" ranking {r['ranking']}")

@@ -11,7 +11,8 @@ from scipy.interpolate import PchipInterpolator
 from friction import make_model
 
 __all__ = ["PlantKinematics", "plant_kinematics", "PRESS_SCHEDULE", "PLANT_NAMES", "FINE",
-           "fine_motion"]
+           "fine_motion", "fine_kinematics", "measure_motion", "VELOCITY_METHODS",
+           "differentiate", "noise_signal", "COLOUR_SAMPLES"]
 
 #: the truth's integration grid, in steps per data sample
 FINE = 10
@@ -39,6 +40,9 @@ class PlantKinematics:
         What was run.
     seconds : float
         Wall time of the plant simulation [s].
+    step : int
+        Grid steps per data sample: 1 for the sampled motion, :data:`FINE` for the
+        continuous motion the truths are integrated along (:func:`fine_kinematics`).
     """
     plant: str
     t: np.ndarray
@@ -50,10 +54,17 @@ class PlantKinematics:
     seed_law: object
     protocol: str
     seconds: float = 0.0
+    step: int = 1
 
     @property
     def dt(self) -> float:
+        """Step of this grid [s]."""
         return float(self.t[1] - self.t[0])
+
+    @property
+    def sample_dt(self) -> float:
+        """Sample interval of the data [s] (what "a sample" means to a truth on any grid)."""
+        return self.dt * self.step
 
     @property
     def scales(self) -> dict:
@@ -225,3 +236,123 @@ def fine_motion(kin):
     a_f = vi.derivative()(t_f)
     x_f = kin.x[0] + vi.antiderivative()(t_f) - vi.antiderivative()(t[0])
     return t_f, x_f, v_f, a_f
+
+
+_FINE_CACHE: dict = {}
+
+
+def fine_kinematics(kin: PlantKinematics) -> PlantKinematics:
+    """The plant's motion on the truths' grid: :func:`fine_motion` of ``kin`` (load linear
+    between samples), ``step`` = :data:`FINE`; ``[::FINE]`` of its arrays are the samples.
+    Cached per plant record.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The sampled motion (``step`` 1).
+
+    Returns
+    -------
+    PlantKinematics
+    """
+    if kin.step != 1:
+        return kin
+    key = (kin.plant, kin.t.size, float(kin.t[-1]))
+    if key not in _FINE_CACHE:
+        t_f, x_f, v_f, a_f = fine_motion(kin)
+        _FINE_CACHE[key] = PlantKinematics(kin.plant, t_f, x_f, v_f, a_f,
+                                           np.interp(t_f, kin.t, kin.load), kin.base,
+                                           kin.seed_law, kin.protocol, kin.seconds, FINE)
+    return _FINE_CACHE[key]
+
+
+#: how a user gets the velocity from encoder counts (:func:`measure_motion`)
+VELOCITY_METHODS = ("backward", "gradient", "lowpass")
+
+
+def differentiate(x, dt: float, how: str) -> np.ndarray:
+    """Velocity [m/s] from sampled positions ``x`` [m] as a user computes it.
+
+    Parameters
+    ----------
+    x : ndarray
+        Positions at the sample instants [m].
+    dt : float
+        Sample interval [s].
+    how : str
+        ``"backward"`` (backward differences: half a sample late), ``"gradient"``
+        (``np.gradient``, central) or ``"lowpass"`` (``np.gradient`` then a zero-phase
+        second-order Butterworth low-pass at a fifth of the Nyquist frequency).
+    """
+    from scipy.signal import butter, filtfilt
+    if how == "backward":
+        v = np.empty_like(x)
+        v[1:] = np.diff(x) / dt
+        v[0] = v[1]
+        return v
+    v = np.gradient(x, dt)
+    if how == "gradient":
+        return v
+    if how == "lowpass":
+        b, a = butter(2, 0.2)
+        return filtfilt(b, a, v)
+    raise ValueError(f"velocity must be one of {VELOCITY_METHODS}, got {how!r}")
+
+
+def measure_motion(kin: PlantKinematics, counts: float = 200.0, velocity: str = "gradient"):
+    """The motion channels a user records: the continuous position at the sample instants
+    rounded to an encoder count of ``v99 dt / counts``, the velocity differentiated from the
+    counts (:func:`differentiate`), the acceleration ``np.gradient`` of that velocity.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The sampled motion (its continuous motion is :func:`fine_motion`).
+    counts : float
+        Encoder counts per sample at the record's top speed (99th percentile of |v|) [-].
+    velocity : str
+        One of :data:`VELOCITY_METHODS`.
+
+    Returns
+    -------
+    (x, v, a)
+        Position [m], velocity [m/s], acceleration [m/s^2] at the samples.
+    """
+    if not counts > 0:
+        raise ValueError(f"counts = {counts!r} is out of bounds: must be > 0 [-]")
+    fk = fine_kinematics(kin)
+    x_true = fk.x[::fk.step]
+    dt = kin.sample_dt
+    v99 = float(np.percentile(np.abs(kin.v), 99)) or 1e-3
+    q = v99 * dt / float(counts)
+    x = np.round((x_true - x_true[0]) / q) * q + x_true[0]
+    v = differentiate(x, dt, velocity)
+    return x, v, np.gradient(v, dt)
+
+
+#: time constant of the coloured noise's first-order low-pass [samples]
+COLOUR_SAMPLES = 3.0
+
+
+def noise_signal(n: int, colour: str, rng) -> np.ndarray:
+    """Unit-RMS measurement noise of ``n`` samples: white, or white through a first-order
+    low-pass of :data:`COLOUR_SAMPLES` samples (``"coloured"``), rescaled.
+
+    Parameters
+    ----------
+    n : int
+        Samples.
+    colour : str
+        ``"white"`` or ``"coloured"``.
+    rng : numpy.random.Generator
+        Source of the noise.
+    """
+    from scipy.signal import lfilter
+    e = rng.standard_normal(n)
+    if colour == "coloured":
+        k = np.exp(-1.0 / COLOUR_SAMPLES)
+        e = lfilter([1.0 - k], [1.0, -k], e)
+        return e / np.std(e)
+    if colour != "white":
+        raise ValueError(f"colour must be 'white' or 'coloured', got {colour!r}")
+    return e

@@ -6,7 +6,8 @@ import time
 from friction.progress import status_lines
 
 from ..core import BaseFitError, diagnose
-from .cases import CASES, applicable, expected, make_case, make_plant_case
+from ..effects import EFFECTS
+from .cases import CASES, EFFECT_SIZE, applicable, expected, make_case, make_plant_case
 from .kinematics import _KIN_CACHE, PLANT_NAMES, _init_worker, plant_kinematics
 from .scoring import _base_failed_row, _score, summarise
 
@@ -16,8 +17,20 @@ __all__ = ["run_benchmark", "load_checkpoint"]
 _BASE_SECONDS: dict = {}
 
 
+#: motion channels of the generalisation grid (``measured=True``), taken in turn: encoder
+#: counts per sample at the top speed and how the velocity is differentiated
+MEASURED = ({"counts": 200.0, "velocity": "gradient"}, {"counts": 1000.0, "velocity": "backward"},
+            {"counts": 50.0, "velocity": "lowpass"}, {"counts": 1000.0, "velocity": "gradient"},
+            {"counts": 200.0, "velocity": "backward"}, {"counts": 50.0, "velocity": "gradient"})
+
+
+#: smallest share of the requested effect size a truth form must reach on a plant's motion
+#: to make a case
+MIN_SIZE = 0.7
+
+
 def _run_one(job):
-    plant, eff, s, nz, seed, quick, dseed = job
+    plant, eff, s, nz, seed, quick, dseed, form, meas = job
     key = (plant, quick)
     if key not in _BASE_SECONDS:
         # the time baseline, measured where and while the cases run (same load, same process)
@@ -26,10 +39,20 @@ def _run_one(job):
         data, truth = make_case(eff, s, nz, seed=seed, return_truth=True)
         model, erms = "lugre", None
     else:
-        case = make_plant_case(plant, eff, s, nz, seed=seed, quick=quick)
+        case = make_plant_case(plant, eff, s, nz, seed=seed, quick=quick, form=form,
+                               measured=None if meas is None else MEASURED[meas])
         data, truth, model, erms = case.data, case.truth, case.base, case.effect_rms
+        if eff != "clean" and erms < MIN_SIZE * s * EFFECT_SIZE:
+            # the truth form cannot make the requested size on this motion (a stiction
+            # peak the motion never dwells in): no case, said so
+            return {"plant": plant, "effect": eff, "strength": s, "noise": nz,
+                    "form": form or "", "effect_rms": erms, "_job": job,
+                    "skipped": f"the truth reaches {erms / (s * EFFECT_SIZE):.2f} of the "
+                               f"requested size on this motion"}
     t0 = time.perf_counter()
     row = {"plant": plant or "generic", "effect": eff, "strength": s, "noise": nz,
+           "form": form or "", "measured": "" if meas is None else
+           "{velocity}/{counts:g}".format(**MEASURED[meas]),
            "samples": len(data), "effect_rms": erms, "base_id_seconds": _BASE_SECONDS[key],
            "_job": job}
     try:
@@ -42,6 +65,13 @@ def _run_one(job):
     dt = time.perf_counter() - t0
     row.update(_score(eff, expected(eff), rep, data, truth, dt))
     return row
+
+
+def _forms(eff, family, plant):
+    """Truth forms of ``eff`` a run of ``family`` covers (``None``: the default form)."""
+    if plant is None or family == "first" or eff not in EFFECTS:
+        return [] if family == "sealed" else [None]
+    return list(EFFECTS[eff].forms(family))
 
 
 def _base_identification_seconds(plant, quick, seed):
@@ -62,8 +92,10 @@ def _base_identification_seconds(plant, quick, seed):
 
 
 def _job_key(job) -> str:
-    plant, eff, s, nz, seed, quick, dseed = job
-    return f"{plant}|{eff}|{s!r}|{nz!r}|{seed}|{int(bool(quick))}|{dseed}"
+    plant, eff, s, nz, seed, quick, dseed, form, meas = job
+    key = f"{plant}|{eff}|{s!r}|{nz!r}|{seed}|{int(bool(quick))}|{dseed}"
+    # the default grid keeps its historical keys (checkpoints stay readable)
+    return key if form is None and meas is None else f"{key}|{form}|{meas}"
 
 
 def load_checkpoint(path, keys) -> dict:
@@ -100,7 +132,8 @@ def load_checkpoint(path, keys) -> dict:
 
 def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed=0,
                   progress=None, plants=None, quick: bool = False, workers: int = 1,
-                  clean_repeats: int = 1, checkpoint=None) -> dict:
+                  clean_repeats: int = 1, checkpoint=None, forms: str = "first",
+                  measured: bool = False) -> dict:
     """Run every case and score it.
 
     Parameters
@@ -127,11 +160,19 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
         File the scored rows are appended to as they finish (JSON lines); a run started
         again with the same file and grid skips the cases already in it (resume after an
         interruption).
+    forms : {"first", "all", "sealed"}
+        Per-plant truth forms of each effect (:meth:`diagnosis.effects.Effect.forms`): its
+        default form, every open form (the generalisation grid), or the sealed family only
+        (no ``clean``/``outside`` cases then).
+    measured : bool
+        Per-plant cases with the motion channels a user records (positions quantised and
+        differentiated, :data:`MEASURED` in turn) instead of the exact sampled motion.
 
     Returns
     -------
     dict
-        ``rows`` (one per case), ``top1_accuracy``, ``clean_false_attributions``,
+        ``rows`` (one per case), ``skipped`` (truth forms that cannot make the requested
+        size on a plant's motion, :data:`MIN_SIZE`, with the reason), ``top1_accuracy``, ``clean_false_attributions``,
         ``outside_named_wrongly``, and (see :func:`summarise`) ``overall``, ``per_plant``
         and ``per_effect`` figures: localisation accuracy, shrink error, seconds per case
         and, as the time baseline, one base identification of the plant's clean case timed
@@ -149,17 +190,23 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
             if plant is not None and not applicable(plant, eff, quick):
                 continue
             reps = clean_repeats if eff == "clean" else 1
-            for s in strengths:
-                for nz in noises:
-                    for r in range(reps):
-                        jobs.append((plant, eff, s, nz, seed + len(jobs) + 1, quick, seed))
+            for form in _forms(eff, forms, plant):
+                for s in strengths:
+                    for nz in noises:
+                        for r in range(reps):
+                            meas = (len(jobs) % len(MEASURED)
+                                    if measured and plant is not None else None)
+                            jobs.append((plant, eff, s, nz, seed + len(jobs) + 1, quick, seed,
+                                         form, meas))
     say = status_lines(progress)
-    rows = []
+    rows, skipped = [], []
     keys = [_job_key(j) for j in jobs]
     resumed = load_checkpoint(checkpoint, set(keys))
     if resumed:
         say(f"[benchmark] resuming: {len(resumed)} of {len(jobs)} cases read from {checkpoint}")
-        rows.extend(resumed[k] for k in keys if k in resumed)
+        for k in keys:
+            if k in resumed:
+                (skipped if resumed[k].get("skipped") else rows).append(resumed[k])
     todo = [j for j, k in zip(jobs, keys) if k not in resumed]
     if checkpoint is not None and resumed:
         with open(checkpoint, "rb+") as fh:  # a line cut by the interruption: end it
@@ -170,7 +217,6 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
                     fh.write(b"\n")
 
     def done(row, k):
-        rows.append(row)
         if checkpoint is not None:
             import json
             row["key"] = _job_key(row.pop("_job"))
@@ -179,6 +225,12 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
         else:
             row.pop("_job", None)
         k += len(resumed)
+        if row.get("skipped"):
+            skipped.append(row)
+            say(f"[benchmark {k}/{len(jobs)}] {row['plant']} {row['effect']} {row['form']} "
+                f"s={row['strength']}: skipped, {row['skipped']}")
+            return
+        rows.append(row)
         lc = row["loc_correct"]
         lc = "-" if lc is None else "ok" if lc else "miss"
         say(f"[benchmark {k}/{len(jobs)}] {row['plant']} {row['effect']} s={row['strength']} "
@@ -201,4 +253,6 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
     if checkpoint is not None:  # the grid's order, resumed or not
         order = {k: i for i, k in enumerate(keys)}
         rows.sort(key=lambda r: order[r["key"]])
-    return summarise(rows)
+    out = summarise(rows)
+    out["skipped"] = skipped
+    return out

@@ -245,4 +245,30 @@ def summarise(rows) -> dict:
     return {"rows": rows, "top1_accuracy": overall["top1_accuracy"],
             "clean_false_attributions": overall["clean_false_attributions"],
             "outside_named_wrongly": overall["outside_named_wrongly"],
-            "overall": overall, "per_plant": per_plant, "per_effect": per_effect}
+            "overall": overall, "per_plant": per_plant, "per_effect": per_effect,
+            "per_form": _per_form(rows)}
+
+
+def _per_form(rows) -> dict:
+    """``effect/form`` -> cases, correct, correct among the detectable, mean |shrink error|
+    and the wrong verdicts given (rows of the generalisation grid, which carry a form)."""
+    out = {}
+    for r in rows:
+        if not r.get("form"):
+            continue
+        e = out.setdefault(f"{r['effect']}/{r['form']}",
+                           {"cases": 0, "correct": 0, "detectable": 0,
+                            "correct_detectable": 0, "shrink_errors": [], "named": {}})
+        e["cases"] += 1
+        e["correct"] += bool(r["correct"])
+        if r["detectable"] is not False:
+            e["detectable"] += 1
+            e["correct_detectable"] += bool(r["correct"])
+        if np.isfinite(r["shrink_error"]):
+            e["shrink_errors"].append(abs(float(r["shrink_error"])))
+        if not r["correct"]:
+            e["named"][r["verdict"]] = e["named"].get(r["verdict"], 0) + 1
+    for e in out.values():
+        errs = e.pop("shrink_errors")
+        e["shrink_abs_error_mean"] = float(np.mean(errs)) if errs else None
+    return out

@@ -12,16 +12,18 @@ the candidate that should name it (:mod:`diagnosis.candidates`); see the table i
 """
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from numba import njit
 
 from friction import make_model
 from friction.lugre import bristle_update
 
-from .kinematics import FINE, PlantKinematics, fine_motion
+from .kinematics import PlantKinematics, fine_kinematics
 
 __all__ = ["BASE", "MAX_DELAY_SAMPLES", "STRIBECK_TAIL", "FIT_FRACTION", "BENCH_CASES",
-           "BENCH_GENERIC"]
+           "BENCH_GENERIC", "on_fine_grid", "lugre_with_curve", "level_inside", "base_force"]
 
 BASE = dict(sigma0=2e4, sigma1=150.0, sigma2=8.0, Fc=2.0, Fs=2.8, vs=5e-3)
 #: longest force-channel delay of the ``delay`` truth [samples] (the candidate reaches 25)
@@ -106,21 +108,36 @@ BENCH_GENERIC = {"clean": clean_generic, "outside": outside_generic}
 
 
 # -- per-plant cases: along a plant's simulated motion ----------------------------------------
+def on_fine_grid(fn):
+    """A per-plant truth ``fn(kin, s) -> F`` computed along the plant's continuous motion on
+    the grid :data:`.kinematics.FINE` x finer than the data (:func:`.kinematics.
+    fine_kinematics`: ``kin.dt`` is the fine step there, ``kin.sample_dt`` the data's) and
+    returned at the data's sample instants."""
+    @functools.wraps(fn)
+    def truth(kin: PlantKinematics, s: float) -> np.ndarray:
+        fk = fine_kinematics(kin)
+        return np.asarray(fn(fk, s), float)[::fk.step]
+    truth.fine_grid = True
+    return truth
+
+
 def _setting(kin: PlantKinematics):
     # what most truths start from: base force, its friction part, friction level, scales
     F, Ff = _base_parts(kin)
     return F, Ff, _level(kin), kin.scales
 
 
+@on_fine_grid
 def clean_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """The base law itself (expected verdict ``none``)."""
     return _base_parts(kin)[0]
 
 
+@on_fine_grid
 def outside_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """An electrical ripple at 0.0537 x the sample rate, unrelated to the motion."""
     F, _, Fk, _ = _setting(kin)
-    fr = 0.0537 / kin.dt
+    fr = 0.0537 / kin.sample_dt
     return F + 0.25 * s * Fk * np.sin(2 * np.pi * fr * kin.t + 0.3)
 
 
@@ -128,10 +145,11 @@ def outside_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 BENCH_CASES = {"clean": clean_truth, "outside": outside_truth}
 
 
+@on_fine_grid
 def acceleration_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """Modified LuGre (seed 000) with a lagged F_d; isolator: a first-order-lagged
     a/sqrt(a^2+a_s^2) fading as 1/(1+(v/v_c)^2)."""
-    t, v, a, law, dt = kin.t, kin.v, kin.a, kin.base, kin.dt
+    t, v, a, law, dt = kin.t, kin.v, kin.a, kin.base, kin.sample_dt
     F, _, Fk, sc = _setting(kin)
     if law.name != "mre_lugre":
         p = law.params
@@ -146,6 +164,7 @@ def acceleration_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     return F + 0.5 * s * Fk * _lag(t, u, 3 * dt)
 
 
+@on_fine_grid
 def load_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """Seed-004 levels affine in the load inside the bristle dynamics (``load_lugre``; the
     press: the seed's own Table 3 coefficients x ``s``)."""
@@ -172,6 +191,7 @@ def load_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     return F + Ff * 0.6 * s * rel
 
 
+@on_fine_grid
 def asymmetry_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """Direction twins Fc_neg, Fs_neg, sigma2_neg (isolator: hysteretic part scaled on
     v < 0)."""
@@ -190,20 +210,17 @@ def has_stribeck_curve(kin: PlantKinematics) -> bool:
     return kin.base.name != "mre_lugre"
 
 
+@on_fine_grid
 def stribeck_shape_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """LuGre whose Stribeck curve has an extra exponential low-speed tail (neither
-    Gaussian-alpha nor Lorentzian), integrated :data:`.kinematics.FINE` x finer than the
-    data."""
+    Gaussian-alpha nor Lorentzian)."""
     law = kin.base
     if not has_stribeck_curve(kin):
         raise ValueError("stribeck_shape: the mre_lugre base has no Stribeck curve")
     p = law.params
     tail = 0.4 * s * p.Fc
     vt = STRIBECK_TAIL * kin.scales["v99"]
-
-    def g(vv):
-        return law.g(vv) + tail * np.exp(-np.abs(vv) / vt)
-    return _lugre_curve(kin, g, p.sigma0, p.sigma1, p.sigma2)
+    return lugre_with_curve(kin, lambda vv: law.g(vv) + tail * np.exp(-np.abs(vv) / vt))
 
 
 def revisits_positions(kin: PlantKinematics) -> bool:
@@ -212,6 +229,7 @@ def revisits_positions(kin: PlantKinematics) -> bool:
     return _bump_centre(kin) is not None
 
 
+@on_fine_grid
 def position_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """A local defect: friction raised by a Gaussian bump along the stroke, centred where
     fit and held-out parts both pass."""
@@ -225,29 +243,34 @@ def position_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     return F + Ff * 0.6 * s * bump
 
 
+@on_fine_grid
 def inertia_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """A mass error times the *filtered* acceleration of the inverse dynamics."""
     from scipy.signal import butter, filtfilt
     F, _, Fk, sc = _setting(kin)
     fs = 1.0 / kin.dt
-    b, aa = butter(2, min(0.2 * fs, 100.0 * max(1.0, fs / 1000.0)) / (0.5 * fs))
+    fs_data = 1.0 / kin.sample_dt
+    cut = min(0.2 * fs_data, 100.0 * max(1.0, fs_data / 1000.0))
+    b, aa = butter(2, cut / (0.5 * fs))
     af = filtfilt(b, aa, kin.a)
     dm = 0.3 * s * Fk / sc["a99"]
     return F + dm * af
 
 
+@on_fine_grid
 def delay_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """An acquisition pipeline: transport delay of the force channel (cubic-spline
     fractional shift of ``s`` samples, at most :data:`MAX_DELAY_SAMPLES`) followed by a
     half-sample first-order anti-alias lag."""
     from scipy.interpolate import CubicSpline
-    t, dt = kin.t, kin.dt
+    t, dt = kin.t, kin.sample_dt
     F = _base_parts(kin)[0]
     d = min(s, MAX_DELAY_SAMPLES) * dt
     Fd = CubicSpline(t, F)(np.clip(t - d, t[0], None))
     return _lag(t, Fd, 0.5 * dt)
 
 
+@on_fine_grid
 def drift_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """A saturating warm-up of the friction level (time constant: the record)."""
     F, Ff = _base_parts(kin)
@@ -257,30 +280,60 @@ def drift_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
 
 @njit(cache=True)
-def _lugre_curve_run(t, v, g, g_mid, s0, s1, s2):
+def _lugre_run(t, v, g, g_mid, s0, s1, visc):
     """LuGre force [N] along (t, v) with its Stribeck curve given as values, ``g`` [N] at
-    the samples and ``g_mid`` [N] at the step midpoints; the bristle advances by the friction
-    package's exact step (:func:`friction.lugre.bristle_update`, every LuGre kernel's)."""
+    the grid points and ``g_mid`` [N] at the step midpoints, and its viscous force ``visc``
+    [N] given at the grid points (levels may vary along the grid inside the bristle
+    dynamics); the bristle advances by the friction package's exact step
+    (:func:`friction.lugre.bristle_update`, every LuGre kernel's)."""
     n = t.size
     F = np.empty(n)
     z = 0.0
     for k in range(n):
         zd = v[k] - s0 * abs(v[k]) * z / g[k]
-        F[k] = s0 * z + s1 * zd + s2 * v[k]
+        F[k] = s0 * z + s1 * zd + visc[k]
         if k + 1 < n:
             vm = 0.5 * (v[k] + v[k + 1])
             z = bristle_update(z, vm, s0 * abs(vm) / g_mid[k], t[k + 1] - t[k], 0)
     return F
 
 
-def _lugre_curve(kin: PlantKinematics, g, s0, s1, s2) -> np.ndarray:
-    """LuGre force [N] at the samples of ``kin`` with the Stribeck curve ``g(v)`` [N],
-    integrated along the continuous motion on the grid :data:`.kinematics.FINE` x finer
-    than the data (:func:`.kinematics.fine_motion`, the benchmark's one definition of the
-    motion between samples)."""
-    t_f, _, v_f, _ = fine_motion(kin)
-    F_f = _lugre_curve_run(t_f, v_f, g(v_f), g(0.5 * (v_f[1:] + v_f[:-1])), s0, s1, s2)
-    return F_f[::FINE]
+def lugre_with_curve(kin: PlantKinematics, g, level=None, visc_level=None) -> np.ndarray:
+    """The LuGre base of ``kin`` along its grid with the Stribeck curve ``g(v)`` [N] and
+    relative levels ``level`` [-] of that curve and ``visc_level`` [-] of the viscous term
+    (arrays on the grid, default 1) acting *inside* the bristle dynamics.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion (a LuGre base: ``sigma0``, ``sigma1``, ``sigma2``).
+    g : callable
+        Stribeck curve ``g(v)`` [N] of velocity [m/s] (``kin.base.g`` for the base's own).
+    level, visc_level : ndarray, optional
+        Relative level of the curve and of the viscous term at the grid points [-].
+
+    Returns
+    -------
+    ndarray
+        Force [N] at the grid points.
+    """
+    p = kin.base.params
+    v = kin.v
+    lev = np.ones_like(v) if level is None else np.asarray(level, float)
+    vl = lev if visc_level is None else np.asarray(visc_level, float)
+    vm = 0.5 * (v[1:] + v[:-1])
+    return _lugre_run(kin.t, v, lev * g(v), 0.5 * (lev[1:] + lev[:-1]) * g(vm),
+                      float(p.sigma0), float(p.sigma1), float(p.sigma2) * vl * v)
+
+
+def level_inside(kin: PlantKinematics, level, visc_level=None) -> np.ndarray:
+    """The base law with its friction levels scaled by ``level`` [-] (arrays on ``kin``'s
+    grid): inside the bristle dynamics for a LuGre base (:func:`lugre_with_curve`), on the
+    friction part of the force for the isolator's mre_lugre (no Stribeck curve)."""
+    if kin.base.name == "mre_lugre":
+        F, Ff = _base_parts(kin)
+        return F + Ff * (np.asarray(level, float) - 1.0)
+    return lugre_with_curve(kin, kin.base.g, level, visc_level)
 
 
 def _lag(t, u, tau):
@@ -310,7 +363,8 @@ def _bump_centre(kin: PlantKinematics, min_overlap: float = 0.2):
 
 
 def _base_parts(kin: PlantKinematics):
-    """(F_base, F_friction_part): the force of the base law and the part effects act on."""
+    """(F_base, F_friction_part): the force of the base law along ``kin``'s grid and the part
+    effects act on."""
     law, t, v, x = kin.base, kin.t, kin.v, kin.x
     if law.name == "mre_lugre":
         p = law.params
@@ -318,6 +372,13 @@ def _base_parts(kin: PlantKinematics):
         return F, F - p.k0 * x - p.f0  # the spring and offset carry no friction
     F = law.simulate(t, v)
     return F, F
+
+
+def base_force(kin: PlantKinematics) -> np.ndarray:
+    """The base law's force [N] at the data's samples, integrated along the continuous
+    motion on the truths' grid (what a case without effect measures, noise-free)."""
+    fk = fine_kinematics(kin)
+    return _base_parts(fk)[0][::fk.step]
 
 
 def _level(kin: PlantKinematics) -> float:

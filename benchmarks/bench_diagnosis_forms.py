@@ -1,0 +1,70 @@
+"""Generalisation benchmark of the diagnosis: every truth form of every effect, on every plant,
+with the motion channels a user records.
+
+Each effect has at least three truth forms from different physics (its record's ``truths``,
+:mod:`diagnosis.benchmark.truths` and :mod:`diagnosis.benchmark.forms`; backlash and GMS in
+their own modules), integrated on a grid ten times finer than sampled; positions are
+quantised to an encoder count and differentiated as a user would (gradient, backward
+differences or a low-passed gradient; 50-1000 counts per sample at the top speed, taken in
+turn, :data:`diagnosis.benchmark.runner.MEASURED`). The **sealed** family
+(:mod:`diagnosis.benchmark.sealed`, one more form per effect) is written once and run only
+with ``--sealed``, at the end of a piece of work, and reported separately.
+
+    python benchmarks/bench_diagnosis_forms.py [--sealed] [--workers N] [--quick]
+                                               [--checkpoint FILE] [--json OUT]
+
+Figures: top-1 over all cases and over the detectable ones (an oracle that knows the truth
+can tell it from the base fit), clean and out-of-library cases, the mean |shrink error|
+(reported gap closed against the truth's), per plant, per effect and per truth form; seconds
+per case against one base identification of the plant timed in the same worker.
+"""
+import os
+
+# one BLAS thread: a diagnosis's matrices are a few columns wide (see bench_diagnosis.py)
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import argparse  # noqa: E402
+import json  # noqa: E402
+import time  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+from diagnosis.benchmark import PLANT_NAMES, format_summary, run_benchmark  # noqa: E402
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--sealed", action="store_true",
+                    help="the sealed family only (run once, at the end of a piece of work)")
+    ap.add_argument("--workers", type=int, default=2)
+    ap.add_argument("--quick", action="store_true",
+                    help="one strength and noise level, short plant protocols")
+    ap.add_argument("--plants", default=",".join(PLANT_NAMES))
+    ap.add_argument("--effects", default=None, help="comma-separated effects (default: all)")
+    ap.add_argument("--checkpoint", default=None,
+                    help="JSON-lines file of finished cases; run again with it to resume")
+    ap.add_argument("--json", default=None)
+    args = ap.parse_args(argv)
+    strengths = (1.0,) if args.quick else (0.5, 1.0)
+    noises = (0.02,) if args.quick else (0.01, 0.03)
+    kw = {} if args.effects is None else {"effects": tuple(args.effects.split(","))}
+    family = "sealed" if args.sealed else "all"
+    t0 = time.perf_counter()
+    res = run_benchmark(strengths=strengths, noises=noises, plants=args.plants.split(","),
+                        quick=args.quick, workers=args.workers, forms=family, measured=True,
+                        progress=lambda n, info: print(info, flush=True),
+                        checkpoint=args.checkpoint, **kw)
+    wall = time.perf_counter() - t0
+    print(format_summary(res, f"{family} truth forms, measured motion: strengths {strengths}, "
+                              f"noise {noises} x std(F), {len(res['rows'])} cases, "
+                              f"{len(res['skipped'])} skipped, {wall:.0f} s wall on "
+                              f"{args.workers} worker(s)"))
+    if args.json:
+        with open(args.json, "w") as fh:
+            json.dump({k: res[k] for k in ("overall", "per_plant", "per_effect", "per_form",
+                                           "rows", "skipped")}, fh, indent=1,
+                      default=lambda o: o.item() if isinstance(o, np.generic) else str(o))
+
+
+if __name__ == "__main__":
+    main()

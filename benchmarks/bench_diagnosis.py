@@ -74,21 +74,24 @@ before the acceleration part lagged as a whole (seed 000's "lag" form; the lag a
 acceleration only) acceleration was 0.129; overall 0.082 with both.
 
 Full diagnosis of 20,000 samples, every candidate (backlash and GMS included), warm
-(``--speed-only --repeats 7 --scipy-jacobian``, 2026-11-24 05:17 UTC, load average 1.4-1.9
-on the shared 2-core machine, one BLAS thread): best 3.79 s, median 4.04 s, 22.2 / 22.1 x one
-base identification (0.17 / 0.18 s, six LuGre parameters). In the same run with the joint
-fits' Jacobians from scipy's differences of the whole residual (the code before
-:func:`diagnosis.composite._stacked_jacobian`): 4.17 / 4.56 s, 24.4 / 25.0 x; that code at
-load 0.3-0.5: 4.16 / 4.38 s. The position candidate's fit (19 extras) went from 1.15 to
-0.72 s, the others are within 10 %: the time is the law's simulations, about 2,000 compiled
-runs of the 14,000 fit samples (8-9 forward-difference columns of the law's parameters per
-Jacobian, plus the trial points; 0.7-0.9 ms each and 0.2-0.7 ms for each run's start state),
-the GMS candidate alone about 0.9 s (its fit stops at 60 trial points), and scipy's SVDs of
-the Jacobians (about 0.4 s). (The 1.5 s, 4.0 x given here on 2026-11-21 predate the backlash
-and GMS candidates.) With OpenBLAS free to
-start threads on the loaded machine, the same diagnosis took 13-26 s: its small SVDs (the
-least-squares trust region) spin waiting for cores; hence one BLAS thread unless
-``OPENBLAS_NUM_THREADS`` is set.
+(``--speed-only --repeats 7 --scipy-jacobian``, 2026-11-24 05:29 UTC, load average 1.1-2.2
+on the shared 2-core machine, one BLAS thread): best 4.00 s, median 4.17 s, 23.7 / 22.3 x one
+base identification (0.17 / 0.19 s, six LuGre parameters); at 05:27, load 3.2-2.2: 3.80 /
+4.39 s. In the same runs with scipy's differences of the whole residual for every joint
+fit's Jacobian (the code before :func:`diagnosis.composite._stacked_jacobian`): 4.35 / 4.82 s
+and 4.24 / 4.77 s; that code at load 0.3-0.5: 4.16 / 4.38 s. The position candidate's fit
+(19 extras, 16 of them with exact columns) went from 1.15 to 0.72 s; the other fits are
+scipy's as before (their differences cost little next to the law's simulations, and kept to
+the last bit they keep every other candidate's result). The time is the law's simulations,
+about 2,000 compiled runs of the 14,000 fit samples (8-9 forward-difference columns of the
+law's parameters per Jacobian, plus the trial points; 0.7-0.9 ms each and 0.2-0.7 ms for each
+run's start state), the GMS candidate alone about 0.9 s (its fit stops at 60 trial points),
+and scipy's SVDs of the Jacobians (about 0.4 s); on 2 dask workers
+(``diagnose(..., executor=client)``) the same diagnosis took 5.4-6.3 s at load 1.7-2.4.
+(The 1.5 s, 4.0 x given here on 2026-11-21 predate the backlash and GMS candidates.) With
+OpenBLAS free to start threads on the loaded machine, the same diagnosis took 13-26 s: its
+small SVDs (the least-squares trust region) spin waiting for cores; hence one BLAS thread
+unless ``OPENBLAS_NUM_THREADS`` is set.
 """
 import os
 

@@ -11,7 +11,8 @@ turn, :data:`diagnosis.benchmark.runner.MEASURED`). The **sealed** family
 with ``--sealed``, at the end of a piece of work, and reported separately.
 
     python benchmarks/bench_diagnosis_forms.py [--sealed] [--workers N] [--quick]
-                                               [--checkpoint FILE] [--json OUT]
+                                               [--full-protocols] [--checkpoint FILE]
+                                               [--json OUT]
 
 Figures: top-1 over all cases and over the detectable ones (an oracle that knows the truth
 can tell it from the base fit), clean and out-of-library cases, the mean |shrink error|
@@ -38,7 +39,10 @@ def main(argv=None):
                     help="the sealed family only (run once, at the end of a piece of work)")
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--quick", action="store_true",
-                    help="one strength and noise level, short plant protocols")
+                    help="one strength and noise level")
+    ap.add_argument("--full-protocols", action="store_true",
+                    help="the plants' full protocols (default: their short ones, 1,400-5,000 "
+                         "samples a record, as the clean-record run)")
     ap.add_argument("--plants", default=",".join(PLANT_NAMES))
     ap.add_argument("--effects", default=None, help="comma-separated effects (default: all)")
     ap.add_argument("--checkpoint", default=None,
@@ -51,7 +55,8 @@ def main(argv=None):
     family = "sealed" if args.sealed else "all"
     t0 = time.perf_counter()
     res = run_benchmark(strengths=strengths, noises=noises, plants=args.plants.split(","),
-                        quick=args.quick, workers=args.workers, forms=family, measured=True,
+                        quick=not args.full_protocols, workers=args.workers, forms=family,
+                        measured=True,
                         progress=lambda n, info: print(info, flush=True),
                         checkpoint=args.checkpoint, **kw)
     wall = time.perf_counter() - t0

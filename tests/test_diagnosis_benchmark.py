@@ -28,12 +28,43 @@ def test_plant_kinematics_at_the_plant_rate(plant, rate):
 
 
 def test_clean_truth_is_the_base_law_and_effect_size_is_calibrated():
+    from diagnosis.benchmark.kinematics import FINE, fine_kinematics
     clean = make_plant_case("xml350", "clean", noise=0.0, quick=True)
+    fk = fine_kinematics(plant_kinematics("xml350", quick=True))
+    # the clean truth is the base law integrated along the continuous motion 10x finer than
+    # sampled: what the base computes at the sample rate differs by its discretisation only
+    assert nrmse(clean.base.simulate(fk.t, fk.v)[::FINE], clean.truth) < 1e-12
     F = clean.base.simulate(clean.data.t, clean.data.v)
-    assert nrmse(F, clean.truth) < 1e-12          # the base can represent the clean truth
-    for eff, s in (("position", 1.0), ("drift", 0.5), ("acceleration", 1.0)):
-        c = make_plant_case("xml350", eff, strength=s, noise=0.0, quick=True)
-        assert c.effect_rms == pytest.approx(s * EFFECT_SIZE, rel=0.06)
+    assert 1e-4 < nrmse(F, clean.truth) < 0.03
+    for eff, s, form in (("position", 1.0, None), ("drift", 0.5, None),
+                         ("acceleration", 1.0, None), ("position", 1.0, "waviness"),
+                         ("drift", 1.0, "lubricant_step"), ("delay", 0.5, "antialias_filter"),
+                         ("asymmetry", 1.0, "stribeck_twins")):
+        c = make_plant_case("xml350", eff, strength=s, noise=0.0, quick=True, form=form)
+        assert c.effect_rms == pytest.approx(s * EFFECT_SIZE, rel=0.06), (eff, form)
+
+
+def test_truth_forms_and_the_sealed_family():
+    from diagnosis.effects import EFFECTS
+    for name, e in EFFECTS.items():
+        if not e.truths:
+            continue
+        # at least three mechanisms per effect, the sealed ones apart from the open grid
+        assert len(e.forms("all")) >= 3, name
+        assert not set(e.forms("sealed")) & set(e.forms("all"))
+        for form in e.forms("all") + e.forms("sealed"):
+            assert callable(e.truth(form))
+    assert all(EFFECTS[n].forms("sealed") for n in ("acceleration", "load", "asymmetry",
+                                                    "stribeck_shape", "position", "inertia",
+                                                    "delay", "drift"))
+    with pytest.raises(ValueError, match="unknown truth form 'wobble'"):
+        EFFECTS["drift"].truth("wobble")
+    # measured channels: quantised positions, differentiated velocity
+    c = make_plant_case("xml350", "drift", 1.0, 0.0, quick=True, form="linear_wear_in",
+                        measured={"counts": 50.0, "velocity": "backward"})
+    q = np.diff(np.unique(c.data.x))
+    assert q.min() > 0.9 * np.percentile(np.abs(c.data.v), 99) * c.data.dt / 50 / 1.5
+    assert c.data.v[5] == pytest.approx((c.data.x[5] - c.data.x[4]) / c.data.dt)
 
 
 def test_bad_plant_or_effect_named():
@@ -182,8 +213,13 @@ def test_localise_where_picks_direction_when_one_direction_holds_the_energy():
 
 
 def test_localise_evidence_points_asymmetry_at_direction():
-    rep = _diagnose(make_plant_case("xml350", "asymmetry", 1.0, 0.02, seed=8, quick=True))
-    assert rep["verdict"]["cause"] == "asymmetry"
+    # with the truth integrated 10x finer than sampled, most of this short record's held-out
+    # gap is the base's own discretisation at 1 kHz (no candidate's), so the verdict stays
+    # below the one-third rule; asymmetry still ranks first and the evidence points at the
+    # direction
+    rep = _diagnose(make_plant_case("xml350", "asymmetry", 2.0, 0.02, seed=8, quick=True))
+    assert rep["effects"][0]["name"] == "asymmetry"
+    assert rep["verdict"]["cause"] in ("asymmetry", "unexplained")
     assert localise(rep, method="evidence")["family"] == "direction"
 
 

@@ -17,7 +17,7 @@ from friction.dataset import Dataset
 from .kinematics import (_PLANT_RUNS, FINE, PLANT_NAMES, fine_kinematics, measure_motion, noise_signal,
                          plant_kinematics)
 from ..effects import EFFECTS, resolve
-from .truths import BASE, BENCH_CASES, BENCH_GENERIC, base_force
+from .truths import BASE, BENCH_CASES, BENCH_GENERIC, base_force, sampled_base_force
 
 __all__ = ["BASE", "CASES", "PLANT_NAMES", "PLANT_CASES", "EFFECT_SIZE", "make_case",
            "expected", "BenchCase", "applicable", "make_plant_case"]
@@ -211,6 +211,9 @@ def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float
     Returns
     -------
     BenchCase
+        ``info["discretisation"]`` [N]: the base force integrated on the fine grid minus the
+        same law at the sample rate; the benchmark's oracle (detectable, truth shrink) scores
+        ``truth - discretisation``, the effect as the data-rate law would carry it.
     """
     if plant in _PLANT_RUNS and effect in PLANT_CASES and not applicable(plant, effect, quick):
         raise ValueError(f"{effect!r} does not apply to {plant!r} "
@@ -240,4 +243,6 @@ def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float
                                check_units=False)
     return BenchCase(plant, effect, strength, noise, data, F0, kin.base, expected(effect),
                      float(np.sqrt(np.mean((F0 - Fb) ** 2)) / sdb),
-                     {"amplitude": amp, "form": form, "measured": dict(measured or {})})
+                     {"amplitude": amp, "form": form, "measured": dict(measured or {}),
+                      # the base's discretisation at the data rate [N] (fine - sampled)
+                      "discretisation": Fb - sampled_base_force(kin)})

@@ -23,7 +23,8 @@ from friction.lugre import bristle_update
 from .kinematics import PlantKinematics, fine_kinematics
 
 __all__ = ["BASE", "MAX_DELAY_SAMPLES", "STRIBECK_TAIL", "FIT_FRACTION", "BENCH_CASES",
-           "BENCH_GENERIC", "on_fine_grid", "lugre_with_curve", "level_inside", "base_force"]
+           "BENCH_GENERIC", "on_fine_grid", "lugre_with_curve", "level_inside", "base_force",
+           "sampled_base_force"]
 
 BASE = dict(sigma0=2e4, sigma1=150.0, sigma2=8.0, Fc=2.0, Fs=2.8, vs=5e-3)
 #: longest force-channel delay of the ``delay`` truth [samples] (the candidate reaches 25)
@@ -379,6 +380,17 @@ def base_force(kin: PlantKinematics) -> np.ndarray:
     motion on the truths' grid (what a case without effect measures, noise-free)."""
     fk = fine_kinematics(kin)
     return _base_parts(fk)[0][::fk.step]
+
+
+def sampled_base_force(kin: PlantKinematics) -> np.ndarray:
+    """The base law's force [N] simulated at the data's sample rate along the exact sampled
+    motion (what the diagnosis' own law computes): :func:`base_force` minus this is the
+    base's discretisation at the data rate, which no candidate is asked to explain."""
+    law = kin.base
+    if law.name == "mre_lugre":
+        fk = fine_kinematics(kin)
+        return law.simulate(kin.t, kin.v, x=fk.x[::fk.step])
+    return law.simulate(kin.t, kin.v)
 
 
 def _level(kin: PlantKinematics) -> float:

@@ -59,7 +59,9 @@ How to add an effect
      ``|v|``, ``|a|``, ``x``, ``t``, ``load``, ``frequency``; evidence families add
      ``dF/dt``);
    * ``truths``: form name -> ``"module:function"`` (or the function) of step 2, the first
-     the benchmark's default; ``generic_truth`` and ``truth_applies`` likewise.
+     the benchmark's default, all of them in its generalisation grid (at least three, from
+     different physics); ``sealed``: one more form written once and kept out of all tuning
+     (:mod:`diagnosis.benchmark.sealed`); ``generic_truth`` and ``truth_applies`` likewise.
 
    Its parameters, units and bounds are the candidate's (:meth:`Effect.parameters`).
 4. Nothing else: the force level, the trajectory level, the FMU engine, the report and the

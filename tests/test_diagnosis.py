@@ -51,9 +51,12 @@ def test_emps_points_at_direction_asymmetry(real_data):
     # The base is identify's default law, offset b included (the published IDIM-LS model
     # has one, OF = -3.16 N; the base finds -3.2 N). Of the 25 % that `asymmetry` closed
     # over a base without it, most was that offset: the direction twins alone close 9 %
-    # of the pulse set's held-out gap (the 5 N external pulses and the structural
-    # flexibility are most of it, outside the library), under the one-third rule. So the
-    # verdict names no *other* effect, and asymmetry ranks first.
+    # of the pulse set's held-out gap, under the one-third rule. Most of that gap is the
+    # response to the record's 5 V controller-output steps (178 N of motor force, already
+    # in gtau * vir: identification.real_data.emps_pulse_evidence; not an external 5 N)
+    # and the structural flexibility they excite, outside the library. So the verdict
+    # names no *other* effect, and asymmetry ranks first; fitted and held out on the two
+    # halves of DATA_EMPS it names asymmetry (tests/test_real_diagnosis.py).
     assert rep["base"]["params"]["b"] == pytest.approx(-3.16, abs=0.3)
     assert rep["verdict"]["cause"] in ("asymmetry", "unexplained"), rep.summary()
     top = rep["effects"][0]

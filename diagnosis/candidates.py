@@ -376,48 +376,37 @@ class Drift(Candidate):
     def start(self, fit, Ff, r, ctx) -> dict:
         """Start values from the base's fit residual ``r`` [N] against its friction part
         ``Ff`` [N]: ``r ~ Ff d(t)`` is linear in the amplitudes; the saturation time
-        constant and the step's time and width are chosen on grids by least squares, each
-        part alone, and the combination of parts is chosen by the Bayesian information
-        criterion (the parts left out start at zero). A linear trend and a slow saturation
-        are nearly collinear within the record: fitted together from the start they took
-        opposite amplitudes of 0.8 that cancel in the fit record and diverge after it (a
-        level step at 40 % of a valve record closed -72 % of its held-out gap)."""
+        constant and the step's time and width are chosen on a grid by least squares."""
         T = ctx.T or 1.0
+        s = fit.t - ctx.t0
         sub = _subsample(fit.t.size)
         t, f, rr = fit.t[sub], Ff[sub], r[sub]
-        u = np.clip(t - ctx.t0, 0.0, None)
+        lin = f * (t - ctx.t0) / T
         ex = {e.name: e for e in self.extras(ctx)}
-        cols = {"lin": f * u / T}
         best = (np.inf, None)
         for tau in np.geomspace(ex["tau_sat"].lo, ex["tau_sat"].hi, 24):
-            sse, _ = _lsq((f * (1.0 - np.exp(-u / tau)))[:, None], rr)
+            sat = f * (1.0 - np.exp(-np.clip(t - ctx.t0, 0.0, None) / tau))
+            sse, _ = _lsq(np.column_stack([lin, sat]), rr)
             if sse < best[0]:
                 best = (sse, tau)
         tau = best[1]
-        cols["sat"] = f * (1.0 - np.exp(-u / tau))
+        sat = f * (1.0 - np.exp(-np.clip(t - ctx.t0, 0.0, None) / tau))
+        _, c = _lsq(np.column_stack([lin, sat]), rr)
+        r1 = rr - np.column_stack([lin, sat]) @ c
         best = (np.inf, None, None)
         for w in (ex["w_step"].lo, 0.01 * T, 0.05 * T):
             w = float(np.clip(w, ex["w_step"].lo, ex["w_step"].hi))
             for ts in np.linspace(ex["t_step"].lo, ex["t_step"].hi, 49):
                 st = f * 0.5 * (1.0 + np.tanh(0.5 * (t - ts) / w))
-                sse, _ = _lsq(st[:, None], rr)
+                sse, _ = _lsq(st[:, None], r1)
                 if sse < best[0]:
                     best = (sse, ts, w)
         _, ts, w = best
-        cols["step"] = f * 0.5 * (1.0 + np.tanh(0.5 * (t - ts) / w))
-        n = rr.size
-        choice = (np.inf, (), None)
-        for parts in (("lin",), ("sat",), ("step",), ("lin", "sat"), ("lin", "step"),
-                      ("sat", "step"), ("lin", "sat", "step")):
-            sse, c = _lsq(np.column_stack([cols[k] for k in parts]), rr)
-            # the nonlinear parts (tau; time and width of the step) count as parameters
-            k = len(parts) + ("sat" in parts) + 2 * ("step" in parts)
-            bic = n * np.log(max(sse, 1e-300) / n) + k * np.log(n)
-            if bic < choice[0]:
-                choice = (bic, parts, c)
-        amp = dict(zip(choice[1], choice[2]))
-        out = {"k_drift": amp.get("lin", 0.0), "k_sat": amp.get("sat", 0.0), "tau_sat": tau,
-               "k_step": amp.get("step", 0.0), "t_step": ts, "w_step": w}
+        st = f * 0.5 * (1.0 + np.tanh(0.5 * (t - ts) / w))
+        _, c = _lsq(np.column_stack([lin, sat, st]), rr)
+        del s
+        out = {"k_drift": c[0], "k_sat": c[1], "tau_sat": tau, "k_step": c[2], "t_step": ts,
+               "w_step": w}
         return {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
 
 

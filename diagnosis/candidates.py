@@ -173,11 +173,6 @@ class Candidate:
         :func:`diagnosis.core.practical_size`)."""
         return ""
 
-    def waivable(self, p: dict, ctx: Context) -> bool:
-        """Whether the size rule of :meth:`practical` gives way to a large held-out imprint
-        (:data:`diagnosis.verdict.SIZE_WAIVER`); default: never."""
-        return False
-
     def specialise(self, law) -> "Candidate":
         """The form of this effect for ``law`` (default: the same for every law)."""
         return self
@@ -608,12 +603,6 @@ class Delay(Candidate):
             return (f"its shift of {n:.2f} samples is below {self.MIN_SAMPLES:g} samples, what "
                     f"sampling and differentiation alone make")
         return ""
-
-    def waivable(self, p, ctx) -> bool:
-        """A shift of at least one sample may be named below :data:`MIN_SAMPLES` when its
-        held-out imprint shows it is more than discretisation (a converter averaging over
-        two samples is a one-sample delay); a shorter one never is."""
-        return abs(p["delay"]) / ctx.dt >= 1.0
 
     def undo(self, data, p, ctx):
         """``data`` with its force channel shifted back by ``p["delay"]`` (for a

@@ -349,9 +349,6 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         comp, cost = best
         after = val_score(comp, name)
         fitted[name] = comp
-        # the law's fitted values too: a law-changing candidate's size is a law parameter
-        # (backlash's gap)
-        fitted_values = {**comp.describe()["params"], **comp.extras}
         effects.append({"name": name, "validation_before": before, "validation_after": after,
                         "gap_closed": (before - after) / before if before > 0 else 0.0,
                         "excess_closed": (before - after) / max(before - floor, 1e-12),
@@ -361,8 +358,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                         "imprint": float(np.sqrt(np.mean((held_residuals["base"]
                                                           - held_residuals[name]) ** 2))
                                          / (np.std(F_all) or 1.0)),
-                        "size_reason": cand.practical(fitted_values, ctx),
-                        "size_waivable": bool(cand.waivable(fitted_values, ctx)),
+                        # the law's fitted values too: a law-changing candidate's size
+                        # is a law parameter (backlash's gap)
+                        "size_reason": cand.practical({**comp.describe()["params"],
+                                                       **comp.extras}, ctx),
                         "n_params": len(cand.force_extras(ctx)) + max(len(comp.base_names)
                                                                  - len(base_names), 0),
                         "fit_before": base_fit, "fit_after": cost,

@@ -28,10 +28,7 @@ Besides closing a third of the held-out gap above the noise floor, the named can
 * have fitted parameters of a physical size of its own (:meth:`.effects.Candidate.
   practical`): a ``delay`` shorter than :attr:`.effects.Delay.MIN_SAMPLES` samples is what
   sampling and differentiation make (an integrating converter and backward differences
-  each shift a record by half a sample), not a delay of the force channel - unless the
-  shift is at least one sample (:meth:`.effects.Candidate.waivable`) and its imprint
-  reaches :data:`SIZE_WAIVER` x the noise floor, more than discretisation can move the
-  prediction of a record the base fits within the noise.
+  each shift a record by half a sample), not a delay of the force channel.
 
 A candidate that fails is not named; the best one that passes is, if it closes a third of
 the gap above the floor; otherwise the verdict is ``unexplained`` (a structured gap) or
@@ -44,7 +41,7 @@ import numpy as np
 from .significance import z_threshold
 
 __all__ = ["decide", "rank", "noise_floor", "practical_size", "MIN_EXCESS_CLOSED", "TIE",
-           "NOISE_RATIO", "NOISE_CLIP", "IMPRINT_NOISE", "IMPRINT_GAP", "SIZE_WAIVER"]
+           "NOISE_RATIO", "NOISE_CLIP", "IMPRINT_NOISE", "IMPRINT_GAP"]
 
 #: a candidate must close at least this share of the held-out gap *above the noise floor*
 #: to be named. Right-family candidates whose form differs from the truth's close 0.38-0.95
@@ -71,14 +68,6 @@ IMPRINT_NOISE = 0.5
 #: smallest held-out imprint of a named effect, as a share of the base's held-out NRMSE
 #: (the total gap) [-]
 IMPRINT_GAP = 0.25
-#: held-out imprint, as a share of the noise floor [-], from which a candidate's own
-#: parameter-size rule (:meth:`.effects.Candidate.practical`, e.g. a ``delay`` under 1.5
-#: samples) is waived: what sampling and differentiation make moves the prediction of a
-#: record whose base fits within the noise (``before`` <= 1.2 x the floor) by at most
-#: sqrt(1.2^2 - 1) = 0.66 x the floor; a shift that moves it by twice the noise is a delay
-#: of the channel (a converter averaging over two samples plus backward differences:
-#: 1.45 samples, closing 79 % of a held-out gap 4.3 x the floor, was refused)
-SIZE_WAIVER = 2.0
 
 
 def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> str:
@@ -93,7 +82,7 @@ def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> s
     the base's prediction) reaches :data:`IMPRINT_NOISE` x ``floor`` and
     :data:`IMPRINT_GAP` x ``before``; the candidate's own ``size_reason`` (its fitted
     parameters below a physical size, :meth:`diagnosis.effects.Candidate.practical`) is
-    empty, or ``size_waivable`` and the imprint reaches :data:`SIZE_WAIVER` x ``floor``.
+    empty.
     """
     if "significance_z" in effect:
         z_need = z_threshold(max(int(n_tests), 1))
@@ -108,9 +97,7 @@ def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> s
         if imp < IMPRINT_GAP * before:
             return (f"its held-out imprint (NRMSE {imp:.3g}) is below {IMPRINT_GAP:g} x the "
                     f"held-out gap {before:.3g}")
-    waived = (effect.get("size_waivable", False)
-              and effect.get("imprint", 0.0) >= SIZE_WAIVER * floor)
-    if effect.get("size_reason") and not waived:
+    if effect.get("size_reason"):
         return effect["size_reason"]
     return ""
 

@@ -50,22 +50,6 @@ def test_each_part_of_the_rule_names_its_reason():
     assert "samples" in practical_size(_effect("delay", 0.5, 0.6, 30.0, 0.05,
                                                "its shift of 0.50 samples is below 1.5"),
                                        before, floor, n)
-    # a shift of 1-1.5 samples gives way to an imprint of SIZE_WAIVER x the floor (a
-    # converter averaging over two samples), one under a sample never does
-    from diagnosis.verdict import SIZE_WAIVER
-    soft = _effect("delay", 0.79, 1.0, 5.0, 1.05 * SIZE_WAIVER * floor,
-                   "its shift of 1.45 samples is below 1.5")
-    assert practical_size(dict(soft, size_waivable=True), before, floor, n) == ""
-    assert "samples" in practical_size(dict(soft, size_waivable=True,
-                                            imprint=0.95 * SIZE_WAIVER * floor),
-                                       before, floor, n)
-    assert "samples" in practical_size(soft, before, floor, n)  # not waivable: refused
-    from diagnosis.effects import CANDIDATES, make_context
-    from diagnosis.benchmark import make_case
-    ctx = make_context(make_case("clean", n=2000))
-    assert CANDIDATES["delay"].waivable({"delay": 1.2 * ctx.dt}, ctx)
-    assert not CANDIDATES["delay"].waivable({"delay": 0.9 * ctx.dt}, ctx)
-    assert not CANDIDATES["drift"].waivable({}, ctx)
     # entries without the figures (transfer scores, trajectory level) keep the share rule
     bare = {"name": "load", "gap_closed": 0.5, "excess_closed": 0.6, "n_params": 1}
     assert practical_size(bare, before, floor, n) == ""

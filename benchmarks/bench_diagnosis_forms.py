@@ -27,8 +27,8 @@ acceleration 5, drift -> load 4, acceleration -> inertia 3 / asymmetry 2, stribe
 asymmetry 1 / inertia 1; every other miss is ``unexplained`` or ``none``. By effect: load
 51/60, drift 49/60, position 41/48, asymmetry 36/60, inertia 34/60, acceleration 22/60, delay
 21/60, backlash 18/36, gms 3/48, stribeck_shape 0/48. The first forms (the default benchmark's
-truths, which score 99 % on the exact motion) score 66 % here (116/176): the measured channels and the
-fine-grid truth cost the rest. What the new forms show the candidates cannot reach:
+truths, which score 99 % on the exact motion) score 66 % here (116/176): the measured
+channels and the fine-grid truth cost the rest. What the new forms show the candidates cannot reach:
 frictional memory and rate-and-state slip memory (3/20 each), a Stribeck curve of another
 shape under a base that frees its exponent (0/48), presliding other than the candidate's
 four blocks (Dahl, elasto-plastic: 0/24), an impacting backlash contact (0/12), a level step

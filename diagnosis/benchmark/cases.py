@@ -14,8 +14,8 @@ import numpy as np
 
 from friction.dataset import Dataset
 
-from .kinematics import (_PLANT_RUNS, FINE, PLANT_NAMES, fine_kinematics, measure_motion, noise_signal,
-                         plant_kinematics)
+from .kinematics import (_PLANT_RUNS, FINE, PLANT_NAMES, fine_kinematics, measure_motion,
+                         noise_signal, plant_kinematics)
 from ..effects import EFFECTS, resolve
 from .truths import BASE, BENCH_CASES, BENCH_GENERIC, base_force, sampled_base_force
 

@@ -176,7 +176,8 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
     -------
     dict
         ``rows`` (one per case), ``skipped`` (truth forms that cannot make the requested
-        size on a plant's motion, :data:`MIN_SIZE`, with the reason), ``top1_accuracy``, ``clean_false_attributions``,
+        size on a plant's motion, :data:`MIN_SIZE`, with the reason), ``top1_accuracy``,
+        ``clean_false_attributions``,
         ``outside_named_wrongly``, and (see :func:`summarise`) ``overall``, ``per_plant``
         and ``per_effect`` figures: localisation accuracy, shrink error, seconds per case
         and, as the time baseline, one base identification of the plant's clean case timed

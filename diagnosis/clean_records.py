@@ -37,14 +37,14 @@ import time
 
 import numpy as np
 from scipy.interpolate import PchipInterpolator
-from numba import njit
 
 from friction.dataset import Dataset
 from friction.progress import status_lines
 
 # the benchmark's grid of the truth and its motion between samples (one definition)
-from .benchmark.kinematics import (COLOUR_SAMPLES, FINE, fine_motion, measure_motion,
+from .benchmark.kinematics import (COLOUR_SAMPLES, FINE, fine_kinematics, measure_motion,
                                    noise_signal)
+from .benchmark.truths import _lugre_run
 
 __all__ = ["FINE", "COLOUR_SAMPLES", "fine_truth", "clean_record", "clean_grid", "run_clean",
            "clean_summary", "NO_NAME", "level_truth_record"]
@@ -87,7 +87,8 @@ def fine_truth(kin, truth: str = "fine", cache_dir=None) -> dict:
                 out = {k: z[k] for k in z.files}
             _TRUTH_CACHE[key] = out
             return out
-    t_f, x_f, v_f, a_f = fine_motion(kin)
+    fk = fine_kinematics(kin)
+    t_f, x_f, v_f, a_f = fk.t, fk.x, fk.v, fk.a
     law = kin.base
     kw = {"x": x_f} if "x" in law.extra_inputs else {}
     if truth == "fine":
@@ -322,27 +323,6 @@ def clean_summary(rows) -> dict:
 
 
 # -- truths from another mechanism: levels varying inside the bristle dynamics ---------------
-@njit(cache=True)
-def _lugre_levels(t, v, lev, s0, s1, s2, Fc, Fs, vs, alpha, visc):
-    """LuGre along a fine grid whose Stribeck curve (and viscous part) are scaled by the
-    level ``lev`` at every step; bristle updated exactly for the step's mean velocity."""
-    n = t.size
-    F = np.empty(n)
-    z = 0.0
-    for k in range(n):
-        g = lev[k] * (Fc + (Fs - Fc) * np.exp(-np.abs(v[k] / vs) ** alpha))
-        zd = v[k] - s0 * abs(v[k]) * z / g
-        F[k] = s0 * z + s1 * zd + s2 * lev[k] * v[k] + visc * lev[k] * v[k] * abs(v[k])
-        if k + 1 < n:
-            h = t[k + 1] - t[k]
-            vm = 0.5 * (v[k] + v[k + 1])
-            lm = 0.5 * (lev[k] + lev[k + 1])
-            gm = lm * (Fc + (Fs - Fc) * np.exp(-np.abs(vm / vs) ** alpha))
-            zss = np.sign(vm) * gm / s0
-            z = zss + (z - zss) * np.exp(-h * s0 * abs(vm) / gm)
-    return F
-
-
 def level_truth_record(level, *, params=None, n: int = 12000, dt: float = 1e-3,
                        noise: float = 0.02, counts: float = 200.0, visc: float = 0.0,
                        seed: int = 0, name: str = "level-truth", static: bool = False):
@@ -393,9 +373,13 @@ def level_truth_record(level, *, params=None, n: int = 12000, dt: float = 1e-3,
         g = p["Fc"] + (p["Fs"] - p["Fc"]) / (1.0 + (v_f / p["vs"]) ** 2)
         F_f = (np.tanh(v_f / (0.05 * p["vs"])) * lev * g + p["sigma2"] * lev * v_f
                + visc * lev * v_f * np.abs(v_f))
-    else:
-        F_f = _lugre_levels(t_f, v_f, lev, p["sigma0"], p["sigma1"], p["sigma2"], p["Fc"],
-                            p["Fs"], p["vs"], p["alpha"], visc)
+    else:  # the benchmark's LuGre with levels varying inside the bristle dynamics
+        def g(vv):
+            return p["Fc"] + (p["Fs"] - p["Fc"]) * np.exp(-np.abs(vv / p["vs"]) ** p["alpha"])
+        vm = 0.5 * (v_f[1:] + v_f[:-1])
+        F_f = _lugre_run(t_f, v_f, lev * g(v_f), 0.5 * (lev[1:] + lev[:-1]) * g(vm),
+                         p["sigma0"], p["sigma1"],
+                         (p["sigma2"] * v_f + visc * v_f * np.abs(v_f)) * lev)
     F0 = F_f[::FINE]
     xs = x_f[::FINE]
     v99 = float(np.percentile(np.abs(v), 99))

@@ -74,6 +74,13 @@ def test_bad_plant_or_effect_named():
         make_plant_case("mre_isolator", "stribeck_shape")
     with pytest.raises(ValueError, match="wobble"):
         make_plant_case("xml350", "wobble", quick=True)
+    for kw, name in (({"strength": float("nan")}, "strength"), ({"strength": -1.0}, "strength"),
+                     ({"noise": -0.1}, "noise"), ({"noise": float("nan")}, "noise"),
+                     ({"measured": {"speed": 3}}, "speed"),
+                     ({"measured": {"counts": 0.0}}, "counts"),
+                     ({"measured": {"velocity": "psychic"}}, "psychic")):
+        with pytest.raises(ValueError, match=name):
+            make_plant_case("xml350", "drift", quick=True, **kw)
 
 
 # -- attribution on plant data ----------------------------------------------------------------

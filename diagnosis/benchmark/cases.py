@@ -28,6 +28,9 @@ CASES = tuple(n for n, e in EFFECTS.items() if e.truths) + tuple(BENCH_CASES)
 PLANT_CASES = CASES
 #: per-plant cases: effect RMS (truth - base) per unit strength, as a fraction of std(F_base)
 EFFECT_SIZE = 0.15
+#: what ``make_plant_case(measured=...)`` takes: encoder counts per sample at the top speed,
+#: how the velocity is differentiated (:func:`.kinematics.measure_motion`), noise colour
+MEASURED_KEYS = ("counts", "velocity", "colour")
 
 
 def _motion(n, dt, rng):
@@ -215,6 +218,16 @@ def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float
         same law at the sample rate; the benchmark's oracle (detectable, truth shrink) scores
         ``truth - discretisation``, the effect as the data-rate law would carry it.
     """
+    if not (np.isfinite(strength) and strength > 0):
+        raise ValueError(f"strength = {strength!r} is out of bounds: must be a finite number "
+                         f"> 0 [-]")
+    if not (np.isfinite(noise) and noise >= 0):
+        raise ValueError(f"noise = {noise!r} is out of bounds: must be a finite number >= 0 "
+                         f"[-]")
+    unknown = set(measured or {}) - set(MEASURED_KEYS)
+    if unknown:
+        raise ValueError(f"measured: unknown key(s) {sorted(unknown)}; choose from "
+                         f"{MEASURED_KEYS}")
     if plant in _PLANT_RUNS and effect in PLANT_CASES and not applicable(plant, effect, quick):
         raise ValueError(f"{effect!r} does not apply to {plant!r} "
                          f"({EFFECTS[effect].truth_applies} is false for its motion)")

@@ -61,7 +61,9 @@ How to add an effect
    * ``truths``: form name -> ``"module:function"`` (or the function) of step 2, the first
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
-     (:mod:`diagnosis.benchmark.sealed`); ``generic_truth`` and ``truth_applies`` likewise.
+     (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
+     ``truths``, as :mod:`diagnosis.benchmark.seen` did, and a new one is written);
+     ``generic_truth`` and ``truth_applies`` likewise.
 
    Its parameters, units and bounds are the candidate's (:meth:`Effect.parameters`).
 4. Nothing else: the force level, the trajectory level, the FMU engine, the report and the
@@ -223,6 +225,7 @@ class Effect:
 
 _T = "diagnosis.benchmark.truths:"
 _F = "diagnosis.benchmark.forms:"
+_O = "diagnosis.benchmark.seen:"
 _S = "diagnosis.benchmark.sealed:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
@@ -235,31 +238,35 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            families=("accel/decel", "|a|"), evidence=("|a|",),
            truths={"lagged_fd": _T + "acceleration_truth",
                    "frictional_memory": _F + "frictional_memory_truth",
-                   "slip_memory": _F + "slip_memory_truth"},
-           sealed={"film_dynamics": _S + "film_dynamics_truth"},
+                   "slip_memory": _F + "slip_memory_truth",
+                   "film_dynamics": _O + "film_dynamics_truth"},
+           sealed={"contact_aging": _S + "contact_aging_truth"},
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
            plant_entry="force", fmu=True, levels=("k_L",), inputs=("load",),
            families=("load",), evidence=("load",),
            truths={"load_lugre": _T + "load_truth", "hertz_contact": _F + "hertz_contact_truth",
-                   "one_sided_seal": _F + "one_sided_seal_truth"},
-           sealed={"squeeze_film": _S + "squeeze_film_truth"},
+                   "one_sided_seal": _F + "one_sided_seal_truth",
+                   "squeeze_film": _O + "squeeze_film_truth"},
+           sealed={"load_stribeck": _S + "load_stribeck_truth"},
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
            plant_entry="twins", fmu=True, families=("direction",), evidence=("direction",),
            truths={"twins": _T + "asymmetry_truth",
                    "stribeck_twins": _F + "stribeck_twins_truth",
-                   "viscous_twin": _F + "viscous_twin_truth"},
-           sealed={"direction_curve": _S + "direction_curve_truth"},
+                   "viscous_twin": _F + "viscous_twin_truth",
+                   "direction_curve": _O + "direction_curve_truth"},
+           sealed={"lip_roll": _S + "lip_roll_truth"},
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape", "Stribeck exponent / Lorentzian shape",
                          "modify_law"),
            plant_entry="law", fmu=True, families=("|v|", "pre-sliding"),
            truths={"exponential_tail": _T + "stribeck_shape_truth",
-                   "rational": _F + "rational_truth", "hydrodynamic": _F + "hydrodynamic_truth"},
-           sealed={"stiction_spike": _S + "stiction_spike_truth"},
+                   "rational": _F + "rational_truth", "hydrodynamic": _F + "hydrodynamic_truth",
+                   "stiction_spike": _O + "stiction_spike_truth"},
+           sealed={"film_liftoff": _S + "film_liftoff_truth"},
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -269,23 +276,26 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            plant_entry="force", fmu=True, levels=POSITION_NAMES, inputs=("x",),
            families=("x",), evidence=("x",),
            truths={"local_defect": _T + "position_truth", "waviness": _F + "waviness_truth",
-                   "worn_section": _F + "worn_section_truth"},
-           sealed={"screw_runout": _S + "screw_runout_truth"},
+                   "worn_section": _F + "worn_section_truth",
+                   "screw_runout": _O + "screw_runout_truth"},
+           sealed={"bent_rail": _S + "bent_rail_truth"},
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
            truths={"filtered_acceleration": _T + "inertia_truth",
                    "raw_acceleration": _F + "raw_acceleration_truth",
-                   "flexible_load": _F + "flexible_load_truth"},
-           sealed={"cable_chain": _S + "cable_chain_truth"},
+                   "flexible_load": _F + "flexible_load_truth",
+                   "cable_chain": _O + "cable_chain_truth"},
+           sealed={"geared_inertia": _S + "geared_inertia_truth"},
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
            evidence=("dF/dt", "|a|"),
            truths={"acquisition": _T + "delay_truth",
                    "antialias_filter": _F + "antialias_filter_truth",
-                   "moving_average": _F + "moving_average_truth"},
-           sealed={"encoder_latency": _S + "encoder_latency_truth"},
+                   "moving_average": _F + "moving_average_truth",
+                   "encoder_latency": _O + "encoder_latency_truth"},
+           sealed={"sigma_delta": _S + "sigma_delta_truth"},
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
@@ -293,8 +303,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            evidence=("t",),
            truths={"saturating_warm_up": _T + "drift_truth",
                    "linear_wear_in": _F + "linear_wear_in_truth",
-                   "lubricant_step": _F + "lubricant_step_truth"},
-           sealed={"thermal": _S + "thermal_truth"},
+                   "lubricant_step": _F + "lubricant_step_truth",
+                   "thermal": _O + "thermal_truth"},
+           sealed={"archard_wear": _S + "archard_wear_truth"},
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),
@@ -302,6 +313,7 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            truths={"rigid": _B + "backlash_rigid_truth",
                    "compliant": _B + "backlash_compliant_truth",
                    "impact": _B + "backlash_impact_truth"},
+           sealed={"spring_loaded": _S + "spring_loaded_truth"},
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
                         "Maxwell-slip)", "modify_law"),
@@ -309,6 +321,7 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            truths={"maxwell10": _G + "gms_maxwell10_truth",
                    "maxwell4": _G + "gms_maxwell4_truth", "dahl": _G + "gms_dahl_truth",
                    "elastoplastic": _G + "gms_elastoplastic_truth"},
+           sealed={"bliman_sorine": _S + "bliman_sorine_truth"},
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 

@@ -49,14 +49,25 @@ def test_truth_forms_and_the_sealed_family():
     for name, e in EFFECTS.items():
         if not e.truths:
             continue
-        # at least three mechanisms per effect, the sealed ones apart from the open grid
+        # at least three mechanisms per effect, exactly one sealed form apart from the open
+        # grid (diagnosis.benchmark.sealed)
         assert len(e.forms("all")) >= 3, name
+        assert len(e.forms("sealed")) == 1, name
         assert not set(e.forms("sealed")) & set(e.forms("all"))
+        assert e.truth(e.forms("sealed")[0]).__module__ == "diagnosis.benchmark.sealed"
         for form in e.forms("all") + e.forms("sealed"):
             assert callable(e.truth(form))
-    assert all(EFFECTS[n].forms("sealed") for n in ("acceleration", "load", "asymmetry",
-                                                    "stribeck_shape", "position", "inertia",
-                                                    "delay", "drift"))
+    assert {n for n, e in EFFECTS.items() if e.sealed} == {
+        "acceleration", "load", "asymmetry", "stribeck_shape", "position", "inertia", "delay",
+        "drift", "backlash", "gms"}
+    # the seen family (the first sealed one) joined the open grid, after the other forms
+    seen = {"acceleration": "film_dynamics", "load": "squeeze_film",
+            "asymmetry": "direction_curve", "stribeck_shape": "stiction_spike",
+            "position": "screw_runout", "inertia": "cable_chain", "delay": "encoder_latency",
+            "drift": "thermal"}
+    for name, form in seen.items():
+        assert EFFECTS[name].forms("all")[-1] == form
+        assert EFFECTS[name].truth(form).__module__ == "diagnosis.benchmark.seen"
     with pytest.raises(ValueError, match="unknown truth form 'wobble'"):
         EFFECTS["drift"].truth("wobble")
     # measured channels: quantised positions, differentiated velocity

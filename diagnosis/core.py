@@ -35,7 +35,7 @@ from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
 from .report import DiagnosisReport, report_sections
-from .significance import improvement_z
+from .significance import encompassing_z, improvement_z
 from .transfer import transfer_applicable, transfer_scores
 # the verdict rules both levels share, re-exported (their public names were this module's)
 from .verdict import (IMPRINT_GAP, IMPRINT_NOISE, MIN_EXCESS_CLOSED, NOISE_RATIO,  # noqa: F401
@@ -352,8 +352,12 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         effects.append({"name": name, "validation_before": before, "validation_after": after,
                         "gap_closed": (before - after) / before if before > 0 else 0.0,
                         "excess_closed": (before - after) / max(before - floor, 1e-12),
-                        "significance_z": float(improvement_z(held_residuals["base"],
-                                                              held_residuals[name])),
+                        # does the change follow the held-out residual (the verdict's
+                        # test), and is the squared error smaller (reported beside it)
+                        "significance_z": float(encompassing_z(held_residuals["base"],
+                                                               held_residuals[name])),
+                        "improvement_z": float(improvement_z(held_residuals["base"],
+                                                             held_residuals[name])),
                         # what the candidate changes in the held-out prediction (NRMSE)
                         "imprint": float(np.sqrt(np.mean((held_residuals["base"]
                                                           - held_residuals[name]) ** 2))

@@ -17,8 +17,10 @@ No name without practical size
 A name needs the effect to *matter*, not only to be detectable (:func:`practical_size`).
 Besides closing a third of the held-out gap above the noise floor, the named candidate must
 
-* improve on the base significantly on the held-out samples (paired Diebold-Mariano
-  statistic, :mod:`.significance`, at a family-wise 1 %) - on every path of the verdict;
+* improve on the base significantly on the held-out samples (the paired
+  forecast-encompassing statistic, :func:`.significance.encompassing_z`: its change of the
+  prediction follows the base's held-out residual, at a family-wise 1 %) - on every path of
+  the verdict;
 * leave an **imprint** - the RMS of the difference between its and the base's held-out
   predictions, as NRMSE - of at least :data:`IMPRINT_NOISE` x the noise floor and
   :data:`IMPRINT_GAP` x the base's held-out NRMSE (the total gap): an effect that moves
@@ -75,10 +77,10 @@ def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> s
     the gap it closes; '' when it may.
 
     Only the top-ranked candidate, or one within :data:`TIE` of it, can be named (see
-    :func:`decide`). Checks, where the entry carries the figures (the trajectory level and transfer scores
-    have none and keep the share rule alone): the paired statistic ``significance_z``
-    reaches the one-sided quantile of :data:`~diagnosis.significance.FAMILY_LEVEL` split
-    over ``n_tests`` candidates; the held-out ``imprint`` (NRMSE of the candidate's minus
+    :func:`decide`). Checks, where the entry carries the figures (the trajectory level and
+    transfer scores have none and keep the share rule alone): the paired (encompassing)
+    statistic ``significance_z`` reaches the one-sided quantile of
+    :data:`~diagnosis.significance.FAMILY_LEVEL` split over ``n_tests`` candidates; the held-out ``imprint`` (NRMSE of the candidate's minus
     the base's prediction) reaches :data:`IMPRINT_NOISE` x ``floor`` and
     :data:`IMPRINT_GAP` x ``before``; the candidate's own ``size_reason`` (its fitted
     parameters below a physical size, :meth:`diagnosis.effects.Candidate.practical`) is

@@ -381,6 +381,8 @@ EFFECTS_INPUTS = (("F_law", "N", "force of the friction law"),
                   ("load", "N", "normal load"))
 #: effects block: parameters that must be > 0 (the others are free or switches)
 EFFECTS_POSITIVE = ("a_s", "v_c", "T", "L0")
+#: parameters of the ``friction_effects`` block that must be >= 0
+EFFECTS_NONNEGATIVE = ("m_a",)
 
 
 def effects_variables(friction_package: str = "friction") -> list[Var]:
@@ -399,9 +401,9 @@ def effects_variables(friction_package: str = "friction") -> list[Var]:
         if name.startswith("use_"):
             out.append(Var(name, "parameter", "Boolean", bool(start),
                            description=desc.replace(" on (1) or off (0)", " on"), field=k))
-        elif name in EFFECTS_POSITIVE:
+        elif name in EFFECTS_POSITIVE or name in EFFECTS_NONNEGATIVE:
             out.append(Var(name, "parameter", "Real", float(start), unit, f"{desc} [{unit}]",
-                           0.0, math.inf, True, field=k))
+                           0.0, math.inf, name in EFFECTS_POSITIVE, field=k))
         else:
             out.append(Var(name, "parameter", "Real", float(start), unit, f"{desc} [{unit}]",
                            field=k))

@@ -21,8 +21,13 @@ applied in the order multiplicative then additive:
                    (``p_c1 cos(phi) + p_s1 sin(phi) + p_c2 cos(2 phi) + p_s2 sin(2 phi)``,
                    ``phi = 2 pi (x - x_lo) / lambda_x``; ``lambda_x <= 0``: none) and a
                    local defect ``d_x exp(-(x - x_d)^2 / (2 w_d^2))`` (``w_d <= 0``: none);
-* ``acceleration`` the acceleration-dependent part of seed 000:
-                   ``f_a tanh(a / a_s) exp(-|v| / v_c)``.
+* ``acceleration`` the acceleration-dependent part of seed 000,
+                   ``f_a tanh(a / a_s) w(|v| / v_c)``, with the velocity weight
+                   ``w(u) = (u / m_a)^m_a exp(m_a - u)`` (:func:`acceleration_weight`):
+                   ``m_a = 0`` is seed 000's ``exp(-|v| / v_c)``, largest at standstill;
+                   ``m_a > 0`` peaks (at 1) at ``|v| = m_a v_c``, the shape of a Stribeck
+                   curve's slope, where a frictional memory (Hess and Soom 1990) or a
+                   rate-and-state friction acts most.
 
 One formula serves the in-process diagnosis (:mod:`diagnosis.effects` evaluates the maps
 with :func:`position_change` and :func:`drift_change`, :class:`diagnosis.effect_law.EffectLaw`
@@ -39,6 +44,7 @@ from numba import njit
 
 __all__ = ["EXTENSIONS", "EXTENSION_PARAMS", "EXTENSION_INDEX", "POSITION_KNOTS", "POSITION_NAMES",
            "POSITION_FORM_NAMES", "DRIFT_NAMES", "extension_force", "pack_extensions",
+           "acceleration_weight",
            "position_map", "position_change", "drift_change"]
 
 #: extension names, in the order of their switches in the packed vector
@@ -62,6 +68,9 @@ EXTENSION_PARAMS = (
     ("f_a", 0.0, "N", "amplitude of the acceleration-dependent part"),
     ("a_s", 1.0, "m/s^2", "acceleration scale of the acceleration-dependent part (> 0)"),
     ("v_c", 1.0, "m/s", "velocity over which the acceleration-dependent part fades (> 0)"),
+    ("m_a", 0.0, "1", "exponent of the acceleration part's velocity weight (u / m_a)^m_a "
+                      "exp(m_a - u), u = |v| / v_c: 0 fades from standstill, m_a > 0 peaks "
+                      "at |v| = m_a v_c (>= 0)"),
     ("use_pos", 0.0, "1", "position-dependent levels on (1) or off (0)"),
     ("x_lo", 0.0, "m", "start of the stroke the position map refers to"),
     ("x_hi", 1.0, "m", "end of the stroke the position map refers to (> x_lo)"),
@@ -96,7 +105,8 @@ EXTENSION_PARAMS = (
 #: index of each name in the packed vector
 EXTENSION_INDEX = {p[0]: i for i, p in enumerate(EXTENSION_PARAMS)}
 # indices for the compiled formula (module constants: numba freezes them)
-_USE_ACC, _F_A, _A_S, _V_C = (EXTENSION_INDEX[k] for k in ("use_acc", "f_a", "a_s", "v_c"))
+_USE_ACC, _F_A, _A_S, _V_C, _M_A = (EXTENSION_INDEX[k] for k in
+                                    ("use_acc", "f_a", "a_s", "v_c", "m_a"))
 _USE_POS, _X_LO, _X_HI, _C_X1 = (EXTENSION_INDEX[k] for k in ("use_pos", "x_lo", "x_hi", "c_x1"))
 _LAMBDA_X, _P_C1, _D_X, _X_D, _W_D = (EXTENSION_INDEX[k] for k in
                                       ("lambda_x", "p_c1", "d_x", "x_d", "w_d"))
@@ -106,6 +116,48 @@ _K_SAT, _TAU_SAT, _K_STEP, _T_STEP, _W_STEP = (EXTENSION_INDEX[k] for k in
 _USE_LOAD, _L0, _K_L = (EXTENSION_INDEX[k] for k in ("use_load", "L0", "k_L"))
 _NK = POSITION_KNOTS
 _TWO_PI = 2.0 * math.pi
+
+
+@njit(cache=True)
+def _acc_weight(u, m):
+    """Velocity weight w(u) [-] of the acceleration part at u = |v| / v_c >= 0 and exponent
+    m >= 0: exp(-u) at m = 0, else (u / m)^m exp(m - u), 1 at its peak u = m."""
+    if m <= 0.0:
+        return math.exp(-u)
+    if u <= 0.0:
+        return 0.0
+    return math.exp(m * math.log(u / m) + m - u)
+
+
+@njit(cache=True)
+def _acc_weight_vec(u, m):
+    out = np.empty(u.size)
+    for i in range(u.size):
+        out[i] = _acc_weight(u[i], m)
+    return out
+
+
+def acceleration_weight(v, v_c: float, m_a: float = 0.0) -> np.ndarray:
+    """Velocity weight of the acceleration part at velocities ``v`` [m/s] (the formula of
+    :func:`extension_force`): ``exp(-|v| / v_c)`` at ``m_a = 0``, else
+    ``(u / m_a)^m_a exp(m_a - u)`` with ``u = |v| / v_c`` [-].
+
+    Parameters
+    ----------
+    v : array_like
+        Velocity [m/s].
+    v_c : float
+        Velocity scale [m/s] (> 0).
+    m_a : float
+        Exponent [-] (>= 0): the weight peaks at ``|v| = m_a v_c``.
+    """
+    if not v_c > 0:
+        raise ValueError(f"v_c = {v_c!r} is out of bounds: must be > 0 [m/s]")
+    if not m_a >= 0:
+        raise ValueError(f"m_a = {m_a!r} is out of bounds: must be >= 0 [-]")
+    u = np.abs(np.ascontiguousarray(np.atleast_1d(v), dtype=float)) / v_c
+    w = _acc_weight_vec(u.ravel(), float(m_a))
+    return float(w[0]) if np.ndim(v) == 0 else w.reshape(np.shape(v))
 
 
 @njit(cache=True)
@@ -215,8 +267,8 @@ def extension_force(F, v, a, x, load, t, e):
         F = F * (1.0 + _drift_m(t, e))
     if e[_USE_POS] > 0.5:  # position: knots, waviness, local defect
         F = F * (1.0 + _position_m(x, e))
-    if e[_USE_ACC] > 0.5:  # acceleration: grows with |a|, fades with |v|
-        F = F + e[_F_A] * math.tanh(a / e[_A_S]) * math.exp(-abs(v) / e[_V_C])
+    if e[_USE_ACC] > 0.5:  # acceleration: grows with |a|, weighted along |v|
+        F = F + e[_F_A] * math.tanh(a / e[_A_S]) * _acc_weight(abs(v) / e[_V_C], e[_M_A])
     return F
 
 
@@ -228,7 +280,7 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
     ----------
     effects : dict
         Extension name (:data:`EXTENSIONS`) -> its parameters (``f_a`` [N], ``a_s``
-        [m/s^2], ``v_c`` [m/s]; ``c_x1..c_x11`` [-], ``lambda_x`` [m], ``p_c1, p_s1, p_c2,
+        [m/s^2], ``v_c`` [m/s], ``m_a`` [-]; ``c_x1..c_x11`` [-], ``lambda_x`` [m], ``p_c1, p_s1, p_c2,
         p_s2`` [-], ``d_x`` [-], ``x_d`` [m], ``w_d`` [m]; ``k_drift`` [-], ``k_sat`` [-],
         ``tau_sat`` [s], ``k_step`` [-], ``t_step`` [s], ``w_step`` [s]; ``k_L`` [-]);
         parameters not given keep their defaults (a part whose amplitude is 0 is off).
@@ -252,8 +304,10 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
                 if not p[k] > 0:
                     raise ValueError(f"{k} = {p[k]!r} is out of bounds: must be > 0 "
                                      f"[{'m/s^2' if k == 'a_s' else 'm/s'}]")
-            for k in ("f_a", "a_s", "v_c"):
-                e[ix[k]] = p[k]
+            if not p.get("m_a", 0.0) >= 0:
+                raise ValueError(f"m_a = {p['m_a']!r} is out of bounds: must be >= 0 [-]")
+            for k in ("f_a", "a_s", "v_c", "m_a"):
+                e[ix[k]] = p.get(k, e[ix[k]])
         elif name == "position":
             e[ix["use_pos"]] = 1.0
             e[ix["x_lo"]], e[ix["x_hi"]] = x_lo, x_hi

@@ -133,10 +133,8 @@ class NativeRecipe:
             from friction import extensions as ext
             lines.append(f"#define FL_N_EXT {len(ext.EXTENSION_PARAMS)}")
             lines.append(f"#define FL_E_NK {ext.POSITION_KNOTS}")
-            for name in ("use_acc", "f_a", "a_s", "v_c", "use_pos", "x_lo", "x_hi", "c_x1",
-                         "lambda_x", "p_c1", "p_s1", "p_c2", "p_s2", "d_x", "x_d", "w_d",
-                         "use_drift", "k_drift", "t0", "T", "k_sat", "tau_sat", "k_step",
-                         "t_step", "w_step", "use_load", "L0", "k_L"):
+            # every packed index, from the one list fl_effects.h mirrors
+            for name in ext.EXTENSION_INDEX:
                 lines.append(f"#define FL_E_{name.upper()} {ext.EXTENSION_INDEX[name]}")
         if self.kind.startswith("EMPS"):
             for v in self.variables:

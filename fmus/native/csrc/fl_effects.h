@@ -2,7 +2,7 @@
  *
  * e[] is the packed vector of friction.extensions.EXTENSION_PARAMS (the generator writes the
  * FL_E_* indices into fl_model.h from that one Python list): switches use_* (0 or 1), the
- * acceleration part (f_a, a_s, v_c), the position map (x_lo, x_hi, c_x1.., the waviness
+ * acceleration part (f_a, a_s, v_c, m_a), the position map (x_lo, x_hi, c_x1.., the waviness
  * lambda_x, p_c1, p_s1, p_c2, p_s2 and the local defect d_x, x_d, w_d), the drift (k_drift,
  * t0, T, k_sat, tau_sat, k_step, t_step, w_step) and the load levels (L0, k_L). */
 #ifndef FL_EFFECTS_H
@@ -70,6 +70,15 @@ static double fl_drift_m(double t, const double *e)
     return d;
 }
 
+/* velocity weight of the acceleration part at u = |v| / v_c and exponent m >= 0:
+ * exp(-u) at m = 0, else (u / m)^m exp(m - u), 1 at u = m (friction.extensions._acc_weight) */
+static double fl_acc_weight(double u, double m)
+{
+    if (m <= 0.0) return exp(-u);
+    if (u <= 0.0) return 0.0;
+    return exp(m * log(u / m) + m - u);
+}
+
 /* law force F [N] with the switched-on extensions at v [m/s], a [m/s^2], x [m], load [N],
  * time t [s]: multiplicative (load, drift, position) then additive (acceleration) */
 static double fl_extension_force(double F, double v, double a, double x, double load,
@@ -81,8 +90,9 @@ static double fl_extension_force(double F, double v, double a, double x, double 
     }
     if (e[FL_E_USE_DRIFT] > 0.5) F = F * (1.0 + fl_drift_m(t, e));
     if (e[FL_E_USE_POS] > 0.5) F = F * (1.0 + fl_position_m(x, e));
-    if (e[FL_E_USE_ACC] > 0.5)  /* grows with |a|, fades with |v| */
-        F = F + e[FL_E_F_A] * tanh(a / e[FL_E_A_S]) * exp(-fabs(v) / e[FL_E_V_C]);
+    if (e[FL_E_USE_ACC] > 0.5)  /* grows with |a|, weighted along |v| */
+        F = F + e[FL_E_F_A] * tanh(a / e[FL_E_A_S])
+                * fl_acc_weight(fabs(v) / e[FL_E_V_C], e[FL_E_M_A]);
     return F;
 }
 

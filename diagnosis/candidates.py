@@ -191,11 +191,6 @@ class Candidate:
     #: (:func:`diagnosis.composite.fit_composite`); ``None``: the extras' ``x0``
     start = None
 
-    #: the joint fit also starts from the extras' ``x0`` and keeps the better of the two
-    #: (:func:`diagnosis.composite.fit_composite`): for a :attr:`start` chosen on the base's
-    #: residual with the law held, whose basin may not be the joint fit's best
-    keep_default_start: ClassVar[bool] = False
-
     #: ``undo(data, p, ctx) -> Dataset``: the data with the effect at ``p`` taken out, for
     #: effects the base fit absorbs in a distorted way (see :func:`diagnosis.composite.
     #: fit_composite`); ``None``: no such start
@@ -302,10 +297,6 @@ def _zero_phase(u, dt, tau):
 
 
 class Acceleration(Candidate):
-    #: the start on the residual (:meth:`start`) found the memory forms' weights but led
-    #: seed 000's own form (``m_a = 0``) into a worse basin (valve: 0.62 of the gap closed
-    #: against 0.83 from the plain start): both starts are solved
-    keep_default_start = True
     #: largest exponent of the velocity weight [-]: the weight peaks at |v| = m_a v_c, and
     #: its width relative to the peak speed narrows as 1 / sqrt(m_a)
     MAX_M = 4.0

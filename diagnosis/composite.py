@@ -220,12 +220,7 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     lo = np.array([e.lo for e in ex])
     hi = np.array([e.hi for e in ex])
     x_ex0 = np.array([(extras0 or {}).get(e.name, e.x0) for e in ex])
-    x_default = x_ex0
     x_ex0 = _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx)
-    # an effect whose data start is chosen on the base's residual alone (the law held) may
-    # lead the joint fit into another basin than its plain start: both are solved
-    both = (ex and any(getattr(eff, "keep_default_start", False) for eff in effects)
-            and not np.array_equal(x_default, x_ex0))
     u_ex0 = (x_ex0 - lo) / (hi - lo) if ex else np.zeros(0)
     u0 = np.concatenate([u_law0, np.clip(u_ex0, 0.0, 1.0)])
     # kernel inputs validated once; each evaluation only repacks theta
@@ -313,9 +308,6 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
                              max_nfev=max_nfev, diff_step=DIFF_STEP, method="trf")
 
     sol = solve(u0)
-    if both:
-        u_def = np.concatenate([u_law0, np.clip((x_default - lo) / (hi - lo), 0.0, 1.0)])
-        sol = min((sol, solve(u_def)), key=lambda s: s.cost)
     undo = [eff for eff in effects if eff.undo is not None]
     if undo and nb:
         # the base law identified on the record with the effect in it absorbed part of it (a

@@ -80,8 +80,8 @@ def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> s
     :func:`decide`). Checks, where the entry carries the figures (the trajectory level and
     transfer scores have none and keep the share rule alone): the paired (encompassing)
     statistic ``significance_z`` reaches the one-sided quantile of
-    :data:`~diagnosis.significance.FAMILY_LEVEL` split over ``n_tests`` candidates; the held-out ``imprint`` (NRMSE of the candidate's minus
-    the base's prediction) reaches :data:`IMPRINT_NOISE` x ``floor`` and
+    :data:`~diagnosis.significance.FAMILY_LEVEL` split over ``n_tests`` candidates; the
+    held-out ``imprint`` (NRMSE of the candidate's minus the base's prediction) reaches :data:`IMPRINT_NOISE` x ``floor`` and
     :data:`IMPRINT_GAP` x ``before``; the candidate's own ``size_reason`` (its fitted
     parameters below a physical size, :meth:`diagnosis.effects.Candidate.practical`) is
     empty.

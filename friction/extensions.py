@@ -280,8 +280,8 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
     ----------
     effects : dict
         Extension name (:data:`EXTENSIONS`) -> its parameters (``f_a`` [N], ``a_s``
-        [m/s^2], ``v_c`` [m/s], ``m_a`` [-]; ``c_x1..c_x11`` [-], ``lambda_x`` [m], ``p_c1, p_s1, p_c2,
-        p_s2`` [-], ``d_x`` [-], ``x_d`` [m], ``w_d`` [m]; ``k_drift`` [-], ``k_sat`` [-],
+        [m/s^2], ``v_c`` [m/s], ``m_a`` [-]; ``c_x1..c_x11`` [-], ``lambda_x`` [m],
+        ``p_c1, p_s1, p_c2, p_s2`` [-], ``d_x`` [-], ``x_d`` [m], ``w_d`` [m]; ``k_drift`` [-], ``k_sat`` [-],
         ``tau_sat`` [s], ``k_step`` [-], ``t_step`` [s], ``w_step`` [s]; ``k_L`` [-]);
         parameters not given keep their defaults (a part whose amplitude is 0 is off).
     x_lo, x_hi : float

@@ -85,7 +85,7 @@ def applicable(names, law, fit, ctx, val_sets) -> list:
     for n in names:
         cand = CANDIDATES[n].specialise(law)
         ok, _ = cand.applicable(law, fit, ctx)
-        if ok and not _missing_columns(cand, val_sets):
+        if ok and not _missing_columns(cand, val_sets, ctx):
             out.append(n)
     return out
 

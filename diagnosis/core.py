@@ -336,7 +336,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     for k, name in enumerate(names, 1):
         cand = CANDIDATES[name].specialise(base.law)
         ok, why = cand.applicable(base.law, fit, ctx)
-        why = why if not ok else _missing_columns(cand, val_sets)
+        why = why if not ok else _missing_columns(cand, val_sets, ctx)
         if why:
             skipped[name] = why
             continue

@@ -26,8 +26,9 @@ How to add an effect
    ``extras(ctx)`` (its parameters: name, start, box from the fit data's scales, unit),
    ``apply(F, p, data, ctx)`` (its formula on the base law's force) or ``modify_law`` (a law
    of the friction package with more free parameters), and where needed ``force_extras``,
-   ``start``, ``practical``, ``applicable``, ``specialise``, ``own_law_names``. It may live
-   in its own module, e.g. ``diagnosis/effects_backlash.py``, with its truth forms.
+   ``start``, ``practical``, ``applicable``, ``held_out_reason``, ``specialise``,
+   ``own_law_names``. It may live in its own module, e.g. ``diagnosis/effects_backlash.py``,
+   with its truth forms.
 2. Write its truth forms for the benchmark: functions ``truth(kin, s) -> F`` [N] (``kin`` a
    :class:`diagnosis.benchmark.PlantKinematics`: the plant's ``t, x, v, a, load`` and its
    ``base`` law; ``s`` an amplitude factor the benchmark calibrates to the requested

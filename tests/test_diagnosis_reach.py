@@ -57,3 +57,29 @@ def test_velocity_lag_is_measured_against_the_positions_central_differences(meth
     assert velocity_lag(data) == pytest.approx(lag, abs=0.05)
     # a velocity differentiated from the position itself is not a channel of its own
     assert velocity_lag(Dataset.from_arrays(t=t, x=x, F=np.ones(n))) == 0.0
+
+
+def test_position_is_not_scored_where_the_held_out_positions_leave_the_fit_stroke():
+    # a one-way stroke (the press): the held-out part runs beyond the fit part's positions,
+    # where the map is constant by construction - a level change, not a map along the stroke
+    from diagnosis.candidates import missing_columns
+    from diagnosis.effects import CANDIDATES, make_context
+    from friction.dataset import Dataset
+    t = np.arange(4000) * 1e-3
+    x = 0.01 * t
+    fit = Dataset.from_arrays(t=t[:2800], x=x[:2800], v=np.full(2800, 0.01), F=np.ones(2800))
+    held = Dataset.from_arrays(t=t[2800:], x=x[2800:], v=np.full(1200, 0.01), F=np.ones(1200))
+    ctx = make_context(fit)
+    pos = CANDIDATES["position"]
+    why = missing_columns(pos, [held], ctx)
+    assert "0 % of the held-out positions" in why and "not tested" in why
+    # the other candidates are not concerned, and without the fit's scales nothing is asked
+    assert missing_columns(CANDIDATES["drift"], [held], ctx) == ""
+    assert missing_columns(pos, [held]) == ""
+    # a reciprocating stroke revisits the fit positions: scored
+    xr = 0.01 * np.sin(2 * np.pi * 0.5 * t)
+    back = Dataset.from_arrays(t=t[2800:], x=xr[2800:], v=np.gradient(xr, t)[2800:],
+                               F=np.ones(1200))
+    ctx_r = make_context(Dataset.from_arrays(t=t[:2800], x=xr[:2800],
+                                             v=np.gradient(xr, t)[:2800], F=np.ones(2800)))
+    assert missing_columns(pos, [back], ctx_r) == ""

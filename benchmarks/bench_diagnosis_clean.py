@@ -27,6 +27,9 @@ own lag added back, lies in -0.88 .. 1.15 samples on every record, below
 name: four forging-press records whose ``inertia`` closes the whole excess within the noise
 ratio at encompassing z 1.38-1.47 (the bar is 3.1).
 
+Again on the code of commit c477bff (position not scored beyond the fit stroke; 427 s
+wall): 500 records, 0 named, the same 242 / 258 split.
+
 The run before (06:05 UTC, commit 59b6d61, the Diebold-Mariano statistic as the test): the
 same 0 named and 242 / 258 split; ``delay`` top on 255 records, on 111 closing a third of the
 excess and refused by its size, with imprints up to 15 x the noise floor (damping rig,

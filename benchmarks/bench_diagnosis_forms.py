@@ -42,6 +42,11 @@ single ones. Still unreached: a Stribeck curve of another shape under a base tha
 exponent (0/58), frictional memory (3/20) and film dynamics (1/20), elasto-plastic and Dahl
 presliding (1/24), an impacting backlash (2/12).
 
+Then (08:45 UTC, 796 s wall, code of commit c477bff): the position candidate is no longer
+scored where the held-out positions leave the fit record's stroke. Same top-1 (52.3 %);
+the press's five drift cases named ``position`` are now ``load`` twice (its load is
+confounded with the record's progress too) and ``unexplained`` three times: 35 wrong names.
+
 The run before (752 s wall, code of commit 3ced1d1, the Diebold-Mariano test): 580 cases,
 top-1 53.1 % (54.7 % of the 562 detectable), mean |shrink error| 0.254; 28 wrong names (5 %);
 by effect load 51/60, drift 49/60, position 41/48, asymmetry 36/60, inertia 34/60,

@@ -43,7 +43,8 @@ from .verdict import (IMPRINT_GAP, IMPRINT_NOISE, MIN_EXCESS_CLOSED, NOISE_RATIO
 
 __all__ = ["diagnose", "DiagnosisReport", "noise_floor", "extrapolation", "decide",
            "report_sections", "BaseFitError", "BASE_FIT_LIMIT", "base_free_names", "warm_up",
-           "MIN_SCORED_SAMPLES", "practical_size", "IMPRINT_NOISE", "IMPRINT_GAP"]
+           "MIN_SCORED_SAMPLES", "practical_size", "IMPRINT_NOISE", "IMPRINT_GAP",
+           "confounding", "CONFOUND_CORR"]
 
 #: a base whose NRMSE on its own fit record reaches this (worse than the record's mean
 #: force, NRMSE 1) stops the diagnosis: effects scored against it would be credited with
@@ -201,6 +202,75 @@ def extrapolation(fit, val_sets) -> dict:
                         "validation_range": [float(np.min(allv)), float(np.max(allv))],
                         "outside_share": share, "unit": unit}
     return out
+
+
+#: |correlation| from which two covariates of named effects count as confounded [-]
+CONFOUND_CORR = 0.7
+
+
+def confounding(records) -> list:
+    """Pairs of covariates that stand in for each other on ``records`` (fit and held-out).
+
+    An effect is told from another by where its gap lies: ``asymmetry`` by the direction of
+    motion, ``load`` by the normal load, ``drift`` by time, ``position`` by the position
+    (their region families, :data:`diagnosis.effects.EXPECTED_FAMILIES`). Where two of these
+    covariates move together (the press: a high forging load on the way down, a low one on
+    the way up), their effects can mimic each other and the data cannot tell them apart.
+
+    Parameters
+    ----------
+    records : list of friction.dataset.Dataset
+        The fit and held-out records (t [s], x [m], v [m/s], load [N]).
+
+    Returns
+    -------
+    list of dict
+        ``{"covariates": [a, b], "corr": r}`` for every pair with ``|r| >=``
+        :data:`CONFOUND_CORR` (Pearson, over the pooled samples), strongest first.
+    """
+    cols = {"direction": [np.sign(r.v) for r in records], "t": [r.t for r in records],
+            "x": [r.x for r in records]}
+    if all(r.load is not None for r in records):
+        cols["load"] = [r.load for r in records]
+    cols = {k: np.concatenate(v).astype(float) for k, v in cols.items()}
+    cols = {k: c for k, c in cols.items() if np.std(c) > 0}
+    names = sorted(cols)
+    out = []
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            r = float(np.corrcoef(cols[a], cols[b])[0, 1])
+            if np.isfinite(r) and abs(r) >= CONFOUND_CORR:
+                out.append({"covariates": [a, b], "corr": r})
+    return sorted(out, key=lambda c: -abs(c["corr"]))
+
+
+def _note_confounding(verdict: dict, effects: list, records) -> None:
+    """Add to a named ``verdict`` the effects whose covariate is confounded with its own on
+    ``records`` (:func:`confounding`) and that close a gap of their own; the name stays."""
+    from .effects import EXPECTED_FAMILIES
+    cause = verdict.get("cause")
+    own = set(EXPECTED_FAMILIES.get(cause, ())) & {"direction", "t", "x", "load"}
+    if not own:
+        return
+    closed = {e["name"]: e["gap_closed"] for e in effects}
+    found = []
+    for pair in confounding(records):
+        a, b = pair["covariates"]
+        if (a in own) == (b in own):
+            continue
+        other = b if a in own else a
+        for name, fams in EXPECTED_FAMILIES.items():
+            if name != cause and other in fams and closed.get(name, 0.0) > 0.0:
+                found.append({"effect": name, "covariates": pair["covariates"],
+                              "corr": pair["corr"], "gap_closed": closed[name]})
+    if found:
+        verdict["confounded"] = found
+        verdict["reason"] = (verdict.get("reason", "") + ("; " if verdict.get("reason") else "")
+                             + "; ".join(
+            f"on this data {f['covariates'][0]} and {f['covariates'][1]} move together "
+            f"(correlation {f['corr']:+.2f}), so {cause} and {f['effect']} (closes "
+            f"{100 * f['gap_closed']:.0f} %) can stand in for each other: a record that "
+            f"varies them apart tells them apart" for f in found))
 
 
 def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed: int = 0,
@@ -453,6 +523,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                 f"({e['fit_range'][0]:.4g} to {e['fit_range'][1]:.4g} {e['unit']}) for "
                 f"{100 * e['outside_share']:.0f} % of its samples, so an effect of {key} "
                 f"cannot be identified from the fit data: fit on data that spans it")
+    _note_confounding(verdict, effects, [fit] + list(val_sets))
     report = DiagnosisReport(
         baseline={"model": base.law.name, "metric": "nrmse", "fit": base_fit, "validation": before},
         **report_sections(where, bands, freq, effects, verdict, sequence, before, final_val,

@@ -83,3 +83,31 @@ def test_position_is_not_scored_where_the_held_out_positions_leave_the_fit_strok
     ctx_r = make_context(Dataset.from_arrays(t=t[:2800], x=xr[:2800],
                                              v=np.gradient(xr, t)[:2800], F=np.ones(2800)))
     assert missing_columns(pos, [back], ctx_r) == ""
+
+
+def test_confounded_covariates_are_reported_beside_the_name():
+    # the press: a high load on the way down, a low one on the way up - direction and load
+    # stand in for each other, and a named asymmetry says that load could be the cause
+    from diagnosis.core import _note_confounding, confounding
+    from friction.dataset import Dataset
+    rng = np.random.default_rng(0)
+    t = np.arange(3000) * 1e-3
+    v = np.sin(2 * np.pi * 2 * t)
+    load = np.where(v > 0, 8e5, 2e5) + 3e4 * rng.standard_normal(t.size)
+    rec = Dataset.from_arrays(t=t, x=np.cumsum(v) * 1e-3, v=v, F=np.ones(t.size), load=load)
+    pairs = confounding([rec])
+    assert [p["covariates"] for p in pairs] == [["direction", "load"]]
+    assert pairs[0]["corr"] > 0.9
+    verdict = {"cause": "asymmetry", "gap_closed": 0.7}
+    _note_confounding(verdict, [{"name": "asymmetry", "gap_closed": 0.7},
+                                {"name": "load", "gap_closed": 0.13}], [rec])
+    assert verdict["cause"] == "asymmetry"  # the name stays, the note is added
+    assert verdict["confounded"][0]["effect"] == "load"
+    assert "stand in for each other" in verdict["reason"]
+    # a load that varies within each direction is not confounded with it
+    free = Dataset.from_arrays(t=t, x=np.cumsum(v) * 1e-3, v=v, F=np.ones(t.size),
+                               load=5e5 + 3e5 * rng.standard_normal(t.size))
+    assert confounding([free]) == []
+    verdict = {"cause": "asymmetry", "gap_closed": 0.7}
+    _note_confounding(verdict, [{"name": "load", "gap_closed": 0.13}], [free])
+    assert "confounded" not in verdict

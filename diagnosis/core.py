@@ -268,9 +268,9 @@ def _note_confounding(verdict: dict, effects: list, records) -> None:
         verdict["reason"] = (verdict.get("reason", "") + ("; " if verdict.get("reason") else "")
                              + "; ".join(
             f"on this data {f['covariates'][0]} and {f['covariates'][1]} move together "
-            f"(correlation {f['corr']:+.2f}), so {cause} and {f['effect']} (closes "
-            f"{100 * f['gap_closed']:.0f} %) can stand in for each other: a record that "
-            f"varies them apart tells them apart" for f in found))
+            f"(correlation {f['corr']:+.2f}), so an effect of one can show as an effect of "
+            f"the other ({f['effect']} closes {100 * f['gap_closed']:.0f} % here): a record "
+            f"that varies them apart tells {cause} from {f['effect']}" for f in found))
 
 
 def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed: int = 0,

@@ -103,7 +103,7 @@ def test_confounded_covariates_are_reported_beside_the_name():
                                 {"name": "load", "gap_closed": 0.13}], [rec])
     assert verdict["cause"] == "asymmetry"  # the name stays, the note is added
     assert verdict["confounded"][0]["effect"] == "load"
-    assert "stand in for each other" in verdict["reason"]
+    assert "can show as an effect of the other (load closes 13 % here)" in verdict["reason"]
     # a load that varies within each direction is not confounded with it
     free = Dataset.from_arrays(t=t, x=np.cumsum(v) * 1e-3, v=v, F=np.ones(t.size),
                                load=5e5 + 3e5 * rng.standard_normal(t.size))

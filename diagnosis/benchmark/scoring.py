@@ -164,7 +164,25 @@ def _score(case_effect, exp, rep, data, truth, seconds) -> dict:
             "detectable": detectable if case_effect not in ("clean", "outside") else None,
             "truth_z": z_truth,
             "runner_up": rep["verdict"].get("runner_up", ""),
-            "ranking": [e["name"] for e in rep["effects"][:3]], "seconds": seconds}
+            "ranking": [e["name"] for e in rep["effects"][:3]],
+            **_expected_entry(exp, rep), "seconds": seconds}
+
+
+def _expected_entry(exp, rep) -> dict:
+    """How the expected effect's candidate fared (for reading a miss): the share of the
+    excess above the noise floor it closes, its significance, and what kept it from a name
+    ('' when nothing did: a miss is then a rival's rank)."""
+    from ..verdict import MIN_EXCESS_CLOSED, practical_size
+    e = next((e for e in rep["effects"] if e["name"] == exp), None)
+    if e is None:
+        return {"exp_excess": None, "exp_z": None,
+                "exp_refusal": rep.get("skipped", {}).get(exp, "not scored")}
+    why = practical_size(e, rep["baseline"]["validation"], rep["noise_floor"] or 0.0,
+                         len(rep["effects"]))
+    if not why and e["excess_closed"] < MIN_EXCESS_CLOSED:
+        why = f"closes {e['excess_closed']:.2f} of the excess (< 1/3)"
+    return {"exp_excess": e["excess_closed"], "exp_z": e.get("significance_z"),
+            "exp_refusal": why}
 
 
 _BASE_SECONDS: dict = {}

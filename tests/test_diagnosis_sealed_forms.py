@@ -1,0 +1,76 @@
+"""The sealed truth family (diagnosis.benchmark.sealed, written in session 9): each form
+builds a finite case of the requested size on a plant's motion and grows with its amplitude
+factor. No diagnosis is run on these forms: the family stays unseen until the end of a
+piece of work."""
+import dataclasses
+
+import numpy as np
+import pytest
+
+from diagnosis.benchmark import EFFECT_SIZE, make_plant_case, plant_kinematics
+from diagnosis.benchmark.runner import MIN_SIZE
+from diagnosis.benchmark.truths import base_force
+from diagnosis.effects import EFFECTS
+
+#: the family's form of each effect
+FORM = {"acceleration": "flash_temperature", "load": "film_breakdown",
+        "asymmetry": "thrust_bearing", "stribeck_shape": "bimodal_roughness",
+        "position": "transfer_film", "inertia": "lossy_gearing", "delay": "fieldbus_hold",
+        "drift": "humidity_cycle", "backlash": "eccentric_gear", "gms": "bouc_wen"}
+#: a plant each sealed form reaches the requested size on (quick protocols: the XML-350's
+#: kinematics take 0.1 s)
+PLANT = {"acceleration": "xml350", "load": "xml350", "asymmetry": "xml350",
+         "stribeck_shape": "xml350", "position": "xml350", "inertia": "xml350",
+         "delay": "xml350", "drift": "xml350", "backlash": "xml350", "gms": "xml350"}
+
+
+def test_every_effect_with_truths_has_its_sealed_form_here():
+    assert set(PLANT) == set(FORM) == {n for n, e in EFFECTS.items() if e.truths}
+    for effect, form in FORM.items():
+        assert EFFECTS[effect].forms("sealed") == (form,), effect
+        assert form not in EFFECTS[effect].forms("all"), effect
+        assert EFFECTS[effect].truth(form).__module__ == "diagnosis.benchmark.sealed"
+
+
+@pytest.mark.parametrize("effect", sorted(PLANT))
+def test_sealed_form_builds_a_case_and_grows_with_its_amplitude(effect):
+    (form,) = EFFECTS[effect].forms("sealed")
+    plant = PLANT[effect]
+    case = make_plant_case(plant, effect, 1.0, 0.01, form=form, quick=True)
+    assert np.all(np.isfinite(case.data.F)) and np.all(np.isfinite(case.truth))
+    # a case the benchmark runs (the runner skips a form below MIN_SIZE of the size)
+    assert case.effect_rms >= MIN_SIZE * EFFECT_SIZE, (effect, form, case.effect_rms)
+    kin = plant_kinematics(plant, quick=True)
+    Fb = base_force(kin)
+    truth = EFFECTS[effect].truth(form)
+    size = [np.sqrt(np.mean((truth(kin, s) - Fb) ** 2)) for s in (0.5, 1.0)]
+    assert 0.0 < size[0] < size[1], (effect, form, size)
+
+
+def test_sealed_forms_refuse_plants_they_do_not_apply_to():
+    from diagnosis.benchmark.kinematics import fine_kinematics
+    from diagnosis.benchmark.sealed import (bimodal_roughness_truth, bouc_wen_truth,
+                                            eccentric_gear_truth, transfer_film_truth)
+    iso = plant_kinematics("mre_isolator", quick=True)
+    with pytest.raises(ValueError, match="Stribeck"):
+        bimodal_roughness_truth(iso, 1.0)
+    with pytest.raises(ValueError, match="LuGre"):
+        bouc_wen_truth(iso, 1.0)
+    with pytest.raises(ValueError, match="LuGre"):
+        eccentric_gear_truth(iso, 1.0)
+    # a one-way stroke (the press's) never revisits a position: no film pattern to learn
+    fk = fine_kinematics(plant_kinematics("xml350", quick=True))
+    one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
+    with pytest.raises(ValueError, match="revisits"):
+        transfer_film_truth.__wrapped__(one_way, 1.0)
+
+
+def test_sealed_forms_at_zero_amplitude_are_near_the_base():
+    # s scales the effect from nothing: at s = 0 each form is the base law (up to its own
+    # integration on the fine grid)
+    kin = plant_kinematics("xml350", quick=True)
+    Fb = base_force(kin)
+    sd = float(np.std(Fb))
+    for effect, form in FORM.items():
+        F0 = EFFECTS[effect].truth(form)(kin, 0.0)
+        assert np.sqrt(np.mean((F0 - Fb) ** 2)) < 0.02 * sd, (effect, form)

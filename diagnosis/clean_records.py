@@ -45,6 +45,7 @@ from friction.progress import status_lines
 from .benchmark.kinematics import (COLOUR_SAMPLES, FINE, fine_kinematics, measure_motion,
                                    noise_signal)
 from .benchmark.truths import _lugre_run
+from .verdict import decision_entries
 
 __all__ = ["FINE", "COLOUR_SAMPLES", "fine_truth", "clean_record", "clean_grid", "run_clean",
            "clean_summary", "NO_NAME", "level_truth_record"]
@@ -221,6 +222,7 @@ def _run_one(job, quick=False, cache_dir=None, give_level="coloured"):
                top_imprint=top.get("imprint"), top_size_reason=top.get("size_reason", ""),
                delay_samples=(rep["effect_details"].get("delay", {}).get("extras", {})
                               .get("delay", float("nan")) / data.dt),
+               effects=decision_entries(rep["effects"]),
                seconds=time.perf_counter() - t0)
     return row
 

@@ -42,7 +42,8 @@ import numpy as np
 
 from .significance import z_threshold
 
-__all__ = ["decide", "rank", "noise_floor", "practical_size", "MIN_EXCESS_CLOSED", "TIE",
+__all__ = ["decide", "rank", "noise_floor", "practical_size", "decision_entries",
+           "MIN_EXCESS_CLOSED", "TIE",
            "NOISE_RATIO", "NOISE_CLIP", "IMPRINT_NOISE", "IMPRINT_GAP"]
 
 #: a candidate must close at least this share of the held-out gap *above the noise floor*
@@ -103,6 +104,18 @@ def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> s
         return effect["size_reason"]
     return ""
 
+
+
+#: the keys of a ranked candidate entry :func:`decide` reads
+DECISION_KEYS = ("name", "excess_closed", "gap_closed", "significance_z", "imprint",
+                 "size_reason")
+
+
+def decision_entries(effects: list) -> list:
+    """The ranked candidate entries reduced to what :func:`decide` reads
+    (:data:`DECISION_KEYS`), for benchmark rows: a run's verdicts can be decided again
+    under other rules without running the diagnosis again."""
+    return [{k: e[k] for k in DECISION_KEYS if k in e} for e in effects]
 
 
 def noise_floor(data, r) -> float:

@@ -129,6 +129,7 @@ def truth_shrink(data: Dataset, truth: np.ndarray, report, base_truth=None) -> d
 
 
 def _score(case_effect, exp, rep, data, truth, seconds) -> dict:
+    from ..verdict import decision_entries
     from ..significance import improvement_z, z_threshold
     from ..verdict import NOISE_RATIO
     cause = rep["verdict"]["cause"]
@@ -165,7 +166,8 @@ def _score(case_effect, exp, rep, data, truth, seconds) -> dict:
             "truth_z": z_truth,
             "runner_up": rep["verdict"].get("runner_up", ""),
             "ranking": [e["name"] for e in rep["effects"][:3]],
-            **_expected_entry(exp, rep), "seconds": seconds}
+            **_expected_entry(exp, rep), "effects": decision_entries(rep["effects"]),
+            "seconds": seconds}
 
 
 def _expected_entry(exp, rep) -> dict:

@@ -36,7 +36,7 @@ from friction.extensions import (DRIFT_NAMES, POSITION_FORM_NAMES, POSITION_NAME
                                  position_change)
 
 __all__ = ["Candidate", "LawCandidate", "Context", "Extra", "make_context", "velocity_lag",
-           "Acceleration", "Load", "Drift", "Asymmetry", "AsymmetryTwins", "Position",
+           "Fixed", "Acceleration", "Load", "Drift", "Asymmetry", "AsymmetryTwins", "Position",
            "Inertia", "Delay", "StribeckShape", "Presliding", "MAX_FILTER_SAMPLES",
            "missing_columns"]
 
@@ -95,6 +95,12 @@ def make_context(fit) -> Context:
     L_hi = float(np.max(fit.load)) if fit.load is not None else 0.0
     return Context(sF, sv, sa, float(np.min(fit.x)), float(np.max(fit.x)), float(fit.t[0]),
                    float(fit.t[-1] - fit.t[0]), fit.dt, L0, L_span, L_hi, velocity_lag(fit))
+
+
+class Fixed(float):
+    """A start value (:attr:`Candidate.start`) the joint fit keeps: the data start found the
+    part of the formula it belongs to unsupported (its amplitude 0 and its time scale, which
+    then moves nothing, where it is)."""
 
 
 @dataclass
@@ -443,41 +449,96 @@ class Drift(Candidate):
         # friction level changing over time (warming, running-in, a lubricant change)
         return F * (1.0 + drift_change(data.t, self._packed(p, ctx)))
 
+    #: share of the fit record the forms are fitted on when the start chooses among them;
+    #: the rest is forecast, as the held-out part will be
+    FORECAST_SPLIT = 0.8
+    #: the forms the start chooses among (parts of the formula switched on): with or without
+    #: the linear trend, the one part that grows without bound beyond the record. (Choosing
+    #: among every single part and pair too follows the noise of the record's last fifth:
+    #: of the grid's 100 drift cases 65 named, 63 before, 12 gained and 10 lost; adding the
+    #: trend alone to the two: 63; the trend question alone: 72)
+    FORMS = (("sat", "step"), ("lin", "sat", "step"))
+
     def start(self, fit, Ff, r, ctx) -> dict:
         """Start values from the base's fit residual ``r`` [N] against its friction part
         ``Ff`` [N]: ``r ~ Ff d(t)`` is linear in the amplitudes; the saturation time
-        constant and the step's time and width are chosen on a grid by least squares."""
+        constant and the step's time and width are chosen on grids by least squares.
+
+        Whether the drift has its linear trend (:attr:`FORMS`) is chosen by forecasting: each
+        form is fitted on the first :attr:`FORECAST_SPLIT` of the fit record and scored on
+        the rest, the question the held-out part asks; a part left out is pinned off
+        (:class:`Fixed`). Fitted together, a trend and a saturating change of opposite signs
+        cancel inside the record and part outside it (a lubricant step on the valve: fit
+        NRMSE 0.064 -> 0.021, held out 0.103 -> 0.163)."""
         T = ctx.T or 1.0
-        s = fit.t - ctx.t0
         sub = _subsample(fit.t.size)
         t, f, rr = fit.t[sub], Ff[sub], r[sub]
-        lin = f * (t - ctx.t0) / T
         ex = {e.name: e for e in self.extras(ctx)}
+        early = t < ctx.t0 + self.FORECAST_SPLIT * T
         best = (np.inf, None)
-        for tau in np.geomspace(ex["tau_sat"].lo, ex["tau_sat"].hi, 24):
-            sat = f * (1.0 - np.exp(-np.clip(t - ctx.t0, 0.0, None) / tau))
-            sse, _ = _lsq(np.column_stack([lin, sat]), rr)
+        for form in self.FORMS:
+            if early.sum() < 10 or (~early).sum() < 5:
+                best = (0.0, self.FORMS[-1])
+                break
+            # the step's time inside the early part, with the start's margin
+            ts_hi = ctx.t0 + (self.FORECAST_SPLIT - self.STEP_MARGIN) * T
+            cols, _ = self._form_columns(form, t[early], f[early], rr[early], ctx, ex, ts_hi)
+            c = _lsq(cols, rr[early])[1]
+            late, _ = self._form_columns(form, t[~early], f[~early], None, ctx, ex, ts_hi,
+                                         fixed=_)
+            miss = rr[~early] - late @ c
+            sse = float(miss @ miss)
             if sse < best[0]:
-                best = (sse, tau)
-        tau = best[1]
-        sat = f * (1.0 - np.exp(-np.clip(t - ctx.t0, 0.0, None) / tau))
-        _, c = _lsq(np.column_stack([lin, sat]), rr)
-        r1 = rr - np.column_stack([lin, sat]) @ c
-        best = (np.inf, None, None)
-        for w in (ex["w_step"].lo, 0.01 * T, 0.05 * T):
-            w = float(np.clip(w, ex["w_step"].lo, ex["w_step"].hi))
-            for ts in np.linspace(ex["t_step"].lo, ex["t_step"].hi, 49):
-                st = f * 0.5 * (1.0 + np.tanh(0.5 * (t - ts) / w))
-                sse, _ = _lsq(st[:, None], r1)
-                if sse < best[0]:
-                    best = (sse, ts, w)
-        _, ts, w = best
-        st = f * 0.5 * (1.0 + np.tanh(0.5 * (t - ts) / w))
-        _, c = _lsq(np.column_stack([lin, sat, st]), rr)
-        del s
-        out = {"k_drift": c[0], "k_sat": c[1], "tau_sat": tau, "k_step": c[2], "t_step": ts,
-               "w_step": w}
-        return {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
+                best = (sse, form)
+        form = best[1]
+        cols, grid = self._form_columns(form, t, f, rr, ctx, ex, ex["t_step"].hi)
+        c = _lsq(cols, rr)[1]
+        amp = dict(zip(form, c))
+        out = {"k_drift": amp.get("lin", 0.0), "k_sat": amp.get("sat", 0.0),
+               "tau_sat": grid.get("tau", ex["tau_sat"].x0), "k_step": amp.get("step", 0.0),
+               "t_step": grid.get("ts", ex["t_step"].x0), "w_step": grid.get("w", ex["w_step"].x0)}
+        out = {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
+        off = {"lin": ("k_drift",), "sat": ("k_sat", "tau_sat"),
+               "step": ("k_step", "t_step", "w_step")}
+        for part, names in off.items():
+            if part not in form:
+                for n in names:
+                    out[n] = Fixed(out[n])
+        return out
+
+    def _form_columns(self, form, t, f, rr, ctx, ex, ts_hi, fixed=None):
+        """Regressors of the parts ``form`` of ``Ff d(t)`` at times ``t`` [s], their time
+        scales chosen on ``rr`` by least squares over grids (or taken from ``fixed``); the
+        columns and the chosen ``{"tau", "ts", "w"}``."""
+        T = ctx.T or 1.0
+        lin = f * (t - ctx.t0) / T
+
+        def sat(tau):
+            return f * (1.0 - np.exp(-np.clip(t - ctx.t0, 0.0, None) / tau))
+
+        def step(ts, w):
+            return f * 0.5 * (1.0 + np.tanh(0.5 * (t - ts) / w))
+        grid = dict(fixed or {})
+        base = [lin] if "lin" in form else []
+        if "sat" in form:
+            if "tau" not in grid:
+                taus = np.geomspace(ex["tau_sat"].lo, ex["tau_sat"].hi, 24)
+                grid["tau"] = min(taus, key=lambda tau: _lsq(
+                    np.column_stack(base + [sat(tau)]), rr)[0])
+            base = base + [sat(grid["tau"])]
+        if "step" in form:
+            if "ts" not in grid:
+                # after the smooth parts: a step is what they leave
+                r1 = rr - np.column_stack(base) @ _lsq(np.column_stack(base), rr)[1] \
+                    if base else rr
+                tss = np.linspace(ex["t_step"].lo, max(ts_hi, ex["t_step"].lo), 49)
+                ws = [float(np.clip(w, ex["w_step"].lo, ex["w_step"].hi))
+                      for w in (ex["w_step"].lo, 0.01 * T, 0.05 * T)]
+                grid["ts"], grid["w"] = min(
+                    ((ts, w) for w in ws for ts in tss),
+                    key=lambda p: _lsq(step(*p)[:, None], r1)[0])
+            base = base + [step(grid["ts"], grid["w"])]
+        return np.column_stack(base), grid
 
 
 def _subsample(n, most: int = 6000) -> np.ndarray:

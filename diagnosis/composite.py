@@ -27,7 +27,7 @@ from scipy.optimize import least_squares
 from friction.base import FrictionModel
 from identification.space import ParameterSpace
 
-from .candidates import Candidate, Context
+from .candidates import Candidate, Context, Fixed
 
 __all__ = ["Composite", "fit_composite", "law_space", "reporting", "STATIC_LEVELS",
            "STATIC_LEVEL_SPAN", "LONG_JACOBIAN_BYTES", "STRUCTURED_JACOBIAN"]
@@ -143,12 +143,15 @@ def _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx):
     """Start values of the extras of effects with a ``start`` hook (their time scales,
     wavelengths and positions chosen on the data, :meth:`diagnosis.effects.Candidate.
     start`), from the residual of ``law`` at its current values with the other effects at
-    their starts; extras given in ``extras0`` are kept."""
+    their starts; extras given in ``extras0`` are kept. Returns the starts and the names of
+    the extras a start pinned (:class:`diagnosis.candidates.Fixed`: the joint fit keeps
+    them)."""
     given = extras0 or {}
     starters = [eff for eff in effects if eff.start is not None
                 and any(e.name not in given for e in eff.force_extras(ctx))]
+    pinned = set()
     if not starters:
-        return x_ex0
+        return x_ex0, pinned
     names = [e.name for e in ex]
     Fl = Composite(law, list(base_names), [], {}, ctx).predict(fit)
     Ff = Fl - law.conservative_force(fit.x)
@@ -160,7 +163,9 @@ def _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx):
         for k, val in eff.start(fit, Ff, r, ctx).items():
             if k in names and k not in given:
                 x_ex0[names.index(k)] = val
-    return x_ex0
+                if isinstance(val, Fixed):
+                    pinned.add(k)
+    return x_ex0, pinned
 
 
 def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, *,
@@ -220,8 +225,13 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     lo = np.array([e.lo for e in ex])
     hi = np.array([e.hi for e in ex])
     x_ex0 = np.array([(extras0 or {}).get(e.name, e.x0) for e in ex])
-    x_ex0 = _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx)
-    u_ex0 = (x_ex0 - lo) / (hi - lo) if ex else np.zeros(0)
+    x_ex0, pinned = _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx)
+    for j, e in enumerate(ex):
+        if e.name in pinned:  # a part the data start found unsupported stays at its value
+            lo[j] = hi[j] = x_ex0[j]
+    span = hi - lo
+    u_ex0 = (np.divide(x_ex0 - lo, span, out=np.zeros_like(x_ex0), where=span > 0)
+             if ex else np.zeros(0))
     u0 = np.concatenate([u_law0, np.clip(u_ex0, 0.0, 1.0)])
     # kernel inputs validated once; each evaluation only repacks theta
     t, v, a, load, x = law._inputs(fit.t, fit.v, **_law_inputs(law, fit))

@@ -111,3 +111,39 @@ def test_confounded_covariates_are_reported_beside_the_name():
     verdict = {"cause": "asymmetry", "gap_closed": 0.7}
     _note_confounding(verdict, [{"name": "load", "gap_closed": 0.13}], [free])
     assert "confounded" not in verdict
+
+
+def test_drift_start_keeps_its_trend_only_where_the_trend_forecasts():
+    # the drift's start fits each form on the first 80 % of the fit record and forecasts
+    # the rest: a step in the levels is no trend (pinned off, so a trend and a saturating
+    # change cannot cancel inside the record and part beyond it); a steady wear-in is one
+    from diagnosis.candidates import Fixed
+    from diagnosis.composite import fit_composite
+    from diagnosis.effects import CANDIDATES, make_context
+    data = make_case("clean", 1.0, 0.0, n=6000)
+    ctx = make_context(data)
+    drift = CANDIDATES["drift"]
+    Ff = np.ones(len(data))
+    u = (data.t - ctx.t0) / ctx.T
+    rng = np.random.default_rng(3)
+    noise = 0.01 * rng.standard_normal(u.size)
+    step = drift.start(data, Ff, 0.3 * (u > 0.45) + noise, ctx)
+    assert isinstance(step["k_drift"], Fixed) and step["k_drift"] == 0.0
+    assert step["k_step"] == pytest.approx(0.3, abs=0.05)
+    assert abs(step["t_step"] - (ctx.t0 + 0.45 * ctx.T)) < 0.05 * ctx.T
+    trend = drift.start(data, Ff, 0.3 * u + noise, ctx)
+    assert not isinstance(trend["k_drift"], Fixed)
+    assert not any(isinstance(v, Fixed) for v in trend.values())
+    # a pinned start is what the joint fit keeps
+    from friction import make_model
+    law = make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=5.0, Fc=1.0, Fs=2.0,
+                     vs=2e-3)
+    truth = drift.apply(law.simulate(data.t, data.v), {"k_drift": 0.0, "k_sat": 0.0,
+                        "tau_sat": 1.0, "k_step": 0.3, "t_step": ctx.t0 + 0.45 * ctx.T,
+                        "w_step": 0.01 * ctx.T}, data, ctx)
+    from friction.dataset import Dataset
+    d = Dataset.from_arrays(data.t, truth + 0.005 * np.std(truth) * rng.standard_normal(u.size),
+                            x=data.x, v=data.v, check_units=False)
+    comp, _ = fit_composite(law, ["Fc", "Fs"], [drift], d, make_context(d))
+    assert comp.extras["k_drift"] == 0.0  # pinned by the start
+    assert comp.extras["k_step"] == pytest.approx(0.3, abs=0.1)

@@ -29,7 +29,7 @@ def test_equal_models_give_a_standard_normal_statistic():
                                noise + 0.3 * rng.standard_normal(3000)))
     z = np.array(z)
     assert abs(np.mean(z)) < 0.2 and 0.8 < np.std(z) < 1.2
-    assert np.mean(z > z_threshold(1)) < 0.03  # the 1 % level holds
+    assert np.mean(z > z_threshold(1, level=0.01)) < 0.03  # the 1 % level holds
 
 
 def test_correlated_errors_are_not_counted_as_independent_samples():
@@ -222,7 +222,7 @@ def test_encompassing_statistic_is_standard_normal_without_a_common_gap_and_reso
         enc.append(encompassing_z(noise + g, noise + 0.2 * g))
     z0 = np.array(z0)
     assert abs(np.mean(z0)) < 0.2 and 0.8 < np.std(z0) < 1.2
-    assert np.mean(z0 > z_threshold(1)) < 0.03
+    assert np.mean(z0 > z_threshold(1, level=0.01)) < 0.03
     # where the noise dominates it resolves the gap with a larger statistic: 1 / (1 - c/2)
     # times the squared-error test's for a candidate catching a share c of it (1.67 at 80 %)
     assert 1.45 < np.median(enc) / np.median(dm) < 1.9

@@ -780,6 +780,19 @@ class Delay(Candidate):
 
 
 class StribeckShape(Candidate):
+    """The law's Stribeck curve in another shape of its family: a free exponent ``alpha``
+    (Gaussian) or the other shape (Lorentzian).
+
+    Its reach ends there: a rational drop, a hydrodynamic rise bending as sqrt(|v|), a
+    stiction spike or a lift-off kink lie outside the family (grid: 2 of 74). Tried in
+    session 9 and not kept: a speed map on the law's output, ``F (1 + m(|v|))`` with ``m``
+    piecewise linear in log |v| on 8 knots over two decades below the top speed, beside
+    these variants. It named 7 of 45 detectable Stribeck cases (was 0), most refused for
+    significance (z 1.6-2.9): the map acts on the output, the truths' curves inside the
+    bristle dynamics (the XML-350's gap lies in its presliding transitions), so the map
+    belongs in the law's g(v) - a kernel change of the LuGre family and its FMUs.
+    """
+
     def applicable(self, law, fit, ctx):
         if not hasattr(law.params, "shape") or not hasattr(law.params, "alpha"):
             return False, f"{law.name} has no Stribeck-shape parameters"

@@ -15,6 +15,13 @@ short protocols, 1,400-5,000 samples a record).
 
 Goal: 0 names (every verdict ``none`` or ``unexplained``).
 
+Results of session 9 (2026-11-24 11:41 UTC, 2 workers, 507 s wall, code of commit 656e3a8:
+the drift's trend chosen by forecasting, ties to the simpler candidate within 5 %): 500
+records, **0 named**, 242 ``none`` / 258 ``unexplained``, as before. On c5f2b7d (the drift's
+saturating time constant still free up to 3 T without the trend) 2 clean damping-rig records
+(0.5 % noise) were named ``drift`` for a 2 % rise with tau_sat = 2.1 T; 656e3a8 keeps it at
+most T/3 without the trend.
+
 Results (2026-11-24 07:38 UTC, short protocols, 2 workers, 453 s wall, code of commit
 1bba29f: the verdict's significance is the forecast-encompassing statistic, the acceleration
 part has its velocity-weight exponent, the delay's size adds back the velocity channel's own

@@ -478,15 +478,16 @@ class Drift(Candidate):
         early = t < ctx.t0 + self.FORECAST_SPLIT * T
         best = (np.inf, None)
         for form in self.FORMS:
-            if early.sum() < 10 or (~early).sum() < 5:
+            if early.sum() < 10 or (~early).sum() < 5:  # too short to forecast: all parts
                 best = (0.0, self.FORMS[-1])
                 break
             # the step's time inside the early part, with the start's margin
             ts_hi = ctx.t0 + (self.FORECAST_SPLIT - self.STEP_MARGIN) * T
-            cols, _ = self._form_columns(form, t[early], f[early], rr[early], ctx, ex, ts_hi)
+            cols, scales = self._form_columns(form, t[early], f[early], rr[early], ctx, ex,
+                                              ts_hi)
             c = _lsq(cols, rr[early])[1]
             late, _ = self._form_columns(form, t[~early], f[~early], None, ctx, ex, ts_hi,
-                                         fixed=_)
+                                         fixed=scales)
             miss = rr[~early] - late @ c
             sse = float(miss @ miss)
             if sse < best[0]:

@@ -34,7 +34,10 @@ from scipy.stats import norm
 
 __all__ = ["encompassing_z", "improvement_z", "z_threshold", "FAMILY_LEVEL"]
 
-#: family-wise false-attribution level of the significance path of :func:`diagnosis.decide`
+#: family-wise false-attribution level of the significance path of :func:`diagnosis.decide`.
+#: 5 % was tried (session 9, re-deciding the 896-case grid offline): 10 more right names
+#: (short valve records' delays) but 7 more wrong ones (five on the damping rig), so 1 %
+#: stays; on 500 clean records the test binds only four press records (z <= 1.47)
 FAMILY_LEVEL = 0.01
 
 

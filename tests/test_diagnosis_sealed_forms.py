@@ -7,10 +7,10 @@ import dataclasses
 import numpy as np
 import pytest
 
-from diagnosis.benchmark import EFFECT_SIZE, make_plant_case, plant_kinematics
-from diagnosis.benchmark.runner import MIN_SIZE
+from diagnosis.benchmark import plant_kinematics
 from diagnosis.benchmark.truths import base_force
 from diagnosis.effects import EFFECTS
+from truth_form_checks import assert_builds_and_grows
 
 #: the family's form of each effect
 FORM = {"acceleration": "flash_temperature", "load": "film_breakdown",
@@ -35,16 +35,7 @@ def test_every_effect_with_truths_has_its_sealed_form_here():
 @pytest.mark.parametrize("effect", sorted(PLANT))
 def test_sealed_form_builds_a_case_and_grows_with_its_amplitude(effect):
     (form,) = EFFECTS[effect].forms("sealed")
-    plant = PLANT[effect]
-    case = make_plant_case(plant, effect, 1.0, 0.01, form=form, quick=True)
-    assert np.all(np.isfinite(case.data.F)) and np.all(np.isfinite(case.truth))
-    # a case the benchmark runs (the runner skips a form below MIN_SIZE of the size)
-    assert case.effect_rms >= MIN_SIZE * EFFECT_SIZE, (effect, form, case.effect_rms)
-    kin = plant_kinematics(plant, quick=True)
-    Fb = base_force(kin)
-    truth = EFFECTS[effect].truth(form)
-    size = [np.sqrt(np.mean((truth(kin, s) - Fb) ** 2)) for s in (0.5, 1.0)]
-    assert 0.0 < size[0] < size[1], (effect, form, size)
+    assert_builds_and_grows(effect, form, PLANT[effect])
 
 
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():

@@ -4,10 +4,9 @@ amplitude factor."""
 import numpy as np
 import pytest
 
-from diagnosis.benchmark import EFFECT_SIZE, make_plant_case, plant_kinematics
-from diagnosis.benchmark.runner import MIN_SIZE
-from diagnosis.benchmark.truths import base_force
+from diagnosis.benchmark import plant_kinematics
 from diagnosis.effects import EFFECTS
+from truth_form_checks import assert_builds_and_grows
 
 #: the family's form of each effect
 FORM = {"acceleration": "contact_aging", "load": "load_stribeck", "asymmetry": "lip_roll",
@@ -30,17 +29,7 @@ def test_the_family_is_in_the_open_grid_last():
 
 @pytest.mark.parametrize("effect", sorted(PLANT))
 def test_seen2_form_builds_a_case_and_grows_with_its_amplitude(effect):
-    form = FORM[effect]
-    plant = PLANT[effect]
-    case = make_plant_case(plant, effect, 1.0, 0.01, form=form, quick=True)
-    assert np.all(np.isfinite(case.data.F)) and np.all(np.isfinite(case.truth))
-    # a case the benchmark runs (the runner skips a form below MIN_SIZE of the size)
-    assert case.effect_rms >= MIN_SIZE * EFFECT_SIZE, (effect, form, case.effect_rms)
-    kin = plant_kinematics(plant, quick=True)
-    Fb = base_force(kin)
-    truth = EFFECTS[effect].truth(form)
-    size = [np.sqrt(np.mean((truth(kin, s) - Fb) ** 2)) for s in (0.5, 1.0)]
-    assert 0.0 < size[0] < size[1], (effect, form, size)
+    assert_builds_and_grows(effect, FORM[effect], PLANT[effect])
 
 
 def test_seen2_forms_refuse_plants_they_do_not_apply_to():

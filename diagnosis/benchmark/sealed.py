@@ -80,26 +80,16 @@ from scipy.special import erf
 
 from friction.shapes import SHAPES, stribeck_g
 
+from ..effects_backlash import PLANT_GAP_SHARE
+from ..effects_gms import PLANT_PRESLIDING_SHARE
 from .kinematics import PlantKinematics
-from .truths import MAX_DELAY_SAMPLES, _base_parts, _bump_centre, _level, level_inside, \
-    on_fine_grid
+from .truths import (MAX_DELAY_SAMPLES, _base_parts, _bump_centre, _level, _lugre_params,
+                     _motion_time, _presliding_path, _span, level_inside, on_fine_grid)
 
 __all__ = ["flash_temperature_truth", "film_breakdown_truth", "thrust_bearing_truth",
            "bimodal_roughness_truth", "transfer_film_truth", "lossy_gearing_truth",
            "fieldbus_hold_truth", "humidity_cycle_truth", "eccentric_gear_truth",
            "bouc_wen_truth"]
-
-
-def _motion_time(kin: PlantKinematics) -> float:
-    """A time scale of the motion [s]: top speed over top acceleration."""
-    sc = kin.scales
-    return sc["v99"] / max(sc["a99"], 1e-12)
-
-
-def _span(kin: PlantKinematics) -> float:
-    """The stroke the record visits [m]."""
-    sc = kin.scales
-    return (sc["x_hi"] - sc["x_lo"]) or 1.0
 
 
 def _smooth_max0(u, eps):
@@ -476,7 +466,7 @@ def humidity_cycle_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 #: mean lost motion of ``eccentric_gear`` at strength 1, as a share of the stroke [-] (as the
 #: open backlash forms), its relative variation per revolution [-] and the travel of one
 #: revolution as a share of the stroke [-]
-GAP_SHARE, GAP_RUNOUT, REVOLUTION_SHARE = 0.05, 0.8, 0.5
+GAP_SHARE, GAP_RUNOUT, REVOLUTION_SHARE = PLANT_GAP_SHARE, 0.8, 0.5
 
 
 @njit(cache=True)
@@ -541,10 +531,7 @@ def eccentric_gear_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     The open forms and the candidate have one play width; here the lost motion at a
     reversal depends on where along the stroke it happens.
     """
-    if kin.base.name != "lugre":
-        raise ValueError(f"backlash (eccentric_gear): needs a classic LuGre base, the "
-                         f"{kin.plant} base is {kin.base.name}")
-    p = kin.base.params
+    p = _lugre_params(kin, "backlash (eccentric_gear)")
     xd = np.ascontiguousarray(kin.x, dtype=float)
     phase = 2.0 * np.pi * (xd - kin.scales["x_lo"]) / (REVOLUTION_SHARE * _span(kin))
     mean_half = 0.5 * GAP_SHARE * max(float(s), 0.0) * float(np.ptp(xd))
@@ -559,7 +546,7 @@ def eccentric_gear_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 # -- gms -------------------------------------------------------------------------------------
 #: presliding path ``bouc_wen`` adds at strength 1, as a share of the stroke [-] (a third of
 #: the open gms forms' presliding distance, as ``bliman_sorine``)
-PRESLIDING_SHARE = 0.03
+PRESLIDING_SHARE = PLANT_PRESLIDING_SHARE
 #: largest share of the loading term in the unloading stiffness's reduction [-]
 BW_GAMMA = 0.4
 
@@ -629,13 +616,9 @@ def bouc_wen_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     rate-independent exponent 1.5 with symmetric stiffness, nor an elastic range with a
     half-sine transition (elasto-plastic), nor two relaxing states (Bliman-Sorine).
     """
-    if kin.base.name != "lugre":
-        raise ValueError(f"gms (bouc_wen): needs a classic LuGre base, the {kin.plant} base "
-                         f"is {kin.base.name}")
-    p = kin.base.params
+    p = _lugre_params(kin, "gms (bouc_wen)")
     s0 = float(p.sigma0)
-    e0 = float(p.Fs) / s0
-    extra = max(float(s), 0.0) * PRESLIDING_SHARE * float(np.ptp(kin.x)) / 3.0
+    e0, extra = _presliding_path(kin, s, PRESLIDING_SHARE)
     e = e0 + extra
     r = extra / e
     v = np.ascontiguousarray(kin.v, dtype=float)

@@ -79,26 +79,16 @@ from numba import njit
 from friction.lugre import bristle_update
 from friction.shapes import SHAPES, stribeck_g
 
+from ..effects_backlash import PLANT_GAP_SHARE
+from ..effects_gms import PLANT_PRESLIDING_SHARE
 from .kinematics import PlantKinematics
-from .truths import (MAX_DELAY_SAMPLES, _base_parts, _bump_centre, _level, level_inside,
-                     on_fine_grid)
+from .truths import (MAX_DELAY_SAMPLES, _base_parts, _bump_centre, _level, _lugre_params,
+                     _motion_time, _presliding_path, _span, level_inside, on_fine_grid)
 
 __all__ = ["contact_aging_truth", "load_stribeck_truth", "lip_roll_truth",
            "film_liftoff_truth", "bent_rail_truth", "geared_inertia_truth",
            "sigma_delta_truth", "archard_wear_truth", "spring_loaded_truth",
            "bliman_sorine_truth"]
-
-
-def _motion_time(kin: PlantKinematics) -> float:
-    """A time scale of the motion [s]: top speed over top acceleration."""
-    sc = kin.scales
-    return sc["v99"] / max(sc["a99"], 1e-12)
-
-
-def _span(kin: PlantKinematics) -> float:
-    """The stroke the record visits [m]."""
-    sc = kin.scales
-    return (sc["x_hi"] - sc["x_lo"]) or 1.0
 
 
 # -- acceleration ---------------------------------------------------------------------------
@@ -399,9 +389,9 @@ def archard_wear_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: lost motion of ``spring_loaded`` at strength 1, as a share of the stroke [-] (as the open
-#: backlash forms)
-GAP_SHARE = 0.05
+#: lost motion of ``spring_loaded`` at strength 1, as a share of the stroke [-] (the open
+#: backlash forms')
+GAP_SHARE = PLANT_GAP_SHARE
 
 
 @njit(cache=True)
@@ -465,10 +455,7 @@ def spring_loaded_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     ndarray
         Force [N] on ``kin``'s grid.
     """
-    if kin.base.name != "lugre":
-        raise ValueError(f"backlash (spring_loaded): needs a classic LuGre base, the "
-                         f"{kin.plant} base is {kin.base.name}")
-    p = kin.base.params
+    p = _lugre_params(kin, "backlash (spring_loaded)")
     half = 0.5 * GAP_SHARE * max(float(s), 0.0) * float(np.ptp(kin.x))
     m = 0.01 * float(p.Fc) / max(kin.scales["a99"], 1e-12)
     kh = 100.0 * float(p.sigma0)
@@ -487,9 +474,9 @@ def spring_loaded_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
 # -- gms -------------------------------------------------------------------------------------
 #: presliding path ``bliman_sorine`` adds at strength 1, as a share of the stroke [-]: the
-#: fast state's path constant grows by a third of it (as the open gms forms' presliding
+#: fast state's path constant grows by a third of it (the open gms forms' presliding
 #: distance)
-PRESLIDING_SHARE = 0.03
+PRESLIDING_SHARE = PLANT_PRESLIDING_SHARE
 #: largest weight b of the slow state of ``bliman_sorine`` [-] and its path constant over
 #: the fast state's [-]
 BS_WEIGHT, BS_RATIO = 0.3, 4.0
@@ -545,13 +532,9 @@ def bliman_sorine_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     ndarray
         Force [N] on ``kin``'s grid.
     """
-    if kin.base.name != "lugre":
-        raise ValueError(f"gms (bliman_sorine): needs a classic LuGre base, the {kin.plant} "
-                         f"base is {kin.base.name}")
-    p = kin.base.params
+    p = _lugre_params(kin, "gms (bliman_sorine)")
     s0 = float(p.sigma0)
-    e0 = float(p.Fs) / s0
-    extra = max(float(s), 0.0) * PRESLIDING_SHARE * float(np.ptp(kin.x)) / 3.0
+    e0, extra = _presliding_path(kin, s, PRESLIDING_SHARE)
     e1 = e0 + extra
     b = BS_WEIGHT * extra / e1
     k1 = float(p.Fs) / e1

@@ -399,3 +399,33 @@ def _level(kin: PlantKinematics) -> float:
     if kin.base.name == "mre_lugre":
         return float(p.beta / p.alpha)
     return float(p.Fc)
+
+
+def _motion_time(kin: PlantKinematics) -> float:
+    """A time scale of the motion [s]: top speed over top acceleration."""
+    sc = kin.scales
+    return sc["v99"] / max(sc["a99"], 1e-12)
+
+
+def _span(kin: PlantKinematics) -> float:
+    """The stroke the record visits [m]."""
+    sc = kin.scales
+    return (sc["x_hi"] - sc["x_lo"]) or 1.0
+
+
+def _lugre_params(kin: PlantKinematics, form: str):
+    """Parameters of ``kin``'s base law, which the truth ``form`` (``"effect (form)"``) needs
+    to be a classic LuGre (its bristle, damping, curve and viscous term); ValueError
+    naming the form and the plant's base otherwise."""
+    if kin.base.name != "lugre":
+        raise ValueError(f"{form}: needs a classic LuGre base, the {kin.plant} base is "
+                         f"{kin.base.name}")
+    return kin.base.params
+
+
+def _presliding_path(kin: PlantKinematics, s: float, share: float) -> tuple[float, float]:
+    """The base bristle's presliding path ``Fs / sigma0`` [m] and the path a presliding
+    truth adds at amplitude ``s``: ``s`` x ``share`` x the stroke / 3 [m] (``s`` < 0: 0)."""
+    p = kin.base.params
+    return (float(p.Fs) / float(p.sigma0),
+            max(float(s), 0.0) * share * float(np.ptp(kin.x)) / 3.0)

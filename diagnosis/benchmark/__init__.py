@@ -64,16 +64,17 @@ outside             a sinusoidal electrical ripple at 0.0537 x the sample rate (
 The table gives each effect's first truth form (``run_benchmark(forms="first")``, the
 default). **Generalisation grid** (``forms="all"``, ``measured=True``,
 ``benchmarks/bench_diagnosis_forms.py``): every open form of every effect - at least three
-from different physics (:mod:`.forms`; :mod:`.seen` and :mod:`.seen2`, the first two sealed
-families, seen and moved into the open grid; backlash's rigid, compliant and impact contacts; GMS's Maxwell-slip with
-10 and 4 blocks, Dahl, elasto-plastic) - with the motion channels a user records: positions
-quantised to 50-1000 encoder counts per sample at the top speed and differentiated by
-``np.gradient``, backward differences or a low-passed gradient
-(:func:`.kinematics.measure_motion`, :data:`.runner.MEASURED` in turn). The **sealed** family
-(:mod:`.sealed`, ``forms="sealed"``) is one more form per effect, kept out of all tuning and
-run only at the end of a piece of work (the present one written in session 9 and run once at
-its end, so now seen: ``benchmarks/bench_diagnosis_forms.py`` has its figures). Every truth is integrated along the plant's continuous motion on a grid
-:data:`.kinematics.FINE` x finer than the data (:func:`.truths.on_fine_grid`); the oracle's
+from different physics (:mod:`.forms`; :mod:`.seen`, :mod:`.seen2` and :mod:`.seen3`, the
+first three sealed families, seen and moved into the open grid; backlash's rigid, compliant
+and impact contacts; GMS's Maxwell-slip with 10 and 4 blocks, Dahl, elasto-plastic) - with
+the motion channels a user records: positions quantised to 50-1000 encoder counts per
+sample at the top speed and differentiated by ``np.gradient``, backward differences or a
+low-passed gradient (:func:`.kinematics.measure_motion`, :data:`.runner.MEASURED` in turn).
+The **sealed** family (:mod:`.sealed`, ``forms="sealed"``) is one more form per effect, kept
+out of all tuning and run only at the end of a piece of work (the present one written in
+session 10, sealed: not run; session 9's, run once at its end, is :mod:`.seen3`, its
+figures in ``benchmarks/bench_diagnosis_forms.py``). Every truth is integrated along the
+plant's continuous motion on a grid :data:`.kinematics.FINE` x finer than the data (:func:`.truths.on_fine_grid`); the oracle's
 figures (detectable, truth shrink) take the base law's own discretisation at the data rate
 off the truth (``BenchCase.info["discretisation"]``), since no candidate is asked to explain
 it. A form that cannot make 0.7 of the requested size on a plant's motion is skipped and
@@ -88,8 +89,8 @@ Layout
 ------
 :mod:`.cases` (the datasets), :mod:`.kinematics` (per-plant motions, the fine grid, measured
 channels), :mod:`.truths` (first truth forces), :mod:`.forms` (the other open forms),
-:mod:`.seen` and :mod:`.seen2` (the first two sealed families, now open), :mod:`.sealed`
-(the sealed family),
+:mod:`.seen`, :mod:`.seen2` and :mod:`.seen3` (the first three sealed families, now open),
+:mod:`.sealed` (the sealed family),
 :mod:`.scoring` (localisation, shrink, summaries), :mod:`.runner` (:func:`run_benchmark`),
 :mod:`.cli` (text table, ``python -m diagnosis.benchmark``).
 """

@@ -13,6 +13,11 @@ Candidate.jac`), the effects' own columns exact where the candidate gives them, 
 differences of that effect alone on the law's force as simulated: the columns of scipy's
 ``"2-point"`` differences of the whole residual (to rounding), without a simulation of the
 law for each of the effects' columns or the whole stack evaluated for each column.
+
+An effect with an ``inside`` hook (``inside(p, data, ctx) -> level`` [-], e.g. the
+``stribeck_shape`` speed map) scales the law's friction levels *inside* its bristle
+dynamics (a LuGre law's :meth:`friction.lugre.LuGre.simulate_level`): its extras change the
+law's simulation, so they are differenced with the law's parameters.
 """
 from __future__ import annotations
 
@@ -28,6 +33,7 @@ from friction.base import FrictionModel
 from identification.space import ParameterSpace
 
 from .candidates import Candidate, Context, Fixed
+from friction.lugre import lugre_level_run
 
 __all__ = ["Composite", "fit_composite", "law_space", "reporting", "STATIC_LEVELS",
            "STATIC_LEVEL_SPAN", "LONG_JACOBIAN_BYTES", "STRUCTURED_JACOBIAN"]
@@ -88,7 +94,11 @@ class Composite:
         (:meth:`friction.base.FrictionModel.record_start_state`)."""
         kw = _law_inputs(self.law, data)
         s0 = self.law.record_start_state(data.t, data.v, F=data.F, **kw)
-        F = self.law.simulate(data.t, data.v, state0=s0, **kw)
+        lev = _inside_level(self.effects, self.extras, data, self.ctx)
+        if lev is None:
+            F = self.law.simulate(data.t, data.v, state0=s0, **kw)
+        else:
+            F = self.law.simulate_level(data.t, data.v, lev, state0=s0)
         return _apply_effects(F, self.effects, self.extras, data, self.ctx, self.law)
 
     def describe(self) -> dict:
@@ -120,6 +130,22 @@ def _law_inputs(law, data) -> dict:
             raise ValueError(f"{law.name} needs a load column in the data")
         kw["load"] = data.load
     return kw
+
+
+def _inside(effects):
+    """The effects that scale the law's levels inside its bristle dynamics (an ``inside``
+    hook: ``inside(p, data, ctx) -> level`` [-])."""
+    return [e for e in effects if getattr(e, "inside", None) is not None]
+
+
+def _inside_level(effects, extras, data, ctx):
+    """The product of the ``inside`` effects' relative levels along ``data`` [-], or
+    ``None`` when there is none."""
+    lev = None
+    for eff in _inside(effects):
+        lev_e = np.asarray(eff.inside(extras, data, ctx), float)
+        lev = lev_e if lev is None else lev * lev_e
+    return lev
 
 
 def _staged(effects):
@@ -253,25 +279,37 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         except (ValueError, TypeError):  # values the law rejects (NaN cost below)
             return None
 
-    # the law's force depends on the law's parameters only: a step in an effect's extras
-    # (most columns of a finite-difference Jacobian) reuses the last simulation
+    # the law's force depends on the law's parameters (and the extras of effects acting
+    # inside it) only: a step in another effect's extras (most columns of a finite-
+    # difference Jacobian) reuses the last simulation
     memo = {}
+    inside = _inside(effects)
+    inside_names = [e.name for eff in inside for e in eff.force_extras(ctx)]
+    if inside and not hasattr(law, "simulate_level"):
+        raise ValueError(f"{', '.join(e.name for e in inside)} scales the levels inside "
+                         f"the law, which {law.name} cannot (a classic LuGre can)")
 
-    def law_force(xl):
-        key = xl.tobytes()
+    def law_force(xl, extras=None):
+        key = xl.tobytes() + (np.array([extras[n] for n in inside_names]).tobytes()
+                              if inside else b"")
         if key not in memo:
             theta = law.population_theta(base_names, xl[None, :])[0]
             trial = trial_law(xl) if nb else law
             s0 = (law.initial_state() if trial is None
                   else trial._start_from(t, v, a, load, x, F0))
-            F, _ = kern(t, v, a, load, x, theta, 0, s0)
+            if inside:
+                F = np.empty(t.size)
+                lugre_level_run(t, v, theta, _inside_level(effects, extras, fit, ctx),
+                                float(s0[0]), F)
+            else:
+                F, _ = kern(t, v, a, load, x, theta, 0, s0)
             memo.clear()
             memo[key] = (F, trial)
         return memo[key]
 
     def residual(u):
         xl, extras = unpack(u)
-        F, trial = law_force(xl)
+        F, trial = law_force(xl, extras)
         F = _apply_effects(F, effects, extras, fit, ctx,
                            (trial or law.with_values(**dict(zip(base_names, xl))))
                            if elastic else None)
@@ -299,8 +337,9 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         residual = _counted(residual, prog, f"fit {'+'.join(e.name for e in effects) or 'base'}")
 
     jac = "2-point"
-    if STRUCTURED_JACOBIAN and not elastic and any(getattr(e, "exact_extras", ())
-                                                   for e in _staged(effects)):
+    # (not with an effect inside the law: its extras move the law's simulation)
+    if STRUCTURED_JACOBIAN and not elastic and not inside and any(
+            getattr(e, "exact_extras", ()) for e in _staged(effects)):
         # only where an effect has exact columns: elsewhere the structured columns save
         # little (an effect is cheap next to the law's simulations) and scipy's are kept
         # to the last bit, so are the fits (a fit stopping in a flat valley moves by up

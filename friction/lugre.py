@@ -17,6 +17,11 @@ frozen at the step's midpoint velocity is
 which is unconditionally stable (|e^{-a h}| <= 1 for any h and sigma0) and second-order
 accurate for sampled motion. Explicit Euler ``z += h (v - a z)`` is kept as ``method="euler"``:
 it oscillates once h a > 1 and diverges once h a > 2 (seed 000 Eqs. 27-30).
+
+Levels scaled along the record (:meth:`LuGre.simulate_level`, :func:`lugre_level_run`): the
+curve ``l(t) g(v)`` and the viscous term ``l(t) sigma2 v`` with a relative level ``l > 0``
+given at the samples - a change of the friction levels *inside* the bristle dynamics (the
+diagnosis's speed map of the Stribeck curve), advanced by the same exact update.
 """
 from __future__ import annotations
 
@@ -30,7 +35,7 @@ from .base import METHODS, FrictionModel, FrictionParams, param
 from .shapes import SHAPES, DirectionalStribeck, DirectionalStribeckParams, stribeck_g
 
 __all__ = ["LuGreParams", "LuGre", "bristle_update", "lugre_run", "lugre_sensitivity_run",
-           "lugre_normal_equations"]
+           "lugre_normal_equations", "lugre_level_run"]
 
 
 @dataclass(frozen=True)
@@ -160,6 +165,65 @@ def lugre_run(t, v, th, method, z0, F, Z):
                     gm, cgm = _g_fast(vm, fcn, fsn, ivsn, alpha, shape, cutn, s0, rn)
                     zss = -gm * is0
                 z = z + (z - zss) * _em1(h * cgm * abs(vm))
+
+
+@njit(cache=True)
+def lugre_level_run(t, v, th, level, z0, F):
+    """:func:`lugre_run` (exact update) with the law's friction levels scaled by ``level``
+    [-] at every sample, *inside* the bristle dynamics; writes F[k] in place.
+
+    The Stribeck curve is ``level g(v)`` (the bristle's steady deflection and its rate
+    follow it) and the viscous term ``level sigma2 v``: a relative change of the levels
+    along a signal the caller computes from the record (a map of the speed, a memory of
+    the motion). Between samples the level is the mean of its two ends, as the velocity
+    at the step's midpoint. ``level = 1`` everywhere is :func:`lugre_run` to rounding.
+
+    Parameters
+    ----------
+    t, v : ndarray
+        Time [s] and velocity [m/s].
+    th : ndarray
+        Packed LuGre parameters (:data:`_LAYOUT`).
+    level : ndarray
+        Relative level at the samples [-], > 0.
+    z0 : float
+        Initial bristle deflection [m].
+    F : ndarray
+        Output force [N].
+    """
+    n = t.size
+    s0 = th[S0]
+    s1 = th[S1]
+    b = th[B]
+    is0 = 1.0 / s0
+    alpha = th[ALPHA]
+    shape = th[SHAPE]
+    fcp, fsp, ivsp, cutp, rp = side_constants(th[FCP], th[FSP], th[VSP], s0)
+    fcn, fsn, ivsn, cutn, rn = side_constants(th[FCN], th[FSN], th[VSN], s0)
+    s2p, s2n = th[S2P], th[S2N]
+    z = z0
+    for k in range(n):
+        vk = v[k]
+        lk = level[k]
+        if vk >= 0.0:
+            g, cg = _g_fast(vk, fcp, fsp, ivsp, alpha, shape, cutp, s0, rp)
+            s2 = s2p
+        else:
+            g, cg = _g_fast(vk, fcn, fsn, ivsn, alpha, shape, cutn, s0, rn)
+            s2 = s2n
+        zd = vk - cg / lk * abs(vk) * z
+        F[k] = s0 * z + s1 * zd + lk * s2 * vk + b
+        if k + 1 < n:
+            h = t[k + 1] - t[k]
+            vm = 0.5 * (vk + v[k + 1])
+            lm = 0.5 * (lk + level[k + 1])
+            if vm >= 0.0:
+                gm, cgm = _g_fast(vm, fcp, fsp, ivsp, alpha, shape, cutp, s0, rp)
+                zss = lm * gm * is0
+            else:
+                gm, cgm = _g_fast(vm, fcn, fsn, ivsn, alpha, shape, cutn, s0, rn)
+                zss = -lm * gm * is0
+            z = z + (z - zss) * _em1(h * cgm / lm * abs(vm))
 
 
 @njit(cache=True, inline="always")
@@ -591,6 +655,38 @@ class LuGre(DirectionalStribeck, FrictionModel):
         lugre_sensitivity_run(t, v, self.theta, METHODS[method], z0,
                               self.jacobian_columns(names), F, J)
         return F, J
+
+    def simulate_level(self, t, v, level, *, state0=None) -> np.ndarray:
+        """Friction force along a prescribed motion with the friction levels scaled by
+        ``level`` inside the bristle dynamics (:func:`lugre_level_run`, exact update).
+
+        Parameters
+        ----------
+        t, v : array_like, shape (N,)
+            Time [s] and velocity [m/s].
+        level : array_like, shape (N,)
+            Relative level of the Stribeck curve and the viscous term at the samples [-],
+            finite and > 0.
+        state0 : array_like, optional
+            Initial bristle deflection [m] (default at rest).
+
+        Returns
+        -------
+        ndarray, shape (N,)
+            Force [N].
+        """
+        t, v, _, _, _ = self._inputs(t, v)
+        lev = np.ascontiguousarray(level, dtype=float)
+        if lev.shape != t.shape:
+            raise ValueError(f"level has {lev.size} samples, the motion {t.size}")
+        if not np.all(np.isfinite(lev) & (lev > 0.0)):
+            k = int(np.flatnonzero(~(np.isfinite(lev) & (lev > 0.0)))[0])
+            raise ValueError(f"level[{k}] = {float(lev[k])!r} is out of bounds: must be finite and "
+                             f"> 0 [-]")
+        z0 = 0.0 if state0 is None else float(np.asarray(state0, float).ravel()[0])
+        F = np.empty(t.size)
+        lugre_level_run(t, v, self.theta, lev, z0, F)
+        return F
 
     def z_max(self) -> float:
         """Bound of the bristle deflection: max over v of g(v)/sigma0 [m] (z0 = 0 start)."""

@@ -1,0 +1,148 @@
+"""Friction levels scaled inside the LuGre bristle dynamics (``LuGre.simulate_level``) and the
+``stribeck_shape`` speed map that uses them (:class:`diagnosis.candidates.StribeckMap`):
+analytic limits, an independent reference integrator, bad input, and a fit that reaches a
+Stribeck drop outside the Gaussian-alpha/Lorentzian family."""
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from diagnosis.candidates import (StribeckMap, StribeckShape, make_context, speed_map)
+from diagnosis.composite import fit_composite
+from diagnosis.effects import CANDIDATES
+from friction import make_model
+from friction.dataset import Dataset
+
+
+def _law():
+    return make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=40.0, Fc=10.0, Fs=15.0,
+                      vs=5e-3)
+
+
+def _motion(n, T=1.0):
+    t = np.linspace(0.0, T, n)
+    return t, 0.05 * np.sin(2 * np.pi * 2 * t) + 0.01 * np.sin(2 * np.pi * 7 * t)
+
+
+def test_unit_level_is_the_law_and_a_constant_level_scales_its_levels():
+    law = _law()
+    t, v = _motion(2001)
+    assert np.array_equal(law.simulate_level(t, v, np.ones_like(t)), law.simulate(t, v))
+    scaled = law.with_values(Fc=13.0, Fs=19.5, sigma2=52.0).simulate(t, v)
+    np.testing.assert_allclose(law.simulate_level(t, v, np.full_like(t, 1.3)), scaled,
+                               rtol=1e-12, atol=1e-10)
+
+
+def _reference(law, t, v, lev):
+    """Radau on the continuous problem (v and the level interpolated linearly)."""
+    p = law.params
+
+    def vi(s):
+        return np.interp(s, t, v)
+
+    def li(s):
+        return np.interp(s, t, lev)
+
+    def rhs(s, z):
+        vv = vi(s)
+        return [vv - p.sigma0 * abs(vv) / (li(s) * float(law.g(vv))) * z[0]]
+
+    sol = solve_ivp(rhs, (t[0], t[-1]), [0.0], method="Radau", t_eval=t, rtol=1e-10,
+                    atol=1e-14, max_step=(t[1] - t[0]))
+    z = sol.y[0]
+    zd = np.array([rhs(s, [zz])[0] for s, zz in zip(t, z)])
+    return p.sigma0 * z + p.sigma1 * zd + lev * p.sigma2 * v + p.b
+
+
+def test_time_varying_level_matches_reference_and_converges_second_order():
+    law = _law()
+    tf, vf = _motion(8001)
+    levf = 1.0 + 0.4 * np.sin(2 * np.pi * 3 * tf)
+    Fr = _reference(law, tf, vf, levf)
+    errs = []
+    for n in (251, 501, 1001):
+        t, v = _motion(n)
+        lev = 1.0 + 0.4 * np.sin(2 * np.pi * 3 * t)
+        F = law.simulate_level(t, v, lev)
+        errs.append(np.sqrt(np.mean((F - np.interp(t, tf, Fr)) ** 2)))
+    order = np.log2(errs[0] / errs[1]), np.log2(errs[1] / errs[2])
+    assert errs[-1] < 2e-3 * np.std(Fr), errs
+    assert min(order) > 1.5, (errs, order)
+
+
+@pytest.mark.parametrize("bad, what", [(np.nan, "level\\[7\\] = nan"),
+                                       (-0.5, "level\\[7\\] = -0.5"),
+                                       (0.0, "must be finite and > 0")])
+def test_bad_level_is_refused_with_the_sample(bad, what):
+    t, v = _motion(50)
+    lev = np.ones_like(t)
+    lev[7] = bad
+    with pytest.raises(ValueError, match=what):
+        _law().simulate_level(t, v, lev)
+
+
+def test_level_of_wrong_length_is_refused():
+    t, v = _motion(50)
+    with pytest.raises(ValueError, match="level has 49 samples, the motion 50"):
+        _law().simulate_level(t, v, np.ones(49))
+
+
+def test_speed_map_interpolates_its_knots_in_log_speed_0_below_last_above():
+    knots = [0.5, -0.2, 1.0, 0.6]
+    # knots at 1e-3, 1e-2.5, 1e-2, 1e-1.5, 1e-1 (top 0.1, two decades)
+    speeds = np.array([1e-4, 1e-3, 10 ** -2.5, 1e-2, 10 ** -1.5, 1e-1, 1.0,
+                       10 ** -2.25])
+    m = speed_map(speeds, 0.1, knots, 2.0)
+    np.testing.assert_allclose(m, [0.0, 0.0, 0.5, -0.2, 1.0, 0.6, 0.6, 0.15], atol=1e-12)
+
+
+def test_stribeck_shape_is_the_speed_map_on_a_classic_lugre_only():
+    cand = CANDIDATES["stribeck_shape"]
+    spec = cand.specialise(_law())
+    assert isinstance(spec, StribeckMap)
+    t, v = _motion(500)
+    ctx = make_context(Dataset.from_arrays(t, _law().simulate(t, v), v=v))
+    # the trajectory level and the FMUs keep the family variants: no knots there
+    assert spec.extras(ctx) == [] and spec.trajectory_extras(ctx) == []
+    assert len(spec.force_extras(ctx)) == StribeckMap.KNOTS - 1
+    modified = make_model("modified_lugre")
+    assert type(cand.specialise(modified)) is StribeckShape
+
+
+def _hump(v, vs):
+    # a mixed-lubrication hump: the curve rises by 40 % around 4 vs (0.3 decades wide),
+    # a non-monotone shape no Gaussian-alpha or Lorentzian curve has
+    return 1.0 + 0.4 * np.exp(-np.log10(np.maximum(np.abs(v), 1e-12) / (4 * vs)) ** 2
+                              / (2 * 0.3 ** 2))
+
+
+def test_speed_map_reaches_a_stribeck_curve_the_family_cannot():
+    law = _law()
+    vs = law.params.vs
+    # truth: the hump inside the bristle dynamics, integrated on a grid 8 x finer than
+    # the data, 0.5 % noise
+    tf, vf = _motion(16001)
+    Ff = law.simulate_level(tf, vf, _hump(vf, vs))
+    t, v = tf[::8], vf[::8]
+    rng = np.random.default_rng(0)
+    F = Ff[::8] + 0.005 * np.std(Ff) * rng.standard_normal(t.size)
+    data = Dataset.from_arrays(t, F, v=v)
+    ctx = make_context(data)
+    names = ["Fc", "Fs", "vs", "sigma2"]
+    _, base_nr = fit_composite(law, names, [], data, ctx)
+    spec = CANDIDATES["stribeck_shape"].specialise(law)
+    family = [fit_composite(lv, nv, [StribeckShape("stribeck_shape", "")], data, ctx)
+              for lv, nv in spec.modify_law(law, names, ctx)]
+    mapped = [fit_composite(lv, nv, [spec], data, ctx)
+              for lv, nv in spec.modify_law(law, names, ctx)]
+    fam, fam_nr = min(family, key=lambda r: r[1])
+    comp, map_nr = min(mapped, key=lambda r: r[1])
+    assert fam_nr > 0.6 * base_nr, (base_nr, fam_nr)   # the family hardly bends this way
+    assert map_nr < 0.4 * fam_nr, (base_nr, fam_nr, map_nr)
+    # and the map carries to a motion it was not fitted on
+    t2 = np.linspace(0.0, 1.0, 2001)
+    v2 = 0.04 * np.sin(2 * np.pi * 3 * t2)
+    held = Dataset.from_arrays(t2, law.simulate_level(t2, v2, _hump(v2, vs)), v=v2)
+
+    def nrmse(c):
+        return np.sqrt(np.mean((c.predict(held) - held.F) ** 2)) / np.std(held.F)
+    assert nrmse(comp) < 0.5 * nrmse(fam), (nrmse(comp), nrmse(fam))

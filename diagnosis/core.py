@@ -492,10 +492,14 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         for e in [e for e in effects if e is not first][:3]:
             if e["gap_closed"] < 0.05 or e["name"] in used:
                 continue
-            cand = CANDIDATES[e["name"]].specialise(base.law)
+            # the form for the law it is stacked on (a backlash law carries no level inside)
+            cand = CANDIDATES[e["name"]].specialise(current.law)
             if cand.stage == "modify_law" and any(c.stage == "modify_law" for c in current.effects):
                 continue
             law_v, names_v = cand.modify_law(current.law, current.base_names, ctx)[0]
+            if not hasattr(law_v, "simulate_level") and any(
+                    getattr(c, "inside", None) is not None for c in current.effects + [cand]):
+                continue  # an effect inside the law, on a law that cannot carry it
             comp, _ = fit_composite(law_v, names_v, current.effects + [cand], fit, ctx,
                                     extras0=current.extras)
             v_after = val_score(comp)

@@ -27,7 +27,9 @@ How to add an effect
    ``apply(F, p, data, ctx)`` (its formula on the base law's force) or ``modify_law`` (a law
    of the friction package with more free parameters), and where needed ``force_extras``,
    ``start``, ``practical``, ``applicable``, ``held_out_reason``, ``specialise``,
-   ``own_law_names``. It may live in its own module, e.g. ``diagnosis/effects_backlash.py``,
+   ``own_law_names``, ``inside`` (a relative level the force level applies inside a classic
+   LuGre's bristle dynamics: ``stribeck_shape`` and ``load`` specialise to such forms
+   there). It may live in its own module, e.g. ``diagnosis/effects_backlash.py``,
    with its truth forms.
 2. Write its truth forms for the benchmark: functions ``truth(kin, s) -> F`` [N] (``kin`` a
    :class:`diagnosis.benchmark.PlantKinematics`: the plant's ``t, x, v, a, load`` and its

@@ -146,3 +146,55 @@ def test_speed_map_reaches_a_stribeck_curve_the_family_cannot():
     def nrmse(c):
         return np.sqrt(np.mean((c.predict(held) - held.F) ** 2)) / np.std(held.F)
     assert nrmse(comp) < 0.5 * nrmse(fam), (nrmse(comp), nrmse(fam))
+
+
+# -- load and drift inside the bristle dynamics ------------------------------------------------
+def test_load_specialises_to_its_inside_form_on_a_classic_lugre_only():
+    from diagnosis.candidates import LoadInside
+    law = _law()
+    assert isinstance(CANDIDATES["load"].specialise(law), LoadInside)
+    backlash = make_model("backlash_lugre")
+    assert type(CANDIDATES["load"].specialise(backlash)).__name__ == "Load"
+
+
+def _load_record(law, inside):
+    """A record whose levels grow with a load that changes with the direction of motion (a
+    press: load and direction move together), levels affine in the load (seed 004) inside
+    the bristle dynamics (or on the output), integrated 8 x finer than sampled, 0.5 %
+    noise."""
+    tf, vf = _motion(16001)
+    load = 1000.0 * (1.0 + 0.6 * np.tanh(vf / 0.01)) + 200.0 * np.sin(2 * np.pi * 0.7 * tf)
+    lev = 1.0 + 0.8 * (load / load.mean() - 1.0)
+    Ff = law.simulate_level(tf, vf, lev) if inside else law.simulate(tf, vf) * lev
+    rng = np.random.default_rng(1)
+    F = Ff[::8] + 0.005 * np.std(Ff) * rng.standard_normal(Ff[::8].size)
+    return Dataset.from_arrays(tf[::8], F, v=vf[::8], load=load[::8], check_units=False)
+
+
+def test_load_inside_reaches_levels_that_act_through_the_bristle():
+    from diagnosis.candidates import Load
+    law = _law()
+    data = _load_record(law, inside=True)
+    fit, held = data.split(0.7)
+    ctx = make_context(fit)
+    names = ["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs"]
+
+    def held_nrmse(cand):
+        comp, _ = fit_composite(law, names, [cand], fit, ctx)
+        return np.sqrt(np.mean((comp.predict(held) - held.F) ** 2)) / np.std(held.F)
+    base, _ = fit_composite(law, names, [], fit, ctx)
+    before = np.sqrt(np.mean((base.predict(held) - held.F) ** 2)) / np.std(held.F)
+    out = held_nrmse(Load("load", ""))
+    ins = held_nrmse(CANDIDATES["load"].specialise(law))
+    assert ins < 0.03 and ins < 0.5 * out, (before, out, ins)
+
+
+def test_greedy_stacking_skips_an_inside_effect_on_a_law_that_cannot_carry_it():
+    # a load-inside first effect, then a backlash law to stack: skipped, not an error
+    from diagnosis import diagnose
+    law = _law()
+    data = _load_record(law, inside=True)
+    rep = diagnose(data, law, candidates=["load", "backlash", "drift"])
+    assert rep["verdict"]["cause"] == "load", rep.summary()
+    added = [s["add"] for s in rep["greedy"]["sequence"]]
+    assert added[0] == "load" and "backlash" not in added

@@ -86,22 +86,18 @@ from numba import njit
 from scipy.signal import fftconvolve
 
 from friction.lugre import bristle_update
-from friction.shapes import SHAPES, stribeck_g
+from friction.shapes import SHAPES
 
 from ..effects_backlash import PLANT_GAP_SHARE
 from .kinematics import PlantKinematics
-from .truths import (MAX_DELAY_SAMPLES, _base_parts, _bump_centre, _lag, _level,
-                     _lugre_params, _motion_time, _span, level_inside, on_fine_grid)
+from .truths import (GAP_SQUEEZE, MAX_DELAY_SAMPLES, _base_parts, _bump_centre,
+                     _driven_contact, _lag, _level, _lugre_params, _motion_time,
+                     _smooth_max0, _span, level_inside, on_fine_grid)
 
 __all__ = ["rolling_skid_truth", "junction_creep_truth", "rod_seal_film_truth",
            "log_weakening_truth", "cogging_truth", "basset_added_mass_truth",
            "clock_skew_truth", "third_body_truth", "oil_filled_gap_truth",
            "zener_junction_truth"]
-
-
-def _smooth_max0(u, eps):
-    """max(u, 0), rounded over ``eps`` (measured signals never switch in one sample)."""
-    return 0.5 * (u + np.sqrt(u * u + eps * eps))
 
 
 # -- acceleration ---------------------------------------------------------------------------
@@ -490,48 +486,6 @@ GAP_SHARE = PLANT_GAP_SHARE
 SQUEEZE_DRAG, SQUEEZE_FLOOR = 0.5, 0.05
 
 
-@njit(cache=True)
-def _oil_gap_contact(h, xd, half, c0, floor, m, kh, ch, s0, s1, s2, Fc, Fs, vs, alpha,
-                     shape):
-    """LuGre friction [N] of a contact of mass ``m`` [kg] driven by the drive positions
-    ``xd`` [m] (grid step ``h`` [s]) across a play of half-width ``half`` [m] filled with
-    oil: inside it a squeeze-film drag c0 (vd - v) / (1 - (e / half)^2 + floor)^1.5, at the
-    flanks a spring ``kh`` [N/m] and damper ``ch`` [N s/m] (compressive only).
-    Semi-implicit Euler of the mass, exact bristle update at the contact's velocity."""
-    n = xd.size
-    F = np.empty(n)
-    x = xd[0]
-    v = 0.0
-    z = 0.0
-    for j in range(n):
-        vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
-        e = xd[j] - x
-        ed = vd - v
-        fc = 0.0
-        if half > 0.0 and abs(e) < half:
-            q = 1.0 - (e / half) ** 2 + floor
-            fc = c0 * ed / q ** 1.5
-        if e > half:
-            f2 = kh * (e - half) + ch * ed
-            if f2 > 0.0:
-                fc += f2
-        elif e < -half:
-            f2 = kh * (-e - half) - ch * ed
-            if f2 > 0.0:
-                fc -= f2
-        g = stribeck_g(v, Fc, Fs, vs, alpha, shape)
-        zd = v - s0 * abs(v) * z / g
-        ff = s0 * z + s1 * zd + s2 * v
-        F[j] = ff
-        v = v + h * (fc - ff) / m
-        if v != 0.0:
-            gv = stribeck_g(v, Fc, Fs, vs, alpha, shape)
-            zss = math.copysign(gv / s0, v)
-            z = zss + (z - zss) * math.exp(-h * s0 * abs(v) / gv)
-        x = x + h * v
-    return F
-
-
 @on_fine_grid
 def oil_filled_gap_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """A play of width ``s`` x :data:`GAP_SHARE` x the stroke in an oil-lubricated gear
@@ -576,7 +530,7 @@ def oil_filled_gap_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     n_sub = int(min(max(math.ceil(rate * kin.dt / 0.3), 4), 400))
     t2 = kin.t[0] + (kin.dt / n_sub) * np.arange((kin.t.size - 1) * n_sub + 1)
     xd = np.interp(t2, kin.t, kin.x)
-    F = _oil_gap_contact(kin.dt / n_sub, xd, half, c0, SQUEEZE_FLOOR, m, kh, ch,
+    F = _driven_contact(kin.dt / n_sub, xd, half, GAP_SQUEEZE, c0, SQUEEZE_FLOOR, m, kh, ch,
                          float(p.sigma0), float(p.sigma1), float(p.sigma2), Fc,
                          float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
     return F[::n_sub]

@@ -77,13 +77,14 @@ import numpy as np
 from numba import njit
 
 from friction.lugre import bristle_update
-from friction.shapes import SHAPES, stribeck_g
+from friction.shapes import SHAPES
 
 from ..effects_backlash import PLANT_GAP_SHARE
 from ..effects_gms import PLANT_PRESLIDING_SHARE
 from .kinematics import PlantKinematics
-from .truths import (MAX_DELAY_SAMPLES, _base_parts, _bump_centre, _level, _lugre_params,
-                     _motion_time, _presliding_path, _span, level_inside, on_fine_grid)
+from .truths import (GAP_SPRING, MAX_DELAY_SAMPLES, _base_parts, _bump_centre,
+                     _driven_contact, _level, _lugre_params, _motion_time, _presliding_path,
+                     _span, level_inside, on_fine_grid)
 
 __all__ = ["contact_aging_truth", "load_stribeck_truth", "lip_roll_truth",
            "film_liftoff_truth", "bent_rail_truth", "geared_inertia_truth",
@@ -394,45 +395,6 @@ def archard_wear_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 GAP_SHARE = PLANT_GAP_SHARE
 
 
-@njit(cache=True)
-def _spring_loaded_contact(h, xd, half, ks, m, kh, ch, s0, s1, s2, Fc, Fs, vs, alpha,
-                           shape):
-    """LuGre friction [N] of a contact of mass ``m`` [kg] pushed by the drive positions
-    ``xd`` [m] (grid step ``h`` [s]) through a play of half-width ``half`` [m] bridged by
-    a spring ``ks`` [N/m] (its force at the flank ks half), the flanks a spring ``kh``
-    [N/m] and damper ``ch`` [N s/m] (compressive only). Semi-implicit Euler of the mass,
-    exact bristle update at the contact's velocity."""
-    n = xd.size
-    F = np.empty(n)
-    x = xd[0]
-    v = 0.0
-    z = 0.0
-    for j in range(n):
-        vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
-        e = xd[j] - x
-        ed = vd - v
-        fc = ks * min(max(e, -half), half)
-        if e > half:
-            f2 = kh * (e - half) + ch * ed
-            if f2 > 0.0:
-                fc += f2
-        elif e < -half:
-            f2 = kh * (-e - half) - ch * ed
-            if f2 > 0.0:
-                fc -= f2
-        g = stribeck_g(v, Fc, Fs, vs, alpha, shape)
-        zd = v - s0 * abs(v) * z / g
-        ff = s0 * z + s1 * zd + s2 * v
-        F[j] = ff
-        v = v + h * (fc - ff) / m
-        if v != 0.0:
-            gv = stribeck_g(v, Fc, Fs, vs, alpha, shape)
-            zss = math.copysign(gv / s0, v)
-            z = zss + (z - zss) * math.exp(-h * s0 * abs(v) / gv)
-        x = x + h * v
-    return F
-
-
 @on_fine_grid
 def spring_loaded_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """A play of width ``s`` x :data:`GAP_SHARE` x the stroke bridged by a soft
@@ -466,9 +428,9 @@ def spring_loaded_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     n_sub = int(min(max(math.ceil(rate * kin.dt / 0.3), 4), 400))
     t2 = kin.t[0] + (kin.dt / n_sub) * np.arange((kin.t.size - 1) * n_sub + 1)
     xd = np.interp(t2, kin.t, kin.x)
-    F = _spring_loaded_contact(kin.dt / n_sub, xd, half, ks, m, kh, ch, float(p.sigma0),
-                               float(p.sigma1), float(p.sigma2), float(p.Fc), float(p.Fs),
-                               float(p.vs), float(p.alpha), SHAPES[p.shape])
+    F = _driven_contact(kin.dt / n_sub, xd, half, GAP_SPRING, ks, 0.0, m, kh, ch,
+                        float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
+                        float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
     return F[::n_sub]
 
 

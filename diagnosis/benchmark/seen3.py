@@ -85,17 +85,13 @@ from ..effects_backlash import PLANT_GAP_SHARE
 from ..effects_gms import PLANT_PRESLIDING_SHARE
 from .kinematics import PlantKinematics
 from .truths import (MAX_DELAY_SAMPLES, _base_parts, _bump_centre, _level, _lugre_params,
-                     _motion_time, _presliding_path, _span, level_inside, on_fine_grid)
+                     _motion_time, _presliding_path, _smooth_max0, _span, level_inside,
+                     on_fine_grid)
 
 __all__ = ["flash_temperature_truth", "film_breakdown_truth", "thrust_bearing_truth",
            "bimodal_roughness_truth", "transfer_film_truth", "lossy_gearing_truth",
            "fieldbus_hold_truth", "humidity_cycle_truth", "eccentric_gear_truth",
            "bouc_wen_truth"]
-
-
-def _smooth_max0(u, eps):
-    """max(u, 0), rounded over ``eps`` (measured signals never switch in one sample)."""
-    return 0.5 * (u + np.sqrt(u * u + eps * eps))
 
 
 # -- acceleration ---------------------------------------------------------------------------

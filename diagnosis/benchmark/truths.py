@@ -13,12 +13,14 @@ the candidate that should name it (:mod:`diagnosis.candidates`); see the table i
 from __future__ import annotations
 
 import functools
+import math
 
 import numpy as np
 from numba import njit
 
 from friction import make_model
 from friction.lugre import bristle_update
+from friction.shapes import stribeck_g
 
 from .kinematics import PlantKinematics, fine_kinematics
 
@@ -429,3 +431,60 @@ def _presliding_path(kin: PlantKinematics, s: float, share: float) -> tuple[floa
     p = kin.base.params
     return (float(p.Fs) / float(p.sigma0),
             max(float(s), 0.0) * share * float(np.ptp(kin.x)) / 3.0)
+
+
+def _smooth_max0(u, eps):
+    """max(u, 0), rounded over ``eps`` (measured signals never switch in one sample)."""
+    return 0.5 * (u + np.sqrt(u * u + eps * eps))
+
+
+#: what bridges the play of :func:`_driven_contact`: a spring (``g1`` its stiffness [N/m])
+#: or a squeeze film (``g1`` its drag c0 [N s/m], ``g2`` the floor of its gap factor [-])
+GAP_SPRING, GAP_SQUEEZE = 0, 1
+
+
+@njit(cache=True)
+def _driven_contact(h, xd, half, gap_kind, g1, g2, m, kh, ch, s0, s1, s2, Fc, Fs, vs, alpha,
+                    shape):
+    """LuGre friction [N] of a contact of mass ``m`` [kg] driven by the drive positions
+    ``xd`` [m] (grid step ``h`` [s]) across a play of half-width ``half`` [m], the flanks a
+    spring ``kh`` [N/m] and damper ``ch`` [N s/m] (compressive only). Inside the play
+    (``gap_kind``): :data:`GAP_SPRING`, a spring ``g1`` bridging it (its force at the flank
+    g1 half); :data:`GAP_SQUEEZE`, the oil squeezed between the flanks drags the contact,
+    g1 (vd - v) / (1 - (e / half)^2 + g2)^1.5. Semi-implicit Euler of the mass, exact
+    bristle update at the contact's velocity."""
+    n = xd.size
+    F = np.empty(n)
+    x = xd[0]
+    v = 0.0
+    z = 0.0
+    for j in range(n):
+        vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
+        e = xd[j] - x
+        ed = vd - v
+        if gap_kind == GAP_SPRING:
+            fc = g1 * min(max(e, -half), half)
+        else:
+            fc = 0.0
+            if half > 0.0 and abs(e) < half:
+                q = 1.0 - (e / half) ** 2 + g2
+                fc = g1 * ed / q ** 1.5
+        if e > half:
+            f2 = kh * (e - half) + ch * ed
+            if f2 > 0.0:
+                fc += f2
+        elif e < -half:
+            f2 = kh * (-e - half) - ch * ed
+            if f2 > 0.0:
+                fc -= f2
+        g = stribeck_g(v, Fc, Fs, vs, alpha, shape)
+        zd = v - s0 * abs(v) * z / g
+        ff = s0 * z + s1 * zd + s2 * v
+        F[j] = ff
+        v = v + h * (fc - ff) / m
+        if v != 0.0:
+            gv = stribeck_g(v, Fc, Fs, vs, alpha, shape)
+            zss = math.copysign(gv / s0, v)
+            z = zss + (z - zss) * math.exp(-h * s0 * abs(v) / gv)
+        x = x + h * v
+    return F

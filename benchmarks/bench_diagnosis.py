@@ -73,6 +73,11 @@ drift 0.089. Before the 12-knot position map (a 4th-order Legendre series) posit
 before the acceleration part lagged as a whole (seed 000's "lag" form; the lag acted on the
 acceleration only) acceleration was 0.129; overall 0.082 with both.
 
+Full diagnosis of 20,000 samples, every candidate (backlash and GMS included; the speed map
+and the load inside the bristle dynamics), warm (``--speed-only --repeats 5``, 2026-11-24
+15:18 UTC, load 0.9, one BLAS thread): best 3.82 s, median 3.94 s, 23.6 / 22.1 x one base
+identification (0.16 / 0.18 s). Before (session 9's code):
+
 Full diagnosis of 20,000 samples, every candidate (backlash and GMS included), warm
 (``--speed-only --repeats 7 --scipy-jacobian``, 2026-11-24 05:29 UTC, load average 1.1-2.2
 on the shared 2-core machine, one BLAS thread): best 4.00 s, median 4.17 s, 23.7 / 22.3 x one

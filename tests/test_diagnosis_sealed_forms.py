@@ -1,7 +1,7 @@
-"""The sealed truth family (diagnosis.benchmark.sealed, written in session 10): each form
-builds a finite case of the requested size on every plant it applies to, is the base law at
-s = 0 and grows with its amplitude factor. No diagnosis is run on these forms: the family
-stays unseen until the end of a piece of work."""
+"""The sealed truth family (diagnosis.benchmark.sealed, written at the end of session 10):
+each form builds a finite case of the requested size on every plant it applies to, is the
+base law at s = 0 and grows with its amplitude factor. No diagnosis is run on these forms:
+the family stays unseen until the end of a piece of work."""
 import dataclasses
 
 import numpy as np
@@ -13,10 +13,10 @@ from diagnosis.effects import EFFECTS
 from truth_form_checks import assert_builds_and_grows
 
 #: the family's form of each effect
-FORM = {"acceleration": "rolling_skid", "load": "junction_creep",
-        "asymmetry": "rod_seal_film", "stribeck_shape": "log_weakening",
-        "position": "cogging", "inertia": "basset_added_mass", "delay": "clock_skew",
-        "drift": "third_body", "backlash": "oil_filled_gap", "gms": "zener_junction"}
+FORM = {"acceleration": "moment_load", "load": "normal_vibration",
+        "asymmetry": "ratchet_texture", "stribeck_shape": "eyring_boundary",
+        "position": "preload_taper", "inertia": "dispensing_mass", "delay": "timing_jitter",
+        "drift": "interval_lubrication", "backlash": "worn_gap", "gms": "mindlin_contacts"}
 #: a plant each sealed form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {"acceleration": "xml350", "load": "xml350", "asymmetry": "xml350",
@@ -57,26 +57,30 @@ def test_sealed_forms_are_finite_and_grow_on_every_plant_they_apply_to():
 
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     from diagnosis.benchmark.kinematics import fine_kinematics
-    from diagnosis.benchmark.sealed import (cogging_truth, log_weakening_truth,
-                                            oil_filled_gap_truth, zener_junction_truth)
+    from diagnosis.benchmark.sealed import (eyring_boundary_truth, mindlin_contacts_truth,
+                                            normal_vibration_truth, preload_taper_truth,
+                                            worn_gap_truth)
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        log_weakening_truth(iso, 1.0)
+        eyring_boundary_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        zener_junction_truth(iso, 1.0)
+        mindlin_contacts_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        oil_filled_gap_truth(iso, 1.0)
-    # a one-way stroke (the press's) never revisits a position: no detent map to learn
+        worn_gap_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
+    # a one-way stroke (the press's) never revisits a position: no taper to learn
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        cogging_truth.__wrapped__(one_way, 1.0)
+        preload_taper_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes has no rate
+    still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
+    with pytest.raises(ValueError, match="does not change"):
+        normal_vibration_truth.__wrapped__(still, 1.0)
 
 
 @pytest.mark.parametrize("plant", ["xml350", "valve"])
 def test_sealed_forms_at_zero_amplitude_are_the_base(plant):
-    # s scales the effect from nothing: at s = 0 each form is the base law (up to its own
-    # integration on the fine grid: the backlash contact's stiff coupling)
+    # s scales the effect from nothing: at s = 0 each form is the base law
     kin = plant_kinematics(plant, quick=True)
     Fb = base_force(kin)
     sd = float(np.std(Fb))

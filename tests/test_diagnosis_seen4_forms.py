@@ -1,0 +1,85 @@
+"""The fourth seen truth family (diagnosis.benchmark.seen4, sealed in session 10, run once,
+now open): each form builds a finite case of the requested size on every plant it applies
+to, is the base law at s = 0 and grows with its amplitude factor."""
+import dataclasses
+
+import numpy as np
+import pytest
+
+from diagnosis.benchmark import PLANT_NAMES, plant_kinematics
+from diagnosis.benchmark.truths import base_force
+from diagnosis.effects import EFFECTS
+from truth_form_checks import assert_builds_and_grows
+
+#: the family's form of each effect
+FORM = {"acceleration": "rolling_skid", "load": "junction_creep",
+        "asymmetry": "rod_seal_film", "stribeck_shape": "log_weakening",
+        "position": "cogging", "inertia": "basset_added_mass", "delay": "clock_skew",
+        "drift": "third_body", "backlash": "oil_filled_gap", "gms": "zener_junction"}
+#: a plant each form reaches the requested size on (quick protocols: the XML-350's
+#: kinematics take 0.1 s)
+PLANT = {"acceleration": "xml350", "load": "xml350", "asymmetry": "xml350",
+         "stribeck_shape": "xml350", "position": "xml350", "inertia": "xml350",
+         "delay": "xml350", "drift": "xml350", "backlash": "xml350", "gms": "xml350"}
+
+
+def test_the_family_is_in_the_open_grid_last():
+    assert set(PLANT) == set(FORM) == {n for n, e in EFFECTS.items() if e.truths}
+    for effect, form in FORM.items():
+        assert EFFECTS[effect].forms("all")[-1] == form, effect
+        assert form not in EFFECTS[effect].forms("sealed"), effect
+        assert EFFECTS[effect].truth(form).__module__ == "diagnosis.benchmark.seen4"
+
+
+@pytest.mark.parametrize("effect", sorted(PLANT))
+def test_seen4_form_builds_a_case_and_grows_with_its_amplitude(effect):
+    assert_builds_and_grows(effect, FORM[effect], PLANT[effect])
+
+
+def test_seen4_forms_are_finite_and_grow_on_every_plant_they_apply_to():
+    # no diagnosis: only the truths, on each plant's quick motion
+    for plant in PLANT_NAMES:
+        kin = plant_kinematics(plant, quick=True)
+        Fb = base_force(kin)
+        for effect, form in FORM.items():
+            if not EFFECTS[effect].applies(kin):
+                continue
+            truth = EFFECTS[effect].truth(form)
+            size = []
+            for s in (0.5, 1.0):
+                F = truth(kin, s)
+                assert F.shape == Fb.shape and np.all(np.isfinite(F)), (plant, form)
+                size.append(np.sqrt(np.mean((F - Fb) ** 2)))
+            assert 0.0 < size[0] < size[1], (plant, effect, form, size)
+
+
+def test_seen4_forms_refuse_plants_they_do_not_apply_to():
+    from diagnosis.benchmark.kinematics import fine_kinematics
+    from diagnosis.benchmark.seen4 import (cogging_truth, log_weakening_truth,
+                                           oil_filled_gap_truth, zener_junction_truth)
+    iso = plant_kinematics("mre_isolator", quick=True)
+    with pytest.raises(ValueError, match="Stribeck"):
+        log_weakening_truth(iso, 1.0)
+    with pytest.raises(ValueError, match="LuGre"):
+        zener_junction_truth(iso, 1.0)
+    with pytest.raises(ValueError, match="LuGre"):
+        oil_filled_gap_truth(iso, 1.0)
+    # a one-way stroke (the press's) never revisits a position: no detent map to learn
+    fk = fine_kinematics(plant_kinematics("xml350", quick=True))
+    one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
+    with pytest.raises(ValueError, match="revisits"):
+        cogging_truth.__wrapped__(one_way, 1.0)
+
+
+@pytest.mark.parametrize("plant", ["xml350", "valve"])
+def test_seen4_forms_at_zero_amplitude_are_the_base(plant):
+    # s scales the effect from nothing: at s = 0 each form is the base law (up to its own
+    # integration on the fine grid: the backlash contact's stiff coupling)
+    kin = plant_kinematics(plant, quick=True)
+    Fb = base_force(kin)
+    sd = float(np.std(Fb))
+    for effect, form in FORM.items():
+        if not EFFECTS[effect].applies(kin):
+            continue
+        F0 = EFFECTS[effect].truth(form)(kin, 0.0)
+        assert np.sqrt(np.mean((F0 - Fb) ** 2)) < 0.02 * sd, (plant, effect, form)

@@ -7,10 +7,10 @@ import dataclasses
 import numpy as np
 import pytest
 
-from diagnosis.benchmark import PLANT_NAMES, plant_kinematics
-from diagnosis.benchmark.truths import base_force
+from diagnosis.benchmark import plant_kinematics
 from diagnosis.effects import EFFECTS
-from truth_form_checks import assert_builds_and_grows
+from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_on_every_plant,
+                               assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
 FORM = {"acceleration": "moment_load", "load": "normal_vibration",
@@ -40,19 +40,7 @@ def test_sealed_form_builds_a_case_and_grows_with_its_amplitude(effect):
 
 def test_sealed_forms_are_finite_and_grow_on_every_plant_they_apply_to():
     # no diagnosis: only the truths, on each plant's quick motion
-    for plant in PLANT_NAMES:
-        kin = plant_kinematics(plant, quick=True)
-        Fb = base_force(kin)
-        for effect, form in FORM.items():
-            if not EFFECTS[effect].applies(kin):
-                continue
-            truth = EFFECTS[effect].truth(form)
-            size = []
-            for s in (0.5, 1.0):
-                F = truth(kin, s)
-                assert F.shape == Fb.shape and np.all(np.isfinite(F)), (plant, form)
-                size.append(np.sqrt(np.mean((F - Fb) ** 2)))
-            assert 0.0 < size[0] < size[1], (plant, effect, form, size)
+    assert_finite_and_grow_on_every_plant(FORM)
 
 
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
@@ -81,11 +69,4 @@ def test_sealed_forms_refuse_plants_they_do_not_apply_to():
 @pytest.mark.parametrize("plant", ["xml350", "valve"])
 def test_sealed_forms_at_zero_amplitude_are_the_base(plant):
     # s scales the effect from nothing: at s = 0 each form is the base law
-    kin = plant_kinematics(plant, quick=True)
-    Fb = base_force(kin)
-    sd = float(np.std(Fb))
-    for effect, form in FORM.items():
-        if not EFFECTS[effect].applies(kin):
-            continue
-        F0 = EFFECTS[effect].truth(form)(kin, 0.0)
-        assert np.sqrt(np.mean((F0 - Fb) ** 2)) < 0.02 * sd, (plant, effect, form)
+    assert_zero_amplitude_is_the_base(FORM, plant)

@@ -528,9 +528,9 @@ def mindlin_contacts_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     Cattaneo 1938, Mindlin 1949, Mindlin and Deresiewicz 1953 (partial slip of elastic
     spheres). Maxwell-slip (the candidate, ``maxwell4``, ``maxwell10``) is a set of
     elasto-plastic blocks, Dahl a rate-independent exponent law with symmetric stiffness,
-    elasto-plastic an elastic range, Bliman-Sorine two path-relaxing states, Bouc-Wen an endochronic law,
-    the Zener junction a relaxation in time; this one is the closed-form contact-mechanics
-    curve with exponent 1.5 and a reversal memory.
+    elasto-plastic an elastic range, Bliman-Sorine two path-relaxing states, Bouc-Wen an
+    endochronic law, the Zener junction a relaxation in time; this one is the closed-form
+    contact-mechanics curve with exponent 1.5 and a reversal memory.
     """
     p = _lugre_params(kin, "gms (mindlin_contacts)")
     F, _ = _base_parts(kin)

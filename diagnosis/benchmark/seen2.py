@@ -77,14 +77,13 @@ import numpy as np
 from numba import njit
 
 from friction.lugre import bristle_update
-from friction.shapes import SHAPES
 
 from ..effects_backlash import PLANT_GAP_SHARE
 from ..effects_gms import PLANT_PRESLIDING_SHARE
 from .kinematics import PlantKinematics
 from .truths import (GAP_SPRING, MAX_DELAY_SAMPLES, _base_parts, _bump_centre,
-                     _driven_contact, _level, _lugre_params, _motion_time, _presliding_path,
-                     _span, level_inside, on_fine_grid)
+                     _contact_constants, _level, _lugre_params, _motion_time, _presliding_path,
+                     _run_driven_contact, _span, level_inside, on_fine_grid)
 
 __all__ = ["contact_aging_truth", "load_stribeck_truth", "lip_roll_truth",
            "film_liftoff_truth", "bent_rail_truth", "geared_inertia_truth",
@@ -419,19 +418,9 @@ def spring_loaded_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """
     p = _lugre_params(kin, "backlash (spring_loaded)")
     half = 0.5 * GAP_SHARE * max(float(s), 0.0) * float(np.ptp(kin.x))
-    m = 0.01 * float(p.Fc) / max(kin.scales["a99"], 1e-12)
-    kh = 100.0 * float(p.sigma0)
-    ch = 2.0 * 0.5 * math.sqrt(kh * m)
+    m, kh, ch = _contact_constants(kin, p)
     ks = kh if half <= 0.0 else min(0.5 * float(p.Fc) / half, kh)
-    # sub-steps: the stiffest and the most damped motion of the contact resolved
-    rate = max(math.sqrt(kh / m), (float(p.sigma1) + float(p.sigma2) + ch) / m)
-    n_sub = int(min(max(math.ceil(rate * kin.dt / 0.3), 4), 400))
-    t2 = kin.t[0] + (kin.dt / n_sub) * np.arange((kin.t.size - 1) * n_sub + 1)
-    xd = np.interp(t2, kin.t, kin.x)
-    F = _driven_contact(kin.dt / n_sub, xd, half, GAP_SPRING, ks, 0.0, m, kh, ch,
-                        float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
-                        float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
-    return F[::n_sub]
+    return _run_driven_contact(kin, p, half, GAP_SPRING, ks, 0.0, m, kh, ch)
 
 
 # -- gms -------------------------------------------------------------------------------------

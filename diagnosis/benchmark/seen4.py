@@ -85,13 +85,12 @@ from numba import njit
 from scipy.signal import fftconvolve
 
 from friction.lugre import bristle_update
-from friction.shapes import SHAPES
 
 from ..effects_backlash import PLANT_GAP_SHARE
 from .kinematics import PlantKinematics
 from .truths import (GAP_SQUEEZE, MAX_DELAY_SAMPLES, _base_parts, _bump_centre,
-                     _driven_contact, _lag, _level, _lugre_params, _motion_time,
-                     _smooth_max0, _span, level_inside, on_fine_grid)
+                     _contact_constants, _lag, _level, _lugre_params, _motion_time,
+                     _run_driven_contact, _smooth_max0, _span, level_inside, on_fine_grid)
 
 __all__ = ["rolling_skid_truth", "junction_creep_truth", "rod_seal_film_truth",
            "log_weakening_truth", "cogging_truth", "basset_added_mass_truth",
@@ -518,21 +517,10 @@ def oil_filled_gap_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """
     p = _lugre_params(kin, "backlash (oil_filled_gap)")
     half = 0.5 * GAP_SHARE * max(float(s), 0.0) * float(np.ptp(kin.x))
-    Fc = float(p.Fc)
-    m = 0.01 * Fc / max(kin.scales["a99"], 1e-12)
-    kh = 100.0 * float(p.sigma0)
-    ch = 2.0 * 0.5 * math.sqrt(kh * m)
-    c0 = SQUEEZE_DRAG * Fc / max(kin.scales["v99"], 1e-12)
-    c_max = c0 / SQUEEZE_FLOOR ** 1.5
-    # sub-steps: the stiffest and the most damped motion of the contact resolved
-    rate = max(math.sqrt(kh / m), (float(p.sigma1) + float(p.sigma2) + ch + c_max) / m)
-    n_sub = int(min(max(math.ceil(rate * kin.dt / 0.3), 4), 400))
-    t2 = kin.t[0] + (kin.dt / n_sub) * np.arange((kin.t.size - 1) * n_sub + 1)
-    xd = np.interp(t2, kin.t, kin.x)
-    F = _driven_contact(kin.dt / n_sub, xd, half, GAP_SQUEEZE, c0, SQUEEZE_FLOOR, m, kh, ch,
-                         float(p.sigma0), float(p.sigma1), float(p.sigma2), Fc,
-                         float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
-    return F[::n_sub]
+    m, kh, ch = _contact_constants(kin, p)
+    c0 = SQUEEZE_DRAG * float(p.Fc) / max(kin.scales["v99"], 1e-12)
+    return _run_driven_contact(kin, p, half, GAP_SQUEEZE, c0, SQUEEZE_FLOOR, m, kh, ch,
+                               c_gap=c0 / SQUEEZE_FLOOR ** 1.5)
 
 
 # -- gms -------------------------------------------------------------------------------------

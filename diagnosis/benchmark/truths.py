@@ -20,7 +20,7 @@ from numba import njit
 
 from friction import make_model
 from friction.lugre import bristle_update
-from friction.shapes import stribeck_g
+from friction.shapes import SHAPES, stribeck_g
 
 from .kinematics import PlantKinematics, fine_kinematics
 
@@ -488,3 +488,27 @@ def _driven_contact(h, xd, half, gap_kind, g1, g2, m, kh, ch, s0, s1, s2, Fc, Fs
             z = zss + (z - zss) * math.exp(-h * s0 * abs(v) / gv)
         x = x + h * v
     return F
+
+
+def _contact_constants(kin: PlantKinematics, p):
+    """(m [kg], kh [N/m], ch [N s/m]) of the light contact behind a play
+    (:func:`_driven_contact`): its inertial force at the top acceleration 1 % of the
+    Coulomb level, the flanks a coupling 100 x stiffer than the bristle, damping ratio 0.5."""
+    m = 0.01 * float(p.Fc) / max(kin.scales["a99"], 1e-12)
+    kh = 100.0 * float(p.sigma0)
+    return m, kh, 2.0 * 0.5 * math.sqrt(kh * m)
+
+
+def _run_driven_contact(kin: PlantKinematics, p, half, gap_kind, g1, g2, m, kh, ch,
+                        c_gap=0.0):
+    """:func:`_driven_contact` along ``kin``'s motion with the base LuGre ``p``, on
+    sub-steps that resolve the contact's stiffest and most damped motion (``c_gap``
+    [N s/m]: the largest damping the play adds), sampled back on ``kin``'s grid [N]."""
+    rate = max(math.sqrt(kh / m), (float(p.sigma1) + float(p.sigma2) + ch + c_gap) / m)
+    n_sub = int(min(max(math.ceil(rate * kin.dt / 0.3), 4), 400))
+    t2 = kin.t[0] + (kin.dt / n_sub) * np.arange((kin.t.size - 1) * n_sub + 1)
+    xd = np.interp(t2, kin.t, kin.x)
+    F = _driven_contact(kin.dt / n_sub, xd, half, gap_kind, g1, g2, m, kh, ch,
+                        float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
+                        float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
+    return F[::n_sub]

@@ -30,6 +30,7 @@ from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
 from friction.progress import status_lines
 
+from .alignment import align_motion
 from .candidates import missing_columns as _missing_columns
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
@@ -104,6 +105,14 @@ def base_free_names(law: FrictionModel) -> list[str]:
 def _base_law(model, fit, names=None) -> tuple[FrictionModel, list[str]]:
     law = make_model(model) if isinstance(model, str) else model
     return law, list(base_free_names(law) if names is None else names)
+
+
+def _deferral(cand, comp, fit, ctx) -> dict:
+    """``{"defers_to": name, "defer_reason": why}`` when the fitted candidate ``comp``
+    reduces to a simpler candidate's form on ``fit`` (:meth:`diagnosis.candidates.
+    Candidate.defers`), else ``{}``."""
+    to, why = cand.defers({**comp.describe()["params"], **comp.extras}, fit, ctx)
+    return {"defers_to": to, "defer_reason": why} if to else {}
 
 
 def fit_base(fit, model, ctx=None, seed: int = 0, names=None, check: bool = True):
@@ -337,6 +346,9 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     t_start = time.perf_counter()
     say = status_lines(progress)
     fit = _as_dataset(fit_data, mapping, scale)
+    # one time base for the motion channels: a velocity that lags its position (backward
+    # differences) is advanced by its measured lag, in every record of the instrument chain
+    fit, v_lag = align_motion(fit)
     full = None
     if validation is None:
         # chronological hold-out: predicted as the continuation of the whole record, so the
@@ -346,7 +358,8 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         val_sets = [held]
     else:
         vals = validation if isinstance(validation, (list, tuple)) else [validation]
-        val_sets = [_as_dataset(v, mapping, scale) for v in vals]
+        val_sets = [align_motion(_as_dataset(v, mapping, scale), v_lag)[0] if v_lag else
+                    _as_dataset(v, mapping, scale) for v in vals]
     # held-out records that start at rest keep an unscored warm-up; the chronological
     # hold-out continues the fit part's simulation and needs none
     skip = [0] if full is not None else [warm_up(v) for v in val_sets]
@@ -436,6 +449,9 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                         # is a law parameter (backlash's gap)
                         "size_reason": cand.practical({**comp.describe()["params"],
                                                        **comp.extras}, ctx),
+                        # the fitted form may be a simpler candidate's (a mass-like
+                        # acceleration part): then that one is the effect
+                        **_deferral(cand, comp, fit, ctx),
                         "n_params": len(cand.force_extras(ctx)) + max(len(comp.base_names)
                                                                  - len(base_names), 0),
                         "fit_before": base_fit, "fit_after": cost,
@@ -539,6 +555,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         effect_details={e["name"]: e["fitted"] for e in effects},
         base=base.describe(),
         skipped=skipped,
+        velocity_alignment={"lag_samples": v_lag, "applied": bool(v_lag)},
         timing={"seconds": time.perf_counter() - t_start, "fit_samples": len(fit),
                 "validation_samples": int(sum(len(v) for v in val_sets))},
     )

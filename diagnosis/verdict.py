@@ -92,6 +92,8 @@ def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> s
     parameters below a physical size, :meth:`diagnosis.effects.Candidate.practical`) is
     empty.
     """
+    if effect.get("defers_to"):
+        return effect.get("defer_reason") or f"its fitted form is {effect['defers_to']}'s"
     if "significance_z" in effect:
         z_need = z_threshold(max(int(n_tests), 1))
         if not effect["significance_z"] >= z_need:
@@ -113,7 +115,7 @@ def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> s
 
 #: the keys of a ranked candidate entry :func:`decide` reads
 DECISION_KEYS = ("name", "excess_closed", "gap_closed", "significance_z", "imprint",
-                 "size_reason")
+                 "size_reason", "defers_to", "defer_reason")
 
 
 def decision_entries(effects: list) -> list:
@@ -176,8 +178,29 @@ def rank(effects: list, floor: float = 0.0, tie_floor: float = 0.0) -> list:
         Names of the candidates tied with the one moved to the top (the one with fewest
         parameters among those within :data:`TIE`, or :data:`TIE_REL` of it, of the best
         closed excess).
+
+    Notes
+    -----
+    A candidate whose fitted form is a simpler candidate's (``defers_to``, :meth:`diagnosis.
+    candidates.Candidate.defers`: an acceleration part that is a mass term) ranks right
+    behind that one, whatever it closes: what it closes beyond it is flexibility, not an
+    effect.
     """
     effects.sort(key=lambda e: -e["gap_closed"])
+    present = {e["name"] for e in effects}
+    deferring = [e for e in effects if e.get("defers_to") in present - {e["name"]}]
+    for e in deferring:
+        effects.remove(e)
+    tied = _rank_ties(effects, floor, tie_floor)
+    for e in deferring:
+        at = next(k for k, o in enumerate(effects) if o["name"] == e["defers_to"])
+        effects.insert(at + 1, e)
+    return tied
+
+
+def _rank_ties(effects, floor, tie_floor):
+    """:func:`rank` on candidates none of which defers: the simplest of the near-ties to
+    the top; the names of the others tied with it."""
     if not effects:
         return []
     top = effects[0]["excess_closed"]

@@ -675,9 +675,19 @@ class Position(Candidate):
     tenth of the stroke wide, a periodic waviness (two harmonics) whose wavelength is chosen
     on the data, and a local defect whose centre and width are chosen on the data
     (:meth:`start`). The 12-knot map alone closed 1 % of a waviness of period 7 % of the
-    stroke: its knots are 9 % apart."""
-    stage_doc = "friction level scaled along the stroke"
+    stroke: its knots are 9 % apart.
+
+    At the force level the waviness has an *additive* twin of the same wavelength,
+    ``g(x)`` [N] (:data:`ADD_NAMES`): a force of the position alone, the same in both
+    directions of motion - a linear motor's detent (cogging) force, a spring or cable
+    along the stroke - which a level scale, changing sign with the velocity, cannot make
+    (the grid's cogging truth: 0 of 16 named with the scale alone). The trajectory level
+    and the FMU blocks keep the scaled map."""
+    stage_doc = "friction level scaled along the stroke, and a force of the position"
     NAMES = POSITION_NAMES + POSITION_FORM_NAMES
+    #: amplitudes of the additive periodic force [N] (cosine, sine; first and second
+    #: harmonic of the waviness' wavelength ``lambda_x``), fitted at the force level only
+    ADD_NAMES = ("q_c1", "q_s1", "q_c2", "q_s2")
     #: shortest wavelength and narrowest defect, in samples of travel at the top speed:
     #: finer than this along the motion the data cannot tell a map from noise
     MIN_SAMPLES = 8.0
@@ -719,17 +729,37 @@ class Position(Candidate):
         # (:meth:`start`); the trajectory level keeps the knot map
         return self.extras(ctx)[:len(POSITION_NAMES)]
 
+    def force_extras(self, ctx):
+        return self.extras(ctx) + [Extra(n, 0.0, -ctx.sF, ctx.sF, "N")
+                                   for n in self.ADD_NAMES]
+
     def _packed(self, p, ctx):
         return pack_extensions({"position": {n: p[n] for n in self.NAMES if n in p}},
                                x_lo=ctx.x_lo, x_hi=ctx.x_lo + self._span(ctx))
 
+    @staticmethod
+    def _harmonics(x, x_lo, lam):
+        """cos, sin of the waviness' phase and of twice it at positions ``x`` [m]."""
+        ph = 2.0 * np.pi * (x - x_lo) / lam
+        return np.cos(ph), np.sin(ph), np.cos(2.0 * ph), np.sin(2.0 * ph)
+
+    def _additive(self, p, x, ctx):
+        """The force of the position alone [N] (zero without its amplitudes)."""
+        if not any(p.get(n, 0.0) for n in self.ADD_NAMES):
+            return 0.0
+        return sum(p[n] * h for n, h in zip(self.ADD_NAMES,
+                                            self._harmonics(x, ctx.x_lo, p["lambda_x"])))
+
     def apply(self, F, p, data, ctx):
         # friction level varying along the stroke: a friction map over the fit record's
-        # stroke (a worn section, guide waviness or screw pitch, a local defect)
-        return F * (1.0 + position_change(data.x, self._packed(p, ctx)))
+        # stroke (a worn section, guide waviness or screw pitch, a local defect); and a
+        # force of the position alone (cogging), the same in both directions
+        return (F * (1.0 + position_change(data.x, self._packed(p, ctx)))
+                + self._additive(p, data.x, ctx))
 
-    #: the map is linear in the knot values, the waviness' amplitudes and the defect's height
-    exact_extras = POSITION_NAMES + ("p_c1", "p_s1", "p_c2", "p_s2", "d_x")
+    #: the map is linear in the knot values, the waviness' amplitudes and the defect's
+    #: height, the additive force in its amplitudes
+    exact_extras = POSITION_NAMES + ("p_c1", "p_s1", "p_c2", "p_s2", "d_x") + ADD_NAMES
 
     def jac(self, F, p, data, ctx):
         """``d apply / dF = 1 + m(x)``; the columns of :attr:`exact_extras` exactly, ``F``
@@ -742,10 +772,10 @@ class Position(Candidate):
         knots = np.linspace(ctx.x_lo, ctx.x_lo + span, len(POSITION_NAMES) + 1)
         eye = np.eye(knots.size)
         cols = {n: F * np.interp(x, knots, eye[k]) for k, n in enumerate(POSITION_NAMES, 1)}
-        ph = 2.0 * np.pi * (x - ctx.x_lo) / p["lambda_x"]
-        cols.update(p_c1=F * np.cos(ph), p_s1=F * np.sin(ph), p_c2=F * np.cos(2.0 * ph),
-                    p_s2=F * np.sin(2.0 * ph),
-                    d_x=F * np.exp(-0.5 * ((x - p["x_d"]) / p["w_d"]) ** 2))
+        harm = self._harmonics(x, ctx.x_lo, p["lambda_x"])
+        cols.update({n: F * h for n, h in zip(("p_c1", "p_s1", "p_c2", "p_s2"), harm)})
+        cols.update({n: h for n, h in zip(self.ADD_NAMES, harm)})
+        cols["d_x"] = F * np.exp(-0.5 * ((x - p["x_d"]) / p["w_d"]) ** 2)
         return 1.0 + position_change(x, self._packed(p, ctx)), cols
 
     def start(self, fit, Ff, r, ctx) -> dict:
@@ -765,9 +795,9 @@ class Position(Candidate):
         r1 = rr - H @ c
 
         def periodic(lam):
-            ph = 2.0 * np.pi * (x - ctx.x_lo) / lam
-            return np.column_stack([np.cos(ph), np.sin(ph), np.cos(2 * ph),
-                                    np.sin(2 * ph)]) * f[:, None]
+            # the waviness scales the level; its additive twin is a force of x alone
+            harm = np.column_stack(self._harmonics(x, ctx.x_lo, lam))
+            return np.column_stack([harm * f[:, None], harm])
         k_lo, k_hi = 1.0 / ex["lambda_x"].hi, 1.0 / ex["lambda_x"].lo
         waves = np.arange(k_lo, k_hi, 0.25 / span)
         sse = [_lsq(periodic(1.0 / k), r1)[0] for k in waves]
@@ -785,9 +815,11 @@ class Position(Candidate):
         _, xd, w = best
         G = (f * np.exp(-0.5 * ((x - xd) / w) ** 2))[:, None]
         _, allc = _lsq(np.column_stack([H, P, G]), rr)
-        out = dict(zip(POSITION_NAMES, allc[:len(POSITION_NAMES)]))
-        out.update(zip(("p_c1", "p_s1", "p_c2", "p_s2"), allc[len(POSITION_NAMES):-1]))
+        nk = len(POSITION_NAMES)
+        out = dict(zip(POSITION_NAMES, allc[:nk]))
+        out.update(zip(("p_c1", "p_s1", "p_c2", "p_s2") + self.ADD_NAMES, allc[nk:-1]))
         out.update(lambda_x=lam, d_x=allc[-1], x_d=xd, w_d=w)
+        ex.update({e.name: e for e in self.force_extras(ctx)})
         return {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
 
 

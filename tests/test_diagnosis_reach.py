@@ -147,3 +147,44 @@ def test_drift_start_keeps_its_trend_only_where_the_trend_forecasts():
     comp, _ = fit_composite(law, ["Fc", "Fs"], [drift], d, make_context(d))
     assert comp.extras["k_drift"] == 0.0  # pinned by the start
     assert comp.extras["k_step"] == pytest.approx(0.3, abs=0.1)
+
+
+def test_position_carries_a_force_of_the_position_alone_with_exact_columns():
+    # the additive twin of the waviness: q cos + ... [N], the same in both directions; its
+    # derivative columns are the harmonics themselves (checked against differences)
+    from diagnosis.effects import CANDIDATES, make_context
+    from friction.dataset import Dataset
+    t = np.linspace(0.0, 4.0, 4001)
+    x = 0.05 * np.sin(2 * np.pi * 0.5 * t)
+    v = np.gradient(x, t)
+    data = Dataset.from_arrays(t=t, x=x, v=v, F=np.tanh(v / 0.01))
+    ctx = make_context(data)
+    pos = CANDIDATES["position"]
+    names = [e.name for e in pos.force_extras(ctx)]
+    assert set(pos.ADD_NAMES) <= set(names)
+    assert not set(pos.ADD_NAMES) & {e.name for e in pos.trajectory_extras(ctx)}
+    p = {e.name: e.x0 for e in pos.force_extras(ctx)}
+    p.update(lambda_x=0.013, q_c1=0.3, q_s2=-0.1)
+    F = np.asarray(data.F, float)
+    out = pos.apply(F, p, data, ctx)
+    ph = 2 * np.pi * (x - ctx.x_lo) / 0.013
+    assert np.allclose(out - F, 0.3 * np.cos(ph) - 0.1 * np.sin(2 * ph))
+    # the formula reads x alone: the same force at a position in both directions
+    dF, cols = pos.jac(F, p, data, ctx)
+    for n in pos.ADD_NAMES:
+        h = 1e-6
+        num = (pos.apply(F, dict(p, **{n: p[n] + h}), data, ctx) - out) / h
+        assert np.allclose(cols[n], num, atol=1e-6)
+
+
+def test_cogging_force_is_named_position():
+    # a linear motor's detent force (seen family 4): 0.3 x the friction level, period 6 %
+    # of the stroke, added to the base force; the level-scaled map closed 0 of 16 grid cases
+    from diagnosis import diagnose
+    from diagnosis.benchmark.cases import make_plant_case
+    from diagnosis.benchmark.runner import MEASURED
+    case = make_plant_case("valve", "position", 0.5, 0.03, seed=1, quick=True,
+                           form="cogging", measured=MEASURED[1])
+    rep = diagnose(case.data, case.base, seed=0)
+    assert rep["verdict"]["cause"] == "position"
+    assert rep["verdict"]["excess_closed"] > 0.8

@@ -20,12 +20,17 @@ import dataclasses
 
 import numpy as np
 
-__all__ = ["velocity_lag", "channel_lag", "align_motion", "MIN_ALIGN_SAMPLES"]
+__all__ = ["velocity_lag", "velocity_scale", "channel_lag", "align_motion", "MIN_ALIGN_SAMPLES",
+           "SCALE_TOLERANCE"]
 
 #: smallest measured lag [samples] that is moved: below it the estimate is within what
 #: quantisation of the position alone makes it read (central differences of 50 counts a
 #: sample at the top speed read 0.00-0.03 in the benchmark)
 MIN_ALIGN_SAMPLES = 0.2
+#: largest relative disagreement of the velocity's scale with the position's derivative at
+#: which the lag between them is measured [-] (the benchmark's quantised channels: within
+#: 0.04 %; Franka case 3: 0.3-0.4 %)
+SCALE_TOLERANCE = 0.05
 #: samples of the centred mean :func:`channel_lag` smooths its regressor with
 SMOOTH_SAMPLES = 9
 #: largest lag [samples] the alignment moves: beyond it the velocity is filtered so much
@@ -76,13 +81,11 @@ def channel_lag(ref, ch, t) -> float:
     return d if np.isfinite(d) else 0.0
 
 
-def velocity_lag(data) -> float:
-    """How many samples the velocity channel lags the position channel [samples].
-
-    The velocity is compared with the central differences of the position (no lag)
-    (:func:`channel_lag`). Backward differences of encoder counts give 0.5, ``np.gradient``
-    and zero-phase filters 0. 0 when either channel is derived from the other
-    (``data.derived``) or the motion has no acceleration.
+def velocity_scale(data) -> float:
+    """The velocity channel's scale against the position's central differences [-]: the
+    least-squares slope of ``x'`` on ``v`` (1 when the two channels and the time column
+    agree; Franka case 4's files read 0.50, their time column running twice as long as the
+    velocity implies). NaN when either channel is derived from the other or ``v`` is 0.
 
     Parameters
     ----------
@@ -90,6 +93,32 @@ def velocity_lag(data) -> float:
         The record (t [s], x [m], v [m/s]).
     """
     if {"x", "v"} & set(getattr(data, "derived", ()) or ()) or len(data) < 5:
+        return float("nan")
+    v = np.asarray(data.v, float)
+    vv = float(v @ v)
+    if not vv > 0:
+        return float("nan")
+    return float(np.gradient(np.asarray(data.x, float), np.asarray(data.t, float)) @ v / vv)
+
+
+def velocity_lag(data) -> float:
+    """How many samples the velocity channel lags the position channel [samples].
+
+    The velocity is compared with the central differences of the position (no lag)
+    (:func:`channel_lag`). Backward differences of encoder counts give 0.5, ``np.gradient``
+    and zero-phase filters 0. 0 when either channel is derived from the other
+    (``data.derived``), the motion has no acceleration, or the two channels disagree in
+    scale by more than :data:`SCALE_TOLERANCE` (:func:`velocity_scale`: then the lag is
+    not what the difference of the two measures).
+
+    Parameters
+    ----------
+    data : friction.dataset.Dataset
+        The record (t [s], x [m], v [m/s]).
+    """
+    if {"x", "v"} & set(getattr(data, "derived", ()) or ()) or len(data) < 5:
+        return 0.0
+    if not abs(velocity_scale(data) - 1.0) <= SCALE_TOLERANCE:
         return 0.0
     return channel_lag(data.x, data.v, data.t)
 

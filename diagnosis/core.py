@@ -30,7 +30,7 @@ from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
 from friction.progress import status_lines
 
-from .alignment import align_motion
+from .alignment import align_motion, velocity_scale
 from .candidates import missing_columns as _missing_columns
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
@@ -555,7 +555,8 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         effect_details={e["name"]: e["fitted"] for e in effects},
         base=base.describe(),
         skipped=skipped,
-        velocity_alignment={"lag_samples": v_lag, "applied": bool(v_lag)},
+        velocity_alignment={"lag_samples": v_lag, "applied": bool(v_lag),
+                            "velocity_scale": velocity_scale(fit)},
         timing={"seconds": time.perf_counter() - t_start, "fit_samples": len(fit),
                 "validation_samples": int(sum(len(v) for v in val_sets))},
     )

@@ -65,3 +65,17 @@ def test_xml350_clean_record_differentiated_backward_fits_as_central_differences
     assert back["baseline"]["validation"] == pytest.approx(cent["baseline"]["validation"],
                                                           rel=0.02)
     assert back["baseline"]["validation"] < 2.0 * back["noise_floor"]
+
+
+def test_channels_that_disagree_in_scale_have_no_lag_to_move():
+    # Franka case 4: the time column runs twice as long as the velocity implies, so the
+    # position's derivative is half the velocity and their difference no lag
+    from diagnosis.alignment import velocity_scale
+    t, x = _counts(counts=1e-8)
+    v = np.concatenate([[0.0], np.diff(x) / np.diff(t)])
+    data = Dataset.from_arrays(t=2.0 * t, x=x, v=v, F=np.sin(t))
+    assert velocity_scale(data) == pytest.approx(0.5, rel=1e-3)
+    assert velocity_lag(data) == 0.0
+    assert align_motion(data) == (data, 0.0)
+    ok = Dataset.from_arrays(t=t, x=x, v=v, F=np.sin(t))
+    assert velocity_scale(ok) == pytest.approx(1.0, abs=1e-3)

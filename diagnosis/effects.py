@@ -291,7 +291,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
                       "modify_law"),
            plant_entry="law", fmu=True, families=("pre-sliding",)),
-    Effect(Position("position", "friction level varying along the stroke", "multiplicative"),
+    Effect(Position("position", "friction level varying along the stroke (and a force of "
+                             "the position)", "multiplicative"),
            plant_entry="force", fmu=True, levels=POSITION_NAMES, inputs=("x",),
            families=("x",), evidence=("x",),
            truths={"local_defect": _T + "position_truth", "waviness": _F + "waviness_truth",

@@ -30,7 +30,10 @@ Besides closing a third of the held-out gap above the noise floor, the named can
 * have fitted parameters of a physical size of its own (:meth:`.effects.Candidate.
   practical`): a ``delay`` shorter than :attr:`.effects.Delay.MIN_SAMPLES` samples is what
   sampling and differentiation make (an integrating converter and backward differences
-  each shift a record by half a sample), not a delay of the force channel.
+  each shift a record by half a sample), not a delay of the force channel;
+* not be a simpler candidate in disguise (:meth:`.candidates.Candidate.defers`): an
+  acceleration part that is linear in a and flat in v is a mass error - it ranks behind
+  ``inertia`` (:func:`rank`) and is not named.
 
 A candidate that fails is not named; the best one that passes is, if it closes a third of
 the gap above the floor; otherwise the verdict is ``unexplained`` (a structured gap) or

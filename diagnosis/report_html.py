@@ -201,6 +201,12 @@ def write_html(report, path) -> None:
         f"({100 * e['outside_share']:.0f} % of the held-out samples outside)</li>"
         for k, e in report.get("extrapolation", {}).items())
     shift = f"<p>Extrapolation:</p><ul>{shift}</ul>" if shift else ""
+    va = report.get("velocity_alignment") or {}
+    if va.get("applied"):
+        # the records the fit and the held-out scores were computed on were moved
+        shift += (f"<p>Motion channels: the velocity lagged the position by "
+                  f"{va['lag_samples']:.2f} samples and was advanced by that much (with an "
+                  f"acceleration differentiated from it) in every record before fitting.</p>")
     skipped = "".join(f"<li><code>{esc(k)}</code>: {esc(w)}</li>"
                       for k, w in report.get("skipped", {}).items())
     skipped = f"<p>Candidates not tried:</p><ul>{skipped}</ul>" if skipped else ""

@@ -79,3 +79,21 @@ def test_channels_that_disagree_in_scale_have_no_lag_to_move():
     assert align_motion(data) == (data, 0.0)
     ok = Dataset.from_arrays(t=t, x=x, v=v, F=np.sin(t))
     assert velocity_scale(ok) == pytest.approx(1.0, abs=1e-3)
+
+
+def test_cli_report_says_the_velocity_was_advanced(tmp_path):
+    # a user's CSV whose velocity column is the backward differences of the position
+    import json
+    from dataclasses import replace
+    from diagnosis.benchmark import make_case
+    from frictionlab.cli import main
+    data = make_case("clean", 1.0, 0.02, n=4000, seed=2)
+    v = np.concatenate([[data.v[0]], np.diff(data.x) / np.diff(data.t)])
+    p = tmp_path / "run.csv"
+    replace(data, v=v).to_csv(p)
+    assert main(["diagnose", str(p), "--model", "lugre", "--candidates", "delay", "--json",
+                 str(tmp_path / "d.json"), "--html", str(tmp_path / "d.html"), "--quiet"]) == 0
+    va = json.loads((tmp_path / "d.json").read_text())["velocity_alignment"]
+    assert va["applied"] and va["lag_samples"] == pytest.approx(0.5, abs=0.05)
+    assert va["velocity_scale"] == pytest.approx(1.0, abs=0.01)
+    assert "advanced by that much" in (tmp_path / "d.html").read_text()

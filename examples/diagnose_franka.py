@@ -118,8 +118,11 @@ def run_diagnose_franka(cases=(3, 4), fit_speed: str = "slow", candidates=None,
                               else {}),
                "model": ("lugre" if ours_model is models["base"] else f"lugre + {cause}"),
                "held_out": {}, "evidence": {}}
+        # the held-out records as the diagnosis scored them (motion channels on the
+        # position's time base: diagnosis.alignment)
+        scored = dict(zip(held, rep._data["validation"]))
         for s in held:
-            d = recs[s]
+            d = scored[s]
             pred = {k: models[k].predict(d) for k in ("base", top, runner) if k in models}
             ours = ours_model.predict(d)
             base = source_rms(d, pred["base"])
@@ -138,8 +141,9 @@ def run_diagnose_franka(cases=(3, 4), fit_speed: str = "slow", candidates=None,
         ev = row["evidence"]
         ev["same_state"] = {s: matched_state_difference(fit, recs[s]) for s in held}
         ev["repeatability"] = {s: matched_state_difference(recs[s], recs[s]) for s in SPEEDS}
-        ev["offset"] = {s: float(np.mean(source_lowpass(recs[s].t, recs[s].F)
-                                         - source_lowpass(recs[s].t, ours_model.predict(recs[s]))))
+        ev["offset"] = {s: float(np.mean(source_lowpass(scored[s].t, scored[s].F)
+                                         - source_lowpass(scored[s].t,
+                                                          ours_model.predict(scored[s]))))
                         for s in held}
         ev["speed_99"] = {s: float(np.percentile(np.abs(recs[s].v), 99)) for s in SPEEDS}
         ev["velocity_time_ratio"] = velocity_time_ratio(fit)

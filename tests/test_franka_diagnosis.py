@@ -141,9 +141,10 @@ def test_example_diagnoses_both_cases_unexplained(real_data):
     for case in (3, 4):
         row = out[case]
         # no candidate closes a third of the held-out gap (case 3's best: load on the
-        # |sin q2| proxy, 0.13; case 4's: under 0.02)
+        # |sin q2| proxy, 0.30 with the velocity advanced by its measured lag, 0.13 before;
+        # case 4's: under 0.03)
         assert row["verdict"]["cause"] == "unexplained"
-        assert max(g for _, g in row["effects"]) < 0.2
+        assert max(g for _, g in row["effects"]) < 1.0 / 3.0
         assert row["fit_nrmse"] < 0.5
         for s, r in row["held_out"].items():
             assert r["ratio"] > 1.0, (case, s)  # the goal is not reached on any speed

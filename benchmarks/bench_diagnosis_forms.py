@@ -47,6 +47,17 @@ humidity_cycle, eccentric_gear, elastoplastic, bliman_sorine; the forging press'
 0/28 (20 cases close a third of the excess or more and are refused for significance: the
 held-out gap is two acceleration spikes, encompassing z 1.4-1.6).
 
+Sealed family of session 10's end (``--sealed`` then, written by another hand without
+running the diagnosis on it, run once on the code of a99721e, 135 s wall): 176 cases (0
+skipped), top-1 **26.1 %** (46; 26.7 % of the detectable), mean |shrink error| 0.414. By
+form: preload_taper (position) 14/16, ratchet_texture (asymmetry) 10/20, timing_jitter
+(delay) 8/20, dispensing_mass (inertia) 6/20, worn_gap (backlash) 3/12, normal_vibration
+(load) 2/20, mindlin_contacts (gms) 2/12, eyring_boundary (stribeck_shape) 1/16, moment_load
+(acceleration) 0/20, interval_lubrication (drift) 0/20. Wrong names on 15 of 176 (8.5 %):
+acceleration -> position 4, gms -> acceleration 4, load -> asymmetry 2, asymmetry -> load
+2, inertia -> delay, inertia -> drift, position -> drift 1 each. Now seen: it joins the open
+grid as :mod:`diagnosis.benchmark.seen5`, and a new sealed family is written.
+
 Results of session 10 (2026-11-24 15:14 UTC, short protocols, 2 workers, code of commit
 d651fad: Delay.MIN_SAMPLES 1.0, the Stribeck speed map and the load's levels inside a
 classic LuGre's bristle dynamics at the force level): **1072 cases** (session 9's 896 plus

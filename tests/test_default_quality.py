@@ -20,7 +20,10 @@ def test_default_cost_unchanged_in_fewer_evaluations(key, noise):
     r = identify(c.data, c.start, names=c.names, bounds=c.bounds)
     cost, evals = BEFORE[(key, noise)]
     if noise:
-        assert r.fit_nrmse == pytest.approx(cost, rel=1e-6)
+        # the previous default's cost or lower (scipy 1.17 / numpy 2.4: seed 003 ends
+        # 3.7e-6 below it), and not a different basin
+        assert r.fit_nrmse <= cost * (1 + 1e-6)
+        assert r.fit_nrmse == pytest.approx(cost, rel=1e-4)
     else:
         assert r.fit_nrmse < 1e-9
         assert c.param_error(r.params) < 0.01

@@ -31,11 +31,18 @@ def test_emps_asymmetric_lugre_offset_and_levels_are_one_combination(real_data):
     assert {"b", "Fc", "Fc_neg"} <= set(combo["names"])
     assert combo["label"] in ident["unidentified"]
     assert "+" in combo["label"] and combo["label"].split("+")[0] == "b"
-    # the identified reparameterisation: the sliding level of each direction, close to the
-    # README's Fc+ 20.14 / Fc- 20.63 N of the worn ball screw
+    # the identified reparameterisation: the sliding level of each direction. Its split
+    # between the Coulomb level and the viscous slope moves with the optimiser's path
+    # (scipy 1.17 / numpy 2.4: Fc_neg-b 21.9 N with sigma2_neg 230 N s/m, 20.8 N before),
+    # the friction at the record's speeds does not: at 0.1 m/s it is the README's worn ball
+    # screw (Fc+ 20.14 N + Fv+ 166.7 N s/m x 0.1; Fc- 20.63 N + Fv- 240.4 N s/m x 0.1)
     levels = combo["identified"]
-    assert levels["Fc+b"]["value"] == pytest.approx(20.4, abs=1.0)
-    assert levels["Fc_neg-b"]["value"] == pytest.approx(20.8, abs=1.0)
+    p = r.params
+    assert levels["Fc+b"]["value"] + 0.1 * p["sigma2"] == pytest.approx(
+        20.14 + 16.67, abs=1.0)
+    assert levels["Fc_neg-b"]["value"] + 0.1 * p["sigma2_neg"] == pytest.approx(
+        20.63 + 24.04, abs=1.0)
+    assert 19.0 < levels["Fc+b"]["value"] < 23.0 and 19.0 < levels["Fc_neg-b"]["value"] < 23.0
     # the members alone are reported as not identified (open intervals), not as numbers
     for n in ("b", "Fc", "Fc_neg"):
         assert ident["intervals"][n]["open"] == ["lower", "upper"]

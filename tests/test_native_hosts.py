@@ -418,6 +418,8 @@ def ecos_cli(tmp_path) -> pathlib.Path:
         import ecospy
     except ImportError:
         pytest.skip("ecospy is not installed (pip install ecospy; it needs Debian libtbb12)")
+    except OSError as exc:  # ecospy 0.7 loads its C library on import
+        pytest.skip(f"ecospy cannot load its library: {exc} (Debian: apt-get install libtbb12)")
     src = pathlib.Path(ecospy.__file__).parent / "binaries" / "ecos"
     if not src.is_file():
         pytest.skip(f"ecospy {getattr(ecospy, '__version__', '')} ships no linux ecos CLI at {src}")

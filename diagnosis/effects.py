@@ -65,7 +65,8 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` did, and a new one is written);
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen5`
+     did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
    Its parameters, units and bounds are the candidate's (:meth:`Effect.parameters`).
@@ -233,6 +234,7 @@ _S = "diagnosis.benchmark.sealed:"
 _S2 = "diagnosis.benchmark.seen2:"
 _S3 = "diagnosis.benchmark.seen3:"
 _S4 = "diagnosis.benchmark.seen4:"
+_S5 = "diagnosis.benchmark.seen5:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -248,8 +250,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "film_dynamics": _O + "film_dynamics_truth",
                    "contact_aging": _S2 + "contact_aging_truth",
                    "flash_temperature": _S3 + "flash_temperature_truth",
-                   "rolling_skid": _S4 + "rolling_skid_truth"},
-           sealed={"moment_load": _S + "moment_load_truth"},
+                   "rolling_skid": _S4 + "rolling_skid_truth",
+                   "moment_load": _S5 + "moment_load_truth"},
+           sealed={"cylinder_pressure": _S + "cylinder_pressure_truth"},
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
@@ -260,8 +263,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "squeeze_film": _O + "squeeze_film_truth",
                    "load_stribeck": _S2 + "load_stribeck_truth",
                    "film_breakdown": _S3 + "film_breakdown_truth",
-                   "junction_creep": _S4 + "junction_creep_truth"},
-           sealed={"normal_vibration": _S + "normal_vibration_truth"},
+                   "junction_creep": _S4 + "junction_creep_truth",
+                   "normal_vibration": _S5 + "normal_vibration_truth"},
+           sealed={"pivot_lever": _S + "pivot_lever_truth"},
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
@@ -272,8 +276,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "direction_curve": _O + "direction_curve_truth",
                    "lip_roll": _S2 + "lip_roll_truth",
                    "thrust_bearing": _S3 + "thrust_bearing_truth",
-                   "rod_seal_film": _S4 + "rod_seal_film_truth"},
-           sealed={"ratchet_texture": _S + "ratchet_texture_truth"},
+                   "rod_seal_film": _S4 + "rod_seal_film_truth",
+                   "ratchet_texture": _S5 + "ratchet_texture_truth"},
+           sealed={"spring_return": _S + "spring_return_truth"},
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
                          "Stribeck curve shape: exponent, Lorentzian, a speed map",
@@ -284,8 +289,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "stiction_spike": _O + "stiction_spike_truth",
                    "film_liftoff": _S2 + "film_liftoff_truth",
                    "bimodal_roughness": _S3 + "bimodal_roughness_truth",
-                   "log_weakening": _S4 + "log_weakening_truth"},
-           sealed={"eyring_boundary": _S + "eyring_boundary_truth"},
+                   "log_weakening": _S4 + "log_weakening_truth",
+                   "eyring_boundary": _S5 + "eyring_boundary_truth"},
+           sealed={"starved_film": _S + "starved_film_truth"},
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -300,8 +306,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "screw_runout": _O + "screw_runout_truth",
                    "bent_rail": _S2 + "bent_rail_truth",
                    "transfer_film": _S3 + "transfer_film_truth",
-                   "cogging": _S4 + "cogging_truth"},
-           sealed={"preload_taper": _S + "preload_taper_truth"},
+                   "cogging": _S4 + "cogging_truth",
+                   "preload_taper": _S5 + "preload_taper_truth"},
+           sealed={"oil_pocket": _S + "oil_pocket_truth"},
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
@@ -311,8 +318,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "cable_chain": _O + "cable_chain_truth",
                    "geared_inertia": _S2 + "geared_inertia_truth",
                    "lossy_gearing": _S3 + "lossy_gearing_truth",
-                   "basset_added_mass": _S4 + "basset_added_mass_truth"},
-           sealed={"dispensing_mass": _S + "dispensing_mass_truth"},
+                   "basset_added_mass": _S4 + "basset_added_mass_truth",
+                   "dispensing_mass": _S5 + "dispensing_mass_truth"},
+           sealed={"sliding_payload": _S + "sliding_payload_truth"},
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
@@ -323,8 +331,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "encoder_latency": _O + "encoder_latency_truth",
                    "sigma_delta": _S2 + "sigma_delta_truth",
                    "fieldbus_hold": _S3 + "fieldbus_hold_truth",
-                   "clock_skew": _S4 + "clock_skew_truth"},
-           sealed={"timing_jitter": _S + "timing_jitter_truth"},
+                   "clock_skew": _S4 + "clock_skew_truth",
+                   "timing_jitter": _S5 + "timing_jitter_truth"},
+           sealed={"slew_limit": _S + "slew_limit_truth"},
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
@@ -336,8 +345,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "thermal": _O + "thermal_truth",
                    "archard_wear": _S2 + "archard_wear_truth",
                    "humidity_cycle": _S3 + "humidity_cycle_truth",
-                   "third_body": _S4 + "third_body_truth"},
-           sealed={"interval_lubrication": _S + "interval_lubrication_truth"},
+                   "third_body": _S4 + "third_body_truth",
+                   "interval_lubrication": _S5 + "interval_lubrication_truth"},
+           sealed={"seal_relaxation": _S + "seal_relaxation_truth"},
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),
@@ -347,8 +357,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "impact": _B + "backlash_impact_truth",
                    "spring_loaded": _S2 + "spring_loaded_truth",
                    "eccentric_gear": _S3 + "eccentric_gear_truth",
-                   "oil_filled_gap": _S4 + "oil_filled_gap_truth"},
-           sealed={"worn_gap": _S + "worn_gap_truth"},
+                   "oil_filled_gap": _S4 + "oil_filled_gap_truth",
+                   "worn_gap": _S5 + "worn_gap_truth"},
+           sealed={"drag_idler": _S + "drag_idler_truth"},
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
                         "Maxwell-slip)", "modify_law"),
@@ -358,8 +369,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "elastoplastic": _G + "gms_elastoplastic_truth",
                    "bliman_sorine": _S2 + "bliman_sorine_truth",
                    "bouc_wen": _S3 + "bouc_wen_truth",
-                   "zener_junction": _S4 + "zener_junction_truth"},
-           sealed={"mindlin_contacts": _S + "mindlin_contacts_truth"},
+                   "zener_junction": _S4 + "zener_junction_truth",
+                   "mindlin_contacts": _S5 + "mindlin_contacts_truth"},
+           sealed={"rate_state_presliding": _S + "rate_state_presliding_truth"},
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 

@@ -1,4 +1,4 @@
-"""The sealed truth family (diagnosis.benchmark.sealed, written at the end of session 10):
+"""The sealed truth family (diagnosis.benchmark.sealed, written at the end of session 11):
 each form builds a finite case of the requested size on every plant it applies to, is the
 base law at s = 0 and grows with its amplitude factor. No diagnosis is run on these forms:
 the family stays unseen until the end of a piece of work."""
@@ -13,10 +13,11 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "moment_load", "load": "normal_vibration",
-        "asymmetry": "ratchet_texture", "stribeck_shape": "eyring_boundary",
-        "position": "preload_taper", "inertia": "dispensing_mass", "delay": "timing_jitter",
-        "drift": "interval_lubrication", "backlash": "worn_gap", "gms": "mindlin_contacts"}
+FORM = {"acceleration": "cylinder_pressure", "load": "pivot_lever",
+        "asymmetry": "spring_return", "stribeck_shape": "starved_film",
+        "position": "oil_pocket", "inertia": "sliding_payload", "delay": "slew_limit",
+        "drift": "seal_relaxation", "backlash": "drag_idler",
+        "gms": "rate_state_presliding"}
 #: a plant each sealed form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {"acceleration": "xml350", "load": "xml350", "asymmetry": "xml350",
@@ -45,28 +46,29 @@ def test_sealed_forms_are_finite_and_grow_on_every_plant_they_apply_to():
 
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     from diagnosis.benchmark.kinematics import fine_kinematics
-    from diagnosis.benchmark.sealed import (eyring_boundary_truth, mindlin_contacts_truth,
-                                            normal_vibration_truth, preload_taper_truth,
-                                            worn_gap_truth)
+    from diagnosis.benchmark.sealed import (drag_idler_truth, oil_pocket_truth,
+                                            pivot_lever_truth, rate_state_presliding_truth,
+                                            starved_film_truth)
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        eyring_boundary_truth(iso, 1.0)
+        starved_film_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        mindlin_contacts_truth(iso, 1.0)
+        rate_state_presliding_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        worn_gap_truth(iso, 1.0)
+        drag_idler_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
-    # a one-way stroke (the press's) never revisits a position: no taper to learn
+    # a one-way stroke (the press's) never revisits a position: no port to cross again
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        preload_taper_truth.__wrapped__(one_way, 1.0)
-    # a load that never changes has no rate
+        oil_pocket_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes moves no lever
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        normal_vibration_truth.__wrapped__(still, 1.0)
+        pivot_lever_truth.__wrapped__(still, 1.0)
 
 
 @pytest.mark.parametrize("plant", ["xml350", "valve"])
 def test_sealed_forms_at_zero_amplitude_are_the_base(plant):
-    # s scales the effect from nothing: at s = 0 each form is the base law
+    # s scales the effect from nothing: at s = 0 each form is the base law (up to its own
+    # integration on the fine grid: the backlash contact's stiff coupling)
     assert_zero_amplitude_is_the_base(FORM, plant)

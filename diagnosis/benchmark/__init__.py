@@ -64,17 +64,18 @@ outside             a sinusoidal electrical ripple at 0.0537 x the sample rate (
 The table gives each effect's first truth form (``run_benchmark(forms="first")``, the
 default). **Generalisation grid** (``forms="all"``, ``measured=True``,
 ``benchmarks/bench_diagnosis_forms.py``): every open form of every effect - at least three
-from different physics (:mod:`.forms`; :mod:`.seen`, :mod:`.seen2`, :mod:`.seen3` and
-:mod:`.seen4`, the first four sealed families, seen and moved into the open grid; backlash's rigid, compliant
+from different physics (:mod:`.forms`; :mod:`.seen`, :mod:`.seen2`, :mod:`.seen3`,
+:mod:`.seen4` and :mod:`.seen5`, the first five sealed families, seen and moved into the
+open grid; backlash's rigid, compliant
 and impact contacts; GMS's Maxwell-slip with 10 and 4 blocks, Dahl, elasto-plastic) - with
 the motion channels a user records: positions quantised to 50-1000 encoder counts per
 sample at the top speed and differentiated by ``np.gradient``, backward differences or a
 low-passed gradient (:func:`.kinematics.measure_motion`, :data:`.runner.MEASURED` in turn).
 The **sealed** family (:mod:`.sealed`, ``forms="sealed"``) is one more form per effect, kept
 out of all tuning and run only at the end of a piece of work (the present one written at
-the end of session 10, sealed: not run; session 10's first, run once at its end on d651fad,
-34.3 % top-1, is :mod:`.seen4`, session 9's :mod:`.seen3`; figures in
-``benchmarks/bench_diagnosis_forms.py``). Every truth is integrated along the
+the end of session 11, sealed: not run; the one written at the end of session 10, run once
+in session 11 on a99721e, 26.1 % top-1, is :mod:`.seen5`, session 10's first (34.3 %)
+:mod:`.seen4`, session 9's :mod:`.seen3`; figures in ``benchmarks/bench_diagnosis_forms.py``). Every truth is integrated along the
 plant's continuous motion on a grid :data:`.kinematics.FINE` x finer than the data (:func:`.truths.on_fine_grid`); the oracle's
 figures (detectable, truth shrink) take the base law's own discretisation at the data rate
 off the truth (``BenchCase.info["discretisation"]``), since no candidate is asked to explain
@@ -90,8 +91,8 @@ Layout
 ------
 :mod:`.cases` (the datasets), :mod:`.kinematics` (per-plant motions, the fine grid, measured
 channels), :mod:`.truths` (first truth forces), :mod:`.forms` (the other open forms),
-:mod:`.seen`, :mod:`.seen2`, :mod:`.seen3` and :mod:`.seen4` (the first four sealed families,
-now open),
+:mod:`.seen`, :mod:`.seen2`, :mod:`.seen3`, :mod:`.seen4` and :mod:`.seen5` (the first five
+sealed families, now open),
 :mod:`.sealed` (the sealed family),
 :mod:`.scoring` (localisation, shrink, summaries), :mod:`.runner` (:func:`run_benchmark`),
 :mod:`.cli` (text table, ``python -m diagnosis.benchmark``).

@@ -1,60 +1,73 @@
 """The sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-11-24 (session 10, end), once, without running the diagnosis on it; sealed:
+Written 2026-11-28 (session 11, end), once, without running the diagnosis on it; sealed:
 not run. It is run only at the end of a piece of work and reported apart from the open grid
 (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`). Once its results have
-been seen it joins the open grid, as :mod:`.seen`, :mod:`.seen2`, :mod:`.seen3` and
-:mod:`.seen4` did, and a new sealed family is written. Each form is a mechanism of other
-physics than every open form of its effect (:mod:`.truths`, :mod:`.forms`, :mod:`.seen`,
-:mod:`.seen2`, :mod:`.seen3`, :mod:`.seen4`, :mod:`diagnosis.effects_backlash`,
-:mod:`diagnosis.effects_gms`) and than the candidate's formula (:mod:`diagnosis.candidates`),
-taken from the friction literature or from real machines, integrated along the plant's
-continuous motion on the grid :data:`.kinematics.FINE` x finer than the data
-(:func:`.truths.on_fine_grid`); level changes act inside the bristle dynamics of a LuGre base
-(:func:`.truths.level_inside`). ``s`` scales each effect's amplitude monotonically from the
-base law at ``s`` = 0 (its calibration, :func:`.cases._calibrate`, sets the requested size).
+been seen it joins the open grid, as :mod:`.seen`, :mod:`.seen2`, :mod:`.seen3`,
+:mod:`.seen4` and :mod:`.seen5` did, and a new sealed family is written. Each form is a
+mechanism of other physics than every open form of its effect (:mod:`.truths`, :mod:`.forms`,
+:mod:`.seen`, :mod:`.seen2`, :mod:`.seen3`, :mod:`.seen4`, :mod:`.seen5`,
+:mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
+formula (:mod:`diagnosis.candidates`), taken from the friction literature or from real
+machines, integrated along the plant's continuous motion on the grid :data:`.kinematics.FINE`
+x finer than the data (:func:`.truths.on_fine_grid`); level changes act inside the bristle
+dynamics of a LuGre base (:func:`.truths.level_inside`). ``s`` scales each effect's
+amplitude monotonically from the base law at ``s`` = 0 (its calibration,
+:func:`.cases._calibrate`, sets the requested size).
 
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``moment_load``: a carriage on a preloaded linear guide whose load
-                   sits above the rail: the acceleration's pitching moment moves load
-                   from one ball row to the other (Hertz rows, rolling loss ~ Q^(4/3),
-                   Tabor); the levels rise with |a|, more steeply once a row unloads
-load               ``normal_vibration``: friction falls while the normal load changes
-                   (Tolstoi 1967; Littmann et al. 2001): the levels drop with the rate
-                   |dL/dt|, not with the load itself
-asymmetry          ``ratchet_texture``: a directional (saw-tooth) surface texture: against
-                   the grain (v < 0) the slider climbs the teeth and the levels rise; at
-                   speed it flies over them, so the rise fades as 1 / (1 + (v / v_t)^2)
-stribeck_shape     ``eyring_boundary``: a boundary film whose shear strength rises as the
-                   Eyring law asinh(v / v0) (Briscoe and Evans 1982): a strengthening
-                   that is steep at low speed and logarithmic above
-position           ``preload_taper``: a linear-guide rail ground with a height taper: the
-                   preload, and with it the Hertzian rows' friction (~ preload^1.5),
-                   changes monotonically along the stroke
-inertia            ``dispensing_mass``: the carriage carries a tank that empties over the
-                   record (a dispensing axis): the mass missed by the inverse dynamics
-                   falls linearly in time to 20 %
-delay              ``timing_jitter``: a non-real-time logger timestamps the force with a
-                   wandering latency: the force's delay is ``s`` (1 + 0.6 u(t)) samples,
-                   u a fixed band-limited random signal in [-1, 1]
-drift              ``interval_lubrication``: a central lubrication system injects grease
-                   at 15, 50 and 85 % of the record: each shot drops the levels, which
-                   creep back as the grease is spread and consumed (a sawtooth in time)
-backlash           ``worn_gap``: a gear play that grows with the distance travelled (flank
-                   wear, Flodin and Andersson 2000): from 40 % to 100 % of its width over
-                   the record; across the play the contact stands still
-gms                ``mindlin_contacts``: Hertzian contacts in partial slip (Cattaneo 1938,
-                   Mindlin 1949) in parallel with the LuGre bristle: presliding force
-                   1 - (1 - d / 2 d*)^1.5 from the last reversal (Masing's rule, doubled
-                   path), capped by the Stribeck level; at ``s`` = 0 the base itself
+acceleration       ``cylinder_pressure``: a hydraulic cylinder's seals: the chamber
+                   pressure that accelerates the load builds up through the oil's
+                   compressibility (a lag) and presses the pressurised side's seal
+                   harder (Yanada and Sekikawa 2008): the levels rise with the lagged
+                   |a|, linearly, in acceleration and braking alike
+load               ``pivot_lever``: the normal load reaches the contact through a lever
+                   with its own compliance and Coulomb friction in its pivot (a Jenkin
+                   element): the contact's load is a play (hysteresis) operator of the
+                   applied load, 15 % of its range wide; the levels are affine in it
+asymmetry          ``spring_return``: a single-acting cylinder with a preloaded return
+                   spring: extending (v > 0) the chamber pressure holds the spring and
+                   presses the seal, retracting the spring drives and the chamber is
+                   vented: the positive direction's levels rise, more as the spring is
+                   compressed along the stroke
+stribeck_shape     ``starved_film``: inlet starvation at speed (Wedeven, Evans and Cameron
+                   1971; Chevalier et al. 1998): above 40 % of the top speed the track is
+                   not replenished, the film thins and the asperities carry load again:
+                   the boundary level rises again, quadratically, at high speed
+position           ``oil_pocket``: a lubrication port in the rail: the slider picks up oil
+                   where it crosses the port and loses it over 15 % of the stroke it then
+                   travels, so the levels are lowest just past the port, in the direction
+                   of travel (a wake, not a function of x alone)
+inertia            ``sliding_payload``: a loose part on the carriage (a workpiece on a
+                   pallet): it moves with the carriage (a missed mass) while |a| stays
+                   below what its friction holds (0.5 a99), slides beyond, and the
+                   carriage then feels only that friction (block on a cart, Coulomb)
+delay              ``slew_limit``: the force amplifier's finite slew rate with its
+                   single-pole bandwidth (operational amplifiers: slew rate and
+                   gain-bandwidth): slow changes lag a little, fast ones (the reversals)
+                   are followed at the slew rate: a delay that grows with |dF/dt|
+drift              ``seal_relaxation``: the elastomer seal's contact force relaxes after
+                   fitting (physical stress relaxation of rubber, linear in log time,
+                   Gent 1962): the levels fall as log(1 + t / tau0), tau0 1 % of the
+                   record: fast at first, still falling at the end
+backlash           ``drag_idler``: a play bridged by a friction-loaded idler (a slip-clutch
+                   anti-backlash gear, Michalec 1966): across the play the drive drags
+                   the contact with a Coulomb force of half its Coulomb level, so the
+                   force holds a plateau there instead of holding, dropping, ramping or
+                   following the closing speed
+gms                ``rate_state_presliding``: an elastic asperity layer in series with a
+                   rate-and-state interface (Dieterich 1979, Ruina 1983, regularised as
+                   Rice et al. 2001, aging law) beside the LuGre bristle: presliding as
+                   thermally activated creep, so the yield grows with the log of the rate
+                   and with the time held; at ``s`` = 0 the base itself
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``eyring_boundary`` needs
-a Stribeck curve (not the isolator's mre_lugre), ``preload_taper`` a record that revisits
-its positions (not the press), ``normal_vibration`` a load that changes, ``worn_gap`` and
-``mindlin_contacts`` a classic LuGre base (valve, damping rig, XML-350); each raises a
+Where a form applies: as its effect's record (``truth_applies``); ``starved_film`` needs a
+Stribeck curve (not the isolator's mre_lugre), ``oil_pocket`` a record that revisits its
+positions (not the press), ``pivot_lever`` a load that changes, ``drag_idler`` and
+``rate_state_presliding`` a classic LuGre base (valve, damping rig, XML-350); each raises a
 ``ValueError`` elsewhere.
 """
 from __future__ import annotations
@@ -64,237 +77,39 @@ import math
 import numpy as np
 from numba import njit
 
-from ..effects_backlash import PLANT_GAP_SHARE
+from ..effects_backlash import PLANT_GAP_SHARE, _play
 from .kinematics import PlantKinematics
-from .truths import (MAX_DELAY_SAMPLES, _base_parts, _bump_centre, _lag, _level,
-                     _lugre_params, _motion_time, _presliding_path, _smooth_max0, _span,
+from .truths import (GAP_DRAG, MAX_DELAY_SAMPLES, _base_parts, _bump_centre,
+                     _contact_constants, _lag, _level, _lugre_params, _motion_time,
+                     _presliding_path, _run_driven_contact, _smooth_max0, _span,
                      level_inside, on_fine_grid)
 
-__all__ = ["moment_load_truth", "normal_vibration_truth", "ratchet_texture_truth",
-           "eyring_boundary_truth", "preload_taper_truth", "dispensing_mass_truth",
-           "timing_jitter_truth", "interval_lubrication_truth", "worn_gap_truth",
-           "mindlin_contacts_truth"]
+__all__ = ["cylinder_pressure_truth", "pivot_lever_truth", "spring_return_truth",
+           "starved_film_truth", "oil_pocket_truth", "sliding_payload_truth",
+           "slew_limit_truth", "seal_relaxation_truth", "drag_idler_truth",
+           "rate_state_presliding_truth"]
 
 
 # -- acceleration ---------------------------------------------------------------------------
-#: acceleration at which one ball row of ``moment_load`` loses its preload, x a99 [-]
-ROW_UNLOAD = 0.5
-
-
-def _rows(q, eps):
-    """Rolling loss of two preloaded Hertzian rows [-] whose loads are 1 +- q (smoothly
-    cut at 0), each ~ load^(4/3); 1 at q = 0 up to the rounding."""
-    return 0.5 * (_smooth_max0(1.0 + q, eps) ** (4.0 / 3.0)
-                  + _smooth_max0(1.0 - q, eps) ** (4.0 / 3.0))
+#: time constant of ``cylinder_pressure``'s pressure build-up, x the motion's time scale [-]
+PRESSURE_LAG = 0.05
 
 
 @on_fine_grid
-def moment_load_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Moment load on a preloaded linear guide: the carriage's load sits above the rail, so
-    the acceleration's pitching moment moves load between the front and rear ball rows,
-    loads 1 +- q with q = a / (:data:`ROW_UNLOAD` a99); each row's rolling loss goes as
-    its load^(4/3) (a row that loses its preload carries nothing). The Coulomb and Stribeck
-    levels are the base's times 1 + ``s`` 0.5 (phi(q) - phi(0)) / (phi(2) - phi(0)), phi
-    the rows' loss, inside the bristle dynamics; the viscous term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (a [m/s^2]) and its base law.
-    s : float
-        Amplitude factor [-]: the relative rise of the levels at the top acceleration,
-        / 0.5.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Linear-guide catalogues (THK, HIWIN: friction under moment load); Tabor's rolling loss
-    ~ Q^(4/3). Even in a and instantaneous like ``rolling_skid`` but from the load path,
-    not a skidding share: a convex rise from a = 0 with a kink where a row unloads.
-    """
-    q = np.asarray(kin.a, float) / (ROW_UNLOAD * max(kin.scales["a99"], 1e-12))
-    eps = 0.02
-    phi0 = float(_rows(np.zeros(1), eps)[0])
-    top = float(_rows(np.full(1, 1.0 / ROW_UNLOAD), eps)[0])
-    lev = 1.0 + s * 0.5 * (_rows(q, eps) - phi0) / (top - phi0)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- load -------------------------------------------------------------------------------------
-@on_fine_grid
-def normal_vibration_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Friction reduced by a changing normal load: while the load changes the contact
-    partly unloads and re-sticks, so the levels fall with the load's rate r = |dL/dt|
-    (lagged over 2 % of the motion's time scale): 1 - ``s`` 0.4 (1 - exp(-r / r99)) / (1 -
-    exp(-1)), r99 the rate's 99th percentile, inside the bristle dynamics; the viscous term
-    is the base's. ValueError if the load does not change.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (t [s], load [N]) and its base law.
-    s : float
-        Amplitude factor [-]: the relative level drop at the rate r99, / 0.4.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Tolstoi 1967 (normal vibrations lower friction); Littmann, Storck and Wallaschek 2001
-    (friction reduction by vibration). The candidate and the open forms are laws of the
-    load (affine, a power, one direction, the Stribeck velocity, a threshold) or of its
-    history (creep); this one is a law of its rate.
-    """
-    L = np.asarray(kin.load, float)
-    r = _lag(kin.t, np.abs(np.gradient(L, kin.t)), max(0.02 * _motion_time(kin), kin.dt))
-    r99 = float(np.percentile(r, 99))
-    T = float(kin.t[-1] - kin.t[0]) or 1.0
-    # a change below 1e-6 of the mean load over the record is round-off, not a change
-    if not np.isfinite(r99) or r99 * T <= 1e-6 * max(float(np.mean(np.abs(L))), 1e-12):
-        raise ValueError(f"load (normal_vibration): the {kin.plant} record's load does not "
-                         f"change")
-    drop = (1.0 - np.exp(-r / r99)) / (1.0 - math.exp(-1.0))
-    lev = np.clip(1.0 - s * 0.4 * drop, 0.05, None)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- asymmetry -------------------------------------------------------------------------------
-#: speed above which ``ratchet_texture``'s slider flies over the teeth, x v99 [-]
-TAKE_OFF = 0.3
-
-
-@on_fine_grid
-def ratchet_texture_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A saw-tooth (directional) surface texture: against the grain (v < 0) the slider
-    climbs the teeth's steep flanks and the Coulomb and Stribeck levels are the base's
-    times 1 + ``s`` 0.5 n(v) / (1 + (v / v_t)^2), v_t = :data:`TAKE_OFF` v99 (faster, it
-    flies over the teeth), n(v) a smooth indicator of v < 0 (over 2 % of v99), inside the
-    bristle dynamics; the viscous term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law.
-    s : float
-        Amplitude factor [-]: the negative direction's relative level rise at rest, / 0.5.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Directional friction of anisotropic (saw-tooth, scale-like) surfaces (Filippov and
-    Gorb 2013; laser-textured surfaces). The open forms keep a direction's share at all
-    speeds, move its Stribeck velocity or viscous slope, or follow a lip, a thrust or a
-    film; here the asymmetry is geometric and fades with the speed.
-    """
-    v99 = max(kin.scales["v99"], 1e-12)
-    v = np.asarray(kin.v, float)
-    neg = 0.5 * (1.0 - np.tanh(v / (0.02 * v99)))
-    lev = 1.0 + s * 0.5 * neg / (1.0 + (v / (TAKE_OFF * v99)) ** 2)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- stribeck_shape --------------------------------------------------------------------------
-#: Eyring speed of ``eyring_boundary``, x v99 [-]
-EYRING_SPEED = 0.01
-
-
-@on_fine_grid
-def eyring_boundary_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A boundary film sheared by thermal activation: its shear strength rises as the
-    Eyring law, the curve gains ``s`` x 0.4 Fc asinh(|v| / v0) / asinh(v99 / v0), v0 =
-    :data:`EYRING_SPEED` v99: steep near rest, logarithmic above, inside the bristle
-    dynamics; the viscous term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law (a Stribeck curve).
-    s : float
-        Amplitude factor [-]: the strengthening at the top speed, x 0.4 Fc.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Eyring 1936; Briscoe and Evans 1982 (shear strength of boundary films rising with the
-    logarithm of the sliding speed). The candidate bends the base's drop; the open forms
-    add tails, drops, a spike, a lift-off, a second drop or a logarithmic *weakening*;
-    this one strengthens.
-    """
-    if kin.base.name == "mre_lugre":
-        raise ValueError("stribeck_shape (eyring_boundary): the mre_lugre base has no "
-                         "Stribeck curve")
-    p = kin.base.params
-    v99 = max(kin.scales["v99"], 1e-12)
-    v0 = EYRING_SPEED * v99
-    v = kin.v
-    extra = 0.4 * float(p.Fc) * np.arcsinh(np.abs(v) / v0) / math.asinh(v99 / v0)
-    return level_inside(kin, 1.0 + s * extra / kin.base.g(v), np.ones_like(v))
-
-
-# -- position --------------------------------------------------------------------------------
-@on_fine_grid
-def preload_taper_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A rail ground with a height taper: the guide's preload changes linearly along the
-    stroke, 1 + ``s`` 0.6 (u - 0.5) (u = (x - x_lo) / stroke, floored at 0.1), and the
-    Hertzian rows' friction with the preload^1.5: the Coulomb and Stribeck levels are the
-    base's times that, inside the bristle dynamics; the viscous term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (x [m]) and its base law.
-    s : float
-        Amplitude factor [-]: the preload's change over the stroke, / 0.6.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Rail height and parallelism tolerances of linear guides (THK, HIWIN catalogues); a
-    Hertz contact's force ~ its approach^1.5. The open forms are local (a defect, a worn
-    section, a transfer film), periodic (waviness, runout, cogging) or a bow; this one is
-    a monotone, slightly convex change over the whole stroke.
-    """
-    if _bump_centre(kin) is None:
-        raise ValueError(f"position (preload_taper): the held-out part of the {kin.plant} "
-                         f"record never revisits the positions of its fit part")
-    u = (np.asarray(kin.x, float) - kin.scales["x_lo"]) / _span(kin)
-    lev = np.clip(1.0 + s * 0.6 * (u - 0.5), 0.1, None) ** 1.5
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- inertia ---------------------------------------------------------------------------------
-@on_fine_grid
-def dispensing_mass_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A dispensing axis: the carriage carries a tank that empties at a steady rate over the
-    record, so the mass missed by the inverse dynamics is m(t) = m0 (1 - 0.8 (t - t0) /
-    T), m0 = ``s`` x 0.3 x the friction level / a99 [kg] (the material leaves at the
-    carriage's speed: no thrust).
+def cylinder_pressure_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A hydraulic cylinder's seals loaded by the pressure that accelerates the load: the
+    chamber pressure difference p follows the force demand m a through the oil's
+    compressibility (a first-order lag over :data:`PRESSURE_LAG` x the motion's time
+    scale), and the pressurised side's seal presses harder by it: the Coulomb and Stribeck
+    levels are the base's times 1 + ``s`` 0.5 |p| / a99 (|p| rounded over 2 % of a99),
+    inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the starting mass relative to 0.3 x level / a99.
+        Amplitude factor [-]: the relative level rise at the top acceleration, / 0.5.
 
     Returns
     -------
@@ -303,36 +118,327 @@ def dispensing_mass_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Variable-mass systems (Meshchersky's equation, with the material leaving at the
-    body's speed). The candidate and the open forms are constant masses (or vary with
-    the position or a gear ratio); here the mass falls with the time.
+    Seal friction of hydraulic cylinders rising with the chamber pressure (Yanada and
+    Sekikawa 2008; Bonchis, Corke and Rye 2002). The open forms lag the velocity or a
+    state over a slip distance, age the contact, heat it, skid rolling elements or move
+    load between ball rows (instantaneous); here a fluid pressure, linear in |a| and
+    lagged by the oil's compliance, loads a seal.
+    """
+    a99 = max(kin.scales["a99"], 1e-12)
+    p = _lag(kin.t, np.asarray(kin.a, float), PRESSURE_LAG * _motion_time(kin))
+    # |p| rounded over eps, 0 at p = 0 (measured signals never switch in one sample)
+    eps = 0.02 * a99
+    lev = 1.0 + s * 0.5 * (_smooth_max0(p, eps) + _smooth_max0(-p, eps) - eps) / a99
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- load -------------------------------------------------------------------------------------
+#: width of ``pivot_lever``'s play on the load, x the load's range [-]
+LEVER_PLAY = 0.15
+
+
+@on_fine_grid
+def pivot_lever_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The normal load applied through a lever with its own compliance and Coulomb friction
+    in its pivot (a Jenkin element): the lever does not move until the load change
+    overcomes the pivot's friction, so the contact's load L_c is a play operator of the
+    applied load L (half-width :data:`LEVER_PLAY` / 2 x the load's range, centred at the
+    start); the Coulomb and Stribeck levels are the base's times 1 + ``s`` 0.6 (L_c - mean
+    L) / mean L, inside the bristle dynamics; the viscous term is the base's. ValueError if
+    the load does not change.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (load [N]) and its base law.
+    s : float
+        Amplitude factor [-]: the levels' slope in the contact's relative load, / 0.6.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    A spring in series with a Coulomb slider transmits a play (backlash) operator of its
+    input (Krasnosel'skii and Pokrovskii 1989); brake and clamp levers with pivot friction.
+    The open forms are laws of the load (affine, a power, one direction, the Stribeck
+    velocity, a threshold), of its rate or a creep towards it; here the load seen by the
+    contact has a hysteresis (it depends on whether the load last rose or fell).
+    """
+    L = np.ascontiguousarray(kin.load, dtype=float)
+    L0 = max(float(np.mean(np.abs(L))), 1e-12)
+    # a change below 1e-6 of the mean load over the record is round-off, not a change
+    if float(np.ptp(L)) <= 1e-6 * L0:
+        raise ValueError(f"load (pivot_lever): the {kin.plant} record's load does not "
+                         f"change")
+    Lc = _play(L, 0.5 * LEVER_PLAY * float(np.ptp(L)))
+    lev = np.clip(1.0 + s * 0.6 * (Lc - float(np.mean(L))) / L0, 0.05, None)
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- asymmetry -------------------------------------------------------------------------------
+#: share of ``spring_return``'s spring force at the stroke's start (its preload) [-]
+SPRING_PRELOAD = 0.5
+
+
+@on_fine_grid
+def spring_return_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A single-acting cylinder with a preloaded return spring: extending (v > 0) the
+    chamber pressure holds the spring, :data:`SPRING_PRELOAD` + (1 - :data:`SPRING_PRELOAD`)
+    u of its force at the stroke's end (u = (x - x_lo) / stroke in [0, 1]), and presses
+    the seal; retracting, the spring drives and the chamber is vented. The Coulomb and
+    Stribeck levels are the base's times 1 + ``s`` 0.5 n(v) (that spring share), n(v) a
+    smooth indicator of v > 0 (over 2 % of v99), inside the bristle dynamics; the viscous
+    term is the base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (x [m], v [m/s]) and its base law.
+    s : float
+        Amplitude factor [-]: the positive direction's relative level rise at the stroke's
+        end, / 0.5.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Spring-return pneumatic and hydraulic cylinders and valve actuators; seal friction
+    rising with the pressure (Belforte, Mattiazzo, Mauro and Tokashiki 2003). The open
+    forms keep a direction's share at all positions, move its Stribeck velocity or viscous
+    slope, follow a lip, a thrust, a film or a texture fading with the speed; here the
+    loaded direction's rise grows along the stroke.
+    """
+    v99 = max(kin.scales["v99"], 1e-12)
+    pos = 0.5 * (1.0 + np.tanh(np.asarray(kin.v, float) / (0.02 * v99)))
+    u = np.clip((np.asarray(kin.x, float) - kin.scales["x_lo"]) / _span(kin), 0.0, 1.0)
+    lev = 1.0 + s * 0.5 * pos * (SPRING_PRELOAD + (1.0 - SPRING_PRELOAD) * u)
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- stribeck_shape --------------------------------------------------------------------------
+#: speed above which ``starved_film``'s track starves, x v99 [-]
+STARVATION_SPEED = 0.4
+
+
+@on_fine_grid
+def starved_film_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Inlet starvation at speed: above v_st = :data:`STARVATION_SPEED` v99 the lubricant
+    pushed aside is not replenished before the contact returns, the film thins and the
+    asperities carry load again: the curve gains ``s`` x 0.4 Fc ((|v| - v_st) / (v99 -
+    v_st))^2 above v_st (rounded over 2 % of that range), inside the bristle dynamics; the
+    viscous term is the base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (v [m/s]) and its base law (a Stribeck curve).
+    s : float
+        Amplitude factor [-]: the rise at the top speed, x 0.4 Fc.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Wedeven, Evans and Cameron 1971 (starvation of elastohydrodynamic contacts); Chevalier,
+    Lubrecht, Cann, Colin and Dalmaz 1998 (film decay under starvation). The candidate
+    bends the base's drop; the open forms add tails, drops, a spike, a lift-off, a second
+    drop, a logarithmic weakening or an Eyring strengthening from rest; this one leaves
+    the low speeds alone and turns the curve up again at the top of the speed range.
+    """
+    if kin.base.name == "mre_lugre":
+        raise ValueError("stribeck_shape (starved_film): the mre_lugre base has no "
+                         "Stribeck curve")
+    p = kin.base.params
+    v99 = max(kin.scales["v99"], 1e-12)
+    vst = STARVATION_SPEED * v99
+    v = kin.v
+    q = (np.abs(v) - vst) / (v99 - vst)
+    # the square of a rounded ramp: smooth through v_st, 1 (up to the rounding) at v99
+    extra = 0.4 * float(p.Fc) * _smooth_max0(q, 0.02) ** 2
+    return level_inside(kin, 1.0 + s * extra / kin.base.g(v), np.ones_like(v))
+
+
+# -- position --------------------------------------------------------------------------------
+#: ``oil_pocket``'s port half-width, the distance its oil is lost over and the distance a
+#: crossing refills it over, x the stroke [-]
+PORT_HALF, OIL_RUN, OIL_FILL = 0.02, 0.15, 0.005
+
+
+@njit(cache=True)
+def _carried_oil(x, xc, half, run, fill):
+    """Share of a full film [-] the slider carries along the positions ``x`` [m]: it fills
+    towards 1 over the travel ``fill`` [m] while within ``half`` [m] of the port ``xc``
+    [m], and is lost over the travel ``run`` [m] elsewhere; starts dry."""
+    n = x.size
+    h = np.empty(n)
+    c = 0.0
+    for k in range(n):
+        if k > 0:
+            d = abs(x[k] - x[k - 1])
+            if abs(x[k] - xc) < half:
+                c = 1.0 - (1.0 - c) * math.exp(-d / fill)
+            else:
+                c = c * math.exp(-d / run)
+        h[k] = c
+    return h
+
+
+@on_fine_grid
+def oil_pocket_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A lubrication port in the rail, where the fit and held-out parts both pass: crossing
+    it the slider picks up a full film (over :data:`OIL_FILL` x the stroke of travel
+    within :data:`PORT_HALF` x the stroke of it), then loses it over :data:`OIL_RUN` x the
+    stroke it travels; the Coulomb and Stribeck levels are the base's times 1 - ``s`` 0.4
+    h (h the film carried), inside the bristle dynamics; the viscous term is the base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (x [m]) and its base law.
+    s : float
+        Amplitude factor [-]: the relative level drop with a full film, / 0.4.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Rail lubrication ports of linear guides (THK, HIWIN catalogues); a film carried from
+    its supply and depleted with the distance run (Chevalier et al. 1998). The open forms
+    are functions of the position (a defect, waviness, a worn section, runout, a bow,
+    cogging, a taper) or of the passes over it (a transfer film); here the level follows
+    the travel since the port was crossed: a wake on the side the slider went.
+    """
+    xc = _bump_centre(kin)
+    if xc is None:
+        raise ValueError(f"position (oil_pocket): the held-out part of the {kin.plant} "
+                         f"record never revisits the positions of its fit part")
+    span = _span(kin)
+    h = _carried_oil(np.ascontiguousarray(kin.x, dtype=float), xc, PORT_HALF * span,
+                     OIL_RUN * span, OIL_FILL * span)
+    lev = np.clip(1.0 - s * 0.4 * h, 0.05, None)
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- inertia ---------------------------------------------------------------------------------
+#: acceleration a loose payload's friction holds it up to, x a99 [-]
+PAYLOAD_GRIP = 0.5
+
+
+@njit(cache=True)
+def _payload_force(t, v, a, grip):
+    """Force per unit payload mass [m/s^2] the carriage exerts on a loose payload: its own
+    acceleration ``a`` while the payload sticks (|a| <= ``grip``), +- ``grip`` while it
+    slides (towards the carriage's velocity ``v``); it sticks again when its velocity
+    meets the carriage's. Starts stuck."""
+    n = t.size
+    f = np.empty(n)
+    u = v[0]
+    stuck = True
+    sg = 0.0
+    for k in range(n):
+        if k > 0 and not stuck:
+            u += (t[k] - t[k - 1]) * sg * grip
+            if (v[k] - u) * sg <= 0.0:
+                stuck = True
+        if stuck:
+            if abs(a[k]) <= grip:
+                u = v[k]
+                f[k] = a[k]
+                continue
+            stuck = False
+            sg = 1.0 if a[k] > 0.0 else -1.0
+            u = v[k]
+        f[k] = sg * grip
+    return f
+
+
+@on_fine_grid
+def sliding_payload_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A loose payload on the carriage (a part on a pallet), held by its Coulomb friction
+    up to the acceleration g_p = :data:`PAYLOAD_GRIP` a99: while it sticks the inverse
+    dynamics misses m a, while it slides only the friction force m g_p that drags it (until
+    its velocity meets the carriage's again); m = ``s`` x 0.3 x the friction level / a99
+    [kg].
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s], v [m/s], a [m/s^2]) and its base law.
+    s : float
+        Amplitude factor [-]: the payload's mass relative to 0.3 x level / a99.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    A block on an accelerating cart (Coulomb friction: stick while |a| < mu g); parts
+    slipping on pallets and grippers of fast handling axes. The candidate and the open
+    forms are masses (constant, along the stroke, through a ratio, in time, behind a
+    spring, in a fluid) whose force is linear in the acceleration; here the force
+    saturates where the payload slips, and its slip has a memory.
     """
     F, _ = _base_parts(kin)
-    t = np.asarray(kin.t, float)
-    T = float(t[-1] - t[0]) or 1.0
-    m0 = s * 0.3 * _level(kin) / max(kin.scales["a99"], 1e-12)
-    return F + m0 * (1.0 - 0.8 * (t - t[0]) / T) * np.asarray(kin.a, float)
+    m = s * 0.3 * _level(kin) / max(kin.scales["a99"], 1e-12)
+    grip = PAYLOAD_GRIP * max(kin.scales["a99"], 1e-12)
+    f = _payload_force(np.ascontiguousarray(kin.t, dtype=float),
+                       np.ascontiguousarray(kin.v, dtype=float),
+                       np.ascontiguousarray(kin.a, dtype=float), grip)
+    return F + m * f
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: seed of ``timing_jitter``'s latency signal (fixed: every case sees the same)
-JITTER_SEED = 20261124
+#: data samples the amplifier takes to slew over the base force's range at strength 1 [-],
+#: and its time constant at strength 1, x the data's sample time [-]
+SLEW_SAMPLES, AMP_LAG = 5.0, 0.25
+
+
+@njit(cache=True)
+def _slewed(t, F, tau, rate):
+    """The output [N] of an amplifier of time constant ``tau`` [s] (0: none) whose output
+    moves at most at ``rate`` [N/s], driven by ``F`` [N] (exact lag step for a held input,
+    then the slew limit)."""
+    n = t.size
+    y = np.empty(n)
+    y[0] = F[0]
+    for k in range(1, n):
+        h = t[k] - t[k - 1]
+        gain = 1.0 if tau <= 0.0 else 1.0 - math.exp(-h / tau)
+        dy = (F[k] - y[k - 1]) * gain
+        y[k] = y[k - 1] + min(max(dy, -rate * h), rate * h)
+    return y
 
 
 @on_fine_grid
-def timing_jitter_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A logger on a non-real-time system: the force's timestamps carry a wandering
-    latency, so the force is late by d(t) = ``s`` (1 + 0.6 u(t)) data samples (cut at
-    :data:`.truths.MAX_DELAY_SAMPLES`), u a band-limited random signal (white noise of a
-    fixed seed, lagged over 20 data samples, scaled to unit standard deviation and clipped
-    to [-1, 1]); a cubic-spline shift.
+def slew_limit_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force channel through an amplifier of finite slew rate: a single pole of time
+    constant ``s`` :data:`AMP_LAG` data samples (at most :data:`.truths.MAX_DELAY_SAMPLES`),
+    its output moving at most over the base force's range in ``s`` :data:`SLEW_SAMPLES`
+    data samples (a slew rate fixed against the amplifier's full scale): slow changes lag a
+    little, fast ones (the reversals) are followed at the slew rate, so the delay grows
+    with the force's rate. At ``s`` = 0 the force itself.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the mean delay [data samples].
+        Amplitude factor [-]: the pole's time constant [/ 0.5 data samples] and the slew
+        rate's reduction.
 
     Returns
     -------
@@ -341,42 +447,40 @@ def timing_jitter_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Scheduling latency of software-timed acquisition (what hardware timestamping and IEEE
-    1588 avoid). The open forms delay or filter by the same amount all along the record,
-    or by a delay growing linearly (clock skew); here it wanders.
+    Slew-rate limiting of operational and charge amplifiers (datasheets: slew rate and
+    gain-bandwidth of one pole). The open forms are linear (a transport delay, filters, a
+    converter's FIR, held samples, a clock's drift or jitter) or shift the motion; this one
+    is nonlinear: its delay depends on the signal's rate.
     """
-    from scipy.interpolate import CubicSpline
     F, _ = _base_parts(kin)
-    t = np.asarray(kin.t, float)
-    w = np.random.default_rng(JITTER_SEED).standard_normal(t.size)
-    u = _lag(t, w, 20.0 * kin.sample_dt)
-    u = np.clip((u - u.mean()) / max(float(np.std(u)), 1e-300), -1.0, 1.0)
-    sm = min(max(float(s), 0.0), MAX_DELAY_SAMPLES)
-    d = np.minimum(sm * (1.0 + 0.6 * u), MAX_DELAY_SAMPLES) * kin.sample_dt
-    return CubicSpline(t, F)(np.clip(t - d, t[0], None))
+    t = np.ascontiguousarray(kin.t, dtype=float)
+    if s <= 0.0:
+        return F
+    rate = max(float(np.ptp(F)), 1e-300) / (float(s) * SLEW_SAMPLES * kin.sample_dt)
+    # the pole's lag is cut where the other delay forms' is
+    tau = min(float(s) * AMP_LAG, MAX_DELAY_SAMPLES) * kin.sample_dt
+    return _slewed(t, np.ascontiguousarray(F, dtype=float), tau, rate)
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: times of ``interval_lubrication``'s shots, x the record [-], and the time over which a
-#: shot's effect fades, x the record [-]
-SHOTS, SHOT_FADE = (0.15, 0.5, 0.85), 0.1
+#: time scale of ``seal_relaxation``'s logarithmic relaxation, x the record [-]
+RELAX_TIME = 0.01
 
 
 @on_fine_grid
-def interval_lubrication_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Interval lubrication: a central lubrication system shoots grease into the contact at
-    :data:`SHOTS` x the record; each shot lowers the Coulomb and Stribeck levels, which
-    creep back as the grease is spread and consumed (exponentially over :data:`SHOT_FADE`
-    x the record): the levels are the base's times 1 - ``s`` 0.4 sum_k H_k(t) exp(-(t -
-    t_k) / tau) (H_k a step at t_k rounded over 0.5 % of the record), inside the bristle
-    dynamics; the viscous term is the base's.
+def seal_relaxation_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """An elastomer seal (or polymer slide) fitted just before the record: its contact
+    force relaxes linearly in log time, and the Coulomb and Stribeck levels with it: the
+    base's times 1 - ``s`` 0.3 ln(1 + (t - t0) / tau0) / ln(1 + T / tau0), tau0 =
+    :data:`RELAX_TIME` x the record T, inside the bristle dynamics; the viscous term is the
+    base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the relative level drop of a shot, / 0.4.
+        Amplitude factor [-]: the relative level drop over the record, / 0.3.
 
     Returns
     -------
@@ -385,54 +489,139 @@ def interval_lubrication_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Central (progressive, interval) lubrication of machine-tool axes (SKF, Lincoln
-    systems). The open forms change monotonically (a warm-up, a wear-in, a step, heating,
-    wear), cycle smoothly with the ambient or rise and fall once; this one drops sharply
-    and recovers, three times.
+    Physical stress relaxation of rubber, linear in log time (Gent 1962; ISO 3384 for
+    seals). The open forms warm up over the record's time scale, fall linearly, step, heat
+    with the friction power, wear with the load and travel, cycle with the humidity, rise
+    and fall with debris or with lubrication shots; here the fall is logarithmic: most of
+    it in the first percent of the record, still going at its end.
     """
     t = np.asarray(kin.t, float)
     T = float(t[-1] - t[0]) or 1.0
-    u = (t - t[0]) / T
-    drop = np.zeros_like(u)
-    for tk in SHOTS:
-        du = u - tk
-        drop += 0.5 * (1.0 + np.tanh(du / 0.005)) * np.exp(-np.maximum(du, 0.0) / SHOT_FADE)
-    lev = np.clip(1.0 - s * 0.4 * drop, 0.05, None)
+    rel = np.log1p((t - t[0]) / (RELAX_TIME * T)) / math.log1p(1.0 / RELAX_TIME)
+    lev = np.clip(1.0 - s * 0.3 * rel, 0.05, None)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: lost motion of ``worn_gap`` at the record's end at strength 1, as a share of the stroke
-#: [-] (the open backlash forms'), and its share at the start [-]
-GAP_SHARE, GAP_START = PLANT_GAP_SHARE, 0.4
-
-
-@njit(cache=True)
-def _worn_play(xd, half):
-    """Whether the contact is driven [bool] behind a rigid play of half-width ``half[k]``
-    [m] (the drive positions ``xd`` [m]); starts centred in the play."""
-    n = xd.size
-    eng = np.empty(n, dtype=np.bool_)
-    xc = xd[0]
-    for k in range(n):
-        if xd[k] - xc >= half[k]:
-            xc = xd[k] - half[k]
-            eng[k] = True
-        elif xc - xd[k] >= half[k]:
-            xc = xd[k] + half[k]
-            eng[k] = True
-        else:
-            eng[k] = False
-    return eng
+#: the play of ``drag_idler`` at strength 1, as a share of the stroke [-] (the open backlash
+#: forms'), the idler's drag, x the Coulomb level [-], and the slip speed it is rounded
+#: over, x v99 [-]
+GAP_SHARE, IDLER_DRAG, IDLER_SLIP = PLANT_GAP_SHARE, 0.5, 0.05
 
 
 @on_fine_grid
-def worn_gap_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A gear play that wears open: its half-width is ``s`` x :data:`GAP_SHARE` x the
-    stroke / 2 x (:data:`GAP_START` + (1 - :data:`GAP_START`) D / D_total), D the distance
-    the drive has travelled; across the play the contact stands still, engaged it moves
-    with the drive; the measured force is the contact's LuGre friction. At ``s`` = 0 the
-    contact is always engaged (the base).
+def drag_idler_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A play of width ``s`` x :data:`GAP_SHARE` x the stroke between the drive (the
+    record's motion) and a light contact with the base's LuGre friction (its inertial force
+    at the top acceleration 1 % of the Coulomb level), bridged by a friction-loaded idler:
+    it drags the contact with :data:`IDLER_DRAG` Fc tanh((vd - v) / (:data:`IDLER_SLIP`
+    v99)); the flanks a coupling 100 x stiffer than the bristle, damping ratio 0.5. The
+    measured force is the contact's friction. At ``s`` = 0 the contact follows the drive
+    (the base, up to the stiff coupling).
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s], x [m]) and its base law (a classic LuGre).
+    s : float
+        Amplitude factor [-]: the play's width relative to :data:`GAP_SHARE` x the stroke.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Friction (slip-clutch) anti-backlash gears (Michalec 1966, Precision Gearing). The
+    candidate holds or frees the force across the play; the open forms couple it rigidly,
+    compliantly, by impacts, a spring, an oil film, with a play varying with the position
+    or growing with the travel; here the coupling across the play is a Coulomb drag below
+    the contact's breakaway: the force crosses to a plateau of the drag's level and waits
+    there for the flank.
+    """
+    p = _lugre_params(kin, "backlash (drag_idler)")
+    half = 0.5 * GAP_SHARE * max(float(s), 0.0) * float(np.ptp(kin.x))
+    m, kh, ch = _contact_constants(kin, p)
+    drag = IDLER_DRAG * float(p.Fc)
+    slip = IDLER_SLIP * max(kin.scales["v99"], 1e-12)
+    return _run_driven_contact(kin, p, half, GAP_DRAG, drag, slip, m, kh, ch,
+                               c_gap=drag / slip)
+
+
+# -- gms -------------------------------------------------------------------------------------
+#: presliding path of ``rate_state_presliding`` at strength 1, as a share of the stroke / 3
+#: [-], and the rate-and-state element's share of the friction at strength 1 [-]
+PRESLIDING_SHARE, RS_SHARE = 0.02, 0.5
+#: the interface's direct and evolution effects a and b [-] (relative to its level 1), its
+#: reference slip rate, x v99 [-], and its state length, x the presliding path [-]
+RS_A, RS_B, RS_V0, RS_DC = 0.03, 0.02, 0.1, 0.5
+
+
+@njit(cache=True)
+def _rs_slip_rate(f, psi, a, v0):
+    """Slip rate [m/s] of a regularised rate-and-state interface (Rice et al. 2001) at the
+    relative stress ``f`` [-] and state term ``psi`` [-], and its derivative in ``f``."""
+    ep = math.exp(min((f - psi) / a, 700.0))
+    em = math.exp(min((-f - psi) / a, 700.0))
+    return v0 * (ep - em), v0 * (ep + em) / a
+
+
+@njit(cache=True)
+def _rs_element(t, x, k, a, b, v0, dc):
+    """Relative force [-] of an elastic layer of stiffness ``k`` [1/m] in series with a
+    rate-and-state interface (direct effect ``a``, evolution ``b``, reference rate ``v0``
+    [m/s], state length ``dc`` [m], aging law) along the positions ``x`` [m]: implicit
+    Euler of the slip (a safeguarded Newton on the force), the state's exact aging step at
+    the step's slip rate. Starts unloaded, in steady state at ``v0``."""
+    n = t.size
+    out = np.empty(n)
+    d = x[0]
+    th = dc / v0
+    out[0] = 0.0
+    for j in range(1, n):
+        h = t[j] - t[j - 1]
+        psi = 1.0 + b * math.log(max(th * v0 / dc, 1e-300))
+        ft = k * (x[j] - d)  # the elastic predictor: no slip in the step
+        lo, hi = min(ft, 0.0), max(ft, 0.0)
+        f = ft
+        for _ in range(60):
+            V, dV = _rs_slip_rate(f, psi, a, v0)
+            r = f - ft + k * h * V
+            if r > 0.0:
+                hi = f
+            else:
+                lo = f
+            step = r / (1.0 + k * h * dV)
+            fn = f - step
+            if not (lo < fn < hi):
+                fn = 0.5 * (lo + hi)
+            if abs(fn - f) < 1e-12:
+                f = fn
+                break
+            f = fn
+        dn = x[j] - f / k
+        V = abs(dn - d) / h
+        d = dn
+        if V > 1e-300:
+            tss = dc / V
+            th = tss + (th - tss) * math.exp(-V * h / dc)
+        else:
+            th += h
+        out[j] = f
+    return out
+
+
+@on_fine_grid
+def rate_state_presliding_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Presliding as creep of a rate-and-state interface beside the bristle: a share w =
+    :data:`RS_SHARE` min(``s``, 1) of the friction is carried by an elastic asperity layer
+    (its path to the level d* = the base bristle's Fs / sigma0 plus ``s`` x
+    :data:`PRESLIDING_SHARE` x the stroke / 3) in series with a regularised rate-and-state
+    interface (relative level 1, a = :data:`RS_A`, b = :data:`RS_B`, reference rate
+    :data:`RS_V0` v99, state length :data:`RS_DC` d*, aging law), its relative force f
+    scaled by the base's Stribeck level g(v), plus the viscous term; the rest by the base's
+    LuGre: F = (1 - w) F_lugre + w (g(v) f + sigma2 v). At ``s`` = 0 the base itself.
 
     Parameters
     ----------
@@ -440,8 +629,7 @@ def worn_gap_truth(kin: PlantKinematics, s: float) -> np.ndarray:
         The motion on the fine grid (t [s], x [m], v [m/s]) and its base law (a classic
         LuGre).
     s : float
-        Amplitude factor [-]: the play's final width relative to :data:`GAP_SHARE` x the
-        stroke.
+        Amplitude factor [-]: the element's share (up to ``s`` = 1) and presliding path.
 
     Returns
     -------
@@ -450,95 +638,24 @@ def worn_gap_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Flank wear enlarging a gear's backlash (Flodin and Andersson 2000, gear wear
-    simulation by Archard's law). The candidate and the open forms have a constant play
-    (rigid, compliant, impact, spring- or oil-bridged) or one varying with the position
-    (eccentric gear); this one grows with the travel.
-    """
-    _lugre_params(kin, "backlash (worn_gap)")
-    x = np.ascontiguousarray(kin.x, dtype=float)
-    D = np.concatenate(([0.0], np.cumsum(np.abs(np.diff(x)))))
-    Dt = max(float(D[-1]), 1e-300)
-    half = (0.5 * GAP_SHARE * max(float(s), 0.0) * float(np.ptp(x))
-            * (GAP_START + (1.0 - GAP_START) * D / Dt))
-    eng = _worn_play(x, half)
-    vc = np.where(eng, np.asarray(kin.v, float), 0.0)
-    return kin.base.simulate(kin.t, vc)
-
-
-# -- gms -------------------------------------------------------------------------------------
-#: presliding path of ``mindlin_contacts`` at strength 1, as a share of the stroke / 3 [-],
-#: and the Hertzian contacts' share of the friction at strength 1 [-]
-PRESLIDING_SHARE, MINDLIN_SHARE = 0.02, 0.5
-
-
-@njit(cache=True)
-def _mindlin(x, g, s2v, d_star):
-    """Force [N] of Hertzian contacts in partial slip along the positions ``x`` [m]: from
-    the last reversal (x_r, u_r) the force follows Masing's doubled Cattaneo-Mindlin curve
-    u_r + sgn 2 L (1 - (1 - |x - x_r| / (2 d*))^1.5), L = ``g`` [N] the Stribeck level,
-    capped at +- L (sliding); plus the viscous term ``s2v`` [N]. Starts unloaded (the first
-    loading too follows the doubled curve, capped)."""
-    n = x.size
-    F = np.empty(n)
-    u = 0.0
-    ur = 0.0
-    xr = x[0]
-    sgn = 0.0
-    for k in range(n):
-        if k > 0:
-            dx = x[k] - x[k - 1]
-            if dx != 0.0:
-                sk = 1.0 if dx > 0.0 else -1.0
-                if sk != sgn:
-                    sgn = sk
-                    xr = x[k - 1]
-                    ur = u
-                d = min(abs(x[k] - xr) / (2.0 * d_star), 1.0)
-                L = g[k]
-                u = ur + sgn * 2.0 * L * (1.0 - (1.0 - d) ** 1.5)
-                u = min(max(u, -L), L)
-        F[k] = u + s2v[k]
-    return F
-
-
-@on_fine_grid
-def mindlin_contacts_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Hertzian contacts in partial slip beside the bristle: a share w = :data:`MINDLIN_SHARE`
-    min(``s``, 1) of the friction is carried by ball-like contacts whose presliding follows
-    Cattaneo-Mindlin, 1 - (1 - d / d*)^1.5 of the Stribeck level, with Masing's rule from
-    the last reversal (the curve doubled), d* the base bristle's path Fs / sigma0 plus
-    ``s`` x :data:`PRESLIDING_SHARE` x the stroke / 3; the rest by the base's LuGre: F = (1
-    - w) F_lugre + w F_mindlin. At ``s`` = 0 the base itself.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
-    s : float
-        Amplitude factor [-]: the contacts' share (up to ``s`` = 1) and presliding path.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Cattaneo 1938, Mindlin 1949, Mindlin and Deresiewicz 1953 (partial slip of elastic
-    spheres). Maxwell-slip (the candidate, ``maxwell4``, ``maxwell10``) is a set of
-    elasto-plastic blocks, Dahl a rate-independent exponent law with symmetric stiffness,
+    Dieterich 1979, Ruina 1983 (rate-and-state friction), Rice, Lapusta and Ranjith 2001
+    (its regularisation through zero slip rate); presliding as thermally activated creep
+    (Baumberger and Caroli 2006). Maxwell-slip (the candidate, ``maxwell4``,
+    ``maxwell10``) is a set of elasto-plastic blocks, Dahl a rate-independent exponent law,
     elasto-plastic an elastic range, Bliman-Sorine two path-relaxing states, Bouc-Wen an
-    endochronic law, the Zener junction a relaxation in time; this one is the closed-form
-    contact-mechanics curve with exponent 1.5 and a reversal memory.
+    endochronic law, the Zener junction a linear relaxation in time, the Mindlin contacts
+    Masing's partial slip; here the yield is an exponential creep law: it grows with the
+    log of the rate and, through the aging state, with the time held.
     """
-    p = _lugre_params(kin, "gms (mindlin_contacts)")
+    p = _lugre_params(kin, "gms (rate_state_presliding)")
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
     e0, extra = _presliding_path(kin, s, PRESLIDING_SHARE)
-    w = MINDLIN_SHARE * min(float(s), 1.0)
+    dstar = e0 + extra
+    w = RS_SHARE * min(float(s), 1.0)
     v = np.ascontiguousarray(kin.v, dtype=float)
-    Fm = _mindlin(np.ascontiguousarray(kin.x, dtype=float), kin.base.g(v),
-                  float(p.sigma2) * v, e0 + extra)
-    return (1.0 - w) * F + w * Fm
+    f = _rs_element(np.ascontiguousarray(kin.t, dtype=float),
+                    np.ascontiguousarray(kin.x, dtype=float), 1.0 / dstar, RS_A, RS_B,
+                    RS_V0 * max(kin.scales["v99"], 1e-12), RS_DC * dstar)
+    return (1.0 - w) * F + w * (kin.base.g(v) * f + float(p.sigma2) * v)

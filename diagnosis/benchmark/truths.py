@@ -438,9 +438,11 @@ def _smooth_max0(u, eps):
     return 0.5 * (u + np.sqrt(u * u + eps * eps))
 
 
-#: what bridges the play of :func:`_driven_contact`: a spring (``g1`` its stiffness [N/m])
-#: or a squeeze film (``g1`` its drag c0 [N s/m], ``g2`` the floor of its gap factor [-])
-GAP_SPRING, GAP_SQUEEZE = 0, 1
+#: what bridges the play of :func:`_driven_contact`: a spring (``g1`` its stiffness [N/m]),
+#: a squeeze film (``g1`` its drag c0 [N s/m], ``g2`` the floor of its gap factor [-]) or a
+#: friction drag (``g1`` its Coulomb force [N], ``g2`` the slip speed it is rounded over
+#: [m/s])
+GAP_SPRING, GAP_SQUEEZE, GAP_DRAG = 0, 1, 2
 
 
 @njit(cache=True)
@@ -451,7 +453,8 @@ def _driven_contact(h, xd, half, gap_kind, g1, g2, m, kh, ch, s0, s1, s2, Fc, Fs
     spring ``kh`` [N/m] and damper ``ch`` [N s/m] (compressive only). Inside the play
     (``gap_kind``): :data:`GAP_SPRING`, a spring ``g1`` bridging it (its force at the flank
     g1 half); :data:`GAP_SQUEEZE`, the oil squeezed between the flanks drags the contact,
-    g1 (vd - v) / (1 - (e / half)^2 + g2)^1.5. Semi-implicit Euler of the mass, exact
+    g1 (vd - v) / (1 - (e / half)^2 + g2)^1.5; :data:`GAP_DRAG`, a friction-loaded idler
+    drags the contact, g1 tanh((vd - v) / g2). Semi-implicit Euler of the mass, exact
     bristle update at the contact's velocity."""
     n = xd.size
     F = np.empty(n)
@@ -464,6 +467,8 @@ def _driven_contact(h, xd, half, gap_kind, g1, g2, m, kh, ch, s0, s1, s2, Fc, Fs
         ed = vd - v
         if gap_kind == GAP_SPRING:
             fc = g1 * min(max(e, -half), half)
+        elif gap_kind == GAP_DRAG:
+            fc = g1 * math.tanh(ed / g2)
         else:
             fc = 0.0
             if half > 0.0 and abs(e) < half:

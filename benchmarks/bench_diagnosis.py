@@ -28,6 +28,19 @@ alternating with the base identification it is compared with; best and median se
 (``--scipy-jacobian``: each round also with the joint fits' Jacobians from scipy's
 differences of the whole residual, as before the structured Jacobian).
 
+Results of session 11 (2026-11-28, full grid, 2 workers, 288 s wall): **216 cases** (the
+192 below plus backlash and gms), top-1 **74.1 %** (160; 82.1 % of the detectable), mean
+|shrink error| 0.100, clean 0 of 20 named, ripple 0 of 20, wrong names 3 (gms ->
+acceleration, the valve); the same verdicts on every case on the session's first code
+(6cc3517) and on bd0f9fa: the figures below are from 2026-11-21, before the sessions that
+followed (the encompassing test, the practical-size rules, the candidates' new forms) moved
+them, and were not measured again until now. By effect: load 20/20, drift 20/20,
+acceleration 16/20, asymmetry 16/20, position 12/16, delay 10/20, inertia 9/20, backlash
+8/12, gms 9/12, stribeck_shape 0/16 (15 undetectable: the refitted base absorbs it); by
+plant valve 91.7 %, press 77.8 %, isolator 72.2 %, XML-350 66.7 %, damping rig 62.5 %. Full
+20,000-sample diagnosis with every candidate: 2.5 s (11.8 x one base identification; 2.6 s
+on 6cc3517).
+
 Results (2026-11-21 14:45 UTC, full grid: strengths 0.5/1, noise 1 %/3 % of std(F); 192
 cases, 238 s wall on 2 workers of a shared 2-core machine, one BLAS thread):
 

@@ -8,15 +8,15 @@ quantised to an encoder count and differentiated as a user would (gradient, back
 differences or a low-passed gradient; 50-1000 counts per sample at the top speed, taken in
 turn, :data:`diagnosis.benchmark.runner.MEASURED`). The **sealed** family
 (:mod:`diagnosis.benchmark.sealed`, one more form per effect) is written once and run only
-with ``--sealed``, at the end of a piece of work, and reported separately. The first four
-sealed families were seen at the ends of sessions 7, 8, 9 and 10 and moved into the open
+with ``--sealed``, at the end of a piece of work, and reported separately. The first five
+sealed families were seen at the ends of sessions 7, 8, 9, 10 and 11 and moved into the open
 grid (:mod:`diagnosis.benchmark.seen`, :mod:`diagnosis.benchmark.seen2`,
 :mod:`diagnosis.benchmark.seen3`: session 9's, run once on 656e3a8, 39.8 % top-1;
-:mod:`diagnosis.benchmark.seen4`: session 10's, run once on d651fad, 34.3 % top-1, below);
-the present one (one form for each of the ten effects with truths, written at the end of
-session 10) is sealed: not run. The open grid holds session 9's forms too; session 10's
-sealed family is now open as seen4; the open grid's figures below (1072 cases) are from
-before it joined.
+:mod:`diagnosis.benchmark.seen4`: session 10's, run once on d651fad, 34.3 % top-1;
+:mod:`diagnosis.benchmark.seen5`: session 10's last, run once on a99721e, 26.1 % top-1,
+below); the present one (one form for each of the ten effects with truths, written at the
+end of session 11) is sealed: not run. The open grid's latest figures (1244 cases, below)
+are from before seen5 joined (1436 cases now).
 
     python benchmarks/bench_diagnosis_forms.py [--sealed] [--workers N] [--quick]
                                                [--full-protocols] [--checkpoint FILE]
@@ -56,7 +56,10 @@ form: preload_taper (position) 14/16, ratchet_texture (asymmetry) 10/20, timing_
 (acceleration) 0/20, interval_lubrication (drift) 0/20. Wrong names on 15 of 176 (8.5 %):
 acceleration -> position 4, gms -> acceleration 4, load -> asymmetry 2, asymmetry -> load
 2, inertia -> delay, inertia -> drift, position -> drift 1 each. Now seen: it joins the open
-grid as :mod:`diagnosis.benchmark.seen5`, and a new sealed family is written.
+grid as :mod:`diagnosis.benchmark.seen5` (the open grid lists 1436 cases, not run since),
+and a sixth sealed family is written (cylinder_pressure, pivot_lever, spring_return,
+starved_film, oil_pocket, sliding_payload, slew_limit, seal_relaxation, drag_idler,
+rate_state_presliding; 176 cases, built and sized only): sealed, not run.
 
 Results of session 10 (2026-11-24 15:14 UTC, short protocols, 2 workers, code of commit
 d651fad: Delay.MIN_SAMPLES 1.0, the Stribeck speed map and the load's levels inside a

@@ -298,6 +298,17 @@ def _zero_phase(u, dt, tau):
 
 
 class Acceleration(Candidate):
+    """Seed 000's acceleration-dependent part ``f_a tanh(a / a_s) w(v)``, lagged as a whole
+    (:meth:`apply`); a fitted part that is a mass term defers to ``inertia``
+    (:meth:`defers`).
+
+    Tried in session 11 and not kept: a frictional memory *inside* the bristle dynamics
+    (Hess and Soom: the level ``(g(v_lagged) / g(v))^k``, ``k`` and the memory time
+    started on a grid). On the damping rig's frictional-memory truth the base fitted
+    without it had absorbed the memory as a Stribeck spike ten times the true ``Fs``, and
+    the joint fit stayed in that basin (held-out gap unchanged, ``k`` back to 0); with the
+    base at its true values the same form closed 0.4 of the gap, not the truth's 0.9.
+    """
     #: largest exponent of the velocity weight [-]: the weight peaks at |v| = m_a v_c, and
     #: its width relative to the peak speed narrows as 1 / sqrt(m_a)
     MAX_M = 4.0

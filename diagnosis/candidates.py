@@ -30,12 +30,11 @@ import numpy as np
 from scipy.signal import lfilter
 
 from friction import make_model
+from friction.alignment import velocity_lag
 from friction.dataset import Dataset
 from friction.extensions import (DRIFT_NAMES, POSITION_FORM_NAMES, POSITION_NAMES,
                                  acceleration_weight, drift_change, pack_extensions,
                                  position_change)
-
-from .alignment import velocity_lag
 
 __all__ = ["Candidate", "LawCandidate", "Context", "Extra", "make_context", "velocity_lag",
            "Fixed", "Acceleration", "Load", "Drift", "Asymmetry", "AsymmetryTwins", "Position",

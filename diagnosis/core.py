@@ -30,7 +30,7 @@ from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
 from friction.progress import status_lines
 
-from .alignment import align_motion, velocity_scale
+from friction.alignment import align_motion, velocity_scale
 from .candidates import missing_columns as _missing_columns
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
@@ -140,6 +140,9 @@ def fit_base(fit, model, ctx=None, seed: int = 0, names=None, check: bool = True
         The fitted base, the names of its free parameters and its fit NRMSE [-].
     """
     from identification import identify
+    # the motion channels as identify and diagnose have them (a no-op on a record
+    # diagnose has aligned already)
+    fit = align_motion(fit)[0]
     ctx = ctx or make_context(fit)
     law0, names = _base_law(model, fit, names)
     res = identify(fit, law0, names=names, seed=seed)

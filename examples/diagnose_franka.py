@@ -119,7 +119,7 @@ def run_diagnose_franka(cases=(3, 4), fit_speed: str = "slow", candidates=None,
                "model": ("lugre" if ours_model is models["base"] else f"lugre + {cause}"),
                "held_out": {}, "evidence": {}}
         # the held-out records as the diagnosis scored them (motion channels on the
-        # position's time base: diagnosis.alignment)
+        # position's time base: friction.alignment)
         scored = dict(zip(held, rep._data["validation"]))
         for s in held:
             d = scored[s]

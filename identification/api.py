@@ -7,6 +7,7 @@ import time
 import numpy as np
 
 from friction import make_model
+from friction.alignment import align_motion
 from friction.base import FrictionModel
 from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
@@ -176,6 +177,13 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
                              "steady-state map")
         if validation is not None:
             check_data(validation, role="validation")
+        # the motion channels on one time base, as diagnose has them (a velocity that lags
+        # its position is advanced by its measured lag): both commands fit the same law
+        data, lag = align_motion(data)
+        if lag:
+            notes.append(data.notes[-1])
+        if validation is not None:
+            validation = align_motion(validation)[0]
     if isinstance(model, str):
         model = make_model(model)
     if not isinstance(model, FrictionModel):

@@ -12,8 +12,8 @@ What holds, and is asserted with the figures' own margins:
   0.38 N m above the slow one's, while each record repeats itself to 0.03 N m; the PINN's
   column carries most of that offset, so it is not a function of joint 2's own state fitted
   on one record;
-* our LuGre fitted on the slow record is far from the PINN on case 3's held-out speeds (8.2x,
-  3.2x) and near it on case 4's middle (1.28x), 2.3x on its high: the issue's goal is not
+* our LuGre fitted on the slow record is far from the PINN on case 3's held-out speeds (8.1x,
+  5.5x) and near it on case 4's middle (1.28x), 2.3x on its high: the issue's goal is not
   reached, and the diagnosis says ``unexplained`` on both cases (slow test).
 """
 import numpy as np
@@ -111,7 +111,9 @@ def test_lugre_fitted_on_slow_misses_the_pinn_on_case3(records, bases):
     for s in ("middle", "high"):
         d = records[(3, s)]
         ratios[s] = source_rms(d, bases[3].predict(d)) / column_rms(d, "PINN")
-    # 8.20 and 3.16: the goal (ratio <= 1) is far
+    # 8.08 and 5.50 (8.20 and 3.16 before the velocity, which lags q by 0.45 samples on
+    # the slow record, was advanced: the slow record fits better, 0.410 -> 0.399, the high
+    # one is predicted worse): the goal (ratio <= 1) is far
     assert ratios["middle"] > 5.0 and ratios["high"] > 2.0
     # most of the middle gap is one offset over the whole record (+0.48 N m of 0.52 RMS)
     d = records[(3, "middle")]

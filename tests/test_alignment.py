@@ -1,10 +1,11 @@
-"""The motion channels on one time base (diagnosis.alignment): a velocity differentiated
-backward lags its position by half a sample; the diagnosis advances it by its measured lag."""
+"""The motion channels on one time base (friction.alignment): a velocity differentiated
+backward lags its position by half a sample; identify and diagnose advance it by its
+measured lag."""
 import numpy as np
 import pytest
 
 from diagnosis import diagnose
-from diagnosis.alignment import MIN_ALIGN_SAMPLES, align_motion, channel_lag, velocity_lag
+from friction.alignment import MIN_ALIGN_SAMPLES, align_motion, channel_lag, velocity_lag
 from friction.dataset import Dataset
 
 
@@ -70,7 +71,7 @@ def test_xml350_clean_record_differentiated_backward_fits_as_central_differences
 def test_channels_that_disagree_in_scale_have_no_lag_to_move():
     # Franka case 4: the time column runs twice as long as the velocity implies, so the
     # position's derivative is half the velocity and their difference no lag
-    from diagnosis.alignment import velocity_scale
+    from friction.alignment import velocity_scale
     t, x = _counts(counts=1e-8)
     v = np.concatenate([[0.0], np.diff(x) / np.diff(t)])
     data = Dataset.from_arrays(t=2.0 * t, x=x, v=v, F=np.sin(t))
@@ -97,3 +98,35 @@ def test_cli_report_says_the_velocity_was_advanced(tmp_path):
     assert va["applied"] and va["lag_samples"] == pytest.approx(0.5, abs=0.05)
     assert va["velocity_scale"] == pytest.approx(1.0, abs=0.01)
     assert "advanced by that much" in (tmp_path / "d.html").read_text()
+
+
+def test_identify_fits_the_law_diagnose_fits_on_a_backward_differenced_record():
+    # the two commands agree on the base: identify advances the velocity as diagnose does,
+    # so a record differentiated backward gives the law the central differences give
+    from friction import make_model
+    from identification import identify
+    from diagnosis.benchmark.cases import make_plant_case
+    fits = {}
+    for velocity in ("backward", "gradient"):
+        case = make_plant_case("xml350", "clean", 1.0, 0.01, seed=1, quick=True,
+                               measured={"counts": 200.0, "velocity": velocity})
+        fit, _ = case.data.split(0.7)
+        fits[velocity] = identify(fit, case.base, names=["sigma0", "sigma1", "sigma2", "Fc",
+                                                         "Fs", "vs", "b"], seed=0)
+    back, cent = fits["backward"], fits["gradient"]
+    assert back.fit_nrmse == pytest.approx(cent.fit_nrmse, rel=0.02)
+    assert any("velocity advanced by" in n for n in back.identifiability["notes"])
+    assert not any("velocity advanced by" in n for n in cent.identifiability["notes"])
+    assert "velocity advanced by" in back.summary()
+
+
+def test_a_record_is_moved_once():
+    # a velocity filtered rather than delayed reads a lag again after a move (Franka case
+    # 3: 0.45, 0.39, 0.31 samples); diagnose moves it, and the identify inside it must not
+    t, x = _counts(counts=1e-8)
+    v = np.concatenate([[0.0], np.diff(x) / np.diff(t)])
+    data = Dataset.from_arrays(t=t, x=x, v=v, F=np.sin(t))
+    once, d = align_motion(data)
+    assert d > 0.4
+    assert align_motion(once) == (once, 0.0)
+    assert align_motion(once, 0.5) == (once, 0.0)

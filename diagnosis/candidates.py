@@ -373,6 +373,9 @@ class Acceleration(Candidate):
         :attr:`MASS_LIKE_R2` of its energy follows ``dm a`` (an acceleration-proportional
         force that does not depend on the speed is the inverse dynamics' mass error,
         whatever its size). Parameters as :meth:`Candidate.defers`."""
+        if not p["a_s"] > 0:
+            raise ValueError(f"a_s = {p['a_s']!r} is out of bounds: the acceleration scale "
+                             f"must be > 0 [m/s^2]")
         a = np.asarray(fit.a, float)
         Fd = p["f_a"] * np.tanh(a / p["a_s"]) * acceleration_weight(fit.v, p["v_c"],
                                                                     p.get("m_a", 0.0))
@@ -757,6 +760,9 @@ class Position(Candidate):
         """The force of the position alone [N] (zero without its amplitudes)."""
         if not any(p.get(n, 0.0) for n in self.ADD_NAMES):
             return 0.0
+        if not (np.isfinite(p["lambda_x"]) and p["lambda_x"] > 0):
+            raise ValueError(f"lambda_x = {p['lambda_x']!r} is out of bounds: the wavelength "
+                             f"of the force of the position must be > 0 [m]")
         return sum(p[n] * h for n, h in zip(self.ADD_NAMES,
                                             self._harmonics(x, ctx.x_lo, p["lambda_x"])))
 

@@ -32,6 +32,9 @@ MIN_ALIGN_SAMPLES = 0.2
 #: which the lag between them is measured [-] (the benchmark's quantised channels: within
 #: 0.04 %; Franka case 3: 0.3-0.4 %)
 SCALE_TOLERANCE = 0.05
+#: largest spread of the sample interval, relative to its median, at which a lag in samples
+#: is measured [-]
+UNEVEN_TOLERANCE = 0.01
 #: how a moved record's ``notes`` say so (a record moved once is not moved again)
 NOTE = "velocity advanced by"
 #: samples of the centred mean :func:`channel_lag` smooths its regressor with
@@ -110,9 +113,10 @@ def velocity_lag(data) -> float:
     The velocity is compared with the central differences of the position (no lag)
     (:func:`channel_lag`). Backward differences of encoder counts give 0.5, ``np.gradient``
     and zero-phase filters 0. 0 when either channel is derived from the other
-    (``data.derived``), the motion has no acceleration, or the two channels disagree in
+    (``data.derived``), the motion has no acceleration, the two channels disagree in
     scale by more than :data:`SCALE_TOLERANCE` (:func:`velocity_scale`: then the lag is
-    not what the difference of the two measures).
+    not what the difference of the two measures), or the sample interval varies by more
+    than :data:`UNEVEN_TOLERANCE`.
 
     Parameters
     ----------
@@ -122,6 +126,11 @@ def velocity_lag(data) -> float:
     if {"x", "v"} & set(getattr(data, "derived", ()) or ()) or len(data) < 5:
         return 0.0
     if not abs(velocity_scale(data) - 1.0) <= SCALE_TOLERANCE:
+        return 0.0
+    h = np.diff(np.asarray(data.t, float))
+    if np.ptp(h) > UNEVEN_TOLERANCE * np.median(h):
+        # a lag in samples needs one sample interval (an uneven record's backward
+        # differences read 0.37 samples of a lag that varies along it)
         return 0.0
     return channel_lag(data.x, data.v, data.t)
 

@@ -130,3 +130,16 @@ def test_a_record_is_moved_once():
     assert d > 0.4
     assert align_motion(once) == (once, 0.0)
     assert align_motion(once, 0.5) == (once, 0.0)
+
+
+def test_an_unevenly_sampled_record_has_no_lag_in_samples():
+    rng = np.random.default_rng(0)
+    t = np.cumsum(np.r_[0.0, rng.uniform(0.5e-3, 1.5e-3, 1999)])
+    x = 0.01 * np.sin(2 * np.pi * t)
+    v = np.concatenate([[0.0], np.diff(x) / np.diff(t)])
+    data = Dataset.from_arrays(t=t, x=x, v=v, F=np.sin(t))
+    assert velocity_lag(data) == 0.0
+    assert align_motion(data) == (data, 0.0)
+    # an impossible lag given by hand moves nothing
+    even = Dataset.from_arrays(t=np.arange(2000) * 1e-3, x=x, v=v, F=np.sin(t))
+    assert align_motion(even, float("nan")) == (even, 0.0)

@@ -200,6 +200,8 @@ def test_an_acceleration_part_that_is_a_mass_term_defers_to_inertia():
     assert to == "inertia" and "mass term" in why
     fading = dict(mass_like, a_s=0.3 * ctx.sa, v_c=0.2 * ctx.sv)
     assert acc.defers(fading, fit, ctx) == ("", "")
+    with pytest.raises(ValueError, match="a_s"):
+        acc.defers(dict(mass_like, a_s=0.0), fit, ctx)
     # the other candidates never defer
     assert CANDIDATES["inertia"].defers({"dm": 1.0}, fit, ctx) == ("", "")
 

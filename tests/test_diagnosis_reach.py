@@ -171,6 +171,9 @@ def test_position_carries_a_force_of_the_position_alone_with_exact_columns():
     assert np.allclose(out - F, 0.3 * np.cos(ph) - 0.1 * np.sin(2 * ph))
     # the formula reads x alone: the same force at a position in both directions
     dF, cols = pos.jac(F, p, data, ctx)
+    # an impossible wavelength is named, not a NaN force
+    with pytest.raises(ValueError, match="lambda_x"):
+        pos.apply(F, dict(p, lambda_x=0.0), data, ctx)
     for n in pos.ADD_NAMES:
         h = 1e-6
         num = (pos.apply(F, dict(p, **{n: p[n] + h}), data, ctx) - out) / h

@@ -368,7 +368,8 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         data_u = fit
         for eff in undo:
             data_u = eff.undo(data_u, extras1, ctx)
-        law_u = identify(data_u, law, names=base_names, seed=0)["model"]
+        # (the fit record's channels are as the caller gave them: aligned by diagnose)
+        law_u = identify(data_u, law, names=base_names, seed=0, align=False)["model"]
         u1 = sol.x.copy()
         u1[:nb] = np.clip(space.to_unit(np.array([getattr(law_u.params, n)
                                                    for n in base_names])), 0.0, 1.0)

@@ -26,11 +26,11 @@ import time
 import numpy as np
 
 from friction import FrictionModel, make_model
+from friction.alignment import align_motion, velocity_scale
 from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
 from friction.progress import status_lines
 
-from friction.alignment import align_motion, velocity_scale
 from .candidates import missing_columns as _missing_columns
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
@@ -107,15 +107,16 @@ def _base_law(model, fit, names=None) -> tuple[FrictionModel, list[str]]:
     return law, list(base_free_names(law) if names is None else names)
 
 
-def _deferral(cand, comp, fit, ctx) -> dict:
-    """``{"defers_to": name, "defer_reason": why}`` when the fitted candidate ``comp``
-    reduces to a simpler candidate's form on ``fit`` (:meth:`diagnosis.candidates.
-    Candidate.defers`), else ``{}``."""
-    to, why = cand.defers({**comp.describe()["params"], **comp.extras}, fit, ctx)
+def _deferral(cand, values, fit, ctx) -> dict:
+    """``{"defers_to": name, "defer_reason": why}`` when the candidate at its fitted
+    ``values`` (the law's and its own) reduces to a simpler candidate's form on ``fit``
+    (:meth:`diagnosis.candidates.Candidate.defers`), else ``{}``."""
+    to, why = cand.defers(values, fit, ctx)
     return {"defers_to": to, "defer_reason": why} if to else {}
 
 
-def fit_base(fit, model, ctx=None, seed: int = 0, names=None, check: bool = True):
+def fit_base(fit, model, ctx=None, seed: int = 0, names=None, check: bool = True,
+             align: bool = True):
     """The diagnosis' base fit: ``model`` identified on ``fit``, then polished as a composite
     with no effect (the same least squares every candidate is fitted with).
 
@@ -133,6 +134,9 @@ def fit_base(fit, model, ctx=None, seed: int = 0, names=None, check: bool = True
         Free parameters (default :func:`base_free_names`, identify's default set).
     check : bool
         Raise :class:`BaseFitError` when the fit NRMSE reaches :data:`BASE_FIT_LIMIT`.
+    align : bool
+        Bring the motion channels onto one time base first (:func:`friction.alignment.
+        align_motion`); ``False`` for a record the caller aligned (:func:`diagnose`).
 
     Returns
     -------
@@ -140,12 +144,12 @@ def fit_base(fit, model, ctx=None, seed: int = 0, names=None, check: bool = True
         The fitted base, the names of its free parameters and its fit NRMSE [-].
     """
     from identification import identify
-    # the motion channels as identify and diagnose have them (a no-op on a record
-    # diagnose has aligned already)
-    fit = align_motion(fit)[0]
+    # the motion channels as identify and diagnose have them
+    if align:
+        fit = align_motion(fit)[0]
     ctx = ctx or make_context(fit)
     law0, names = _base_law(model, fit, names)
-    res = identify(fit, law0, names=names, seed=seed)
+    res = identify(fit, law0, names=names, seed=seed, align=False)
     base, base_fit = fit_composite(res["model"], names, [], fit, ctx)
     if check and not base_fit < BASE_FIT_LIMIT:
         raise BaseFitError(
@@ -380,7 +384,9 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
     # 1. base fit
     say(f"[diagnose] fitting base {model if isinstance(model, str) else model.name} on "
         f"{len(fit)} samples")
-    base, base_names, base_fit = fit_base(fit, model, ctx, seed=seed, names=base_names)
+    # aligned above, with the held-out part of a split record
+    base, base_names, base_fit = fit_base(fit, model, ctx, seed=seed, names=base_names,
+                                          align=False)
 
     def predict_val(comp: Composite) -> list[np.ndarray]:
         if full is not None:
@@ -437,6 +443,9 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         comp, cost = best
         after = val_score(comp, name)
         fitted[name] = comp
+        # the law's fitted values too: a law-changing candidate's size is a law parameter
+        # (backlash's gap)
+        values = {**comp.describe()["params"], **comp.extras}
         effects.append({"name": name, "validation_before": before, "validation_after": after,
                         "gap_closed": (before - after) / before if before > 0 else 0.0,
                         "excess_closed": (before - after) / max(before - floor, 1e-12),
@@ -450,13 +459,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                         "imprint": float(np.sqrt(np.mean((held_residuals["base"]
                                                           - held_residuals[name]) ** 2))
                                          / (np.std(F_all) or 1.0)),
-                        # the law's fitted values too: a law-changing candidate's size
-                        # is a law parameter (backlash's gap)
-                        "size_reason": cand.practical({**comp.describe()["params"],
-                                                       **comp.extras}, ctx),
+                        "size_reason": cand.practical(values, ctx),
                         # the fitted form may be a simpler candidate's (a mass-like
                         # acceleration part): then that one is the effect
-                        **_deferral(cand, comp, fit, ctx),
+                        **_deferral(cand, values, fit, ctx),
                         "n_params": len(cand.force_extras(ctx)) + max(len(comp.base_names)
                                                                  - len(base_names), 0),
                         "fit_before": base_fit, "fit_after": cost,

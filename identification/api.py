@@ -76,7 +76,7 @@ def _fitted_model(model: FrictionModel, params: dict) -> FrictionModel:
 def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_evals=None,
              validation=None, progress=None, checkpoint=None, *, objective=None,
              executor=None, method: str = "exact", checkpoint_every: int = 5,
-             fixed=None, identifiability=True, per_direction="auto",
+             fixed=None, identifiability=True, per_direction="auto", align: bool = True,
              **options) -> IdentificationResult:
     """Identify friction-law parameters from measured motion and friction force.
 
@@ -132,6 +132,10 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
     per_direction : "auto" or bool
         Steady-state maps only: a level per direction when the map covers both
         (:func:`identification.steady_state.prepare_static`).
+    align : bool
+        Advance a velocity that lags its position by its measured lag, in ``data`` and
+        ``validation`` (:func:`friction.alignment.align_motion`); ``False``: the channels as
+        given (a caller that aligned them already, as ``diagnose`` does).
     **options
         Algorithm options (e.g. ``pop_size``, ``max_iter``).
 
@@ -179,11 +183,12 @@ def identify(data, model, algorithm=None, names=None, bounds=None, seed=0, max_e
             check_data(validation, role="validation")
         # the motion channels on one time base, as diagnose has them (a velocity that lags
         # its position is advanced by its measured lag): both commands fit the same law
-        data, lag = align_motion(data)
-        if lag:
-            notes.append(data.notes[-1])
-        if validation is not None:
-            validation = align_motion(validation)[0]
+        if align:
+            data, lag = align_motion(data)
+            if lag:
+                notes.append(data.notes[-1])
+            if validation is not None:
+                validation = align_motion(validation)[0]
     if isinstance(model, str):
         model = make_model(model)
     if not isinstance(model, FrictionModel):

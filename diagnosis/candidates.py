@@ -171,6 +171,10 @@ class Candidate:
     #: the base's friction part ``Ff`` [N] and residual ``r`` [N] on the fit record
     #: (:func:`diagnosis.composite.fit_composite`); ``None``: the extras' ``x0``
     start = None
+    #: whether :attr:`start` takes ``basis=`` (:func:`diagnosis.composite.base_basis`: the
+    #: changes of the base's force its own parameters can make) and chooses its time
+    #: scales on what the base cannot absorb
+    profile_base: ClassVar[bool] = False
 
     #: ``inside(p, data, ctx) -> ndarray``: the relative level [-] at which the effect
     #: scales the law's friction levels *inside* its bristle dynamics along ``data``
@@ -332,12 +336,18 @@ class Acceleration(Candidate):
         lag = Extra("tau_lag", ctx.dt, 0.0, MAX_FILTER_SAMPLES * ctx.dt, "s")
         return self.extras(ctx) + [lag]
 
-    def start(self, fit, Ff, r, ctx) -> dict:
+    profile_base = True
+
+    def start(self, fit, Ff, r, ctx, basis=None) -> dict:
         """Start values from the base's fit residual ``r`` [N]: the part is linear in
         ``f_a``, so every point of a grid of ``a_s``, ``v_c``, ``m_a`` (and the lag, where
         fitted) is solved by least squares and the best one starts the fit (from ``f_a =
-        0`` the residual is flat in the others, and the weight's peak is not convex)."""
+        0`` the residual is flat in the others, and the weight's peak is not convex). The
+        changes the base's own parameters can make (``basis``, :func:`diagnosis.composite.
+        base_basis`) are fitted beside each point: a base identified without the part has
+        absorbed what its Stribeck curve can mimic of it."""
         sub = _subsample(fit.t.size)
+        B = None if basis is None or basis.shape[1] == 0 else basis[sub]
         a, v, rr = fit.a, fit.v, r
         ex = {e.name: e for e in self.extras(ctx)}
         lags = [0.0, ctx.dt, 3.0 * ctx.dt] if "tau_lag" in {
@@ -350,7 +360,7 @@ class Acceleration(Candidate):
                     b0 = ta * acceleration_weight(v, v_c, m)
                     for lag in lags:
                         b = _first_order(b0, fit.dt, lag)[sub]
-                        sse, c = _lsq(b[:, None], rr[sub])
+                        sse, c = _lsq(_with(b[:, None], B), rr[sub])
                         if sse < best[0]:
                             best = (sse, {"f_a": float(np.clip(c[0], ex["f_a"].lo,
                                                                ex["f_a"].hi)),
@@ -531,10 +541,16 @@ class Drift(Candidate):
     #: trend alone to the two: 63; the trend question alone: 72)
     FORMS = (("sat", "step"), ("lin", "sat", "step"))
 
-    def start(self, fit, Ff, r, ctx) -> dict:
+    profile_base = True
+
+    def start(self, fit, Ff, r, ctx, basis=None) -> dict:
         """Start values from the base's fit residual ``r`` [N] against its friction part
         ``Ff`` [N]: ``r ~ Ff d(t)`` is linear in the amplitudes; the saturation time
-        constant and the step's time and width are chosen on grids by least squares.
+        constant and the step's time and width are chosen on grids by least squares, with
+        the changes the base's own parameters can make (``basis``, :func:`diagnosis.
+        composite.base_basis`) fitted beside them: a base identified without the drift has
+        absorbed what its levels can of it (a step where the protocol changes speed reads
+        as a viscous term), so the residual alone does not show when the change happened.
 
         Whether the drift has its linear trend (:attr:`FORMS`) is chosen by forecasting: each
         form is fitted on the first :attr:`FORECAST_SPLIT` of the fit record and scored on
@@ -546,6 +562,7 @@ class Drift(Candidate):
         T = ctx.T or 1.0
         sub = _subsample(fit.t.size)
         t, f, rr = fit.t[sub], Ff[sub], r[sub]
+        B = None if basis is None or basis.shape[1] == 0 else basis[sub]
         ex = {e.name: e for e in self.extras(ctx)}
         early = t < ctx.t0 + self.FORECAST_SPLIT * T
         best = (np.inf, None)
@@ -555,6 +572,8 @@ class Drift(Candidate):
                 break
             # the step's time inside the early part, with the start's margin
             ts_hi = ctx.t0 + (self.FORECAST_SPLIT - self.STEP_MARGIN) * T
+            # (on the residual as it is: with the base's changes beside them, the forms
+            # forecast alike and the choice follows the noise)
             cols, scales = self._form_columns(form, t[early], f[early], rr[early], ctx, ex,
                                               ts_hi)
             c = _lsq(cols, rr[early])[1]
@@ -565,8 +584,8 @@ class Drift(Candidate):
             if sse < best[0]:
                 best = (sse, form)
         form = best[1]
-        cols, grid = self._form_columns(form, t, f, rr, ctx, ex, ex["t_step"].hi)
-        c = _lsq(cols, rr)[1]
+        cols, grid = self._form_columns(form, t, f, rr, ctx, ex, ex["t_step"].hi, nuis=B)
+        c = _lsq(_with(cols, B), rr)[1]
         amp = dict(zip(form, c))
         out = {"k_drift": amp.get("lin", 0.0), "k_sat": amp.get("sat", 0.0),
                "tau_sat": grid.get("tau", ex["tau_sat"].x0), "k_step": amp.get("step", 0.0),
@@ -584,10 +603,11 @@ class Drift(Candidate):
             out["tau_sat"] = Fixed(out["tau_sat"])
         return out
 
-    def _form_columns(self, form, t, f, rr, ctx, ex, ts_hi, fixed=None):
+    def _form_columns(self, form, t, f, rr, ctx, ex, ts_hi, fixed=None, nuis=None):
         """Regressors of the parts ``form`` of ``Ff d(t)`` at times ``t`` [s], their time
-        scales chosen on ``rr`` by least squares over grids (or taken from ``fixed``); the
-        columns and the chosen ``{"tau", "ts", "w"}``."""
+        scales chosen on ``rr`` by least squares over grids (or taken from ``fixed``), with
+        the columns ``nuis`` fitted beside them; the columns and the chosen ``{"tau",
+        "ts", "w"}``."""
         T = ctx.T or 1.0
         lin = f * (t - ctx.t0) / T
 
@@ -605,19 +625,24 @@ class Drift(Candidate):
                 hi = ex["tau_sat"].hi if "lin" in form else max(T / 3.0, ex["tau_sat"].lo)
                 taus = np.geomspace(ex["tau_sat"].lo, hi, 24)
                 grid["tau"] = min(taus, key=lambda tau: _lsq(
-                    np.column_stack(base + [sat(tau)]), rr)[0])
+                    _with(np.column_stack(base + [sat(tau)]), nuis), rr)[0])
             base = base + [sat(grid["tau"])]
         if "step" in form:
             if "ts" not in grid:
                 # after the smooth parts: a step is what they leave
                 r1 = rr - np.column_stack(base) @ _lsq(np.column_stack(base), rr)[1] \
                     if base else rr
+                # the base's changes are fitted with each step, not before it (they would
+                # take the step's share first)
+                r1 = rr if nuis is not None else r1
+                lead = base if nuis is not None else []
                 tss = np.linspace(ex["t_step"].lo, max(ts_hi, ex["t_step"].lo), 49)
                 ws = [float(np.clip(w, ex["w_step"].lo, ex["w_step"].hi))
                       for w in (ex["w_step"].lo, 0.01 * T, 0.05 * T)]
                 grid["ts"], grid["w"] = min(
                     ((ts, w) for w in ws for ts in tss),
-                    key=lambda p: _lsq(step(*p)[:, None], r1)[0])
+                    key=lambda p: _lsq(_with(np.column_stack(lead + [step(*p)]), nuis),
+                                       r1)[0])
             base = base + [step(grid["ts"], grid["w"])]
         return np.column_stack(base), grid
 
@@ -632,6 +657,11 @@ def _lsq(A, b):
     c, *_ = np.linalg.lstsq(A, b, rcond=1e-10)
     res = b - A @ c
     return float(res @ res), c
+
+
+def _with(A, nuis):
+    """The columns ``A`` with the columns ``nuis`` beside them (``nuis`` None: ``A``)."""
+    return A if nuis is None else np.column_stack([A, nuis])
 
 
 class Asymmetry(Candidate):

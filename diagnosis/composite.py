@@ -165,6 +165,60 @@ def _apply_effects(F, effects, extras, data, ctx, law=None):
     return F
 
 
+#: step of the base's parameters, in their search box's unit space, of the columns of
+#: :func:`base_basis` [-]
+BASIS_STEP = 1e-3
+
+
+def base_basis(law, base_names, fit, ctx: Context, F0=None) -> np.ndarray:
+    """Orthonormal basis of the changes of the base law's force on ``fit`` its free
+    parameters can make (one-sided differences in the search box's unit space,
+    :func:`law_space`), N x k with k <= len(base_names).
+
+    A candidate whose start profiles the base out (:attr:`diagnosis.candidates.Candidate.
+    profile_base`) chooses its time scales on what this basis cannot fit: a base identified
+    without the effect has already absorbed what its levels can mimic (a lubricant step
+    on the valve at the record's switch to its faster sinusoid reads as a viscous term),
+    and a residual taken at face value hides the effect's timing.
+
+    Parameters
+    ----------
+    law : FrictionModel
+        The base law at its fitted values.
+    base_names : list of str
+        Its free parameters.
+    fit : friction.dataset.Dataset
+        The fit record.
+    ctx : diagnosis.candidates.Context
+        Scales of the fit record.
+    F0 : ndarray, optional
+        The law's force along ``fit`` at its values [N] (computed when not given).
+    """
+    comp = Composite(law, list(base_names), [], {}, ctx)
+    F0 = comp.predict(fit) if F0 is None else F0
+    space = law_space(law, base_names, fit)
+    u0 = np.clip(space.to_unit(np.array([getattr(law.params, n) for n in base_names])),
+                 0.0, 1.0)
+    cols = []
+    for j in range(len(base_names)):
+        u = u0.copy()
+        u[j] += BASIS_STEP if u[j] + BASIS_STEP <= 1.0 else -BASIS_STEP
+        try:
+            trial = law.with_values(**dict(zip(base_names, map(float,
+                                                               space.to_physical(u)))))
+        except (ValueError, TypeError):
+            continue
+        d = Composite(trial, list(base_names), [], {}, ctx).predict(fit) - F0
+        if np.all(np.isfinite(d)) and np.any(d):
+            cols.append(d / np.linalg.norm(d))
+    if not cols:
+        return np.zeros((fit.t.size, 0))
+    # directions the parameters barely separate (sigma1 at its bound, two levels a
+    # record does not tell apart) are dropped, not amplified
+    u, sv, _ = np.linalg.svd(np.column_stack(cols), full_matrices=False)
+    return u[:, sv > 1e-6 * sv[0]]
+
+
 def _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx):
     """Start values of the extras of effects with a ``start`` hook (their time scales,
     wavelengths and positions chosen on the data, :meth:`diagnosis.effects.Candidate.
@@ -180,13 +234,18 @@ def _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx):
         return x_ex0, pinned
     names = [e.name for e in ex]
     Fl = Composite(law, list(base_names), [], {}, ctx).predict(fit)
+    # what the base's own parameters can still absorb, for starts that profile it out
+    basis = (base_basis(law, base_names, fit, ctx, Fl)
+             if any(eff.profile_base for eff in starters) and base_names else None)
     Ff = Fl - law.conservative_force(fit.x)
     others = [eff for eff in effects if eff not in starters]
     F = _apply_effects(Fl, others, dict(zip(names, x_ex0)), fit, ctx, law)
     r = fit.F - F
     x_ex0 = x_ex0.copy()
     for eff in starters:
-        for k, val in eff.start(fit, Ff, r, ctx).items():
+        got = (eff.start(fit, Ff, r, ctx, basis=basis) if eff.profile_base
+               else eff.start(fit, Ff, r, ctx))
+        for k, val in got.items():
             if k in names and k not in given:
                 x_ex0[names.index(k)] = val
                 if isinstance(val, Fixed):

@@ -21,7 +21,13 @@ u_i <= 0), starts slipping once the attraction is the slower rate, at
 u_i = d_i - |v| / lam, just below its break-away deflection, and then settles on d_i;
 beyond d_i (the curve fell under it) it relaxes down at the rate lam. The friction force is
 
-    F = sum_i k_i z_i + sigma2 v + b.
+    F = sum_i (k_i z_i + sigma1 (k_i / sigma0) dz_i/dt) + sigma2 v + b.
+
+The second term is the blocks' micro-damping (the published GMS gives each element a
+damping of its own; here it is proportional to the element's stiffness, so ``sigma1`` is
+LuGre's bristle damping: right after a reversal, every block sticking, it adds
+sigma1 v, and it vanishes once the blocks slip at a steady speed). It is an output term:
+the deflections' equation does not depend on it.
 
 At a constant speed every block ends at d_i(v) and F = g(v) sgn(v) + sigma2 v + b: the
 Stribeck curve. The slipping blocks follow a changing curve with the lag g/C both when
@@ -109,14 +115,18 @@ class GMSParams(FrictionParams):
                          lower_open=True, upper=10, search=(0.3, 4.0))
     b: float = param(0.0, "N", "constant force offset", search=(-5.0, 5.0))
     shape: str = "gaussian"
+    # last, so that the FMU's value references of the parameters before it keep theirs
+    sigma1: float = param(0.0, "N.s/m", "micro-damping of the slip-blocks (LuGre's sigma1: "
+                          "sigma1 v right after a reversal)", lower=0, search=(0.0, 1e3))
 
     def _check_relations(self):
         if self.shape not in SHAPES:
             raise ParameterError(f"shape = {self.shape!r}: must be one of {sorted(SHAPES)}")
 
 
-_LAYOUT = ("sigma0", "spread", "C", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape")
-S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE = range(len(_LAYOUT))
+_LAYOUT = ("sigma0", "spread", "C", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape",
+           "sigma1")
+S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1 = range(len(_LAYOUT))
 _W = 1.0 / N_ELEMENTS  # share of the Stribeck curve each block carries
 
 
@@ -173,6 +183,22 @@ def _block_rate(z, v, d, lam):
     return 0.0
 
 
+@njit(cache=True, inline="always")
+def _damping_rate(z, v, k, wk, C, fc, fs, vs, alpha, shape):
+    """sum_i (k_i / sigma0) dz_i/dt [m/s]: the blocks' deflection rate the micro-damping
+    sigma1 multiplies (v while every block sticks, 0 once they slip at a steady speed)."""
+    if v == 0.0:
+        return 0.0
+    g = stribeck_g(v, fc, fs, vs, alpha, shape)
+    lam = C / g
+    tot = 0.0
+    r = 0.0
+    for i in range(N_ELEMENTS):
+        tot += k[i]
+        r += k[i] * _block_rate(z[i], v, g * wk[i], lam)
+    return r / tot
+
+
 @njit(cache=True)
 def gms_run(t, v, th, method, z0, F, Z):
     """Simulate one parameter set along (t, v); writes F[k] and Z[k, :] in place."""
@@ -185,6 +211,7 @@ def gms_run(t, v, th, method, z0, F, Z):
     C = th[CA]
     s2 = th[S2]
     b = th[B]
+    s1 = th[S1]
     fc, fs, vs, alpha, shape = th[FC], th[FS], th[VS], th[ALPHA], th[SHAPE]
     z = np.empty(N_ELEMENTS)
     for i in range(N_ELEMENTS):
@@ -195,6 +222,8 @@ def gms_run(t, v, th, method, z0, F, Z):
         for i in range(N_ELEMENTS):
             f += k[i] * z[i]
             Z[j, i] = z[i]
+        if s1 != 0.0:
+            f += s1 * _damping_rate(z, vj, k, wk, C, fc, fs, vs, alpha, shape)
         F[j] = f + s2 * vj + b
         if j + 1 < n:
             h = t[j + 1] - t[j]
@@ -258,7 +287,7 @@ class GMS(FrictionModel):
 
     def _pack(self, p: GMSParams) -> np.ndarray:
         return np.array([p.sigma0, p.spread, p.C, p.sigma2, p.Fc, p.Fs, p.vs, p.alpha, p.b,
-                         SHAPES[p.shape]], dtype=np.float64)
+                         SHAPES[p.shape], p.sigma1], dtype=np.float64)
 
     # -- pieces of the law --------------------------------------------------------------
     def element_stiffness(self) -> np.ndarray:
@@ -350,12 +379,14 @@ class GMS(FrictionModel):
         return out
 
     def force(self, state, v, **inputs) -> float:
-        """F = sum_i k_i z_i + sigma2 v + b [N]."""
+        """F = sum_i (k_i z_i + sigma1 (k_i / sigma0) dz_i/dt) + sigma2 v + b [N]."""
         p = self.params
         k = self.element_stiffness()
         f = 0.0
         for i in range(N_ELEMENTS):
             f += k[i] * float(state[i])
+        if p.sigma1:
+            f += p.sigma1 * float(k @ self.derivatives(state, v)) / float(np.sum(k))
         return f + p.sigma2 * float(v) + p.b
 
     def steady_state_state(self, v0, **inputs) -> np.ndarray:
@@ -405,7 +436,12 @@ class GMS(FrictionModel):
                 return sgn * np.clip(u - d, -d, d)
 
         def f(u):
-            return float(np.sum(k * state(u))) * sgn  # increasing in u
+            # increasing in u (the micro-damping's part falls as blocks start slipping,
+            # by less than their springs' part grows)
+            z = state(u)
+            damp = p.sigma1 * float(k @ self.derivatives(z, v0)) / float(np.sum(k)) \
+                if p.sigma1 and v0 != 0.0 else 0.0
+            return (float(np.sum(k * z)) + damp) * sgn
 
         want = target * sgn
         if want <= f(lo):

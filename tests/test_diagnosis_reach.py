@@ -191,3 +191,53 @@ def test_cogging_force_is_named_position():
     rep = diagnose(case.data, case.base, seed=0)
     assert rep["verdict"]["cause"] == "position"
     assert rep["verdict"]["excess_closed"] > 0.8
+
+
+def test_drift_start_profiles_out_what_the_base_levels_absorbed():
+    # a level step where the protocol speeds up (the valve's switch to its faster
+    # sinusoid): a base fitted without it takes the part its Coulomb and viscous levels can
+    # carry, and what it leaves is no step at the right time. Fitted beside the base's
+    # own changes (``basis``), the start finds the step's time and size; on the residual
+    # alone it does not
+    from diagnosis.effects import CANDIDATES, make_context
+    from friction.dataset import Dataset
+    t = np.linspace(0.0, 10.0, 10001)
+    v = np.where(t < 4.0, 0.02, 0.05) * np.sin(2 * np.pi * 1.3 * t)
+    data = Dataset.from_arrays(t=t, x=np.cumsum(v) * 1e-3, v=v, F=np.tanh(v / 0.01),
+                               check_units=False)
+    ctx = make_context(data)
+    Ff = np.tanh(v / 0.005) + 20.0 * v
+    step = Ff * 0.5 * (t > 4.0)
+    B = np.linalg.qr(np.column_stack([np.tanh(v / 0.005), v]))[0]
+    r = step - B @ (B.T @ step) + 0.01 * np.random.default_rng(0).standard_normal(t.size)
+    drift = CANDIDATES["drift"]
+    assert drift.profile_base
+    p = drift.start(data, Ff, r, ctx, basis=B)
+    assert p["k_step"] == pytest.approx(0.5, abs=0.03)
+    assert abs(p["t_step"] - 4.0) < 0.05
+    assert abs(p["k_sat"]) < 0.05
+    blind = drift.start(data, Ff, r, ctx)
+    assert abs(blind["k_step"] - 0.5) > 0.1 or abs(blind["t_step"] - 4.0) > 0.1
+
+
+def test_base_basis_spans_what_the_base_parameters_change():
+    # orthonormal columns; the viscous level's change of the force (sigma2 v in sliding)
+    # lies in their span, a force of time alone does not
+    from diagnosis.composite import base_basis
+    from diagnosis.effects import make_context
+    from friction import make_model
+    from friction.dataset import Dataset
+    t = np.linspace(0.0, 4.0, 4001)
+    v = 0.02 * np.sin(2 * np.pi * 0.5 * t)
+    law = make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=5.0, Fc=1.0, Fs=2.0,
+                     vs=2e-3)
+    data = Dataset.from_arrays(t=t, x=np.cumsum(v) * 1e-3, v=v, F=law.simulate(t, v),
+                               check_units=False)
+    names = ["sigma2", "Fc", "Fs"]
+    B = base_basis(law, names, data, make_context(data))
+    assert B.shape == (t.size, 3)
+    np.testing.assert_allclose(B.T @ B, np.eye(3), atol=1e-10)
+    d = law.with_values(sigma2=6.0).simulate(t, v) - law.simulate(t, v)
+    assert np.linalg.norm(d - B @ (B.T @ d)) < 1e-2 * np.linalg.norm(d)
+    ramp = t - t.mean()
+    assert np.linalg.norm(ramp - B @ (B.T @ ramp)) > 0.9 * np.linalg.norm(ramp)

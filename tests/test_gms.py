@@ -220,3 +220,27 @@ def test_steady_start_and_the_force_family_of_a_record_start():
     assert m.force(s, 0.0) == pytest.approx(0.3, rel=1e-12)
     s = m.record_start_state(t[:50], np.zeros(50), F=np.full(50, 1e9))
     np.testing.assert_allclose(s, m.params.Fs / (N_ELEMENTS * m.element_stiffness()))
+
+
+def test_micro_damping_is_lugres_sigma1_after_a_reversal_and_vanishes_in_sliding():
+    """sigma1 (the blocks' micro-damping, proportional to their stiffness) adds exactly
+    sigma1 v while every block sticks (right after a reversal), nothing once they slip at a
+    steady speed, and leaves the deflections alone; the kernel's force equals the law's
+    continuous-time force at the states it reports, and sigma1 = 0 is the undamped law bit
+    for bit."""
+    kw = dict(sigma0=1e5, spread=10.0, C=1e4, Fc=1.0, Fs=1.5, vs=1e-3)
+    m0, m1 = make_model("gms", **kw), make_model("gms", sigma1=50.0, **kw)
+    assert np.array_equal(m0.theta[:-1], m1.theta[:-1]) and m0.params.sigma1 == 0.0
+    t = np.linspace(0.0, 2.0, 20001)
+    v = 2e-3 * np.sin(2 * np.pi * t)
+    F0, S0 = m0.simulate(t, v, return_state=True)
+    F1, S1 = m1.simulate(t, v, return_state=True)
+    np.testing.assert_array_equal(S0, S1)  # an output term: the states do not see it
+    after = np.searchsorted(t, 0.5) + 5     # every block sticking after the reversal at 0.5 s
+    assert F1[after] - F0[after] == pytest.approx(50.0 * v[after], rel=1e-9)
+    sliding = np.searchsorted(t, 0.25)      # top speed, every block slipping at d_i(v)
+    assert abs(F1[sliding] - F0[sliding]) < 1e-3 * 50.0 * abs(v[sliding])
+    for k in (after, sliding, 12345):
+        assert F1[k] == pytest.approx(m1.force(S1[k], v[k]), rel=1e-12, abs=1e-12)
+    with pytest.raises(ValueError, match="sigma1"):
+        make_model("gms", sigma1=-1.0, **kw)

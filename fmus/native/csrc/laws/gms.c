@@ -6,7 +6,7 @@
  * d_i = g / (4 k_i). With s = sgn(v), u_i = s z_i and lam = C / g:
  *
  *   du_i/dt = min(|v|, lam (d_i - u_i))      (stick: move with the body; slip: attraction)
- *   F       = sum_i k_i z_i + sigma2 v + b
+ *   F       = sum_i (k_i z_i + sigma1 (k_i / sigma0) dz_i/dt) + sigma2 v + b
  *
  * method 0 (exact): the step is cut at a velocity reversal (fl_steps.h); over each piece the
  * velocity is frozen at its midpoint value and each block's equation solved exactly;
@@ -20,7 +20,7 @@
 
 /* p[] and theta: the fields of friction.gms.GMSParams in declaration order
  * (= friction.gms._LAYOUT) */
-enum { S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, TH_N };
+enum { S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1, TH_N };
 
 static int gms_pack(const double *p, double *th, char *msg, size_t msglen)
 {
@@ -86,6 +86,23 @@ static double gms_block_rate(double z, double v, double d, double lam)
     return 0.0;
 }
 
+/* friction.gms._damping_rate: sum_i (k_i / sigma0) dz_i/dt, the rate sigma1 multiplies */
+static double gms_damping_rate(const double *th, const double z[GMS_N], double v,
+                               const double k[GMS_N])
+{
+    double g, lam, tot = 0.0, r = 0.0;
+    int i;
+    if (v == 0.0)
+        return 0.0;
+    g = fl_stribeck_g(v, th[FC], th[FS], th[VS], th[ALPHA], th[SHAPE]);
+    lam = th[CA] / g;
+    for (i = 0; i < GMS_N; ++i) {
+        tot += k[i];
+        r += k[i] * gms_block_rate(z[i], v, g * ((1.0 / GMS_N) / k[i]), lam);
+    }
+    return r / tot;
+}
+
 /* friction.gms.gms_run */
 static void gms_kernel(int n, const double *t, const double *v, const double *a,
                        const double *load, const double *x, const double *th, int method,
@@ -110,6 +127,8 @@ static void gms_kernel(int n, const double *t, const double *v, const double *a,
             f += k[i] * z[i];
             S[j * GMS_N + i] = z[i];
         }
+        if (th[S1] != 0.0)
+            f += th[S1] * gms_damping_rate(th, z, vj, k);
         F[j] = f + s2 * vj + b;
         if (j + 1 < n) {
             const double h = t[j + 1] - t[j];
@@ -165,6 +184,8 @@ static double gms_force(const double *th, const double *state, double v, double 
     gms_stiffness(th[S0], th[SPREAD], k);
     for (i = 0; i < GMS_N; ++i)
         f += k[i] * state[i];
+    if (th[S1] != 0.0)
+        f += th[S1] * gms_damping_rate(th, state, v, k);
     return f + th[S2] * v + th[B];
 }
 

@@ -824,21 +824,26 @@ class Position(Candidate):
         cols["d_x"] = F * np.exp(-0.5 * ((x - p["x_d"]) / p["w_d"]) ** 2)
         return 1.0 + position_change(x, self._packed(p, ctx)), cols
 
-    def start(self, fit, Ff, r, ctx) -> dict:
+    profile_base = True
+
+    def start(self, fit, Ff, r, ctx, basis=None) -> dict:
         """Start values from the base's fit residual ``r`` [N] against its friction part
         ``Ff`` [N]: ``r ~ Ff m(x)`` is linear in the knot values and amplitudes; the
         wavelength is chosen on a grid even in wavenumber (a quarter period of slip over the
         stroke between neighbours), the defect's centre and width on a grid, each by least
-        squares on what the parts before it leave."""
+        squares on what the parts before it leave, with the changes the base's own
+        parameters can make (``basis``, :func:`diagnosis.composite.base_basis`) fitted
+        beside every part."""
         span = self._span(ctx)
         ex = {e.name: e for e in self.extras(ctx)}
         sub = _subsample(fit.t.size)
         x, f, rr = fit.x[sub], Ff[sub], r[sub]
+        B = None if basis is None or basis.shape[1] == 0 else basis[sub]
         knots = np.linspace(ctx.x_lo, ctx.x_lo + span, len(POSITION_NAMES) + 1)
         H = np.column_stack([np.interp(x, knots, np.eye(knots.size)[k])
                              for k in range(1, knots.size)]) * f[:, None]
-        _, c = _lsq(H, rr)
-        r1 = rr - H @ c
+        _, c = _lsq(_with(H, B), rr)
+        r1 = rr - _with(H, B) @ c
 
         def periodic(lam):
             # the waviness scales the level; its additive twin is a force of x alone
@@ -846,21 +851,23 @@ class Position(Candidate):
             return np.column_stack([harm * f[:, None], harm])
         k_lo, k_hi = 1.0 / ex["lambda_x"].hi, 1.0 / ex["lambda_x"].lo
         waves = np.arange(k_lo, k_hi, 0.25 / span)
-        sse = [_lsq(periodic(1.0 / k), r1)[0] for k in waves]
+        sse = [_lsq(_with(periodic(1.0 / k), B), r1)[0] for k in waves]
         lam = float(1.0 / waves[int(np.argmin(sse))])
         P = periodic(lam)
-        _, pc = _lsq(P, r1)
-        r2 = r1 - P @ pc
+        _, pc = _lsq(_with(P, B), r1)
+        r2 = r1 - _with(P, B) @ pc
         best = (np.inf, None, None)
         for w in np.geomspace(ex["w_d"].lo, ex["w_d"].hi, 8):
             for xd in np.linspace(ctx.x_lo, ctx.x_lo + span, 61):
                 g = f * np.exp(-0.5 * ((x - xd) / w) ** 2)
-                e, _ = _lsq(g[:, None], r2)
+                e, _ = _lsq(_with(g[:, None], B), r2)
                 if e < best[0]:
                     best = (e, xd, w)
         _, xd, w = best
         G = (f * np.exp(-0.5 * ((x - xd) / w) ** 2))[:, None]
-        _, allc = _lsq(np.column_stack([H, P, G]), rr)
+        HPG = np.column_stack([H, P, G])
+        _, allc = _lsq(_with(HPG, B), rr)
+        allc = allc[:HPG.shape[1]]
         nk = len(POSITION_NAMES)
         out = dict(zip(POSITION_NAMES, allc[:nk]))
         out.update(zip(("p_c1", "p_s1", "p_c2", "p_s2") + self.ADD_NAMES, allc[nk:-1]))

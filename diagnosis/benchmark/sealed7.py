@@ -83,8 +83,8 @@ from friction.shapes import SHAPES, stribeck_g
 
 from ..effects_backlash import PLANT_GAP_SHARE
 from .kinematics import PlantKinematics
-from .truths import (FIT_FRACTION, MAX_DELAY_SAMPLES, _base_parts, _bump_centre,
-                     _contact_constants, _level, _lugre_params, _motion_time,
+from .truths import (FIT_FRACTION, GAP_BIAS, MAX_DELAY_SAMPLES, _base_parts, _bump_centre,
+                     _contact_constants, _driven_contact, _level, _lugre_params, _motion_time,
                      _presliding_path, _span, level_inside, on_fine_grid)
 
 __all__ = ["FORMS", "motor_attraction_truth", "plastic_junctions_truth", "tilted_pad_truth",
@@ -573,44 +573,15 @@ def tribo_oxide_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 GAP_SHARE, BIAS = PLANT_GAP_SHARE, 0.5
 
 
-@njit(cache=True)
 def _biased_contact(h, xd, half, bias, m, kh, ch, s0, s1, s2, Fc, Fs, vs, alpha, shape):
     """LuGre friction [N] of a contact of mass ``m`` [kg] on which a constant force ``bias``
     [N] acts, driven by the drive positions ``xd`` [m] (grid step ``h`` [s]) across a play
     of half-width ``half`` [m], the flanks a spring ``kh`` [N/m] and damper ``ch`` [N s/m]
-    (compressive only); nothing else bridges the play. Semi-implicit Euler of the mass,
-    exact bristle update at the contact's velocity. Starts centred in the play, at rest,
-    its bristle unloaded (the bias then loads it, or the flanks where there is no
-    play)."""
-    n = xd.size
-    F = np.empty(n)
-    x = xd[0]
-    v = 0.0
-    z = 0.0
-    for j in range(n):
-        vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
-        e = xd[j] - x
-        ed = vd - v
-        fc = bias
-        if e > half:
-            f2 = kh * (e - half) + ch * ed
-            if f2 > 0.0:
-                fc += f2
-        elif e < -half:
-            f2 = kh * (-e - half) - ch * ed
-            if f2 > 0.0:
-                fc -= f2
-        g = stribeck_g(v, Fc, Fs, vs, alpha, shape)
-        zd = v - s0 * abs(v) * z / g
-        ff = s0 * z + s1 * zd + s2 * v
-        F[j] = ff
-        v = v + h * (fc - ff) / m
-        if v != 0.0:
-            gv = stribeck_g(v, Fc, Fs, vs, alpha, shape)
-            zss = math.copysign(gv / s0, v)
-            z = zss + (z - zss) * math.exp(-h * s0 * abs(v) / gv)
-        x = x + h * v
-    return F
+    (compressive only); nothing else bridges the play: the open forms' driven contact
+    (:func:`.truths._driven_contact`, ``GAP_BIAS``). Starts centred in the play, at rest,
+    its bristle unloaded (the bias then loads it, or the flanks where there is no play)."""
+    return _driven_contact(h, xd, half, GAP_BIAS, bias, 0.0, m, kh, ch, s0, s1, s2, Fc, Fs,
+                           vs, alpha, shape)
 
 
 @on_fine_grid

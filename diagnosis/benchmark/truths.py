@@ -442,7 +442,7 @@ def _smooth_max0(u, eps):
 #: a squeeze film (``g1`` its drag c0 [N s/m], ``g2`` the floor of its gap factor [-]) or a
 #: friction drag (``g1`` its Coulomb force [N], ``g2`` the slip speed it is rounded over
 #: [m/s])
-GAP_SPRING, GAP_SQUEEZE, GAP_DRAG = 0, 1, 2
+GAP_SPRING, GAP_SQUEEZE, GAP_DRAG, GAP_BIAS = 0, 1, 2, 3
 
 
 @njit(cache=True)
@@ -454,8 +454,9 @@ def _driven_contact(h, xd, half, gap_kind, g1, g2, m, kh, ch, s0, s1, s2, Fc, Fs
     (``gap_kind``): :data:`GAP_SPRING`, a spring ``g1`` bridging it (its force at the flank
     g1 half); :data:`GAP_SQUEEZE`, the oil squeezed between the flanks drags the contact,
     g1 (vd - v) / (1 - (e / half)^2 + g2)^1.5; :data:`GAP_DRAG`, a friction-loaded idler
-    drags the contact, g1 tanh((vd - v) / g2). Semi-implicit Euler of the mass, exact
-    bristle update at the contact's velocity."""
+    drags the contact, g1 tanh((vd - v) / g2); :data:`GAP_BIAS`, a constant force g1 [N]
+    acts on the contact (a weight or a spring) and nothing bridges the play. Semi-implicit
+    Euler of the mass, exact bristle update at the contact's velocity."""
     n = xd.size
     F = np.empty(n)
     x = xd[0]
@@ -469,6 +470,8 @@ def _driven_contact(h, xd, half, gap_kind, g1, g2, m, kh, ch, s0, s1, s2, Fc, Fs
             fc = g1 * min(max(e, -half), half)
         elif gap_kind == GAP_DRAG:
             fc = g1 * math.tanh(ed / g2)
+        elif gap_kind == GAP_BIAS:
+            fc = g1
         else:
             fc = 0.0
             if half > 0.0 and abs(e) < half:

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen5`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen6`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -235,6 +235,7 @@ _S2 = "diagnosis.benchmark.seen2:"
 _S3 = "diagnosis.benchmark.seen3:"
 _S4 = "diagnosis.benchmark.seen4:"
 _S5 = "diagnosis.benchmark.seen5:"
+_S6 = "diagnosis.benchmark.seen6:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -251,8 +252,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "contact_aging": _S2 + "contact_aging_truth",
                    "flash_temperature": _S3 + "flash_temperature_truth",
                    "rolling_skid": _S4 + "rolling_skid_truth",
-                   "moment_load": _S5 + "moment_load_truth"},
-           sealed={"cylinder_pressure": _S + "cylinder_pressure_truth"},
+                   "moment_load": _S5 + "moment_load_truth",
+                   "cylinder_pressure": _S6 + "cylinder_pressure_truth"},
+           sealed={"motor_attraction": _S + "motor_attraction_truth"},
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
@@ -264,8 +266,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "load_stribeck": _S2 + "load_stribeck_truth",
                    "film_breakdown": _S3 + "film_breakdown_truth",
                    "junction_creep": _S4 + "junction_creep_truth",
-                   "normal_vibration": _S5 + "normal_vibration_truth"},
-           sealed={"pivot_lever": _S + "pivot_lever_truth"},
+                   "normal_vibration": _S5 + "normal_vibration_truth",
+                   "pivot_lever": _S6 + "pivot_lever_truth"},
+           sealed={"plastic_junctions": _S + "plastic_junctions_truth"},
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
@@ -277,8 +280,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "lip_roll": _S2 + "lip_roll_truth",
                    "thrust_bearing": _S3 + "thrust_bearing_truth",
                    "rod_seal_film": _S4 + "rod_seal_film_truth",
-                   "ratchet_texture": _S5 + "ratchet_texture_truth"},
-           sealed={"spring_return": _S + "spring_return_truth"},
+                   "ratchet_texture": _S5 + "ratchet_texture_truth",
+                   "spring_return": _S6 + "spring_return_truth"},
+           sealed={"tilted_pad": _S + "tilted_pad_truth"},
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
                          "Stribeck curve shape: exponent, Lorentzian, a speed map",
@@ -290,8 +294,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "film_liftoff": _S2 + "film_liftoff_truth",
                    "bimodal_roughness": _S3 + "bimodal_roughness_truth",
                    "log_weakening": _S4 + "log_weakening_truth",
-                   "eyring_boundary": _S5 + "eyring_boundary_truth"},
-           sealed={"starved_film": _S + "starved_film_truth"},
+                   "eyring_boundary": _S5 + "eyring_boundary_truth",
+                   "starved_film": _S6 + "starved_film_truth"},
+           sealed={"rubber_hysteresis": _S + "rubber_hysteresis_truth"},
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -307,8 +312,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "bent_rail": _S2 + "bent_rail_truth",
                    "transfer_film": _S3 + "transfer_film_truth",
                    "cogging": _S4 + "cogging_truth",
-                   "preload_taper": _S5 + "preload_taper_truth"},
-           sealed={"oil_pocket": _S + "oil_pocket_truth"},
+                   "preload_taper": _S5 + "preload_taper_truth",
+                   "oil_pocket": _S6 + "oil_pocket_truth"},
+           sealed={"end_cushion": _S + "end_cushion_truth"},
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
@@ -319,8 +325,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "geared_inertia": _S2 + "geared_inertia_truth",
                    "lossy_gearing": _S3 + "lossy_gearing_truth",
                    "basset_added_mass": _S4 + "basset_added_mass_truth",
-                   "dispensing_mass": _S5 + "dispensing_mass_truth"},
-           sealed={"sliding_payload": _S + "sliding_payload_truth"},
+                   "dispensing_mass": _S5 + "dispensing_mass_truth",
+                   "sliding_payload": _S6 + "sliding_payload_truth"},
+           sealed={"rattling_mass": _S + "rattling_mass_truth"},
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
@@ -332,8 +339,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "sigma_delta": _S2 + "sigma_delta_truth",
                    "fieldbus_hold": _S3 + "fieldbus_hold_truth",
                    "clock_skew": _S4 + "clock_skew_truth",
-                   "timing_jitter": _S5 + "timing_jitter_truth"},
-           sealed={"slew_limit": _S + "slew_limit_truth"},
+                   "timing_jitter": _S5 + "timing_jitter_truth",
+                   "slew_limit": _S6 + "slew_limit_truth"},
+           sealed={"pressure_line": _S + "pressure_line_truth"},
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
@@ -346,8 +354,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "archard_wear": _S2 + "archard_wear_truth",
                    "humidity_cycle": _S3 + "humidity_cycle_truth",
                    "third_body": _S4 + "third_body_truth",
-                   "interval_lubrication": _S5 + "interval_lubrication_truth"},
-           sealed={"seal_relaxation": _S + "seal_relaxation_truth"},
+                   "interval_lubrication": _S5 + "interval_lubrication_truth",
+                   "seal_relaxation": _S6 + "seal_relaxation_truth"},
+           sealed={"tribo_oxide": _S + "tribo_oxide_truth"},
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),
@@ -358,8 +367,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "spring_loaded": _S2 + "spring_loaded_truth",
                    "eccentric_gear": _S3 + "eccentric_gear_truth",
                    "oil_filled_gap": _S4 + "oil_filled_gap_truth",
-                   "worn_gap": _S5 + "worn_gap_truth"},
-           sealed={"drag_idler": _S + "drag_idler_truth"},
+                   "worn_gap": _S5 + "worn_gap_truth",
+                   "drag_idler": _S6 + "drag_idler_truth"},
+           sealed={"biased_play": _S + "biased_play_truth"},
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
                         "Maxwell-slip)", "modify_law"),
@@ -370,8 +380,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "bliman_sorine": _S2 + "bliman_sorine_truth",
                    "bouc_wen": _S3 + "bouc_wen_truth",
                    "zener_junction": _S4 + "zener_junction_truth",
-                   "mindlin_contacts": _S5 + "mindlin_contacts_truth"},
-           sealed={"rate_state_presliding": _S + "rate_state_presliding_truth"},
+                   "mindlin_contacts": _S5 + "mindlin_contacts_truth",
+                   "rate_state_presliding": _S6 + "rate_state_presliding_truth"},
+           sealed={"tomlinson_asperities": _S + "tomlinson_asperities_truth"},
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 

@@ -69,13 +69,15 @@ def test_gms_candidate_shares_the_base_curve_and_stiffness():
     base = make_model("lugre", **BASE, alpha=1.5, b=0.1)
     law = GMS.law_for(base, spread=20.0, C=3e3)
     assert law.name == "gms"
-    for n in ("sigma0", "sigma2", "Fc", "Fs", "vs", "alpha", "b"):
+    for n in ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "alpha", "b"):
         assert getattr(law.params, n) == getattr(base.params, n)
     k = law.element_stiffness()
     assert k.sum() == pytest.approx(BASE["sigma0"]) and k[0] / k[-1] == pytest.approx(20.0)
     names = GMS.names_for(["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs",
                                         "alpha", "b"])
-    assert names == ["sigma0", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "spread", "C"]
+    # the base's bristle damping is the blocks' micro-damping
+    assert names == ["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "spread",
+                     "C"]
     par = GMS.own_parameters(law)
     assert par["spread"] == 20.0 and par["C"] == 3e3
     assert par["presliding"] == pytest.approx(BASE["Fs"] / 4 / k[-1])

@@ -65,18 +65,20 @@ The table gives each effect's first truth form (``run_benchmark(forms="first")``
 default). **Generalisation grid** (``forms="all"``, ``measured=True``,
 ``benchmarks/bench_diagnosis_forms.py``): every open form of every effect - at least three
 from different physics (:mod:`.forms`; :mod:`.seen`, :mod:`.seen2`, :mod:`.seen3`,
-:mod:`.seen4` and :mod:`.seen5`, the first five sealed families, seen and moved into the
-open grid; backlash's rigid, compliant
+:mod:`.seen4`, :mod:`.seen5` and :mod:`.seen6`, the first six sealed families, seen and
+moved into the open grid; backlash's rigid, compliant
 and impact contacts; GMS's Maxwell-slip with 10 and 4 blocks, Dahl, elasto-plastic) - with
 the motion channels a user records: positions quantised to 50-1000 encoder counts per
 sample at the top speed and differentiated by ``np.gradient``, backward differences or a
 low-passed gradient (:func:`.kinematics.measure_motion`, :data:`.runner.MEASURED` in turn).
 The **sealed** family (:mod:`.sealed`, ``forms="sealed"``) is one more form per effect, kept
-out of all tuning and run only at the end of a piece of work (the present one written at
-the end of session 11, sealed: not run; the one written at the end of session 10, run once
-in session 11 on a99721e, 26.1 % top-1, is :mod:`.seen5`, session 10's first (34.3 %)
-:mod:`.seen4`, session 9's :mod:`.seen3`; figures in ``benchmarks/bench_diagnosis_forms.py``). Every truth is integrated along the
-plant's continuous motion on a grid :data:`.kinematics.FINE` x finer than the data (:func:`.truths.on_fine_grid`); the oracle's
+out of all tuning and run only at the end of a piece of work (the present one written in
+session 12, sealed: not run; session 11's, run once in session 12 on 9155e51, 46.6 % top-1,
+is :mod:`.seen6`, session 10's last (26.1 %) :mod:`.seen5`, its first (34.3 %)
+:mod:`.seen4`, session 9's :mod:`.seen3`; figures in
+``benchmarks/bench_diagnosis_forms.py``). Every truth is integrated along the plant's
+continuous motion on a grid :data:`.kinematics.FINE` x finer than the data
+(:func:`.truths.on_fine_grid`); the oracle's
 figures (detectable, truth shrink) take the base law's own discretisation at the data rate
 off the truth (``BenchCase.info["discretisation"]``), since no candidate is asked to explain
 it. A form that cannot make 0.7 of the requested size on a plant's motion is skipped and
@@ -91,8 +93,7 @@ Layout
 ------
 :mod:`.cases` (the datasets), :mod:`.kinematics` (per-plant motions, the fine grid, measured
 channels), :mod:`.truths` (first truth forces), :mod:`.forms` (the other open forms),
-:mod:`.seen`, :mod:`.seen2`, :mod:`.seen3`, :mod:`.seen4` and :mod:`.seen5` (the first five
-sealed families, now open),
+:mod:`.seen` to :mod:`.seen6` (the first six sealed families, now open),
 :mod:`.sealed` (the sealed family),
 :mod:`.scoring` (localisation, shrink, summaries), :mod:`.runner` (:func:`run_benchmark`),
 :mod:`.cli` (text table, ``python -m diagnosis.benchmark``).

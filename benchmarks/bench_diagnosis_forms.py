@@ -16,8 +16,8 @@ grid (:mod:`diagnosis.benchmark.seen`, :mod:`diagnosis.benchmark.seen2`,
 :mod:`diagnosis.benchmark.seen5`: session 10's last, run once on a99721e, 26.1 % top-1;
 :mod:`diagnosis.benchmark.seen6`: session 11's, run once on 9155e51, 46.6 % top-1, below);
 the present one (one form for each of the ten effects with truths, written in session 12 by
-another hand) is sealed: not run. The open grid's latest figures (1420 cases run, 16
-skipped, below) include seen5, not seen6 (its 176 cases were run as the sealed family).
+another hand) is sealed: not run. The open grid's latest figures include seen6: 1596 cases
+run (16 skipped), top-1 51.6 % (below).
 
     python benchmarks/bench_diagnosis_forms.py [--sealed] [--workers N] [--quick]
                                                [--full-protocols] [--checkpoint FILE]
@@ -46,6 +46,13 @@ which the undamped blocks could not follow at all, 0 -> 3/32), position 99 -> 10
 asymmetry 90 -> 89, stribeck_shape 22 -> 21. By plant: damping rig 50.6 -> 53.4 %, valve
 52.5 -> 54.4 %, isolator 54.3 -> 55.6 %, press 53.9 -> 53.5 %, XML-350 45.7 -> 45.7 %.
 Intermediate (86c0fe9, without position's): 741 (52.2 %), 68 wrong names.
+
+The open grid with seen6 (session 12's end, code of 08b5d32; the cases before seen6 keep
+their seeds): **1596 cases** (16 skipped), top-1 **51.6 %** (823; 52.8 % of the
+detectable), mean |shrink error| 0.288, wrong names on 95 of 1556 effect cases (6.1 %: gms
+-> acceleration 19, acceleration -> position 12, asymmetry -> load 8, acceleration ->
+asymmetry 5, delay -> gms 4, inertia -> acceleration 4), clean 0 of 20 named, ripple 0 of
+20; 1351 s wall. The baseline of the next session.
 
 Sealed family of session 11's end (``--sealed`` then, written by another hand without
 running the diagnosis on it, run once on the code of 9155e51, 202 s wall): 176 cases (0

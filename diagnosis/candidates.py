@@ -166,15 +166,14 @@ class Candidate:
             return self.apply(one, p, data, ctx) - self.apply(0.0 * one, p, data, ctx), {}
         return None
 
-    #: ``start(fit, Ff, r, ctx) -> dict``: start values of extras chosen on the data (time
-    #: scales, wavelengths, positions a gradient cannot find from a zero amplitude), given
-    #: the base's friction part ``Ff`` [N] and residual ``r`` [N] on the fit record
-    #: (:func:`diagnosis.composite.fit_composite`); ``None``: the extras' ``x0``
+    #: ``start(fit, Ff, r, ctx, basis=None) -> dict``: start values of extras chosen on the
+    #: data (time scales, wavelengths, positions a gradient cannot find from a zero
+    #: amplitude), given the base's friction part ``Ff`` [N] and residual ``r`` [N] on the
+    #: fit record (:func:`diagnosis.composite.fit_composite`) and ``basis``, the changes of
+    #: the base's force its own parameters can make (:func:`diagnosis.composite.
+    #: base_basis`), fitted beside the start's columns: what the base absorbed of the effect
+    #: is not in ``r``; ``None``: the extras' ``x0``
     start = None
-    #: whether :attr:`start` takes ``basis=`` (:func:`diagnosis.composite.base_basis`: the
-    #: changes of the base's force its own parameters can make) and chooses its time
-    #: scales on what the base cannot absorb
-    profile_base: ClassVar[bool] = False
 
     #: ``inside(p, data, ctx) -> ndarray``: the relative level [-] at which the effect
     #: scales the law's friction levels *inside* its bristle dynamics along ``data``
@@ -336,8 +335,6 @@ class Acceleration(Candidate):
         lag = Extra("tau_lag", ctx.dt, 0.0, MAX_FILTER_SAMPLES * ctx.dt, "s")
         return self.extras(ctx) + [lag]
 
-    profile_base = True
-
     def start(self, fit, Ff, r, ctx, basis=None) -> dict:
         """Start values from the base's fit residual ``r`` [N]: the part is linear in
         ``f_a``, so every point of a grid of ``a_s``, ``v_c``, ``m_a`` (and the lag, where
@@ -347,7 +344,7 @@ class Acceleration(Candidate):
         base_basis`) are fitted beside each point: a base identified without the part has
         absorbed what its Stribeck curve can mimic of it."""
         sub = _subsample(fit.t.size)
-        B = None if basis is None or basis.shape[1] == 0 else basis[sub]
+        B = _basis_rows(basis, sub)
         a, v, rr = fit.a, fit.v, r
         ex = {e.name: e for e in self.extras(ctx)}
         lags = [0.0, ctx.dt, 3.0 * ctx.dt] if "tau_lag" in {
@@ -541,8 +538,6 @@ class Drift(Candidate):
     #: trend alone to the two: 63; the trend question alone: 72)
     FORMS = (("sat", "step"), ("lin", "sat", "step"))
 
-    profile_base = True
-
     def start(self, fit, Ff, r, ctx, basis=None) -> dict:
         """Start values from the base's fit residual ``r`` [N] against its friction part
         ``Ff`` [N]: ``r ~ Ff d(t)`` is linear in the amplitudes; the saturation time
@@ -562,7 +557,7 @@ class Drift(Candidate):
         T = ctx.T or 1.0
         sub = _subsample(fit.t.size)
         t, f, rr = fit.t[sub], Ff[sub], r[sub]
-        B = None if basis is None or basis.shape[1] == 0 else basis[sub]
+        B = _basis_rows(basis, sub)
         ex = {e.name: e for e in self.extras(ctx)}
         early = t < ctx.t0 + self.FORECAST_SPLIT * T
         best = (np.inf, None)
@@ -629,13 +624,15 @@ class Drift(Candidate):
             base = base + [sat(grid["tau"])]
         if "step" in form:
             if "ts" not in grid:
-                # after the smooth parts: a step is what they leave
-                r1 = rr - np.column_stack(base) @ _lsq(np.column_stack(base), rr)[1] \
-                    if base else rr
-                # the base's changes are fitted with each step, not before it (they would
-                # take the step's share first)
-                r1 = rr if nuis is not None else r1
-                lead = base if nuis is not None else []
+                if nuis is None:
+                    # after the smooth parts: a step is what they leave
+                    r1 = rr - np.column_stack(base) @ _lsq(np.column_stack(base), rr)[1] \
+                        if base else rr
+                    lead = []
+                else:
+                    # the smooth parts and the base's changes are fitted with each step,
+                    # not before it (they would take the step's share first)
+                    r1, lead = rr, base
                 tss = np.linspace(ex["t_step"].lo, max(ts_hi, ex["t_step"].lo), 49)
                 ws = [float(np.clip(w, ex["w_step"].lo, ex["w_step"].hi))
                       for w in (ex["w_step"].lo, 0.01 * T, 0.05 * T)]
@@ -657,6 +654,12 @@ def _lsq(A, b):
     c, *_ = np.linalg.lstsq(A, b, rcond=1e-10)
     res = b - A @ c
     return float(res @ res), c
+
+
+def _basis_rows(basis, rows):
+    """The rows ``rows`` of a start's ``basis`` (:func:`diagnosis.composite.base_basis`), or
+    ``None`` when there is none to fit beside."""
+    return None if basis is None or basis.shape[1] == 0 else basis[rows]
 
 
 def _with(A, nuis):
@@ -824,8 +827,6 @@ class Position(Candidate):
         cols["d_x"] = F * np.exp(-0.5 * ((x - p["x_d"]) / p["w_d"]) ** 2)
         return 1.0 + position_change(x, self._packed(p, ctx)), cols
 
-    profile_base = True
-
     def start(self, fit, Ff, r, ctx, basis=None) -> dict:
         """Start values from the base's fit residual ``r`` [N] against its friction part
         ``Ff`` [N]: ``r ~ Ff m(x)`` is linear in the knot values and amplitudes; the
@@ -838,7 +839,7 @@ class Position(Candidate):
         ex = {e.name: e for e in self.extras(ctx)}
         sub = _subsample(fit.t.size)
         x, f, rr = fit.x[sub], Ff[sub], r[sub]
-        B = None if basis is None or basis.shape[1] == 0 else basis[sub]
+        B = _basis_rows(basis, sub)
         knots = np.linspace(ctx.x_lo, ctx.x_lo + span, len(POSITION_NAMES) + 1)
         H = np.column_stack([np.interp(x, knots, np.eye(knots.size)[k])
                              for k in range(1, knots.size)]) * f[:, None]

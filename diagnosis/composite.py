@@ -175,8 +175,8 @@ def base_basis(law, base_names, fit, ctx: Context, F0=None) -> np.ndarray:
     parameters can make (one-sided differences in the search box's unit space,
     :func:`law_space`), N x k with k <= len(base_names).
 
-    A candidate whose start profiles the base out (:attr:`diagnosis.candidates.Candidate.
-    profile_base`) chooses its time scales on what this basis cannot fit: a base identified
+    A candidate's data start (:attr:`diagnosis.candidates.Candidate.start`) chooses its
+    time scales on what this basis cannot fit: a base identified
     without the effect has already absorbed what its levels can mimic (a lubricant step
     on the valve at the record's switch to its faster sinusoid reads as a viscous term),
     and a residual taken at face value hides the effect's timing.
@@ -194,8 +194,8 @@ def base_basis(law, base_names, fit, ctx: Context, F0=None) -> np.ndarray:
     F0 : ndarray, optional
         The law's force along ``fit`` at its values [N] (computed when not given).
     """
-    comp = Composite(law, list(base_names), [], {}, ctx)
-    F0 = comp.predict(fit) if F0 is None else F0
+    if F0 is None:
+        F0 = Composite(law, list(base_names), [], {}, ctx).predict(fit)
     space = law_space(law, base_names, fit)
     u0 = np.clip(space.to_unit(np.array([getattr(law.params, n) for n in base_names])),
                  0.0, 1.0)
@@ -234,18 +234,15 @@ def _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx):
         return x_ex0, pinned
     names = [e.name for e in ex]
     Fl = Composite(law, list(base_names), [], {}, ctx).predict(fit)
-    # what the base's own parameters can still absorb, for starts that profile it out
-    basis = (base_basis(law, base_names, fit, ctx, Fl)
-             if any(eff.profile_base for eff in starters) and base_names else None)
+    # what the base's own parameters can still absorb: the starts fit it beside their columns
+    basis = base_basis(law, base_names, fit, ctx, Fl) if base_names else None
     Ff = Fl - law.conservative_force(fit.x)
     others = [eff for eff in effects if eff not in starters]
     F = _apply_effects(Fl, others, dict(zip(names, x_ex0)), fit, ctx, law)
     r = fit.F - F
     x_ex0 = x_ex0.copy()
     for eff in starters:
-        got = (eff.start(fit, Ff, r, ctx, basis=basis) if eff.profile_base
-               else eff.start(fit, Ff, r, ctx))
-        for k, val in got.items():
+        for k, val in eff.start(fit, Ff, r, ctx, basis=basis).items():
             if k in names and k not in given:
                 x_ex0[names.index(k)] = val
                 if isinstance(val, Fixed):

@@ -11,7 +11,11 @@ applied in the order multiplicative then additive:
                    ``d = k_drift (t - t0) / T + k_sat (1 - exp(-(t - t0) / tau_sat))
                    + k_step / (1 + exp(-(t - t_step) / w_step))`` (the saturating part 0
                    before ``t0``; ``tau_sat <= 0``: a step at ``t0``; ``w_step <= 0``: a
-                   sharp step);
+                   sharp step), plus a part that comes and goes with period ``P_cyc``
+                   (two harmonics, ``k_c1 cos(psi) + k_s1 sin(psi) + k_c2 cos(2 psi) +
+                   k_s2 sin(2 psi)``, ``psi = 2 pi (t - t0) / P_cyc``; ``P_cyc <= 0``:
+                   none): an ambient that cycles under a thermostat or a dehumidifier, an
+                   interval lubrication's shots;
 * ``position``     levels along the stroke, ``F (1 + m(x))`` with ``m`` a friction map
                    (:func:`position_change`) of three parts: piecewise linear between
                    :data:`POSITION_KNOTS` equally spaced knots from ``x_lo`` to ``x_hi``
@@ -43,7 +47,7 @@ import numpy as np
 from numba import njit
 
 __all__ = ["EXTENSIONS", "EXTENSION_PARAMS", "EXTENSION_INDEX", "POSITION_KNOTS", "POSITION_NAMES",
-           "POSITION_FORM_NAMES", "DRIFT_NAMES", "extension_force", "pack_extensions",
+           "POSITION_FORM_NAMES", "DRIFT_NAMES", "DRIFT_CYCLE_NAMES", "extension_force", "pack_extensions",
            "acceleration_weight",
            "position_map", "position_change", "drift_change"]
 
@@ -60,7 +64,10 @@ POSITION_NAMES = tuple(f"c_x{k}" for k in range(1, POSITION_KNOTS))
 #: first two harmonics [-]) and local defect (relative height [-], centre [m], width [m])
 POSITION_FORM_NAMES = ("lambda_x", "p_c1", "p_s1", "p_c2", "p_s2", "d_x", "x_d", "w_d")
 #: the drift's parameters beyond t0 and T
-DRIFT_NAMES = ("k_drift", "k_sat", "tau_sat", "k_step", "t_step", "w_step")
+#: the drift's periodic part (period [s], relative cosine/sine amplitudes of the first two
+#: harmonics [-]); appended last in the packed layout, so earlier FMU value references stay
+DRIFT_CYCLE_NAMES = ("P_cyc", "k_c1", "k_s1", "k_c2", "k_s2")
+DRIFT_NAMES = ("k_drift", "k_sat", "tau_sat", "k_step", "t_step", "w_step") + DRIFT_CYCLE_NAMES
 
 #: packed layout: (name, default, unit, description)
 EXTENSION_PARAMS = (
@@ -100,6 +107,12 @@ EXTENSION_PARAMS = (
     ("use_load", 0.0, "1", "load-dependent levels on (1) or off (0)"),
     ("L0", 1.0, "N", "reference normal load (> 0)"),
     ("k_L", 0.0, "1", "relative level change per relative load change (1: Amontons)"),
+    ("P_cyc", 0.0, "s", "period of the drift's periodic part (<= 0: none)"),
+    ("k_c1", 0.0, "1", "relative amplitude of cos(psi) in the drift's periodic part, "
+                       "psi = 2 pi (t - t0) / P_cyc"),
+    ("k_s1", 0.0, "1", "relative amplitude of sin(psi) in the drift's periodic part"),
+    ("k_c2", 0.0, "1", "relative amplitude of cos(2 psi) in the drift's periodic part"),
+    ("k_s2", 0.0, "1", "relative amplitude of sin(2 psi) in the drift's periodic part"),
 )
 
 #: index of each name in the packed vector
@@ -114,6 +127,7 @@ _USE_DRIFT, _K_DRIFT, _T0, _T = (EXTENSION_INDEX[k] for k in ("use_drift", "k_dr
 _K_SAT, _TAU_SAT, _K_STEP, _T_STEP, _W_STEP = (EXTENSION_INDEX[k] for k in
                                               ("k_sat", "tau_sat", "k_step", "t_step", "w_step"))
 _USE_LOAD, _L0, _K_L = (EXTENSION_INDEX[k] for k in ("use_load", "L0", "k_L"))
+_P_CYC, _K_C1 = (EXTENSION_INDEX[k] for k in ("P_cyc", "k_c1"))
 _NK = POSITION_KNOTS
 _TWO_PI = 2.0 * math.pi
 
@@ -201,6 +215,10 @@ def _drift_m(t, e):
             d += e[_K_STEP] * 0.5 * (1.0 + math.tanh(0.5 * (t - e[_T_STEP]) / e[_W_STEP]))
         elif t >= e[_T_STEP]:
             d += e[_K_STEP]
+    if e[_P_CYC] > 0.0:  # periodic part, two harmonics (k_c1, k_s1, k_c2, k_s2 in a row)
+        psi = _TWO_PI * s / e[_P_CYC]
+        d += (e[_K_C1] * math.cos(psi) + e[_K_C1 + 1] * math.sin(psi)
+              + e[_K_C1 + 2] * math.cos(2.0 * psi) + e[_K_C1 + 3] * math.sin(2.0 * psi))
     return d
 
 

@@ -171,6 +171,15 @@ def test_stroke_map_and_drift_forms_are_the_documented_formulas():
                                    "t_step": 1.0, "w_step": 0.0}}, t0=0.0, T=2.0)
     np.testing.assert_allclose(drift_change(np.array([-1.0, 0.5, 1.0, 2.0]), e),
                                [0.0, 0.5, 0.7, 0.7])
+    # the periodic part: two harmonics of period P_cyc from t0; P_cyc <= 0 switches it off
+    e = pack_extensions({"drift": {"P_cyc": 0.7, "k_c1": 0.1, "k_s1": -0.2, "k_c2": 0.05,
+                                   "k_s2": 0.03}}, t0=0.5, T=2.0)
+    ps = 2 * np.pi * (t - 0.5) / 0.7
+    want = (0.1 * np.cos(ps) - 0.2 * np.sin(ps) + 0.05 * np.cos(2 * ps)
+            + 0.03 * np.sin(2 * ps))
+    np.testing.assert_allclose(drift_change(t, e), want, atol=1e-14)
+    e = pack_extensions({"drift": {"P_cyc": 0.0, "k_c1": 0.1}}, t0=0.5, T=2.0)
+    assert not np.any(drift_change(t, e))
 
 
 @pytest.mark.slow

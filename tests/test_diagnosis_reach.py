@@ -133,7 +133,11 @@ def test_drift_start_keeps_its_trend_only_where_the_trend_forecasts():
     assert abs(step["t_step"] - (ctx.t0 + 0.45 * ctx.T)) < 0.05 * ctx.T
     trend = drift.start(data, Ff, 0.3 * u + noise, ctx)
     assert not isinstance(trend["k_drift"], Fixed)
-    assert not any(isinstance(v, Fixed) for v in trend.values())
+    assert trend["k_drift"] == pytest.approx(0.3, abs=0.01)
+    # the trend-or-not question is the forecast's: the other parts are free or pinned as
+    # they forecast alike, and they start at nothing
+    for n in ("k_sat", "k_step") + drift.CYCLE_AMPS:
+        assert abs(trend[n]) < 0.02, n
     # a pinned start is what the joint fit keeps
     from friction import make_model
     law = make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=5.0, Fc=1.0, Fs=2.0,
@@ -147,6 +151,46 @@ def test_drift_start_keeps_its_trend_only_where_the_trend_forecasts():
     comp, _ = fit_composite(law, ["Fc", "Fs"], [drift], d, make_context(d))
     assert comp.extras["k_drift"] == 0.0  # pinned by the start
     assert comp.extras["k_step"] == pytest.approx(0.3, abs=0.1)
+
+
+def test_drift_start_finds_a_level_that_comes_and_goes():
+    # an ambient cycling under a thermostat or interval lubrication's shots: the level
+    # repeats with a period of a fraction of the record. The start picks the periodic
+    # form by forecasting the fit record's last fifth, finds the period and leaves the
+    # once-only parts off; a one-off step keeps the periodic part off
+    from diagnosis.candidates import Fixed
+    from diagnosis.effects import CANDIDATES, make_context
+    data = make_case("clean", 1.0, 0.0, n=6000)
+    ctx = make_context(data)
+    drift = CANDIDATES["drift"]
+    Ff = 1.0 + 0.5 * np.sin(2 * np.pi * 7.3 * data.t / ctx.T)  # friction varies with the motion
+    u = (data.t - ctx.t0) / ctx.T
+    rng = np.random.default_rng(5)
+    noise = 0.01 * rng.standard_normal(u.size)
+    # a sawtooth of period 0.35 T: a shot lowers the level by 0.3, which creeps back
+    phase = (u - 0.1) % 0.35
+    d = -0.3 * np.exp(-phase / 0.08) * (u > 0.1)
+    # the base's level, which a base fitted without the drift has moved to the mean
+    level = (Ff / np.linalg.norm(Ff))[:, None]
+    p = drift.start(data, Ff, Ff * d + noise, ctx, basis=level)
+    assert p["P_cyc"] == pytest.approx(0.35 * ctx.T, rel=0.04)
+    assert not isinstance(p["P_cyc"], Fixed)
+    for n in ("k_sat", "k_step"):
+        assert isinstance(p[n], Fixed)
+    # what it forecasts of the last 30 %, beyond the fit record: most of the sawtooth
+    from friction.extensions import drift_change
+    later = data.t[-1] + np.linspace(0.0, 0.4 * ctx.T, 400)
+    dl = drift_change(later, drift._packed({k: float(v) for k, v in p.items()}, ctx))
+    ul = (later - ctx.t0) / ctx.T
+    truth = -0.3 * np.exp(-((ul - 0.1) % 0.35) / 0.08)
+    # (the mean level is the base's; two harmonics hold 72 % of this sawtooth's variance,
+    # so the best forecast misses sqrt(0.28) = 0.53 of it; nothing, 1)
+    miss = np.std((dl - truth) - np.mean(dl - truth)) / np.std(truth)
+    assert miss < 0.75
+    # a one-off step: the periodic part stays off
+    step = drift.start(data, Ff, Ff * 0.3 * (u > 0.45) + noise, ctx, basis=level)
+    assert step["P_cyc"] == 0.0 and isinstance(step["P_cyc"], Fixed)
+    assert step["k_step"] == pytest.approx(0.3, abs=0.05)
 
 
 def test_position_carries_a_force_of_the_position_alone_with_exact_columns():

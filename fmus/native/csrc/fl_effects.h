@@ -4,7 +4,8 @@
  * FL_E_* indices into fl_model.h from that one Python list): switches use_* (0 or 1), the
  * acceleration part (f_a, a_s, v_c, m_a), the position map (x_lo, x_hi, c_x1.., the waviness
  * lambda_x, p_c1, p_s1, p_c2, p_s2 and the local defect d_x, x_d, w_d), the drift (k_drift,
- * t0, T, k_sat, tau_sat, k_step, t_step, w_step) and the load levels (L0, k_L). */
+ * t0, T, k_sat, tau_sat, k_step, t_step, w_step and the periodic part P_cyc, k_c1, k_s1,
+ * k_c2, k_s2) and the load levels (L0, k_L). */
 #ifndef FL_EFFECTS_H
 #define FL_EFFECTS_H
 
@@ -52,8 +53,8 @@ static double fl_position_m(double x, const double *e)
     return m;
 }
 
-/* relative level change of the drift at t [s]: trend, saturating change, step
- * (friction.extensions._drift_m) */
+/* relative level change of the drift at t [s]: trend, saturating change, step, periodic
+ * part (friction.extensions._drift_m) */
 static double fl_drift_m(double t, const double *e)
 {
     double s = t - e[FL_E_T0];
@@ -66,6 +67,11 @@ static double fl_drift_m(double t, const double *e)
             d += e[FL_E_K_STEP] * 0.5 * (1.0 + tanh(0.5 * (t - e[FL_E_T_STEP]) / e[FL_E_W_STEP]));
         else if (t >= e[FL_E_T_STEP])
             d += e[FL_E_K_STEP];
+    }
+    if (e[FL_E_P_CYC] > 0.0) {  /* periodic part, two harmonics */
+        double psi = 2.0 * 3.14159265358979323846 * s / e[FL_E_P_CYC];
+        d += e[FL_E_K_C1] * cos(psi) + e[FL_E_K_S1] * sin(psi)
+             + e[FL_E_K_C2] * cos(2.0 * psi) + e[FL_E_K_S2] * sin(2.0 * psi);
     }
     return d;
 }

@@ -36,7 +36,7 @@ from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
 from .report import DiagnosisReport, report_sections
-from .significance import encompassing_z, improvement_z
+from .significance import encompassing_z, improvement_z, noise_z
 from .transfer import transfer_applicable, transfer_scores
 # the verdict rules both levels share, re-exported (their public names were this module's)
 from .verdict import (IMPRINT_GAP, IMPRINT_NOISE, MIN_EXCESS_CLOSED, NOISE_RATIO,  # noqa: F401
@@ -455,6 +455,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
                                                                held_residuals[name])),
                         "improvement_z": float(improvement_z(held_residuals["base"],
                                                              held_residuals[name])),
+                        # the same projection against the noise floor's white noise (the
+                        # verdict's test where the gap is far above it)
+                        "noise_z": float(noise_z(held_residuals["base"], held_residuals[name],
+                                                 floor * sd_val)),
                         # what the candidate changes in the held-out prediction (NRMSE)
                         "imprint": float(np.sqrt(np.mean((held_residuals["base"]
                                                           - held_residuals[name]) ** 2))

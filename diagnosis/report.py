@@ -58,7 +58,8 @@ def _plain(o):
 
 #: keys of each ranked effect in the report
 EFFECT_KEYS = ("name", "validation_before", "validation_after", "gap_closed", "excess_closed",
-               "significance_z", "improvement_z", "imprint", "size_reason", "defers_to",
+               "significance_z", "improvement_z", "noise_z", "imprint", "size_reason",
+               "defers_to",
                "defer_reason", "protocol")
 
 

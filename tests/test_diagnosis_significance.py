@@ -6,7 +6,8 @@ import pytest
 from diagnosis import diagnose
 from diagnosis.benchmark import make_case, make_plant_case
 from diagnosis.core import MIN_EXCESS_CLOSED, NOISE_RATIO, decide
-from diagnosis.significance import encompassing_z, improvement_z, z_threshold
+from diagnosis.significance import encompassing_z, improvement_z, noise_z, z_threshold
+from diagnosis.verdict import EVENT_RATIO
 from friction import make_model
 
 
@@ -66,6 +67,53 @@ def test_bad_input_named():
     with pytest.raises(ValueError, match="level"):
         z_threshold(3, level=1.5)
     assert improvement_z([1.0, 2.0], [1.0, 2.0]) == 0.0
+
+
+def test_noise_z_is_standard_normal_on_white_noise_of_the_floor_level():
+    # whatever the candidate changes, a base residual that is white noise of the known
+    # level gives N(0, 1): here a change made of two events
+    rng = np.random.default_rng(4)
+    n = 1200
+    c = np.zeros(n)
+    c[300:330] = np.hanning(30)
+    c[900:930] = -np.hanning(30)
+    z = np.array([noise_z(rb, rb - 0.5 * c, 0.2)
+                  for rb in 0.2 * rng.standard_normal((400, n))])
+    assert abs(np.mean(z)) < 0.15 and 0.85 < np.std(z) < 1.15
+    with pytest.raises(ValueError, match="same length"):
+        noise_z(np.zeros(10), np.zeros(9), 1.0)
+    assert noise_z(np.ones(10), np.ones(10), 1.0) == 0.0  # no change
+    assert noise_z(np.ones(10), np.zeros(10), 0.0) == 0.0  # no noise level
+
+
+def test_a_gap_of_two_events_is_resolved_against_the_noise_not_by_its_events():
+    # the forging press's mass errors: the held-out part holds two acceleration events.
+    # The candidate that is the truth closes them; the HAC statistic counts two events
+    # (z < 3), the projection against the floor's white noise counts their samples
+    rng = np.random.default_rng(5)
+    n, sigma = 1200, 0.02
+    gap = np.zeros(n)
+    gap[300:340] = 0.6 * np.hanning(40)
+    gap[900:940] = -0.6 * np.hanning(40)
+    noise = sigma * rng.standard_normal(n)
+    rb, rc = gap + noise, noise
+    z_hac, z_noise = encompassing_z(rb, rc), noise_z(rb, rc, sigma)
+    z_need = z_threshold(10)  # ten candidates tried, as the diagnosis does
+    assert z_hac < z_need < z_noise
+    # the verdict takes the noise's statistic only where the gap is far above the floor
+    sd = 1.0
+    before, after = np.sqrt(np.mean(rb ** 2)) / sd, np.sqrt(np.mean(rc ** 2)) / sd
+    floor = sigma / sd
+    assert before >= EVENT_RATIO * floor
+    e = _eff("inertia", before, after, floor, z_hac)
+    e.update(noise_z=z_noise, imprint=np.sqrt(np.mean(gap ** 2)) / sd)
+    others = [_eff(f"other{k}", before, before, floor, 0.0) for k in range(9)]
+    assert decide([e] + others, before, floor)["cause"] == "inertia"
+    # the same statistics under a gap within EVENT_RATIO x the floor: not a name
+    near = dict(e, excess_closed=1.0)
+    v = decide([near] + others, 0.9 * EVENT_RATIO * floor, floor)
+    assert v["cause"] != "inertia" and "against the noise floor" not in v["reason"]
+    assert "not significant (paired z" in v["reason"]
 
 
 def _eff(name, before, after, floor, z, n_params=1):

@@ -300,9 +300,16 @@ def _zero_phase(u, dt, tau):
 
 
 class Acceleration(Candidate):
-    """Seed 000's acceleration-dependent part ``f_a tanh(a / a_s) w(v)``, lagged as a whole
+    """Seed 000's acceleration-dependent part ``f_a tanh(a / a_s) w(v)`` and a level part
+    even in the acceleration, ``F (1 + f_e max(|a| - a_e, 0))``, lagged as a whole
     (:meth:`apply`); a fitted part that is a mass term defers to ``inertia``
     (:meth:`defers`).
+
+    The level part: accelerating either way loads the contact - rolling elements that
+    must be spun up skid, a guide's moment load moves between its ball rows, the chamber
+    pressure that accelerates a cylinder presses its seal. The odd part changes sign with
+    ``a`` (it lowers friction while braking), so such truths were beyond it: on the grid's
+    rolling-skid, moment-load and cylinder-pressure forms 1 of 60 cases was named.
 
     Tried in session 11 and not kept: a frictional memory *inside* the bristle dynamics
     (Hess and Soom: the level ``(g(v_lagged) / g(v))^k``, ``k`` and the memory time
@@ -327,7 +334,16 @@ class Acceleration(Candidate):
         return [Extra("f_a", 0.0, -ctx.sF, ctx.sF, "N"),
                 Extra("a_s", 0.3 * ctx.sa, 0.02 * ctx.sa, 3 * ctx.sa, "m/s^2"),
                 Extra("v_c", ctx.sv, 0.05 * ctx.sv, 20 * ctx.sv, "m/s"),
-                Extra("m_a", 0.0, 0.0, self.MAX_M, "1")]
+                Extra("m_a", 0.0, 0.0, self.MAX_M, "1"),
+                # the level part, even in a: what accelerating either way loads (skidding
+                # rolling elements, a guide's moment load, a cylinder's pressurised seal)
+                # raises the levels whatever the sign of a; the odd part above cannot: it
+                # changes sign with a, so it lowers friction when braking
+                Extra("f_e", 0.0, -1.0 / ctx.sa, 1.0 / ctx.sa, "s^2/m"),
+                Extra("a_e", 0.0, 0.0, 0.9 * ctx.sa, "m/s^2")]
+
+    #: onsets of the level part tried by the start, x the acceleration scale [-]
+    LEVEL_ONSETS = (0.0, 0.5)
 
     def force_extras(self, ctx):
         # the frictional lag of seed 000 (Eq. 11, its "lag" form: tau dF_d/dt + F_d =
@@ -337,8 +353,9 @@ class Acceleration(Candidate):
 
     def start(self, fit, Ff, r, ctx, basis=None) -> dict:
         """Start values from the base's fit residual ``r`` [N]: the part is linear in
-        ``f_a``, so every point of a grid of ``a_s``, ``v_c``, ``m_a`` (and the lag, where
-        fitted) is solved by least squares and the best one starts the fit (from ``f_a =
+        ``f_a`` and ``f_e``, so every point of a grid of ``a_s``, ``v_c``, ``m_a``, the
+        level part's onset :attr:`LEVEL_ONSETS` (and the lag, where fitted) is solved by
+        least squares and the best one starts the fit (from ``f_a =
         0`` the residual is flat in the others, and the weight's peak is not convex). The
         changes the base's own parameters can make (``basis``, :func:`diagnosis.composite.
         base_basis`) are fitted beside each point: a base identified without the part has
@@ -349,6 +366,10 @@ class Acceleration(Candidate):
         ex = {e.name: e for e in self.extras(ctx)}
         lags = [0.0, ctx.dt, 3.0 * ctx.dt] if "tau_lag" in {
             e.name for e in self.force_extras(ctx)} else [0.0]
+        # the level part's column at each onset and lag (beside every point of the grid)
+        levels = {(a_e, lag): _first_order(np.maximum(np.abs(a) - a_e * ctx.sa, 0.0),
+                                           fit.dt, lag)[sub] * Ff[sub]
+                  for a_e in self.LEVEL_ONSETS for lag in lags}
         best = (float(rr[sub] @ rr[sub]), {})
         for a_s in (0.1 * ctx.sa, 0.3 * ctx.sa, ctx.sa):
             ta = np.tanh(a / a_s)
@@ -357,12 +378,15 @@ class Acceleration(Candidate):
                     b0 = ta * acceleration_weight(v, v_c, m)
                     for lag in lags:
                         b = _first_order(b0, fit.dt, lag)[sub]
-                        sse, c = _lsq(_with(b[:, None], B), rr[sub])
-                        if sse < best[0]:
-                            best = (sse, {"f_a": float(np.clip(c[0], ex["f_a"].lo,
-                                                               ex["f_a"].hi)),
-                                          "a_s": a_s, "v_c": float(v_c), "m_a": m,
-                                          "tau_lag": lag})
+                        for a_e in self.LEVEL_ONSETS:
+                            cols = np.column_stack([b, levels[(a_e, lag)]])
+                            sse, c = _lsq(_with(cols, B), rr[sub])
+                            if sse < best[0]:
+                                best = (sse, {
+                                    "f_a": float(np.clip(c[0], ex["f_a"].lo, ex["f_a"].hi)),
+                                    "a_s": a_s, "v_c": float(v_c), "m_a": m, "tau_lag": lag,
+                                    "f_e": float(np.clip(c[1], ex["f_e"].lo, ex["f_e"].hi)),
+                                    "a_e": a_e * ctx.sa})
         return best[1]
 
     #: share of its fitted part's energy on the fit record a mass term ``dm a`` explains
@@ -379,13 +403,18 @@ class Acceleration(Candidate):
         """``("inertia", why)`` when the fitted part is a mass term on ``fit``: at least
         :attr:`MASS_LIKE_R2` of its energy follows ``dm a`` (an acceleration-proportional
         force that does not depend on the speed is the inverse dynamics' mass error,
-        whatever its size). Parameters as :meth:`Candidate.defers`."""
+        whatever its size). The part is the odd part and the level part together (the
+        level part on the measured force: a level raised by |a| follows the direction of
+        sliding, not the sign of a, so it is no mass term). Parameters as
+        :meth:`Candidate.defers`."""
         if not p["a_s"] > 0:
             raise ValueError(f"a_s = {p['a_s']!r} is out of bounds: the acceleration scale "
                              f"must be > 0 [m/s^2]")
         a = np.asarray(fit.a, float)
         Fd = p["f_a"] * np.tanh(a / p["a_s"]) * acceleration_weight(fit.v, p["v_c"],
                                                                     p.get("m_a", 0.0))
+        Fd = Fd + np.asarray(fit.F, float) * p.get("f_e", 0.0) * np.maximum(
+            np.abs(a) - p.get("a_e", 0.0), 0.0)
         aa, ee = float(a @ a), float(Fd @ Fd)
         if not (aa > 0 and ee > 0):
             return "", ""
@@ -403,7 +432,11 @@ class Acceleration(Candidate):
         # press and the isolator; lagging the part, 0.81-0.84.)
         Fd = p["f_a"] * np.tanh(data.a / p["a_s"]) * acceleration_weight(
             data.v, p["v_c"], p.get("m_a", 0.0))
-        return F + _first_order(Fd, data.dt, p.get("tau_lag", 0.0))
+        lag = p.get("tau_lag", 0.0)
+        # the level part (even in a), lagged as the rest: a cylinder's pressure follows
+        # the force demand through the oil's compliance
+        lev = p.get("f_e", 0.0) * np.maximum(np.abs(data.a) - p.get("a_e", 0.0), 0.0)
+        return F * (1.0 + _first_order(lev, data.dt, lag)) + _first_order(Fd, data.dt, lag)
 
 
 class Load(Candidate):

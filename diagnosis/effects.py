@@ -242,8 +242,8 @@ _G = "diagnosis.effects_gms:"
 #: every named effect, in the order the candidates are tried
 EFFECTS: dict[str, Effect] = {e.name: e for e in (
     Effect(Acceleration("acceleration", "acceleration-dependent part / frictional lag "
-                        "(seed 000)", "additive"),
-           plant_entry="force", fmu=True, levels=("f_a",), inputs=("a",),
+                        "(seed 000), levels raised by |a|", "additive"),
+           plant_entry="force", fmu=True, levels=("f_a", "f_e"), inputs=("a",),
            families=("accel/decel", "|a|"), evidence=("|a|",),
            truths={"lagged_fd": _T + "acceleration_truth",
                    "frictional_memory": _F + "frictional_memory_truth",

@@ -382,7 +382,7 @@ EFFECTS_INPUTS = (("F_law", "N", "force of the friction law"),
 #: effects block: parameters that must be > 0 (the others are free or switches)
 EFFECTS_POSITIVE = ("a_s", "v_c", "T", "L0")
 #: parameters of the ``friction_effects`` block that must be >= 0
-EFFECTS_NONNEGATIVE = ("m_a",)
+EFFECTS_NONNEGATIVE = ("m_a", "a_e")
 
 
 def effects_variables(friction_package: str = "friction") -> list[Var]:

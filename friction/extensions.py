@@ -31,7 +31,10 @@ applied in the order multiplicative then additive:
                    ``m_a = 0`` is seed 000's ``exp(-|v| / v_c)``, largest at standstill;
                    ``m_a > 0`` peaks (at 1) at ``|v| = m_a v_c``, the shape of a Stribeck
                    curve's slope, where a frictional memory (Hess and Soom 1990) or a
-                   rate-and-state friction acts most.
+                   rate-and-state friction acts most; and a level part even in the
+                   acceleration, ``F (1 + f_e max(|a| - a_e, 0))``: levels raised by what
+                   accelerating in either direction loads (rolling elements that skid, a
+                   guide's moment load, a cylinder's pressurised seal).
 
 One formula serves the in-process diagnosis (:mod:`diagnosis.effects` evaluates the maps
 with :func:`position_change` and :func:`drift_change`, :class:`diagnosis.effect_law.EffectLaw`
@@ -113,6 +116,9 @@ EXTENSION_PARAMS = (
     ("k_s1", 0.0, "1", "relative amplitude of sin(psi) in the drift's periodic part"),
     ("k_c2", 0.0, "1", "relative amplitude of cos(2 psi) in the drift's periodic part"),
     ("k_s2", 0.0, "1", "relative amplitude of sin(2 psi) in the drift's periodic part"),
+    ("f_e", 0.0, "s^2/m", "relative level change per m/s^2 of |a| above a_e (the "
+                          "acceleration part's level part, even in a)"),
+    ("a_e", 0.0, "m/s^2", "|a| from which the acceleration part's level part acts (>= 0)"),
 )
 
 #: index of each name in the packed vector
@@ -128,6 +134,7 @@ _K_SAT, _TAU_SAT, _K_STEP, _T_STEP, _W_STEP = (EXTENSION_INDEX[k] for k in
                                               ("k_sat", "tau_sat", "k_step", "t_step", "w_step"))
 _USE_LOAD, _L0, _K_L = (EXTENSION_INDEX[k] for k in ("use_load", "L0", "k_L"))
 _P_CYC, _K_C1 = (EXTENSION_INDEX[k] for k in ("P_cyc", "k_c1"))
+_F_E, _A_E = (EXTENSION_INDEX[k] for k in ("f_e", "a_e"))
 _NK = POSITION_KNOTS
 _TWO_PI = 2.0 * math.pi
 
@@ -285,7 +292,8 @@ def extension_force(F, v, a, x, load, t, e):
         F = F * (1.0 + _drift_m(t, e))
     if e[_USE_POS] > 0.5:  # position: knots, waviness, local defect
         F = F * (1.0 + _position_m(x, e))
-    if e[_USE_ACC] > 0.5:  # acceleration: grows with |a|, weighted along |v|
+    if e[_USE_ACC] > 0.5:  # acceleration: grows with |a|, weighted along |v|; a level part
+        F = F * (1.0 + e[_F_E] * max(abs(a) - e[_A_E], 0.0))
         F = F + e[_F_A] * math.tanh(a / e[_A_S]) * _acc_weight(abs(v) / e[_V_C], e[_M_A])
     return F
 
@@ -324,7 +332,10 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
                                      f"[{'m/s^2' if k == 'a_s' else 'm/s'}]")
             if not p.get("m_a", 0.0) >= 0:
                 raise ValueError(f"m_a = {p['m_a']!r} is out of bounds: must be >= 0 [-]")
-            for k in ("f_a", "a_s", "v_c", "m_a"):
+            if not p.get("a_e", 0.0) >= 0:
+                raise ValueError(f"a_e = {p['a_e']!r} is out of bounds: must be >= 0 "
+                                 f"[m/s^2]")
+            for k in ("f_a", "a_s", "v_c", "m_a", "f_e", "a_e"):
                 e[ix[k]] = p.get(k, e[ix[k]])
         elif name == "position":
             e[ix["use_pos"]] = 1.0

@@ -182,6 +182,18 @@ def test_stroke_map_and_drift_forms_are_the_documented_formulas():
     assert not np.any(drift_change(t, e))
 
 
+def test_acceleration_level_part_is_even_in_a_and_starts_at_its_onset():
+    # F (1 + f_e max(|a| - a_e, 0)) beside the odd part: braking raises the level as
+    # accelerating does; a negative onset is refused by name
+    from friction.extensions import extension_force
+    e = pack_extensions({"acceleration": {"f_a": 0.0, "a_s": 1.0, "v_c": 1.0,
+                                          "f_e": 0.2, "a_e": 0.5}})
+    for a, want in ((0.3, 2.0), (-0.3, 2.0), (1.5, 2.0 * 1.2), (-1.5, 2.0 * 1.2)):
+        assert extension_force(2.0, 0.1, a, 0.0, 1.0, 0.0, e) == pytest.approx(want)
+    with pytest.raises(ValueError, match="a_e = -0.1 is out of bounds"):
+        pack_extensions({"acceleration": {"f_a": 0.0, "a_s": 1.0, "v_c": 1.0, "a_e": -0.1}})
+
+
 @pytest.mark.slow
 def test_clean_records_across_the_plants_get_no_name(tmp_path):
     # 40 clean records (the benchmark script runs 500): truth 10 x finer, sampled at the
@@ -209,6 +221,12 @@ def test_an_acceleration_part_that_is_a_mass_term_defers_to_inertia():
     assert to == "inertia" and "mass term" in why
     fading = dict(mass_like, a_s=0.3 * ctx.sa, v_c=0.2 * ctx.sv)
     assert acc.defers(fading, fit, ctx) == ("", "")
+    # a small mass-like odd part beside a level part raised by |a| (it follows the
+    # direction of sliding, not the sign of a): the candidate is no mass term
+    level = dict(mass_like, f_a=0.05, f_e=0.5 / ctx.sa, a_e=0.0)
+    fit_F = Dataset.from_arrays(t, np.sign(v) + 0.01 * v, x=fit.x, v=v, a=a)
+    assert acc.defers(level, fit_F, ctx) == ("", "")
+    assert acc.defers(dict(level, f_e=0.0), fit_F, ctx)[0] == "inertia"
     with pytest.raises(ValueError, match="a_s"):
         acc.defers(dict(mass_like, a_s=0.0), fit, ctx)
     # the other candidates never defer

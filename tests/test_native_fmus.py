@@ -332,7 +332,8 @@ def test_effects_block_equals_the_formula(ndir):
     # every part of the stroke map (knots, waviness, local defect) and of the drift (trend,
     # saturating change, step, periodic part); the acceleration part's weight peaking away
     # from standstill
-    e = pack_extensions({"acceleration": {"f_a": 0.3, "a_s": 2.0, "v_c": 0.01, "m_a": 1.7},
+    e = pack_extensions({"acceleration": {"f_a": 0.3, "a_s": 2.0, "v_c": 0.01, "m_a": 1.7,
+                                          "f_e": 0.05, "a_e": 1.5},
                          "position": {"c_x3": 0.2, "c_x7": -0.1, "lambda_x": 0.007,
                                       "p_c1": 0.1, "p_s1": -0.2, "p_c2": 0.05, "p_s2": 0.03,
                                       "d_x": 0.3, "x_d": 0.04, "w_d": 0.01},
@@ -360,6 +361,7 @@ def test_effects_block_equals_the_formula(ndir):
         t += h
     assert s.set("a_s", 0.0) == 3 and "a_s > 0" in s.errors()[-1]
     assert s.set("m_a", -0.5) == 3 and "m_a >= 0" in s.errors()[-1]
+    assert s.set("a_e", -0.5) == 3 and "a_e >= 0" in s.errors()[-1]
     assert s.set("m_a", 0.0) == 0  # seed 000's weight, exp(-|v| / v_c)
     s.close()
 

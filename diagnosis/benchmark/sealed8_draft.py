@@ -49,8 +49,8 @@ inertia            ``freewheel_flywheel``: a rotating part driven through an ove
                    coasts, or reverses, the clutch overruns and the part spins down on
                    its own bearing
 delay              ``running_median``: the force transmitter's causal running median over
-                   2 ``s`` + 1 samples (a spike filter, Tukey 1977): monotone stretches
-                   come ``s`` samples late, steps keep their edges, peaks are clipped
+                   the last ``s`` samples (a spike filter, Tukey 1977): monotone stretches
+                   come ``s`` / 2 samples late, steps keep their edges, peaks are clipped
 drift              ``antioxidant_depletion``: the oil's antioxidant is consumed over an
                    induction period, after which the oil oxidises autocatalytically
                    (Denisov; Rasberger 1997; the RPVOT induction time of ASTM D2272): the
@@ -59,11 +59,11 @@ backlash           ``slack_chain``: drive and contact joined by a chain loop who
                    strands sag as catenaries (Irvine 1981): across the slack the contact
                    is pulled by the difference of the two strands' catenary tensions,
                    ~ 1 / sqrt(slack), which rises steeply as a strand goes taut
-gms                ``bond_rupture``: adhesive junctions that form at rest at a rate,
-                   stretch elastically with the sliding and rupture at a critical stretch
+gms                ``bond_rupture``: adhesive contacts that bond unstretched, stretch
+                   elastically with the sliding and rupture at their own critical stretch
                    (Schallamach 1963; Filippov, Klafter and Urbakh 2004) beside the LuGre
-                   bristle: a bond drops its force when it breaks and a new one forms
-                   unstretched; at ``s`` = 0 the base itself
+                   bristle: a bond drops its force when it breaks and bonds again,
+                   unstretched, a moment later; at ``s`` = 0 the base itself
 =================  =====================================================================
 
 Where a form applies: as its effect's record (``truth_applies``); ``contact_resonance``
@@ -84,9 +84,9 @@ from friction.shapes import SHAPES, stribeck_g
 
 from ..effects_backlash import PLANT_GAP_SHARE
 from .kinematics import PlantKinematics
-from .truths import (_base_parts, _bump_centre, _contact_constants, _lag,
-                     _level, _lugre_params, _motion_time, _presliding_path, _smooth_max0,
-                     _span, level_inside, on_fine_grid)
+from .truths import (_base_parts, _bump_centre, _contact_constants, _lag, _level,
+                     _lugre_params, _motion_time, _presliding_path, _smooth_max0, _span,
+                     level_inside, on_fine_grid)
 
 __all__ = ["FORMS", "pitch_squeeze_truth", "hydrostatic_overload_truth", "sprag_strut_truth",
            "contact_resonance_truth", "telescopic_cover_truth", "freewheel_flywheel_truth",
@@ -498,28 +498,41 @@ def freewheel_flywheel_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: longest delay of ``running_median`` [samples]: the candidate's reach
-#: (:attr:`diagnosis.candidates.Delay.MAX_SAMPLES`; the open forms stop at
+#: longest window of ``running_median`` [samples]: a delay of 25 samples, the candidate's
+#: reach (:attr:`diagnosis.candidates.Delay.MAX_SAMPLES`; the open forms stop at
 #: :data:`.truths.MAX_DELAY_SAMPLES`, 20, but a median, which cuts the reversals' peaks
-#: that a shift keeps, needs 22 samples for the full size on the valve's 20 kHz record)
-MEDIAN_MAX_SAMPLES = 25.0
+#: that a shift keeps, needs a delay of 22 samples for the full size on the valve's 20 kHz
+#: record)
+MEDIAN_MAX_WINDOW = 50.0
+
+
+def _causal_median(F, half: int) -> np.ndarray:
+    """The causal running median of ``F`` over its last 2 ``half`` + 1 values (the first
+    value held before the start): ramps come ``half`` points late; ``half`` <= 0: ``F``."""
+    from scipy.ndimage import median_filter
+    if half <= 0:
+        return np.asarray(F, float)
+    # origin = half puts the window on the last values (output k: inputs k - 2 half .. k)
+    return median_filter(np.asarray(F, float), size=2 * half + 1, origin=half,
+                         mode="nearest")
 
 
 @on_fine_grid
 def running_median_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """The force channel through a causal running median (a spike filter in the force
-    transmitter): each output is the median of the last 2 d + 1 values of the continuous
-    force, d = ``s`` data samples (at most :data:`MEDIAN_MAX_SAMPLES`; on the fine grid, to
-    a tenth of a sample). Monotone stretches come d samples late, as through a
-    shift; steps keep their sharp edges (d late); peaks and short spikes, shorter than d,
-    are cut off. At ``s`` = 0 the force itself.
+    transmitter): each output is the median of the continuous force over the last ``s``
+    data samples (at most :data:`MEDIAN_MAX_WINDOW`; on the fine grid, to a tenth of a
+    sample, the window's points an odd count). Monotone stretches come ``s`` / 2 samples
+    late, as through a shift; steps keep their sharp edges (``s`` / 2 late); peaks and
+    short spikes, shorter than ``s`` / 2, are cut off. At ``s`` = 0 the force itself.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (its step ``kin.step`` per data sample) and its base law.
     s : float
-        Amplitude factor [-]: the delay of monotone stretches [data samples].
+        Amplitude factor [-]: the window's length [data samples], twice the delay of
+        monotone stretches.
 
     Returns
     -------
@@ -530,20 +543,16 @@ def running_median_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     -----
     Running medians (Tukey 1977, Exploratory Data Analysis; Gallagher and Wise 1981, the
     root signals of median filters), the spike and impulse filters of weighing and force
-    transmitters. The open forms delay by one amount (a shift, held samples), filter
-    linearly (a lag, Bessel, a moving average, a converter's FIR, a line's echoes), let the
-    delay drift, wander or grow with the rate, or shift the motion; this one is a
-    non-linear, rank-order filter: its delay is exact on ramps, it keeps edges that every
-    linear filter rounds, and it flattens the force's reversal peaks.
+    transmitters, set by their window's length. The open forms delay by one amount (a
+    shift, held samples), filter linearly (a lag, Bessel, a moving average, a converter's
+    FIR, a line's echoes), let the delay drift, wander or grow with the rate, or shift the
+    motion; this one is a non-linear, rank-order filter: its delay is exact on ramps, it
+    keeps edges that every linear filter rounds, and it flattens the force's reversal
+    peaks.
     """
-    from scipy.ndimage import median_filter
     F, _ = _base_parts(kin)
-    half = int(round(min(max(float(s), 0.0), MEDIAN_MAX_SAMPLES) * kin.step))
-    if half <= 0:
-        return F
-    n = 2 * half + 1
-    # origin = half puts the window on the last n values (output k: inputs k - 2 half .. k)
-    return median_filter(F, size=n, origin=half, mode="nearest")
+    return _causal_median(F, int(round(0.5 * min(max(float(s), 0.0), MEDIAN_MAX_WINDOW)
+                                       * kin.step)))
 
 
 # -- drift -----------------------------------------------------------------------------------
@@ -709,66 +718,54 @@ def slack_chain_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: rupture stretch of ``bond_rupture``'s bonds beyond the base bristle's path, as a share of
-#: the stroke / 3 [-]; the bonds' share of the friction at strength 1 [-]; their formation rate, x v99 / the rupture stretch [-]; bins of anchors per rupture
-#: stretch [-]; slip over which the bonds' strength follows the Stribeck level, x the
-#: rupture stretch [-]
-PRESLIDING_SHARE, BOND_SHARE, BOND_RATE, BOND_BINS, BOND_STRENGTH_RUN = (0.05, 0.5, 20.0,
-                                                                         32, 0.1)
+#: mean rupture stretch of ``bond_rupture``'s bonds beyond the base bristle's path, as a
+#: share of the stroke / 3 [-]; the spread of the contacts' rupture stretches, +- this share
+#: of the mean [-]; the bonds' share of the friction at strength 1 [-]; a broken contact's
+#: time to bond again, x the mean rupture stretch / v99 [-]; the contacts [-]; the slip
+#: over which the bonds' strength follows the Stribeck level, x the mean rupture stretch
+#: [-]
+PRESLIDING_SHARE, BOND_SPREAD, BOND_SHARE = 0.05, 0.5, 0.5
+BOND_WAIT, BOND_CONTACTS, BOND_STRENGTH_RUN = 0.02, 256, 0.1
 
 
 @njit(cache=True)
-def _bonds(t, x, g, lc, k_on, nbin, run):
-    """Mean relative force [-] of adhesive bonds along the positions ``x`` [m] (times ``t``
-    [s]) and their strength [N]: the bonded share N of the sites, anchored where they
-    formed, each pulling with its stretch x - anchor (elastic) and breaking when |stretch|
-    reaches ``lc`` [m]; free sites bond at the rate ``k_on`` [1/s] at the current position,
-    unstretched. The anchors are binned on ``nbin`` bins per ``lc`` (each bin keeps its mass
-    and mean anchor), the motion sub-stepped to at most a bin. The force is the bonds'
-    summed stretch / (lc / 2) (1 in slow steady sliding, all sites bonded); the strength
-    follows the Stribeck levels ``g`` [N] over the slip ``run`` [m]. Starts all bonded,
-    unstretched, at the first level."""
+def _bonds(t, x, g, thr, wait, run):
+    """Mean relative force [-] of adhesive contacts along the positions ``x`` [m] (times
+    ``t`` [s]) and their strength [N]: each contact, bonded, pulls with its stretch x -
+    anchor (elastic; the anchor where it bonded) and breaks when |stretch| reaches its own
+    rupture stretch (``thr`` [m], one per contact); broken, it bonds again, unstretched at
+    the current position, ``wait`` [s] later. The force is the bonded contacts' summed
+    stretch / (count x mean(thr) / 2) (1 in slow steady sliding); the motion is sub-stepped
+    to a 32nd of the mean rupture stretch. The strength follows the Stribeck levels ``g``
+    [N] over the slip ``run`` [m]. Starts all bonded, unstretched, at the first level."""
     n = x.size
-    d = lc / nbin
-    lo = np.min(x) - lc - 4.0 * d
-    nb = int((np.max(x) + lc + 4.0 * d - lo) / d) + 2
-    mass = np.zeros(nb)
-    anch = np.zeros(nb)            # mass x mean anchor of each bin [m]
-    b0 = int((x[0] - lo) / d)
-    mass[b0] = 1.0
-    anch[b0] = x[0]
-    bonded = 1.0
+    nc = thr.size
+    lc = np.mean(thr)
+    anchor = np.full(nc, x[0])
+    bonded = np.ones(nc, dtype=np.bool_)
+    broke = np.zeros(nc)
     f = np.zeros(n)
     G = np.empty(n)
     G[0] = g[0]
     for k in range(1, n):
         dx = x[k] - x[k - 1]
-        dt = t[k] - t[k - 1]
-        m = max(1, int(math.ceil(abs(dx) / d)))
-        p_on = -math.expm1(-k_on * dt / m)
+        m = max(1, int(math.ceil(32.0 * abs(dx) / lc)))
         for j in range(1, m + 1):
             xc = x[k - 1] + dx * j / m
-            ib = int((xc - lo) / d)
-            # rupture: only bins near the window's edges can reach the critical stretch
-            for b in (ib - nbin - 2, ib - nbin - 1, ib - nbin, ib - nbin + 1,
-                      ib + nbin - 1, ib + nbin, ib + nbin + 1, ib + nbin + 2):
-                if 0 <= b < nb and mass[b] > 0.0:
-                    if abs(xc - anch[b] / mass[b]) >= lc:
-                        bonded -= mass[b]
-                        mass[b] = 0.0
-                        anch[b] = 0.0
-            # formation at the current position, unstretched
-            dm = (1.0 - bonded) * p_on
-            if dm > 0.0:
-                mass[ib] += dm
-                anch[ib] += dm * xc
-                bonded += dm
-        ib = int((x[k] - lo) / d)
+            tc = t[k - 1] + (t[k] - t[k - 1]) * j / m
+            for i in range(nc):
+                if bonded[i]:
+                    if abs(xc - anchor[i]) >= thr[i]:
+                        bonded[i] = False
+                        broke[i] = tc
+                elif tc - broke[i] >= wait:
+                    bonded[i] = True
+                    anchor[i] = xc
         acc = 0.0
-        for b in range(max(ib - nbin - 2, 0), min(ib + nbin + 3, nb)):
-            if mass[b] > 0.0:
-                acc += mass[b] * x[k] - anch[b]
-        f[k] = acc / (0.5 * lc)
+        for i in range(nc):
+            if bonded[i]:
+                acc += x[k] - anchor[i]
+        f[k] = acc / (0.5 * nc * lc)
         G[k] = g[k] + (G[k - 1] - g[k]) * math.exp(-abs(dx) / run)
     return f, G
 
@@ -776,14 +773,16 @@ def _bonds(t, x, g, lc, k_on, nbin, run):
 @on_fine_grid
 def bond_rupture_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """Presliding by the kinetics of adhesive bonds beside the bristle: a share w =
-    min(:data:`BOND_SHARE` ``s``, 1) of the friction is carried by junction bonds that form
-    at free sites at the rate k_on = :data:`BOND_RATE` v99 / l_c, anchored unstretched where
-    they form, stretch elastically with the sliding and rupture when their stretch reaches
-    l_c = the base bristle's path Fs / sigma0 plus :data:`PRESLIDING_SHARE` x the stroke /
-    3 (:func:`_bonds`). Their summed stretch, over its value in slow steady
-    sliding, is scaled by their strength G, which follows the base's Stribeck level g(v)
-    over a slip of :data:`BOND_STRENGTH_RUN` l_c, plus the viscous term; the rest by the
-    base's LuGre: F = (1 - w) F_lugre + w (G f + sigma2 v). At ``s`` = 0 the base itself.
+    min(:data:`BOND_SHARE` ``s``, 1) of the friction is carried by :data:`BOND_CONTACTS`
+    contacts that bond to the counter-surface, unstretched where they bond, stretch
+    elastically with the sliding and rupture when their stretch reaches their own rupture
+    stretch (spread evenly over 1 +- :data:`BOND_SPREAD` times the mean l_c = the base
+    bristle's path Fs / sigma0 plus :data:`PRESLIDING_SHARE` x the stroke / 3); a broken
+    contact bonds again after :data:`BOND_WAIT` l_c / v99 (:func:`_bonds`). Their summed
+    stretch, over its value in slow steady sliding, is scaled by their strength G, which
+    follows the base's Stribeck level g(v) over a slip of :data:`BOND_STRENGTH_RUN` l_c,
+    plus the viscous term; the rest by the base's LuGre: F = (1 - w) F_lugre + w (G f +
+    sigma2 v). At ``s`` = 0 the base itself.
 
     Parameters
     ----------
@@ -801,16 +800,17 @@ def bond_rupture_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Schallamach 1963 (a theory of dynamic rubber friction: molecular bonds that form,
-    stretch and break); Chernyak and Leonov 1986; Filippov, Klafter and Urbakh 2004
-    (friction through the dynamical formation and rupture of molecular bonds). Maxwell-slip
-    (the candidate, ``maxwell4``, ``maxwell10``) and the Mindlin contacts are elements
-    that slip holding their force, Dahl, Bouc-Wen and Bliman-Sorine path laws,
-    elasto-plastic an elastic range, the Zener junction and the rate-and-state interface
-    rate-dependent creep, the Tomlinson contacts multistable tips in a fixed potential;
-    here the elements are born and die: a bond drops its whole force when it ruptures and
-    is replaced by a new, unstretched one after a time, so the contact's stiffness after a
-    reversal is that of the bonds alive, and sites that bond while it rests stiffen it.
+    Schallamach 1963 (a theory of dynamic rubber friction: bonds that form, stretch and
+    break); Chernyak and Leonov 1986; Filippov, Klafter and Urbakh 2004 (friction through
+    the dynamical formation and rupture of molecular bonds, with a spread of the bonds'
+    strengths). Maxwell-slip (the candidate, ``maxwell4``, ``maxwell10``) and the Mindlin
+    contacts are elements that slip holding their force, Dahl, Bouc-Wen and Bliman-Sorine
+    path laws, elasto-plastic an elastic range, the Zener junction and the rate-and-state
+    interface rate-dependent creep, the Tomlinson contacts multistable tips in a fixed
+    potential; here the elements are born and die: a bond drops its whole force when it
+    ruptures, in either direction, and is replaced by an unstretched one a moment later, so
+    after a reversal the contacts unload along their own stretch and break again only
+    beyond the opposite rupture stretch.
     """
     p = _lugre_params(kin, "gms (bond_rupture)")
     F, _ = _base_parts(kin)
@@ -819,10 +819,11 @@ def bond_rupture_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     # the bonds are what they are at any strength: ``s`` sets their share
     e0, extra = _presliding_path(kin, 1.0, PRESLIDING_SHARE)
     lc = e0 + extra
+    thr = lc * (1.0 + BOND_SPREAD * (2.0 * (np.arange(BOND_CONTACTS) + 0.5) / BOND_CONTACTS
+                                     - 1.0))
     w = min(BOND_SHARE * float(s), 1.0)
     v = np.ascontiguousarray(kin.v, dtype=float)
-    k_on = BOND_RATE * max(kin.scales["v99"], 1e-12) / lc
     f, G = _bonds(np.ascontiguousarray(kin.t, dtype=float),
-                  np.ascontiguousarray(kin.x, dtype=float), kin.base.g(v), lc, k_on,
-                  BOND_BINS, BOND_STRENGTH_RUN * lc)
+                  np.ascontiguousarray(kin.x, dtype=float), kin.base.g(v), thr,
+                  BOND_WAIT * lc / max(kin.scales["v99"], 1e-12), BOND_STRENGTH_RUN * lc)
     return (1.0 - w) * F + w * (G * f + float(p.sigma2) * v)

@@ -2,10 +2,10 @@
  *
  * e[] is the packed vector of friction.extensions.EXTENSION_PARAMS (the generator writes the
  * FL_E_* indices into fl_model.h from that one Python list): switches use_* (0 or 1), the
- * acceleration part (f_a, a_s, v_c, m_a), the position map (x_lo, x_hi, c_x1.., the waviness
- * lambda_x, p_c1, p_s1, p_c2, p_s2 and the local defect d_x, x_d, w_d), the drift (k_drift,
- * t0, T, k_sat, tau_sat, k_step, t_step, w_step and the periodic part P_cyc, k_c1, k_s1,
- * k_c2, k_s2) and the load levels (L0, k_L). */
+ * acceleration part (f_a, a_s, v_c, m_a and its level part f_e, a_e), the position map
+ * (x_lo, x_hi, c_x1.., the waviness lambda_x, p_c1, p_s1, p_c2, p_s2 and the local defect
+ * d_x, x_d, w_d), the drift (k_drift, t0, T, k_sat, tau_sat, k_step, t_step, w_step and
+ * the periodic part P_cyc, k_c1, k_s1, k_c2, k_s2) and the load levels (L0, k_L). */
 #ifndef FL_EFFECTS_H
 #define FL_EFFECTS_H
 
@@ -96,9 +96,12 @@ static double fl_extension_force(double F, double v, double a, double x, double 
     }
     if (e[FL_E_USE_DRIFT] > 0.5) F = F * (1.0 + fl_drift_m(t, e));
     if (e[FL_E_USE_POS] > 0.5) F = F * (1.0 + fl_position_m(x, e));
-    if (e[FL_E_USE_ACC] > 0.5)  /* grows with |a|, weighted along |v| */
+    if (e[FL_E_USE_ACC] > 0.5) {  /* a level part even in a; grows with |a|, along |v| */
+        double over = fabs(a) - e[FL_E_A_E];
+        F = F * (1.0 + e[FL_E_F_E] * (over > 0.0 ? over : 0.0));
         F = F + e[FL_E_F_A] * tanh(a / e[FL_E_A_S])
                 * fl_acc_weight(fabs(v) / e[FL_E_V_C], e[FL_E_M_A]);
+    }
     return F;
 }
 

@@ -227,6 +227,10 @@ def test_an_acceleration_part_that_is_a_mass_term_defers_to_inertia():
     fit_F = Dataset.from_arrays(t, np.sign(v) + 0.01 * v, x=fit.x, v=v, a=a)
     assert acc.defers(level, fit_F, ctx) == ("", "")
     assert acc.defers(dict(level, f_e=0.0), fit_F, ctx)[0] == "inertia"
+    # ... but a mass term with a smaller level part beside it (a gear stage's losses on its
+    # reflected inertia) is still the mass error
+    geared = dict(level, f_a=3.0, f_e=0.3 / ctx.sa)  # level part 0.3 x the odd part
+    assert acc.defers(geared, fit_F, ctx)[0] == "inertia"
     with pytest.raises(ValueError, match="a_s"):
         acc.defers(dict(mass_like, a_s=0.0), fit, ctx)
     # the other candidates never defer

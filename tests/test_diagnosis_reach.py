@@ -288,3 +288,27 @@ def test_base_basis_spans_what_the_base_parameters_change():
     assert np.linalg.norm(d - B @ (B.T @ d)) < 1e-2 * np.linalg.norm(d)
     ramp = t - t.mean()
     assert np.linalg.norm(ramp - B @ (B.T @ ramp)) > 0.9 * np.linalg.norm(ramp)
+
+
+def test_acceleration_start_keeps_its_level_part_only_where_the_odd_part_falls_short():
+    # levels raised by |a| whichever the sign of a (rolling elements that skid when the
+    # carriage accelerates or brakes): the odd part tanh(a / a_s) cannot follow them, the
+    # level part is kept. A seed-000 part the odd form reaches: the level part is pinned off
+    from diagnosis.candidates import Fixed
+    from diagnosis.effects import CANDIDATES, make_context
+    from friction.extensions import acceleration_weight
+    data = make_case("clean", 1.0, 0.0, n=6000)
+    ctx = make_context(data)
+    acc = CANDIDATES["acceleration"]
+    Ff = np.tanh(data.v / (0.05 * ctx.sv))  # the friction part follows the direction
+    rng = np.random.default_rng(7)
+    noise = 0.01 * rng.standard_normal(len(data))
+    skid = Ff * 0.3 * np.maximum(np.abs(data.a) - 0.5 * ctx.sa, 0.0) / ctx.sa
+    p = acc.start(data, Ff, skid + noise, ctx)
+    assert not isinstance(p["f_e"], Fixed)
+    assert p["f_e"] * ctx.sa == pytest.approx(0.3, rel=0.2)
+    assert p["a_e"] == pytest.approx(0.5 * ctx.sa)
+    seed000 = 0.3 * np.tanh(data.a / (0.3 * ctx.sa)) * acceleration_weight(data.v, ctx.sv)
+    q = acc.start(data, Ff, seed000 + noise, ctx)
+    assert isinstance(q["f_e"], Fixed) and q["f_e"] == 0.0
+    assert q["f_a"] == pytest.approx(0.3, rel=0.2)

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen6`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen7`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -236,6 +236,7 @@ _S3 = "diagnosis.benchmark.seen3:"
 _S4 = "diagnosis.benchmark.seen4:"
 _S5 = "diagnosis.benchmark.seen5:"
 _S6 = "diagnosis.benchmark.seen6:"
+_S7 = "diagnosis.benchmark.seen7:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -253,8 +254,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "flash_temperature": _S3 + "flash_temperature_truth",
                    "rolling_skid": _S4 + "rolling_skid_truth",
                    "moment_load": _S5 + "moment_load_truth",
-                   "cylinder_pressure": _S6 + "cylinder_pressure_truth"},
-           sealed={"motor_attraction": _S + "motor_attraction_truth"},
+                   "cylinder_pressure": _S6 + "cylinder_pressure_truth",
+                   "motor_attraction": _S7 + "motor_attraction_truth"},
+           sealed={"pitch_squeeze": _S + "pitch_squeeze_truth"},
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
@@ -267,8 +269,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "film_breakdown": _S3 + "film_breakdown_truth",
                    "junction_creep": _S4 + "junction_creep_truth",
                    "normal_vibration": _S5 + "normal_vibration_truth",
-                   "pivot_lever": _S6 + "pivot_lever_truth"},
-           sealed={"plastic_junctions": _S + "plastic_junctions_truth"},
+                   "pivot_lever": _S6 + "pivot_lever_truth",
+                   "plastic_junctions": _S7 + "plastic_junctions_truth"},
+           sealed={"hydrostatic_overload": _S + "hydrostatic_overload_truth"},
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
@@ -281,8 +284,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "thrust_bearing": _S3 + "thrust_bearing_truth",
                    "rod_seal_film": _S4 + "rod_seal_film_truth",
                    "ratchet_texture": _S5 + "ratchet_texture_truth",
-                   "spring_return": _S6 + "spring_return_truth"},
-           sealed={"tilted_pad": _S + "tilted_pad_truth"},
+                   "spring_return": _S6 + "spring_return_truth",
+                   "tilted_pad": _S7 + "tilted_pad_truth"},
+           sealed={"sprag_strut": _S + "sprag_strut_truth"},
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
                          "Stribeck curve shape: exponent, Lorentzian, a speed map",
@@ -295,8 +299,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "bimodal_roughness": _S3 + "bimodal_roughness_truth",
                    "log_weakening": _S4 + "log_weakening_truth",
                    "eyring_boundary": _S5 + "eyring_boundary_truth",
-                   "starved_film": _S6 + "starved_film_truth"},
-           sealed={"rubber_hysteresis": _S + "rubber_hysteresis_truth"},
+                   "starved_film": _S6 + "starved_film_truth",
+                   "rubber_hysteresis": _S7 + "rubber_hysteresis_truth"},
+           sealed={"contact_resonance": _S + "contact_resonance_truth"},
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -313,8 +318,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "transfer_film": _S3 + "transfer_film_truth",
                    "cogging": _S4 + "cogging_truth",
                    "preload_taper": _S5 + "preload_taper_truth",
-                   "oil_pocket": _S6 + "oil_pocket_truth"},
-           sealed={"end_cushion": _S + "end_cushion_truth"},
+                   "oil_pocket": _S6 + "oil_pocket_truth",
+                   "end_cushion": _S7 + "end_cushion_truth"},
+           sealed={"telescopic_cover": _S + "telescopic_cover_truth"},
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
@@ -326,8 +332,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "lossy_gearing": _S3 + "lossy_gearing_truth",
                    "basset_added_mass": _S4 + "basset_added_mass_truth",
                    "dispensing_mass": _S5 + "dispensing_mass_truth",
-                   "sliding_payload": _S6 + "sliding_payload_truth"},
-           sealed={"rattling_mass": _S + "rattling_mass_truth"},
+                   "sliding_payload": _S6 + "sliding_payload_truth",
+                   "rattling_mass": _S7 + "rattling_mass_truth"},
+           sealed={"freewheel_flywheel": _S + "freewheel_flywheel_truth"},
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
@@ -340,8 +347,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "fieldbus_hold": _S3 + "fieldbus_hold_truth",
                    "clock_skew": _S4 + "clock_skew_truth",
                    "timing_jitter": _S5 + "timing_jitter_truth",
-                   "slew_limit": _S6 + "slew_limit_truth"},
-           sealed={"pressure_line": _S + "pressure_line_truth"},
+                   "slew_limit": _S6 + "slew_limit_truth",
+                   "pressure_line": _S7 + "pressure_line_truth"},
+           sealed={"running_median": _S + "running_median_truth"},
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
@@ -355,8 +363,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "humidity_cycle": _S3 + "humidity_cycle_truth",
                    "third_body": _S4 + "third_body_truth",
                    "interval_lubrication": _S5 + "interval_lubrication_truth",
-                   "seal_relaxation": _S6 + "seal_relaxation_truth"},
-           sealed={"tribo_oxide": _S + "tribo_oxide_truth"},
+                   "seal_relaxation": _S6 + "seal_relaxation_truth",
+                   "tribo_oxide": _S7 + "tribo_oxide_truth"},
+           sealed={"antioxidant_depletion": _S + "antioxidant_depletion_truth"},
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),
@@ -368,8 +377,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "eccentric_gear": _S3 + "eccentric_gear_truth",
                    "oil_filled_gap": _S4 + "oil_filled_gap_truth",
                    "worn_gap": _S5 + "worn_gap_truth",
-                   "drag_idler": _S6 + "drag_idler_truth"},
-           sealed={"biased_play": _S + "biased_play_truth"},
+                   "drag_idler": _S6 + "drag_idler_truth",
+                   "biased_play": _S7 + "biased_play_truth"},
+           sealed={"slack_chain": _S + "slack_chain_truth"},
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
                         "Maxwell-slip)", "modify_law"),
@@ -381,8 +391,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "bouc_wen": _S3 + "bouc_wen_truth",
                    "zener_junction": _S4 + "zener_junction_truth",
                    "mindlin_contacts": _S5 + "mindlin_contacts_truth",
-                   "rate_state_presliding": _S6 + "rate_state_presliding_truth"},
-           sealed={"tomlinson_asperities": _S + "tomlinson_asperities_truth"},
+                   "rate_state_presliding": _S6 + "rate_state_presliding_truth",
+                   "tomlinson_asperities": _S7 + "tomlinson_asperities_truth"},
+           sealed={"bond_rupture": _S + "bond_rupture_truth"},
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 

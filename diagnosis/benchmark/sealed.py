@@ -1,12 +1,12 @@
-"""The seventh sealed truth family: one more mechanism per effect, kept out of all tuning.
+"""The eighth sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-11-28 (session 12), once, without running the diagnosis on it; sealed: not run.
+Written 2026-11-28 (session 13), once, without running the diagnosis on it; sealed: not run.
 It is run only at the end of a piece of work and reported apart from the open grid
 (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family sealed
-before it, session 11's, was run once in session 12 and is :mod:`.seen6`). Once its results
-have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen6` did. Each form is a
+before it, session 12's, was run once in session 13 and is :mod:`.seen7`). Once its results
+have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen7` did. Each form is a
 mechanism of other physics than every form of its effect so far (:mod:`.truths`,
-:mod:`.forms`, :mod:`.seen` to :mod:`.seen6`,
+:mod:`.forms`, :mod:`.seen` to :mod:`.seen7`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`), taken from the friction literature or from real
 machines, integrated along the plant's continuous motion on the grid :data:`.kinematics.FINE`
@@ -18,58 +18,59 @@ amplitude monotonically from the base law at ``s`` = 0 (its calibration,
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``motor_attraction``: an iron-core linear motor's magnets pull the
-                   carriage onto its guides, and the armature current adds to that pull
-                   as its square (Gieras and Piech 2000): the current of the thrust
-                   m a + F raises the guides' levels above what the friction current
-                   alone draws: up when accelerating, hardly (or down) when braking
-load               ``plastic_junctions``: the real contact area grows plastically with
-                   the load at once (Bowden and Tabor 1950) but recovers only
-                   elastically when it falls, so the junctions keep the largest load
-                   until sliding renews them (over a tenth of the record's travel): the
-                   levels follow the load up at once and down with the travel
-asymmetry          ``tilted_pad``: a fixed-incline slider pad (Reynolds 1886): sliding
-                   into the converging gap (v > 0) drags oil into a load-carrying wedge,
-                   the film thickens as sqrt(|v|) and the asperities are unloaded; the
-                   other way the gap diverges and nothing lifts: the positive
-                   direction's levels and viscous drag fall with the speed
-stribeck_shape     ``rubber_hysteresis``: an elastomer seal's hysteresis friction
-                   (Grosch 1963): the asperities excite the rubber at v / lambda and it
-                   dissipates by its loss peak (broadened as Cole and Cole 1941): a hump
-                   of the curve in the middle of the log-speed range, nothing at rest
-position           ``end_cushion``: a hydraulic cylinder's end-position cushioning: past
-                   the cushion's entry the outflow is throttled through a tapering gap
-                   (an orifice, force ~ v^2 / area^2) while moving into the end, and
-                   bypassed by a check valve coming out: a drag in one zone of the
-                   stroke and one direction
-inertia            ``rattling_mass``: a loose part in a pocket with rubber bumpers (an
-                   impact damper, Masri and Caughey 1966): pressed against a bumper it
-                   is a missed mass, it floats across the clearance when the
-                   acceleration changes sign and lands on the other bumper
-delay              ``pressure_line``: the force read as a pressure at the closed end of a
-                   sensing line (Nichols 1962): the wave arrives after the line's
-                   transit time and echoes between the transducer and the chamber,
-                   attenuated by half per round trip: a transport delay with ringing
-drift              ``tribo_oxide``: oxidational wear (Quinn 1962): an oxide film grows
-                   on the contact plateaus parabolically in time and lowers the levels,
-                   then spalls off at its critical thickness (twice in the record) and
-                   the metal's levels return at once
-backlash           ``biased_play``: a play whose contact is biased by a constant force
-                   (a weight, a return spring) smaller than its friction: across the
-                   play the contact holds the bias, so after both reversals the force
-                   waits at the same level, the bias's, for the flank
-gms                ``tomlinson_asperities``: an ensemble of asperity contacts pinned in
-                   a corrugated potential (Prandtl 1928, Tomlinson 1929; Caroli and
-                   Nozieres 1998) beside the LuGre bristle: each loads elastically on
-                   its branch, snaps to the next at an elastic instability and drops
-                   force; at ``s`` = 0 the base itself
+acceleration       ``pitch_squeeze``: a carriage on oil-lubricated plain slideways tilts
+                   on its films under the acceleration's moment, the films' squeeze
+                   damping making the tilt lag (Reynolds 1886, the squeeze term): while
+                   the tilt changes, the closing film's squeeze pressure carries part of
+                   the load off the asperities: the levels fall with the tilt's rate,
+                   even in a, most where the acceleration changes
+load               ``hydrostatic_overload``: a hydrostatic pad carries the load on its
+                   film up to its capacity (supply pressure x effective area, Rowe 1983);
+                   above it the pad touches down and only the excess is carried by
+                   asperities with boundary friction: the levels follow max(L - W_c, 0),
+                   a hinge at the capacity
+asymmetry          ``sprag_strut``: the contact is pressed by an inclined strut (Spurr's
+                   sprag, 1961): the friction force drags the strut steeper one way
+                   (self-energising) and flatter the other: the levels are the base's
+                   / (1 - c F_f / F99), amplified where the friction is positive, more at
+                   its peaks, reduced where it is negative
+stribeck_shape     ``contact_resonance``: the surface's roughness (one wavelength)
+                   excites the slider's normal contact resonance at v / lambda (Tolstoi
+                   1967; Budanov, Kudinov and Tolstoi 1980): the normal vibration relieves
+                   the contact, most at the resonance speed: a notch in the curve with a
+                   shallower plateau beyond, nothing at rest
+position           ``telescopic_cover``: a telescopic way cover's sections are pulled out
+                   and pushed in one after the other, each adding its wipers' drag: the
+                   cover's drag is a staircase along the stroke that depends on the
+                   direction and on which sections the last travel moved
+inertia            ``freewheel_flywheel``: a rotating part driven through an overrunning
+                   (one-way) clutch: it is a missed mass only while the drive pushes it
+                   in the positive direction; when the drive slows faster than the part
+                   coasts, or reverses, the clutch overruns and the part spins down on
+                   its own bearing
+delay              ``running_median``: the force transmitter's causal running median over
+                   the last ``s`` samples (a spike filter, Tukey 1977): monotone stretches
+                   come ``s`` / 2 samples late, steps keep their edges, peaks are clipped
+drift              ``antioxidant_depletion``: the oil's antioxidant is consumed over an
+                   induction period, after which the oil oxidises autocatalytically
+                   (Denisov; Rasberger 1997; the RPVOT induction time of ASTM D2272): the
+                   levels and the viscous term stay, then rise exponentially in time
+backlash           ``slack_chain``: drive and contact joined by a chain loop whose slack
+                   strands sag as catenaries (Irvine 1981): across the slack the contact
+                   is pulled by the difference of the two strands' catenary tensions,
+                   ~ 1 / sqrt(slack), which rises steeply as a strand goes taut
+gms                ``bond_rupture``: adhesive contacts that bond unstretched, stretch
+                   elastically with the sliding and rupture at their own critical stretch
+                   (Schallamach 1963; Filippov, Klafter and Urbakh 2004) beside the LuGre
+                   bristle: a bond drops its force when it breaks and bonds again,
+                   unstretched, a moment later; at ``s`` = 0 the base itself
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``rubber_hysteresis``
-needs a Stribeck curve (not the isolator's mre_lugre), ``end_cushion`` a record that
-revisits its positions (not the press), ``plastic_junctions`` a load that changes,
-``biased_play`` and ``tomlinson_asperities`` a classic LuGre base (valve, damping rig,
-XML-350); each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
+Where a form applies: as its effect's record (``truth_applies``); ``contact_resonance``
+needs a Stribeck curve (not the isolator's mre_lugre), ``telescopic_cover`` a record that
+revisits its positions (not the press), ``hydrostatic_overload`` a load that changes,
+``slack_chain`` and ``bond_rupture`` a classic LuGre base (valve, damping rig, XML-350);
+each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
 
@@ -78,50 +79,55 @@ import math
 import numpy as np
 from numba import njit
 
+from friction.lugre import bristle_update
 from friction.shapes import SHAPES, stribeck_g
 
 from ..effects_backlash import PLANT_GAP_SHARE
 from .kinematics import PlantKinematics
-from .truths import (FIT_FRACTION, GAP_BIAS, MAX_DELAY_SAMPLES, _base_parts, _bump_centre,
-                     _contact_constants, _driven_contact, _level, _lugre_params, _motion_time,
-                     _presliding_path, _span, level_inside, on_fine_grid)
+from .truths import (_base_parts, _bump_centre, _contact_constants, _lag, _level,
+                     _lugre_params, _motion_time, _presliding_path, _smooth_max0, _span,
+                     level_inside, on_fine_grid)
 
-__all__ = ["FORMS", "motor_attraction_truth", "plastic_junctions_truth", "tilted_pad_truth",
-           "rubber_hysteresis_truth", "end_cushion_truth", "rattling_mass_truth",
-           "pressure_line_truth", "tribo_oxide_truth", "biased_play_truth",
-           "tomlinson_asperities_truth"]
+__all__ = ["FORMS", "pitch_squeeze_truth", "hydrostatic_overload_truth", "sprag_strut_truth",
+           "contact_resonance_truth", "telescopic_cover_truth", "freewheel_flywheel_truth",
+           "running_median_truth", "antioxidant_depletion_truth", "slack_chain_truth",
+           "bond_rupture_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "motor_attraction", "load": "plastic_junctions",
-         "asymmetry": "tilted_pad", "stribeck_shape": "rubber_hysteresis",
-         "position": "end_cushion", "inertia": "rattling_mass", "delay": "pressure_line",
-         "drift": "tribo_oxide", "backlash": "biased_play", "gms": "tomlinson_asperities"}
+FORMS = {"acceleration": "pitch_squeeze", "load": "hydrostatic_overload",
+         "asymmetry": "sprag_strut", "stribeck_shape": "contact_resonance",
+         "position": "telescopic_cover", "inertia": "freewheel_flywheel",
+         "delay": "running_median", "drift": "antioxidant_depletion",
+         "backlash": "slack_chain", "gms": "bond_rupture"}
 
 
 # -- acceleration ---------------------------------------------------------------------------
-#: inertial thrust of ``motor_attraction``'s moving mass at the top acceleration, x the
-#: 99th percentile of |friction| [-], and the attraction's share of the levels [-]
-THRUST_MASS, ATTRACTION = 2.0, 0.1
+#: time constant of ``pitch_squeeze``'s tilt (the films' squeeze damping over their
+#: stiffness), x the motion's time scale [-]; the levels' relief per unit of the squeeze
+#: film's load share at strength 1 [-]
+SQUEEZE_TIME, SQUEEZE_RELIEF = 0.3, 0.5
 
 
 @on_fine_grid
-def motor_attraction_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """An iron-core linear motor's normal attraction loading the guides: the motor's
-    current follows its thrust T = m a + F_f (the moving mass m, m a99 =
-    :data:`THRUST_MASS` F99, F99 the 99th percentile of the base's |friction| F_f), up to
-    the amplifier's current limit (a thrust of (:data:`THRUST_MASS` + 1) F99), and adds to
-    the magnets' pull as its square; the base law, identified at steady speed, carries the
-    pull of the friction current F_f alone. The Coulomb and Stribeck levels are the base's
-    times 1 + ``s`` :data:`ATTRACTION` (T^2 - F_f^2) / F99^2 (floored at 0.05), inside the
-    bristle dynamics; the viscous term is the base's.
+def pitch_squeeze_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Squeeze films of a tilting carriage on oil-lubricated plain slideways: the
+    acceleration's moment tilts the carriage on its films, and their squeeze damping makes
+    the tilt theta (in units of the acceleration) follow a through a first-order lag of
+    time constant tau = :data:`SQUEEZE_TIME` x the motion's time scale (v99 / a99). While
+    the tilt changes, the closing end's film carries a share u / (1 + u) of the load by its
+    squeeze pressure, u = |theta'| / q99 (theta' = (a - theta) / tau the tilt's rate, q99
+    its 99th percentile over the record), and unloads the asperities: the Coulomb and
+    Stribeck levels are the base's times 1 - ``s`` :data:`SQUEEZE_RELIEF` u / (1 + u)
+    (floored at 0.05), inside the bristle dynamics; the viscous term (the films' shear) is
+    the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (a [m/s^2]) and its base law.
+        The motion on the fine grid (t [s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the levels' rise per unit of the relative squared thrust,
-        / :data:`ATTRACTION`.
+        Amplitude factor [-]: the levels' relief per unit of the squeeze's load share, /
+        :data:`SQUEEZE_RELIEF`.
 
     Returns
     -------
@@ -130,65 +136,50 @@ def motor_attraction_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Normal (attraction) force of iron-core permanent-magnet linear synchronous motors,
-    growing with the armature current (Gieras and Piech 2000, Linear Synchronous Motors);
-    rolling-guide friction proportional to the normal load. The candidate is an odd,
-    lagged function of a fading with |v|; the open forms lag the velocity or a state,
-    heat the contact, skid rolling elements, move load between ball rows or press a seal
-    with a lagged |a| (even in a). Here the pull goes with the square of the whole
-    thrust: the acceleration's current adds to the friction's when accelerating
-    (a v > 0) and takes from it when braking, so the levels rise far more in acceleration
-    than in braking, instantly.
+    Reynolds 1886 (the squeeze term of the film equation: a closing film carries load
+    ~ eta dh/dt / h^3); Hamrock, Schmid and Jacobson 2004 (squeeze-film bearings); the
+    relief of asperity contacts by a film's load share (Johnson, Greenwood and Poon 1972).
+    The candidate is an odd, lagged function of a; the open forms lag the velocity or a
+    state, heat the contact, skid rolling elements, move load between ball rows
+    (``moment_load``: the same moment, through the rows' Hertzian loads, a function of |a|
+    itself), press a seal with a lagged |a| or pull the carriage with the thrust; here the
+    levels fall with the *rate* at which the tilt changes: not while a is large and steady,
+    but where it rises or falls, in acceleration and braking alike.
     """
-    F, Ff = _base_parts(kin)
-    F99 = max(float(np.percentile(np.abs(Ff), 99)), 1e-300)
-    m = THRUST_MASS * F99 / max(kin.scales["a99"], 1e-12)
-    # the amplifier's current limit: a speed step (the press's) asks for more than it gives
-    lim = (THRUST_MASS + 1.0) * F99
-    T = np.clip(m * np.asarray(kin.a, float) + Ff, -lim, lim)
-    lev = np.clip(1.0 + s * ATTRACTION * (T * T - Ff * Ff) / (F99 * F99), 0.05, None)
+    a = np.asarray(kin.a, float)
+    tau = SQUEEZE_TIME * _motion_time(kin)
+    rate = np.abs(a - _lag(np.asarray(kin.t, float), a, tau)) / tau
+    u = rate / max(float(np.percentile(rate, 99)), 1e-300)
+    lev = np.clip(1.0 - s * SQUEEZE_RELIEF * u / (1.0 + u), 0.05, None)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- load -------------------------------------------------------------------------------------
-#: travel over which ``plastic_junctions``' junctions are renewed, x the record's travel [-]
-JUNCTION_RUN = 0.1
-
-
-@njit(cache=True)
-def _junction_load(x, L, run):
-    """The load [N] the real contact area of plastic junctions corresponds to along the
-    positions ``x`` [m] under the load ``L`` [N]: it rises with the load at once (plastic
-    growth) and falls towards it only as the sliding renews the junctions, exponentially
-    over the travel ``run`` [m]; starts at the first load."""
-    n = x.size
-    a = np.empty(n)
-    c = L[0]
-    for k in range(n):
-        if k > 0:
-            c = L[k] + (c - L[k]) * math.exp(-abs(x[k] - x[k - 1]) / run)
-        if L[k] > c:
-            c = L[k]
-        a[k] = c
-    return a
+#: the pad's load capacity, as this percentile of the record's load [%]; the rounding of
+#: its touch-down, x the mean load [-]; the levels' slope in the asperities' load,
+#: relative to the mean load, at strength 1 [-]
+CAPACITY_PERCENTILE, TOUCHDOWN_ROUNDING, OVERLOAD_SLOPE = 40.0, 0.05, 0.8
 
 
 @on_fine_grid
-def plastic_junctions_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Plastic junctions: the real contact area is the load over the hardness while the
-    load rises (the area grows plastically at once), but an unloaded junction recovers only
-    elastically and keeps its area until sliding replaces it; the area's load L_a follows L
-    up at once and down exponentially over the travel :data:`JUNCTION_RUN` x the record's
-    travel. The Coulomb and Stribeck levels are the base's times 1 + ``s`` 0.6 (L_a - mean
-    L) / mean |L| (floored at 0.05), inside the bristle dynamics; the viscous term is the
-    base's. ValueError if the load does not change.
+def hydrostatic_overload_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A hydrostatic pad overloaded: its film carries the normal load L up to its capacity
+    W_c (the supply pressure times the pad's effective area; here the
+    :data:`CAPACITY_PERCENTILE` th percentile of the record's load), without boundary
+    friction; above it the pad touches down and the excess L - W_c is carried by the
+    asperities (rounded over :data:`TOUCHDOWN_ROUNDING` x the mean load: the pad's tilt).
+    The Coulomb and Stribeck levels are the base's times 1 + ``s``
+    :data:`OVERLOAD_SLOPE` (E - mean E) / mean |L|, E = max(L - W_c, 0) rounded (floored
+    at 0.05), inside the bristle dynamics; the viscous term is the base's. ValueError if
+    the load does not change.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m], load [N]) and its base law.
+        The motion on the fine grid (load [N]) and its base law.
     s : float
-        Amplitude factor [-]: the levels' slope in the area's relative load, / 0.6.
+        Amplitude factor [-]: the levels' slope in the asperities' load relative to the
+        mean load, / :data:`OVERLOAD_SLOPE`.
 
     Returns
     -------
@@ -197,50 +188,49 @@ def plastic_junctions_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Bowden and Tabor 1950 (real area of contact = load / hardness, plastic); elastic
-    unloading of plastically formed contacts (Johnson 1985, Contact Mechanics); junctions
-    renewed over a slip distance (Rabinowicz 1951). The candidate and the open forms are
-    laws of the load (affine, a power, one direction, the Stribeck velocity, a threshold),
-    of its rate, of a creep towards it in time or of a symmetric play; here the contact
-    remembers the largest load until it has slid far enough: a one-sided memory erased by
-    the travel, not by the clock.
+    Hydrostatic bearings: load capacity = recess pressure x effective area, limited by the
+    supply pressure (Rowe 1983, Hydrostatic and Hybrid Bearing Design); load sharing
+    between a film and asperity contacts (Johnson, Greenwood and Poon 1972). The candidate
+    and the open forms are laws of the load (affine, a power, one direction, the Stribeck
+    velocity, a logistic step where a boundary film breaks down), of its rate, of its
+    history or of the load through a play; here nothing of the load reaches the boundary
+    friction up to the capacity, and every newton above it does: a hinge, not a step.
     """
-    L = np.ascontiguousarray(kin.load, dtype=float)
+    L = np.asarray(kin.load, float)
     L0 = max(float(np.mean(np.abs(L))), 1e-12)
     # a change below 1e-6 of the mean load over the record is round-off, not a change
     if float(np.ptp(L)) <= 1e-6 * L0:
-        raise ValueError(f"load (plastic_junctions): the {kin.plant} record's load does "
+        raise ValueError(f"load (hydrostatic_overload): the {kin.plant} record's load does "
                          f"not change")
-    x = np.ascontiguousarray(kin.x, dtype=float)
-    travel = max(float(np.sum(np.abs(np.diff(x)))), 1e-300)
-    La = _junction_load(x, L, JUNCTION_RUN * travel)
-    lev = np.clip(1.0 + s * 0.6 * (La - float(np.mean(L))) / L0, 0.05, None)
+    Wc = float(np.percentile(L, CAPACITY_PERCENTILE))
+    E = _smooth_max0(L - Wc, TOUCHDOWN_ROUNDING * L0)
+    lev = np.clip(1.0 + s * OVERLOAD_SLOPE * (E - float(np.mean(E))) / L0, 0.05, None)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- asymmetry -------------------------------------------------------------------------------
-#: speed at which ``tilted_pad``'s wedge, at strength 1, carries as much load as the
-#: asperities, x v99 [-]
-LIFT_SPEED = 0.3
+#: ``sprag_strut``'s self-energising gain c per unit strength at small strengths [-], and
+#: the gain it approaches (below 1: the strut never locks) [-]
+SPRAG_GAIN, SPRAG_LOCK = 0.3, 0.95
 
 
 @on_fine_grid
-def tilted_pad_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A fixed-incline slider pad: sliding towards the converging gap (v > 0) the pad drags
-    oil into a wedge that carries load, the film's thickness grows as h / h0 = sqrt(1 +
-    q), q = ``s`` n(v) |v| / (:data:`LIFT_SPEED` v99), n(v) a smooth indicator of v > 0
-    (over 2 % of v99); the other way the gap diverges, the film cavitates and nothing
-    lifts. The asperities' share of the load falls as (h0 / h)^2: the Coulomb and Stribeck
-    levels are the base's times 1 / (1 + q); the film's shear as h0 / h: the viscous term
-    the base's times 1 / sqrt(1 + q); inside the bristle dynamics.
+def sprag_strut_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A contact pressed by an inclined strut (a sprag): the friction force F_f acts on the
+    strut and, sliding one way, drags it steeper and raises the normal force, the other way
+    flattens it: N / N0 = 1 / (1 - c F_f / F99) (quasi-static, F_f the base's friction at
+    N0, F99 the 99th percentile of |F_f|, F_f / F99 clipped to +-1), c = :data:`SPRAG_LOCK`
+    (1 - exp(-``s`` :data:`SPRAG_GAIN` / :data:`SPRAG_LOCK`)) < 1. The Coulomb and Stribeck
+    levels are the base's times N / N0, inside the bristle dynamics; the viscous term is
+    the base's. At ``s`` = 0 the base.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law.
+        The motion on the fine grid and its base law.
     s : float
-        Amplitude factor [-]: the wedge's load capacity relative to its value at strength
-        1 (the pad's tilt).
+        Amplitude factor [-]: the strut's self-energising gain, c ~ ``s``
+        :data:`SPRAG_GAIN` at small strengths.
 
     Returns
     -------
@@ -249,43 +239,55 @@ def tilted_pad_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Reynolds 1886 (the inclined slider: load capacity only for a converging film);
-    Hamrock, Schmid and Jacobson 2004 (Fundamentals of Fluid Film Lubrication: film
-    thickness of a slider ~ sqrt(eta U / W)). The candidate shifts a direction's levels
-    and viscous slope (and an offset); the open forms keep a direction's share at all
-    speeds, move its Stribeck velocity or viscous slope, add a low-speed tail, follow a
-    lip, a thrust, a film laid by the outstroke, a texture fading with the speed or a
-    spring along the stroke; here one direction's levels fall as a film lifts the pad,
-    more the faster it slides, and its viscous drag falls with them.
+    Spurr 1961 (the sprag-slip model of brake squeal: F = mu L / (1 - mu tan theta) for a
+    strut at angle theta); self-energising wedge and drum brakes (Roberts et al. 2003, the
+    electronic wedge brake). The candidate shifts a direction's levels and viscous slope
+    (and an offset); the open forms keep a direction's share at all speeds or move its
+    Stribeck velocity, viscous slope or low-speed tail, follow a lip, a thrust, a film, a
+    texture, a spring or a lifting wedge film; here the normal force follows the friction
+    force itself: one direction is amplified, more at the breakaway peak than in sliding,
+    the other is relieved, and presliding forces are amplified by their own sign.
     """
-    v99 = max(kin.scales["v99"], 1e-12)
-    v = np.asarray(kin.v, float)
-    pos = 0.5 * (1.0 + np.tanh(v / (0.02 * v99)))
-    q = max(float(s), 0.0) * pos * np.abs(v) / (LIFT_SPEED * v99)
-    return level_inside(kin, 1.0 / (1.0 + q), 1.0 / np.sqrt(1.0 + q))
+    _, Ff = _base_parts(kin)
+    F99 = max(float(np.percentile(np.abs(Ff), 99)), 1e-300)
+    c = SPRAG_LOCK * (1.0 - math.exp(-max(float(s), 0.0) * SPRAG_GAIN / SPRAG_LOCK))
+    lev = 1.0 / (1.0 - c * np.clip(Ff / F99, -1.0, 1.0))
+    return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- stribeck_shape --------------------------------------------------------------------------
-#: speed of ``rubber_hysteresis``' loss peak, x v99 [-], and the breadth of the rubber's
-#: relaxation spectrum (Cole-Cole exponent, 1: one relaxation time) [-]
-LOSS_PEAK_SPEED, LOSS_BREADTH = 0.1, 0.7
+#: ``contact_resonance``'s resonance speed (the roughness wavelength x the contact's
+#: normal natural frequency), x v99 [-]; the resonance's damping ratio [-]; the levels'
+#: relief at the resonance at strength 1 [-]
+RESONANCE_SPEED, RESONANCE_DAMPING, RESONANCE_RELIEF = 0.25, 0.15, 0.4
+
+
+def _transmissibility(r, zeta):
+    """The normal contact force's fluctuation [-] of a slider on a spring-damper contact
+    (damping ratio ``zeta``) following a harmonic roughness at the frequency ratio ``r``
+    [-], r^2 / sqrt((1 - r^2)^2 + (2 zeta r)^2), relative to its value at r = 1: 0 at rest,
+    about 1 at the resonance, 2 zeta far above it."""
+    r2 = r * r
+    return 2.0 * zeta * r2 / np.sqrt((1.0 - r2) ** 2 + (2.0 * zeta * r) ** 2)
 
 
 @on_fine_grid
-def rubber_hysteresis_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Hysteresis friction of an elastomer (a seal or wiper on the rail): its asperities
-    excite the rubber at the frequency |v| / lambda, and the rubber dissipates by its loss
-    peak at v_p = :data:`LOSS_PEAK_SPEED` v99, broadened by a spectrum of relaxation times
-    (u = |v| / v_p, Cole-Cole exponent beta = :data:`LOSS_BREADTH`): the curve gains ``s``
-    x 0.4 Fc 2 u^beta / (1 + u^(2 beta)), 0 at rest and at the highest speeds, most at
-    v_p, inside the bristle dynamics; the viscous term is the base's.
+def contact_resonance_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A normal contact resonance excited by the roughness: the slider rides a roughness of
+    one dominant wavelength lambda on the normal stiffness and damping of its contact, so
+    the sliding excites its normal mode at v / lambda, resonant at v_r =
+    :data:`RESONANCE_SPEED` v99 (damping ratio :data:`RESONANCE_DAMPING`); the normal
+    force's fluctuation (the slider's inertia, relative to its value at the resonance,
+    :func:`_transmissibility`) relieves the contact's mean friction: the Stribeck curve is
+    the base's times 1 - ``s`` :data:`RESONANCE_RELIEF` T(|v| / v_r) (floored at 0.05),
+    inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s]) and its base law (a Stribeck curve).
     s : float
-        Amplitude factor [-]: the hump's height at v_p, x 0.4 Fc.
+        Amplitude factor [-]: the relief at the resonance, / :data:`RESONANCE_RELIEF`.
 
     Returns
     -------
@@ -294,49 +296,99 @@ def rubber_hysteresis_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Grosch 1963 (rubber friction: a maximum over log speed that follows the rubber's loss
-    modulus, shifted by Williams-Landel-Ferry); Persson 2001 (hysteretic friction of rubber
-    on rough surfaces); Cole and Cole 1941 (a broadened relaxation peak). The candidate
-    bends the base's drop (an exponent, the Lorentzian, a log-speed map); the open forms
-    add tails, drops, a spike, a lift-off, a second drop, a logarithmic weakening, an
-    Eyring strengthening or a rise at the top speed; this one is a hump in the middle of
-    the speed range, with nothing at rest and a fall beyond it.
+    Tolstoi 1967 (significance of the normal degree of freedom and natural normal
+    vibrations in contact friction); Budanov, Kudinov and Tolstoi 1980 (interaction of
+    friction and vibration); base excitation of a single-degree-of-freedom system (the
+    transmitted force). The candidate bends the base's drop (an exponent, the Lorentzian,
+    a log-speed map); the open forms add tails, drops, a spike, a lift-off, a second drop,
+    a logarithmic weakening, an Eyring strengthening, a rise at the top speed or a hump of
+    rubber hysteresis; this one is a notch at one speed, sharp by the resonance's damping,
+    and a shallower plateau beyond it, with nothing at rest.
     """
     if kin.base.name == "mre_lugre":
-        raise ValueError("stribeck_shape (rubber_hysteresis): the mre_lugre base has no "
+        raise ValueError("stribeck_shape (contact_resonance): the mre_lugre base has no "
                          "Stribeck curve")
-    p = kin.base.params
     v = np.asarray(kin.v, float)
-    ub = (np.abs(v) / (LOSS_PEAK_SPEED * max(kin.scales["v99"], 1e-12))) ** LOSS_BREADTH
-    extra = 0.4 * float(p.Fc) * 2.0 * ub / (1.0 + ub * ub)
-    return level_inside(kin, 1.0 + s * extra / kin.base.g(v), np.ones_like(v))
+    r = np.abs(v) / (RESONANCE_SPEED * max(kin.scales["v99"], 1e-12))
+    lev = np.clip(1.0 - s * RESONANCE_RELIEF * _transmissibility(r, RESONANCE_DAMPING),
+                  0.05, None)
+    return level_inside(kin, lev, np.ones_like(v))
 
 
 # -- position --------------------------------------------------------------------------------
-#: where ``end_cushion``'s spear enters: this percentile of the held-out positions the fit
-#: part also visits [%]; its throttle's area closes by this share at the stroke's end [-];
-#: the drag at v99 at the entry, x the friction level [-]
-CUSHION_ENTRY, CUSHION_TAPER, CUSHION_FORCE = 75.0, 0.8, 0.5
+#: ``telescopic_cover``'s sections (each covering a share 1 / COVER_SECTIONS of the stroke
+#: the record visits) [-]; one section's drag at strength 1, x the friction level [-]; the
+#: travel over which a stop's buffer hands the motion on to the next section, x a
+#: section's travel [-]
+COVER_SECTIONS, COVER_DRAG, COVER_BUFFER = 5, 0.1, 0.05
+
+
+@njit(cache=True)
+def _cover(x, lo, ell, n_sec, buf):
+    """Sections of a telescopic cover (``n_sec`` of travel ``ell`` [m] each, collapsed at
+    ``lo`` [m]) moving along the carriage's positions ``x`` [m]: extending, section 1 (on the
+    carriage) slides out until its stop, then drags section 2, ...; retracting, section 1
+    is pushed in until it nests, then pushes section 2, .... Returns the count of sections
+    moving if the carriage extends and if it retracts [-] at each point (each next
+    section's share rounded over the last ``buf`` x ``ell`` of the one before: its stop's
+    buffer). Starts as if extended from the collapsed end."""
+    n = x.size
+    e = np.zeros(n_sec)
+    d = x[0] - lo
+    for i in range(n_sec):
+        take = min(max(d, 0.0), ell)
+        e[i] = take
+        d -= take
+    out_ext = np.empty(n)
+    out_ret = np.empty(n)
+    w = max(buf * ell, 1e-300)
+    for k in range(n):
+        if k > 0:
+            d = x[k] - x[k - 1]
+            if d > 0.0:
+                for i in range(n_sec):
+                    take = min(ell - e[i], d)
+                    e[i] += take
+                    d -= take
+                    if d <= 0.0:
+                        break
+            elif d < 0.0:
+                d = -d
+                for i in range(n_sec):
+                    take = min(e[i], d)
+                    e[i] -= take
+                    d -= take
+                    if d <= 0.0:
+                        break
+        ce, cr = 0.0, 0.0
+        pe, pr = 1.0, 1.0
+        for i in range(n_sec):
+            ce += pe
+            cr += pr
+            # the next section moves once this one is (nearly) at its stop
+            pe *= min(max((e[i] - (ell - w)) / w, 0.0), 1.0)
+            pr *= min(max((w - e[i]) / w, 0.0), 1.0)
+        out_ext[k] = ce
+        out_ret[k] = cr
+    return out_ext, out_ret
 
 
 @on_fine_grid
-def end_cushion_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Hydraulic end-position cushioning at the upper end of the stroke: from the entry
-    x_c (the :data:`CUSHION_ENTRY` th percentile of the held-out positions the fit part
-    also visits, so both see it) to the stroke's end x_e, the outflow passes a throttle
-    whose area tapers to 1 - :data:`CUSHION_TAPER` of its entry value (u = (x - x_c) /
-    (x_e - x_c)); moving into the end (v > 0) the orifice's pressure drop adds ``s`` x
-    :data:`CUSHION_FORCE` x the friction level x (v / v99)^2 / (1 - :data:`CUSHION_TAPER`
-    u)^2 to the force (the spear's chamfer rounds the entry over 2 % of the stroke, the
-    direction over 2 % of v99); moving out a check valve bypasses the throttle.
+def telescopic_cover_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A telescopic way cover over the stroke the record visits: :data:`COVER_SECTIONS`
+    nested sections, each of a 1 / :data:`COVER_SECTIONS` share of the stroke, collapsed at
+    its lower end. Extending, the carriage pulls the first section out to its stop, which
+    then drags the second, ...; retracting, it pushes the first in until it nests, which
+    then pushes the second, ... (:func:`_cover`). Each moving section's wipers add a drag
+    ``s`` :data:`COVER_DRAG` x the friction level against the motion (its direction
+    rounded over 2 % of v99), added to the base's force.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the cushion's drag relative to :data:`CUSHION_FORCE` x the
-        level at v99 at the entry.
+        Amplitude factor [-]: one section's drag relative to :data:`COVER_DRAG` x the level.
 
     Returns
     -------
@@ -345,97 +397,79 @@ def end_cushion_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    End-position cushioning of hydraulic cylinders (a cushion spear entering a bore,
-    progressive throttling, a check valve for the return stroke: ISO 6020/6022 cylinder
-    designs; orifice flow, Merritt 1967, Hydraulic Control Systems). The candidate scales
-    the friction along the stroke (a map, a waviness, a defect) and adds a periodic force
-    of x; the open forms are level maps (a defect, waviness, a worn section, runout, a bow,
-    a transfer film, a taper, a port's wake) or a detent force; here a fluid drag acts in
-    one zone of the stroke and one direction, quadratic in the speed and steeper towards
-    the end.
+    Telescopic steel way covers of machine tools (sections pulled out and pushed in by
+    each other's stops, each with its wipers on the next: a cover's drag of a few percent
+    of the axis' friction to several times it, makers' data sheets, e.g. Hennig, Arno
+    Arnold); Weck and Brecher 2006 (Werkzeugmaschinen 2, guideway covers). The candidate
+    scales the friction along the stroke (a map, a waviness, a defect) and adds a
+    periodic force of x; the open forms are level maps (a defect, waviness, a worn section,
+    runout, a bow, a transfer film, a taper, a port's wake), a detent force or a cushion's
+    drag in one zone; here the drag steps up along the stroke as sections join in, the
+    other way round when the carriage comes back, and after a reversal it starts again
+    from one section: it depends on where the last travel left the sections, not on x
+    alone.
     """
     if _bump_centre(kin) is None:
-        raise ValueError(f"position (end_cushion): the held-out part of the {kin.plant} "
+        raise ValueError(f"position (telescopic_cover): the held-out part of the {kin.plant} "
                          f"record never revisits the positions of its fit part")
-    x = np.asarray(kin.x, float)
-    m = int(round(FIT_FRACTION * x.size))
-    xf, xh = x[:m], x[m:]
-    inside = xh[(xh >= xf.min()) & (xh <= xf.max())]
-    xc = float(np.percentile(inside, CUSHION_ENTRY))
-    xe = max(float(np.max(x)), xc + 1e-3 * _span(kin))
-    span = _span(kin)
-    v99 = max(kin.scales["v99"], 1e-12)
-    v = np.asarray(kin.v, float)
-    u = np.clip((x - xc) / (xe - xc), 0.0, 1.0)
-    entry = 0.5 * (1.0 + np.tanh((x - xc) / (0.02 * span)))
-    into = 0.5 * (1.0 + np.tanh(v / (0.02 * v99)))
-    drag = entry * into * (v / v99) ** 2 / (1.0 - CUSHION_TAPER * u) ** 2
+    x = np.ascontiguousarray(kin.x, dtype=float)
+    ell = _span(kin) / COVER_SECTIONS
+    ext, ret = _cover(x, kin.scales["x_lo"], ell, COVER_SECTIONS, COVER_BUFFER)
+    d = np.tanh(np.asarray(kin.v, float) / (0.02 * max(kin.scales["v99"], 1e-12)))
+    count = np.where(d > 0.0, ext, ret)
     F, _ = _base_parts(kin)
-    return F + s * CUSHION_FORCE * _level(kin) * drag
+    return F + s * COVER_DRAG * _level(kin) * count * d
 
 
 # -- inertia ---------------------------------------------------------------------------------
-#: ``rattling_mass``'s clearance (half-width), x the stroke [-]; its bumpers' natural
-#: frequency with the part, x 1 / the motion's time scale [-], and their damping ratio [-]
-CLEARANCE, BUMPER_FREQ, BUMPER_DAMPING = 0.01, 10.0, 0.5
+#: ``freewheel_flywheel``'s mass at strength 1, x the friction level / a99 [kg per N s^2/m];
+#: its coast-down time constant on its own bearing, x the motion's time scale [-]
+FLYWHEEL_MASS, FLYWHEEL_COAST = 0.3, 3.0
 
 
 @njit(cache=True)
-def _rattle(t, x, v, half, w, zeta, n_sub):
-    """Force per unit mass [m/s^2] the carriage (positions ``x`` [m], velocities ``v``
-    [m/s] at the times ``t`` [s]) exerts on a loose part in a pocket of half-clearance
-    ``half`` [m] lined with bumpers (spring-dampers of natural frequency ``w`` [rad/s] and
-    damping ratio ``zeta`` with the part, compressive only): semi-implicit Euler on
-    ``n_sub`` sub-steps per step, the carriage's motion linear between the points. Starts
-    centred, moving with the carriage."""
+def _freewheel(t, v, a, tau):
+    """Force per unit mass [m/s^2] a drive moving at the velocities ``v`` [m/s] with the
+    accelerations ``a`` [m/s^2] (times ``t`` [s]) exerts on a part it drives through an
+    overrunning clutch in the positive direction only: while the drive is not slower than
+    the part's speed w (which coasts down as exp(-t / ``tau``) when free), the clutch
+    engages, w = v and the drive supplies a + w / tau (the part's acceleration and its
+    bearing drag, never negative); otherwise the clutch overruns and it supplies nothing.
+    Starts engaged at the drive's speed (or at rest)."""
     n = t.size
     f = np.empty(n)
-    y = x[0]
-    u = v[0]
-    k = w * w
-    c = 2.0 * zeta * w
-    f[0] = 0.0
-    for j in range(1, n):
-        h = (t[j] - t[j - 1]) / n_sub
-        acc = 0.0
-        for i in range(1, n_sub + 1):
-            r = i / n_sub
-            xc = x[j - 1] + r * (x[j] - x[j - 1])
-            vc = v[j - 1] + r * (v[j] - v[j - 1])
-            e = y - xc
-            ed = u - vc
-            acc = 0.0
-            if e > half:
-                acc = -k * (e - half) - c * ed
-                if acc > 0.0:
-                    acc = 0.0
-            elif e < -half:
-                acc = k * (-e - half) - c * ed
-                if acc < 0.0:
-                    acc = 0.0
-            u += h * acc
-            y += h * u
-        f[j] = acc
+    w = max(v[0], 0.0)
+    f[0] = max(a[0] + w / tau, 0.0) if v[0] >= 0.0 else 0.0
+    for k in range(1, n):
+        wc = w * math.exp(-(t[k] - t[k - 1]) / tau)
+        if v[k] >= wc and a[k] + v[k] / tau > 0.0:
+            w = v[k]
+            f[k] = a[k] + w / tau
+        else:
+            w = wc
+            f[k] = 0.0
     return f
 
 
 @on_fine_grid
-def rattling_mass_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A loose part in a pocket of the carriage (an impact damper): its clearance is +-
-    :data:`CLEARANCE` x the stroke, its bumpers rubber (natural frequency
-    :data:`BUMPER_FREQ` / the motion's time scale with the part, damping ratio
-    :data:`BUMPER_DAMPING`, compressive only). Pressed against a bumper the part is a mass
-    the inverse dynamics misses; when the acceleration changes sign it floats across the
-    clearance (no force) and lands on the other bumper (a damped impact). The measured
-    force is the base's plus the force on the part, m = ``s`` x 0.3 x the friction level /
-    a99 [kg]. At ``s`` = 0 the base.
+def freewheel_flywheel_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A rotating part (a roller, a fan, a flywheel; its mass reflected to the axis m =
+    ``s`` :data:`FLYWHEEL_MASS` x the friction level / a99) driven through an overrunning
+    clutch (a sprag freewheel) in the positive direction only. While the drive is as fast
+    as the part and pushes it, the clutch engages: the drive supplies m (a + w / tau), the
+    part's inertia and its bearing drag (coast-down time constant tau =
+    :data:`FLYWHEEL_COAST` x the motion's time scale), which the inverse dynamics misses;
+    when the drive slows faster than the part coasts, or moves back, the clutch overruns
+    and the part spins down on its own (:func:`_freewheel`). The measured force is the
+    base's plus the drive's force on the part. At ``s`` = 0 the base.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s], x [m], v [m/s]) and its base law.
+        The motion on the fine grid (t [s], v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the part's mass relative to 0.3 x level / a99.
+        Amplitude factor [-]: the part's mass relative to :data:`FLYWHEEL_MASS` x level /
+        a99.
 
     Returns
     -------
@@ -444,48 +478,61 @@ def rattling_mass_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Impact dampers (Masri and Caughey 1966, a mass in a container with clearance);
-    loose parts and tools rattling in pockets of fast axes. The candidate and the open
-    forms are masses (constant, filtered, along the stroke, through a ratio or a lossy
-    gear, in time, behind a spring, in a fluid) or a payload held by friction; here the
-    part is held by nothing: it is missed in full while it leans on a bumper, not at all
-    while it crosses the clearance, and its landing is an impact.
+    Overrunning (freewheel, sprag) clutches transmit torque one way only (Orthwein 2004,
+    Clutches and Brakes; Chesney and Kremer 1998 on sprag clutches). The candidate and the
+    open forms are masses (constant, filtered, along the stroke, through a ratio or a
+    lossy gear, in time, behind a spring, in a fluid), a payload held by friction or a
+    part rattling in a pocket: all of them follow the motion both ways. Here the part is
+    felt only while the drive accelerates it (or holds its speed against its drag) in the
+    positive direction, it re-engages with a jolt where the drive catches up with it, and
+    braking and negative travel miss nothing.
     """
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    m = s * 0.3 * _level(kin) / max(kin.scales["a99"], 1e-12)
-    w = BUMPER_FREQ / _motion_time(kin)
-    # sub-steps resolve the bumpers' contact (at most a tenth of a radian a step)
-    n_sub = int(min(max(math.ceil(w * kin.dt / 0.1), 1), 400))
-    f = _rattle(np.ascontiguousarray(kin.t, dtype=float),
-                np.ascontiguousarray(kin.x, dtype=float),
-                np.ascontiguousarray(kin.v, dtype=float),
-                CLEARANCE * _span(kin), w, BUMPER_DAMPING, n_sub)
+    m = s * FLYWHEEL_MASS * _level(kin) / max(kin.scales["a99"], 1e-12)
+    f = _freewheel(np.ascontiguousarray(kin.t, dtype=float),
+                   np.ascontiguousarray(kin.v, dtype=float),
+                   np.ascontiguousarray(kin.a, dtype=float), FLYWHEEL_COAST * _motion_time(kin))
     return F + m * f
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: the echoes' amplitude ratio per round trip of ``pressure_line`` [-] and the echoes kept
-LINE_REFLECTION, LINE_ECHOES = 0.5, 24
+#: longest window of ``running_median`` [samples]: a delay of 25 samples, the candidate's
+#: reach (:attr:`diagnosis.candidates.Delay.MAX_SAMPLES`; the open forms stop at
+#: :data:`.truths.MAX_DELAY_SAMPLES`, 20, but a median, which cuts the reversals' peaks
+#: that a shift keeps, needs a delay of 22 samples for the full size on the valve's 20 kHz
+#: record)
+MEDIAN_MAX_WINDOW = 50.0
+
+
+def _causal_median(F, half: int) -> np.ndarray:
+    """The causal running median of ``F`` over its last 2 ``half`` + 1 values (the first
+    value held before the start): ramps come ``half`` points late; ``half`` <= 0: ``F``."""
+    from scipy.ndimage import median_filter
+    if half <= 0:
+        return np.asarray(F, float)
+    # origin = half puts the window on the last values (output k: inputs k - 2 half .. k)
+    return median_filter(np.asarray(F, float), size=2 * half + 1, origin=half,
+                         mode="nearest")
 
 
 @on_fine_grid
-def pressure_line_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force read as a pressure at the closed end of a sensing line: the wave arrives
-    after the line's transit time T and reflects between the transducer (closed: +1) and
-    the chamber (a large volume: -1), attenuated by :data:`LINE_REFLECTION` = r per round
-    trip: y(t) = sum_k w_k F(t - (2k + 1) T), w_k ~ (-r)^k normalised to a static gain of
-    1 (:data:`LINE_ECHOES` echoes kept), whose low-frequency delay is T (1 - r) / (1 + r)
-    = ``s`` data samples (at most :data:`.truths.MAX_DELAY_SAMPLES`); cubic-spline shifts.
-    At ``s`` = 0 the force itself.
+def running_median_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force channel through a causal running median (a spike filter in the force
+    transmitter): each output is the median of the continuous force over the last ``s``
+    data samples (at most :data:`MEDIAN_MAX_WINDOW`; on the fine grid, to a tenth of a
+    sample, the window's points an odd count). Monotone stretches come ``s`` / 2 samples
+    late, as through a shift; steps keep their sharp edges (``s`` / 2 late); peaks and
+    short spikes, shorter than ``s`` / 2, are cut off. At ``s`` = 0 the force itself.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s]) and its base law.
+        The motion on the fine grid (its step ``kin.step`` per data sample) and its base law.
     s : float
-        Amplitude factor [-]: the low-frequency delay [data samples].
+        Amplitude factor [-]: the window's length [data samples], twice the delay of
+        monotone stretches.
 
     Returns
     -------
@@ -494,50 +541,45 @@ def pressure_line_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Dynamics of fluid transmission lines (Nichols 1962; Stecki and Davis 1986): a
-    transport delay at the speed of sound and standing waves between the line's ends,
-    whose friction damps them (lumped here in r). The open forms delay by one amount (a
-    shift, held samples), filter (a lag, Bessel, a moving average, a converter's FIR), let
-    the delay drift, wander or grow with the rate, or shift the motion; here the force
-    comes late and echoes: a comb of delayed copies of alternating sign.
+    Running medians (Tukey 1977, Exploratory Data Analysis; Gallagher and Wise 1981, the
+    root signals of median filters), the spike and impulse filters of weighing and force
+    transmitters, set by their window's length. The open forms delay by one amount (a
+    shift, held samples), filter linearly (a lag, Bessel, a moving average, a converter's
+    FIR, a line's echoes), let the delay drift, wander or grow with the rate, or shift the
+    motion; this one is a non-linear, rank-order filter: its delay is exact on ramps, it
+    keeps edges that every linear filter rounds, and it flattens the force's reversal
+    peaks.
     """
-    from scipy.interpolate import CubicSpline
     F, _ = _base_parts(kin)
-    d = min(max(float(s), 0.0), MAX_DELAY_SAMPLES)
-    if d <= 0.0:
-        return F
-    r = LINE_REFLECTION
-    T = d * (1.0 + r) / (1.0 - r) * kin.sample_dt
-    w = (-r) ** np.arange(LINE_ECHOES + 1)
-    w = w / w.sum()
-    t = np.asarray(kin.t, float)
-    spline = CubicSpline(t, F)
-    return sum(wk * spline(np.clip(t - (2 * k + 1) * T, t[0], None))
-               for k, wk in enumerate(w))
+    return _causal_median(F, int(round(0.5 * min(max(float(s), 0.0), MEDIAN_MAX_WINDOW)
+                                       * kin.step)))
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: ``tribo_oxide``'s spalling period, x the record [-], and the time its spalling is
-#: rounded over, x the record [-]
-SPALL_PERIOD, SPALL_ROUNDING = 0.45, 0.003
+#: ``antioxidant_depletion``'s induction period, x the record [-]; the oxidation's
+#: e-folding time after it, x the record [-]; the levels' rise at the record's end at
+#: strength 1 [-]
+INDUCTION, OXIDATION_TIME, OXIDATION_RISE = 0.35, 0.15, 0.4
 
 
 @on_fine_grid
-def tribo_oxide_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Oxidational wear: an oxide film grows on the contact plateaus parabolically in time,
-    thickness xi / xi_c = sqrt(tau / P) (tau the time since the last spall, P =
-    :data:`SPALL_PERIOD` x the record T), and lowers the levels; at its critical thickness
-    xi_c it spalls off, twice in the record, and the metal's levels return at once
-    (rounded over :data:`SPALL_ROUNDING` T). The Coulomb and Stribeck levels are the base's
-    times 1 - ``s`` 0.4 xi / xi_c (floored at 0.05), inside the bristle dynamics; the
-    viscous term is the base's.
+def antioxidant_depletion_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Antioxidant depletion: the oil's antioxidant is consumed over an induction period
+    (:data:`INDUCTION` x the record T); after it the oil oxidises autocatalytically, its
+    oxidation products (the radical chain's) growing exponentially with an e-folding time
+    of :data:`OXIDATION_TIME` T, thickening the oil and taking the boundary additives: the
+    Coulomb and Stribeck levels and the viscous term are the base's times 1 + ``s``
+    :data:`OXIDATION_RISE` y, y = (exp(tau / tau_o) - 1) / (exp(tau_end / tau_o) - 1) of
+    the time tau since the induction ended (0 before it, 1 at the record's end), inside
+    the bristle dynamics.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the relative level drop at the critical thickness, / 0.4.
+        Amplitude factor [-]: the levels' relative rise at the record's end, /
+        :data:`OXIDATION_RISE`.
 
     Returns
     -------
@@ -546,53 +588,87 @@ def tribo_oxide_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Quinn 1962, 1983 (oxidational wear: parabolic oxide growth on the plateaus and
-    breakaway at a critical thickness of a few micrometres); oxide films lowering
-    metal-metal friction (Bowden and Tabor 1964). The candidate is a trend, a saturating
-    change and a step; the open forms warm up, wear in linearly or with the load and
-    travel, step, heat with the friction power, cycle with the humidity, rise and fall
-    with debris, drop with grease shots or relax in log time; here the levels fall as the
-    square root of the time, then jump back, twice.
+    Autoxidation of hydrocarbons: an induction period while inhibitors last, then an
+    autocatalytic, accelerating oxidation (Denisov and Afanas'ev 2005, Oxidation and
+    Antioxidants in Organic Chemistry and Biology; Rasberger 1997, oxidative degradation
+    and stabilisation of mineral oil based lubricants; the induction time of the RPVOT,
+    ASTM D2272); oxidised oil thickens and loses its boundary additives. The candidate is
+    a trend, a saturating change and a step; the open forms warm up, wear in, step, heat,
+    cycle, rise and fall with debris, drop with grease shots, relax in log time or grow
+    an oxide as sqrt(t) and spall; here nothing changes for a third of the record, then
+    the levels rise ever faster: a convex, accelerating drift.
     """
-    from scipy.ndimage import gaussian_filter1d
     t = np.asarray(kin.t, float)
     T = float(t[-1] - t[0]) or 1.0
-    phase = (t - t[0]) / (SPALL_PERIOD * T)
-    xi = np.sqrt(phase - np.floor(phase))
-    # a spall in one fine step would be a jump no sampled record resolves: rounded over
-    # SPALL_ROUNDING x the record (the record's ends mirrored)
-    xi = gaussian_filter1d(xi, SPALL_ROUNDING * (t.size - 1), mode="mirror")
-    lev = np.clip(1.0 - s * 0.4 * xi, 0.05, None)
-    return level_inside(kin, lev, np.ones_like(lev))
+    tau = np.clip(t - t[0] - INDUCTION * T, 0.0, None) / (OXIDATION_TIME * T)
+    y = np.expm1(tau) / math.expm1((1.0 - INDUCTION) / OXIDATION_TIME)
+    lev = 1.0 + max(float(s), 0.0) * OXIDATION_RISE * y
+    return level_inside(kin, lev, lev)
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: the play of ``biased_play`` at strength 1, as a share of the stroke [-] (the open
-#: backlash forms'), and the bias force on the contact, x its Coulomb level, towards -x [-]
-GAP_SHARE, BIAS = PLANT_GAP_SHARE, 0.5
+#: the slack (the loop's excess length) of ``slack_chain`` at strength 1, as a share of the
+#: stroke [-] (the open backlash forms' play); the strands' catenary tension at mid-slack
+#: at strength 1, x the contact's static level Fs [-]; the excess length below which a
+#: strand is taut (its elastic stretch), x the slack [-]
+GAP_SHARE, CHAIN_TENSION, CHAIN_TAUT = PLANT_GAP_SHARE, 0.5, 0.02
 
 
-def _biased_contact(h, xd, half, bias, m, kh, ch, s0, s1, s2, Fc, Fs, vs, alpha, shape):
-    """LuGre friction [N] of a contact of mass ``m`` [kg] on which a constant force ``bias``
-    [N] acts, driven by the drive positions ``xd`` [m] (grid step ``h`` [s]) across a play
-    of half-width ``half`` [m], the flanks a spring ``kh`` [N/m] and damper ``ch`` [N s/m]
-    (compressive only); nothing else bridges the play: the open forms' driven contact
-    (:func:`.truths._driven_contact`, ``GAP_BIAS``). Starts centred in the play, at rest,
-    its bristle unloaded (the bias then loads it, or the flanks where there is no play)."""
-    return _driven_contact(h, xd, half, GAP_BIAS, bias, 0.0, m, kh, ch, s0, s1, s2, Fc, Fs,
-                           vs, alpha, shape)
+@njit(cache=True)
+def _strand(e, ed, C, e_min, kh, ch):
+    """Tension [N] of a chain strand with excess length ``e`` [m] (its rate ``ed`` [m/s]):
+    a catenary C / sqrt(e) (``C`` [N m^0.5]) while slack, taut below ``e_min`` [m] where its
+    elastic stretch adds kh (e_min - e) + ch (-ed) (``kh`` [N/m], ``ch`` [N s/m]); never
+    negative."""
+    if e >= e_min:
+        return C / math.sqrt(e)
+    T = C / math.sqrt(e_min) + kh * (e_min - e) - ch * ed
+    return T if T > 0.0 else 0.0
+
+
+@njit(cache=True)
+def _chain_contact(h, xd, half, C, e_min, m, kh, ch, s0, s1, s2, Fc, Fs, vs, alpha, shape):
+    """LuGre friction [N] of a contact of mass ``m`` [kg] pulled through a chain loop by the
+    drive positions ``xd`` [m] (grid step ``h`` [s]): the strand ahead and the strand
+    behind share the slack 2 ``half`` [m], excess lengths half - u and half + u (u = drive
+    - contact), each pulling with its catenary tension (:func:`_strand`). Semi-implicit
+    Euler of the mass, the bristle advanced exactly at the contact's velocity
+    (:func:`friction.lugre.bristle_update`). Starts centred, at rest, its bristle
+    unloaded."""
+    n = xd.size
+    F = np.empty(n)
+    x = xd[0]
+    v = 0.0
+    z = 0.0
+    for j in range(n):
+        vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
+        u = xd[j] - x
+        ud = vd - v
+        fc = (_strand(half - u, -ud, C, e_min, kh, ch)
+              - _strand(half + u, ud, C, e_min, kh, ch))
+        g = stribeck_g(v, Fc, Fs, vs, alpha, shape)
+        zd = v - s0 * abs(v) * z / g
+        ff = s0 * z + s1 * zd + s2 * v
+        F[j] = ff
+        v = v + h * (fc - ff) / m
+        z = bristle_update(z, v, s0 * abs(v) / stribeck_g(v, Fc, Fs, vs, alpha, shape), h, 0)
+        x = x + h * v
+    return F
 
 
 @on_fine_grid
-def biased_play_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A play of width ``s``^2 x :data:`GAP_SHARE` x the stroke between the drive (the
-    record's motion) and a light contact with the base's LuGre friction (its inertial force
-    at the top acceleration 1 % of the Coulomb level, :func:`.truths._contact_constants`),
-    on which a constant bias acts: :data:`BIAS` Fc towards -x (a weight on an inclined
-    axis, a return spring), less than the contact's friction, so it cannot move the
-    contact. Across the play the contact stands still holding the bias; the flanks a
-    coupling 100 x stiffer than the bristle, damping ratio 0.5. The measured force is the
-    contact's friction. At ``s`` = 0 the contact follows the drive (the base, up to the
+def slack_chain_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact joined by a chain loop with slack: the loop's excess length 2
+    ``half``, half = ``s``^2 :data:`GAP_SHARE` / 2 x the stroke, is shared by the strand
+    ahead and the strand behind the contact; each sags as a catenary whose tension is C /
+    sqrt(its excess length) (C fixed by the chain's weight and span: :data:`CHAIN_TENSION`
+    Fs at mid-slack at ``s`` = 1), and goes taut below :data:`CHAIN_TAUT` x the slack (or
+    where the catenary would be stiffer than the taut strand; then a coupling 100 x stiffer
+    than the bristle, damping ratio 0.5). The
+    contact is light, with the base's LuGre friction (:func:`.truths._contact_constants`);
+    across the slack it is pulled by the difference of the two tensions, which rises
+    steeply as the strand ahead straightens (:func:`_chain_contact`). The measured force is
+    the contact's friction. At ``s`` = 0 the chain is taut both ways (the base, up to the
     stiff coupling).
 
     Parameters
@@ -600,11 +676,10 @@ def biased_play_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     kin : PlantKinematics
         The motion on the fine grid (t [s], x [m]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the square root of the play's width relative to
-        :data:`GAP_SHARE` x the stroke (the contact waits across the play for a time that
-        grows as the play's square root at a smooth reversal, so a size growing about
-        linearly with the width would follow ``s`` too weakly to be calibrated on the
-        XML-350's many small reversals).
+        Amplitude factor [-]: the square root of the slack relative to :data:`GAP_SHARE` x
+        the stroke (a smaller slack also tightens the strands: the catenary's C is fixed;
+        on the XML-350's many small reversals the size grows about as the slack's cube
+        root, too weakly in the slack itself to be calibrated).
 
     Returns
     -------
@@ -613,139 +688,110 @@ def biased_play_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Backlash under a bias torque or force (gravity-loaded and spring-preloaded drives:
-    Nordin and Gutman 2002, controlling mechanical systems with backlash - a survey): a
-    bias larger than the friction keeps one flank engaged, a smaller one only sets what
-    the contact holds across the play. The candidate holds or frees the force across the
-    play; the open forms couple it rigidly, compliantly, by impacts, a spring, an oil
-    film, an idler's drag, with a play varying with the position or growing with the
-    travel: each plateau or ramp follows the direction of the drive. Here both reversals
-    wait at the same level, the bias's: after a reversal to -x the force falls only part
-    of the way, after one to +x it rises only part of the way.
+    Catenary of a slack strand (a parabola for small sag: tension w l^2 / (8 sag), excess
+    length 8 sag^2 / (3 l); Irvine 1981, Cable Structures); slack and sag of roller-chain
+    drives (Binder 1956, Mechanics of the Roller Chain Drive). The candidate holds or frees
+    the force across the play; the open forms couple it rigidly, compliantly, by impacts,
+    a linear spring, an oil film, an idler's drag or a bias, with a play varying with the
+    position or growing with the travel; here the bridge across the slack is a pull that
+    is weak at mid-slack and hardens as 1 / sqrt of the slack left, so the contact starts
+    before the strand is straight, later the more slack there is.
     """
-    p = _lugre_params(kin, "backlash (biased_play)")
-    half = 0.5 * GAP_SHARE * max(float(s), 0.0) ** 2 * float(np.ptp(kin.x))
+    p = _lugre_params(kin, "backlash (slack_chain)")
+    stroke = float(np.ptp(kin.x))
+    half1 = 0.5 * GAP_SHARE * stroke
+    half = max(float(s), 0.0) ** 2 * half1
+    C = CHAIN_TENSION * float(p.Fs) * math.sqrt(half1)
     m, kh, ch = _contact_constants(kin, p)
-    rate = max(math.sqrt(kh / m), (float(p.sigma1) + float(p.sigma2) + ch) / m)
+    # taut below a share of the slack, or where the catenary's stiffness C / (2 e^1.5)
+    # would exceed the taut strand's
+    e_min = max(CHAIN_TAUT * half, (0.5 * C / kh) ** (2.0 / 3.0))
+    rate = max(math.sqrt(2.0 * kh / m),
+               (float(p.sigma1) + float(p.sigma2) + 2.0 * ch) / m)
     n_sub = int(min(max(math.ceil(rate * kin.dt / 0.3), 4), 400))
     t2 = kin.t[0] + (kin.dt / n_sub) * np.arange((kin.t.size - 1) * n_sub + 1)
     xd = np.interp(t2, kin.t, kin.x)
-    F = _biased_contact(kin.dt / n_sub, xd, half, -BIAS * float(p.Fc), m, kh, ch,
-                        float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
-                        float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
+    F = _chain_contact(kin.dt / n_sub, xd, half, C, e_min, m, kh, ch, float(p.sigma0),
+                       float(p.sigma1), float(p.sigma2), float(p.Fc), float(p.Fs),
+                       float(p.vs), float(p.alpha), SHAPES[p.shape])
     return F[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: period of ``tomlinson_asperities``' corrugation at strength 1 beyond the base bristle's
-#: path, as a share of the stroke / 3 [-]; the asperities' share of the friction at
-#: strength 1 [-]; their count [-]; the Tomlinson parameter eta = 2 pi F0 / (k lambda),
-#: > 1 for elastic instabilities [-]
-PRESLIDING_SHARE, PT_SHARE, PT_CONTACTS, PT_ETA = 0.02, 0.5, 256, 3.0
-#: slip over which the contacts' strength follows the Stribeck level, x the period [-]
-PT_STRENGTH_RUN = 0.1
-
-
-#: points of the table of a Prandtl-Tomlinson branch's force [-]
-PT_TABLE = 20001
-
-
-def _tomlinson_branch(eta: float, n: int = PT_TABLE):
-    """A stable Prandtl-Tomlinson branch tabulated evenly in q = u + eta sin u on (-q_max,
-    q_max), its ends where 1 + eta cos u = 0: (q_max [-], sin u at the points [-])."""
-    us = math.acos(-1.0 / eta)
-    qmax = us + eta * math.sin(us)
-    u = np.linspace(-us, us, 40 * n)
-    q = u + eta * np.sin(u)
-    return qmax, np.interp(np.linspace(-qmax, qmax, n), q, np.sin(u))
+#: mean rupture stretch of ``bond_rupture``'s bonds beyond the base bristle's path, as a
+#: share of the stroke / 3 [-]; the spread of the contacts' rupture stretches, +- this share
+#: of the mean [-]; the bonds' share of the friction at strength 1 [-]; a broken contact's
+#: time to bond again, x the mean rupture stretch / v99 [-]; the contacts [-]; the slip
+#: over which the bonds' strength follows the Stribeck level, x the mean rupture stretch
+#: [-]
+PRESLIDING_SHARE, BOND_SPREAD, BOND_SHARE = 0.05, 0.5, 0.5
+BOND_WAIT, BOND_CONTACTS, BOND_STRENGTH_RUN = 0.02, 256, 0.1
 
 
 @njit(cache=True)
-def _tomlinson(x, lam, phases, qmax, table):
-    """Mean relative force [-] (sin u, F0 = 1) of Prandtl-Tomlinson contacts along the
-    drive positions ``x`` [m]: each a tip on a spring in the potential of period ``lam``
-    [m] shifted by its phase (``phases`` [m]), quasi-static (overdamped, slow drive): it
-    stays on its stable branch, 2 pi (x - phase) / lam - 2 pi n = q = u + eta sin u with
-    1 + eta cos u > 0 (|q| < ``qmax``; sin u of q tabulated evenly in ``table``), and
-    snaps to the neighbouring branch where its branch ends (an elastic instability).
-    Starts each on the branch nearest to its unloaded position."""
+def _bonds(t, x, g, thr, wait, run):
+    """Mean relative force [-] of adhesive contacts along the positions ``x`` [m] (times
+    ``t`` [s]) and their strength [N]: each contact, bonded, pulls with its stretch x -
+    anchor (elastic; the anchor where it bonded) and breaks when |stretch| reaches its own
+    rupture stretch (``thr`` [m], one per contact); broken, it bonds again, unstretched at
+    the current position, ``wait`` [s] later. The force is the bonded contacts' summed
+    stretch / (count x mean(thr) / 2) (1 in slow steady sliding); the motion is sub-stepped
+    to a 32nd of the mean rupture stretch. The strength follows the Stribeck levels ``g``
+    [N] over the slip ``run`` [m]. Starts all bonded, unstretched, at the first level."""
     n = x.size
-    nc = phases.size
-    m = table.size - 1
-    scale = m / (2.0 * qmax)
-    out = np.zeros(n)
-    br = np.empty(nc, dtype=np.int64)
-    for i in range(nc):
-        br[i] = int(round((x[0] - phases[i]) / lam))
-    two_pi = 2.0 * math.pi
-    for k in range(n):
+    nc = thr.size
+    lc = np.mean(thr)
+    anchor = np.full(nc, x[0])
+    bonded = np.ones(nc, dtype=np.bool_)
+    broke = np.zeros(nc)
+    f = np.zeros(n)
+    G = np.empty(n)
+    G[0] = g[0]
+    for k in range(1, n):
+        dx = x[k] - x[k - 1]
+        m = max(1, int(math.ceil(32.0 * abs(dx) / lc)))
+        for j in range(1, m + 1):
+            xc = x[k - 1] + dx * j / m
+            tc = t[k - 1] + (t[k] - t[k - 1]) * j / m
+            for i in range(nc):
+                if bonded[i]:
+                    if abs(xc - anchor[i]) >= thr[i]:
+                        bonded[i] = False
+                        broke[i] = tc
+                elif tc - broke[i] >= wait:
+                    bonded[i] = True
+                    anchor[i] = xc
         acc = 0.0
         for i in range(nc):
-            q = two_pi * ((x[k] - phases[i]) / lam - br[i])
-            while q > qmax:
-                br[i] += 1
-                q -= two_pi
-            while q < -qmax:
-                br[i] -= 1
-                q += two_pi
-            r = (q + qmax) * scale
-            j = min(int(r), m - 1)
-            acc += table[j] + (r - j) * (table[j + 1] - table[j])
-        out[k] = acc / nc
-    return out
-
-
-@njit(cache=True)
-def _strength(x, g, run):
-    """A strength [N] that follows the levels ``g`` [N] over the slip ``run`` [m] along the
-    positions ``x`` [m] (exact for a level held over each step; it does not move while the
-    contact stands still); starts at the first level."""
-    n = x.size
-    out = np.empty(n)
-    c = g[0]
-    for k in range(n):
-        if k > 0:
-            c = g[k] + (c - g[k]) * math.exp(-abs(x[k] - x[k - 1]) / run)
-        out[k] = c
-    return out
-
-
-def _tomlinson_sliding_mean(eta: float) -> float:
-    """Mean relative force [-] of the Prandtl-Tomlinson contacts while sliding steadily one
-    way (phases uniform): (1 / 2 pi) [-cos u + eta sin(u)^2 / 2] from the landing point
-    after a snap to the branch's end."""
-    from scipy.optimize import brentq
-    us = math.acos(-1.0 / eta)
-    qmax = us + eta * math.sin(us)
-    ua = brentq(lambda u: u + eta * math.sin(u) - (qmax - 2.0 * math.pi), -us, us)
-
-    def prim(u):
-        return -math.cos(u) + 0.5 * eta * math.sin(u) ** 2
-    return (prim(us) - prim(ua)) / (2.0 * math.pi)
+            if bonded[i]:
+                acc += x[k] - anchor[i]
+        f[k] = acc / (0.5 * nc * lc)
+        G[k] = g[k] + (G[k - 1] - g[k]) * math.exp(-abs(dx) / run)
+    return f, G
 
 
 @on_fine_grid
-def tomlinson_asperities_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Presliding by elastic instabilities of pinned asperities beside the bristle: a share
-    w = min(:data:`PT_SHARE` ``s``, 1) of the friction is carried by
-    :data:`PT_CONTACTS` Prandtl-Tomlinson contacts (each a spring and a tip in a
-    corrugated potential of period lambda = the base bristle's path Fs / sigma0 plus ``s``
-    x :data:`PRESLIDING_SHARE` x the stroke / 3, phases spread evenly over it, eta =
-    :data:`PT_ETA`): each loads elastically along its stable branch and snaps to the next
-    where the branch ends, dropping force. Their mean force f, divided by its value in
-    steady sliding, is scaled by their strength G, which follows the base's Stribeck level
-    g(v) over a slip of :data:`PT_STRENGTH_RUN` lambda (as a bristle's deflection does: a
-    reversal, where g(v) jumps to the static level, moves nothing), plus the viscous term;
-    the rest by the base's LuGre: F = (1 - w) F_lugre + w (G f + sigma2 v). At ``s`` = 0
-    the base itself.
+def bond_rupture_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Presliding by the kinetics of adhesive bonds beside the bristle: a share w =
+    min(:data:`BOND_SHARE` ``s``, 1) of the friction is carried by :data:`BOND_CONTACTS`
+    contacts that bond to the counter-surface, unstretched where they bond, stretch
+    elastically with the sliding and rupture when their stretch reaches their own rupture
+    stretch (spread evenly over 1 +- :data:`BOND_SPREAD` times the mean l_c = the base
+    bristle's path Fs / sigma0 plus :data:`PRESLIDING_SHARE` x the stroke / 3); a broken
+    contact bonds again after :data:`BOND_WAIT` l_c / v99 (:func:`_bonds`). Their summed
+    stretch, over its value in slow steady sliding, is scaled by their strength G, which
+    follows the base's Stribeck level g(v) over a slip of :data:`BOND_STRENGTH_RUN` l_c,
+    plus the viscous term; the rest by the base's LuGre: F = (1 - w) F_lugre + w (G f +
+    sigma2 v). At ``s`` = 0 the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
+        The motion on the fine grid (t [s], x [m], v [m/s]) and its base law (a classic
+        LuGre).
     s : float
-        Amplitude factor [-]: the contacts' share (all of the friction from ``s`` = 1 /
-        :data:`PT_SHARE` on) and the corrugation's period.
+        Amplitude factor [-]: the bonds' share of the friction, / :data:`BOND_SHARE` (all
+        of it from ``s`` = 1 / :data:`BOND_SHARE` on).
 
     Returns
     -------
@@ -754,27 +800,30 @@ def tomlinson_asperities_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Prandtl 1928, Tomlinson 1929 (a tip on a spring in a periodic potential: friction by
-    elastic instabilities); Caroli and Nozieres 1998 (macroscopic dry friction and its
-    hysteresis from multistable micro-asperities). Maxwell-slip (the candidate,
-    ``maxwell4``, ``maxwell10``) and the Mindlin contacts are elasto-plastic elements that
-    slip holding their force (Masing's rule), Dahl, Bouc-Wen and Bliman-Sorine smooth
+    Schallamach 1963 (a theory of dynamic rubber friction: bonds that form, stretch and
+    break); Chernyak and Leonov 1986; Filippov, Klafter and Urbakh 2004 (friction through
+    the dynamical formation and rupture of molecular bonds, with a spread of the bonds'
+    strengths). Maxwell-slip (the candidate, ``maxwell4``, ``maxwell10``) and the Mindlin
+    contacts are elements that slip holding their force, Dahl, Bouc-Wen and Bliman-Sorine
     path laws, elasto-plastic an elastic range, the Zener junction and the rate-and-state
-    interface rate-dependent creep; here each element is multistable: it has several
-    elastic states at one position, loads non-linearly and loses force when it snaps.
+    interface rate-dependent creep, the Tomlinson contacts multistable tips in a fixed
+    potential; here the elements are born and die: a bond drops its whole force when it
+    ruptures, in either direction, and is replaced by an unstretched one a moment later, so
+    after a reversal the contacts unload along their own stretch and break again only
+    beyond the opposite rupture stretch.
     """
-    p = _lugre_params(kin, "gms (tomlinson_asperities)")
+    p = _lugre_params(kin, "gms (bond_rupture)")
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    e0, extra = _presliding_path(kin, s, PRESLIDING_SHARE)
-    lam = e0 + extra
-    w = min(PT_SHARE * float(s), 1.0)
+    # the bonds are what they are at any strength: ``s`` sets their share
+    e0, extra = _presliding_path(kin, 1.0, PRESLIDING_SHARE)
+    lc = e0 + extra
+    thr = lc * (1.0 + BOND_SPREAD * (2.0 * (np.arange(BOND_CONTACTS) + 0.5) / BOND_CONTACTS
+                                     - 1.0))
+    w = min(BOND_SHARE * float(s), 1.0)
     v = np.ascontiguousarray(kin.v, dtype=float)
-    phases = lam * (np.arange(PT_CONTACTS) + 0.5) / PT_CONTACTS
-    qmax, table = _tomlinson_branch(PT_ETA)
-    f = _tomlinson(np.ascontiguousarray(kin.x, dtype=float), lam, phases, qmax, table)
-    f = f / _tomlinson_sliding_mean(PT_ETA)
-    G = _strength(np.ascontiguousarray(kin.x, dtype=float), kin.base.g(v),
-                  PT_STRENGTH_RUN * lam)
+    f, G = _bonds(np.ascontiguousarray(kin.t, dtype=float),
+                  np.ascontiguousarray(kin.x, dtype=float), kin.base.g(v), thr,
+                  BOND_WAIT * lc / max(kin.scales["v99"], 1e-12), BOND_STRENGTH_RUN * lc)
     return (1.0 - w) * F + w * (G * f + float(p.sigma2) * v)

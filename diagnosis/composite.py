@@ -408,7 +408,22 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
 
     def solve(u):
         if long_record:
-            return _solve_normal(residual, u, max_nfev)
+            # the parts a data start pinned (no span) stay out of the solved vector: their
+            # zero columns leave the float32 normal equations singular, and the trust region
+            # then ends elsewhere in a flat valley than scipy's fit does
+            free = np.concatenate([np.ones(nb, bool), span > 0])
+            if free.all():
+                return _solve_normal(residual, u, max_nfev)
+
+            def on_free(uf):
+                full = u.copy()
+                full[free] = uf
+                return residual(full)
+            sol_f = _solve_normal(on_free, u[free], max_nfev)
+            full = u.copy()
+            full[free] = sol_f.x
+            sol_f.x = full
+            return sol_f
         return least_squares(residual, u, jac=jac, bounds=(0.0, 1.0), x_scale=1.0,
                              max_nfev=max_nfev, diff_step=DIFF_STEP, method="trf")
 

@@ -70,7 +70,11 @@ backlash 33 -> 35, stribeck_shape 29 -> 31, asymmetry 96 -> 97, load and positio
 unchanged. New wrong names: inertia -> acceleration 6 (press forms the mass term and the
 level part both reach), load/position -> drift 5 (the periodic part on the valve's
 protocol). Re-deciding the baseline's rows offline with the noise statistic alone: 856
-(+33), 3 more wrong names.
+(+33), 3 more wrong names. The session's last commit (5bb1dba) adds two fixes that CI's real-data
+tests found: the periodic part no longer tries periods at which the motion repeats itself
+(EMPS's second record), and the long-record solver leaves pinned extras out. The grid was
+not run again on them; of the humidity-cycle and interval-lubrication cases re-run on
+5bb1dba, the same ones are named as on d12174d.
 
 Sealed family of session 12's end (``--sealed`` then, written by another hand without running
 the diagnosis on it, run once on the code of d12174d, 179 s wall): 176 cases (0 skipped),

@@ -180,6 +180,8 @@ def test_stroke_map_and_drift_forms_are_the_documented_formulas():
     np.testing.assert_allclose(drift_change(t, e), want, atol=1e-14)
     e = pack_extensions({"drift": {"P_cyc": 0.0, "k_c1": 0.1}}, t0=0.5, T=2.0)
     assert not np.any(drift_change(t, e))
+    with pytest.raises(ValueError, match="k_s2 = .*nan.* is not a finite number"):
+        pack_extensions({"drift": {"P_cyc": 0.7, "k_s2": float("nan")}}, t0=0.5, T=2.0)
 
 
 def test_acceleration_level_part_is_even_in_a_and_starts_at_its_onset():

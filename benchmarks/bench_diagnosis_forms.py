@@ -73,8 +73,8 @@ protocol). Re-deciding the baseline's rows offline with the noise statistic alon
 (+33), 3 more wrong names. The session's last commit (5bb1dba) adds two fixes that CI's real-data
 tests found: the periodic part no longer tries periods at which the motion repeats itself
 (EMPS's second record), and the long-record solver leaves pinned extras out. The grid was
-not run again on them; of the humidity-cycle and interval-lubrication cases re-run on
-5bb1dba, the same ones are named as on d12174d.
+not run again on them; its 40 humidity-cycle and interval-lubrication cases, re-run on
+5bb1dba, give the same 26 verdicts as on d12174d.
 
 Sealed family of session 12's end (``--sealed`` then, written by another hand without running
 the diagnosis on it, run once on the code of d12174d, 179 s wall): 176 cases (0 skipped),

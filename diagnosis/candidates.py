@@ -273,6 +273,12 @@ class LawCandidate(Candidate):
         box = default_bounds(law, list(self.OWN))
         return [Extra(n, float(getattr(law.params, n)), *box[n], units[n]) for n in self.OWN]
 
+def _over_onset(a, a_e):
+    """The level part's drive ``max(|a| - a_e, 0)`` [m/s^2] of :class:`Acceleration`
+    (:func:`friction.extensions.extension_force`'s formula)."""
+    return np.maximum(np.abs(a) - a_e, 0.0)
+
+
 def _sig_neg(v, ctx):
     # smooth indicator of the negative direction: a sign change is not a step in measured data
     return 0.5 * (1.0 - np.tanh(v / (0.02 * ctx.sv)))
@@ -370,8 +376,8 @@ class Acceleration(Candidate):
         lags = [0.0, ctx.dt, 3.0 * ctx.dt] if "tau_lag" in {
             e.name for e in self.force_extras(ctx)} else [0.0]
         # the level part's column at each onset and lag (beside every point of the grid)
-        levels = {(a_e, lag): _first_order(np.maximum(np.abs(a) - a_e * ctx.sa, 0.0),
-                                           fit.dt, lag)[sub] * Ff[sub]
+        levels = {(a_e, lag): _first_order(_over_onset(a, a_e * ctx.sa), fit.dt, lag)[sub]
+                  * Ff[sub]
                   for a_e in self.LEVEL_ONSETS for lag in lags}
         raw = float(rr[sub] @ rr[sub])
         best = {False: (raw, {}), True: (raw, {})}  # without and with the level part
@@ -433,8 +439,7 @@ class Acceleration(Candidate):
         a = np.asarray(fit.a, float)
         Fd = p["f_a"] * np.tanh(a / p["a_s"]) * acceleration_weight(fit.v, p["v_c"],
                                                                     p.get("m_a", 0.0))
-        lev = np.asarray(fit.F, float) * p.get("f_e", 0.0) * np.maximum(
-            np.abs(a) - p.get("a_e", 0.0), 0.0)
+        lev = np.asarray(fit.F, float) * p.get("f_e", 0.0) * _over_onset(a, p.get("a_e", 0.0))
         aa, ee, ll = float(a @ a), float(Fd @ Fd), float(lev @ lev)
         if not (aa > 0 and ee > 0):
             return "", ""
@@ -455,7 +460,7 @@ class Acceleration(Candidate):
         lag = p.get("tau_lag", 0.0)
         # the level part (even in a), lagged as the rest: a cylinder's pressure follows
         # the force demand through the oil's compliance
-        lev = p.get("f_e", 0.0) * np.maximum(np.abs(data.a) - p.get("a_e", 0.0), 0.0)
+        lev = p.get("f_e", 0.0) * _over_onset(data.a, p.get("a_e", 0.0))
         return F * (1.0 + _first_order(lev, data.dt, lag)) + _first_order(Fd, data.dt, lag)
 
 
@@ -652,14 +657,13 @@ class Drift(Candidate):
                 break
             # the step's time inside the early part, with the start's margin
             ts_hi = ctx.t0 + (self.FORECAST_SPLIT - self.STEP_MARGIN) * T
-            P_hi = ex["P_cyc"].hi  # (unused: the forms here have no periodic part)
             # (on the residual as it is: with the base's changes beside them, the forms
             # forecast alike and the choice follows the noise)
             cols, scales = self._form_columns(form, t[early], f[early], rr[early], ctx, ex,
-                                              ts_hi, P_hi)
+                                              ts_hi)
             c = _lsq(cols, rr[early])[1]
             late, _ = self._form_columns(form, t[~early], f[~early], None, ctx, ex, ts_hi,
-                                         P_hi, fixed=scales)
+                                         fixed=scales)
             miss = rr[~early] - late @ c
             sse = float(miss @ miss)
             if sse < best[0]:
@@ -670,7 +674,7 @@ class Drift(Candidate):
         chosen = []
         for frm in (form,) + ((self.CYCLE_FORM,) if periods else ()):
             cols, grid = self._form_columns(frm, t, f, rr, ctx, ex, ex["t_step"].hi,
-                                            ex["P_cyc"].hi, nuis=B, periods=periods)
+                                            nuis=B, periods=periods)
             chosen.append((*_lsq(_with(cols, B), rr), frm, grid))
         sse, c, form, grid = chosen[0]
         if len(chosen) > 1 and chosen[1][0] < self.CYCLE_GAIN * sse:
@@ -702,13 +706,12 @@ class Drift(Candidate):
         return [n for part in ("lin", "cyc", "sat", "step") if part in form
                 for n in names[part]]
 
-    def _form_columns(self, form, t, f, rr, ctx, ex, ts_hi, P_hi, fixed=None, nuis=None,
-                      periods=None):
+    def _form_columns(self, form, t, f, rr, ctx, ex, ts_hi, fixed=None, nuis=None,
+                      periods=()):
         """Regressors of the parts ``form`` of ``Ff d(t)`` at times ``t`` [s], their time
         scales chosen on ``rr`` by least squares over grids (or taken from ``fixed``), with
-        the columns ``nuis`` fitted beside them; the periodic part's period from
-        ``periods`` [s] (default: 40 up to ``P_hi``); the columns and the chosen
-        ``{"tau", "ts", "w", "P"}``."""
+        the columns ``nuis`` fitted beside them; the periodic part's period chosen from
+        ``periods`` [s]; the columns and the chosen ``{"tau", "ts", "w", "P"}``."""
         T = ctx.T or 1.0
         lin = f * (t - ctx.t0) / T
 
@@ -725,9 +728,7 @@ class Drift(Candidate):
         base = [lin] if "lin" in form else []
         if "cyc" in form:
             if "P" not in grid:
-                Ps = (np.geomspace(ex["P_cyc"].lo, max(P_hi, ex["P_cyc"].lo), 40)
-                      if periods is None else periods)
-                grid["P"] = min(Ps, key=lambda P: _lsq(
+                grid["P"] = min(periods, key=lambda P: _lsq(
                     _with(np.column_stack(base + cyc(P)), nuis), rr)[0])
             base = base + cyc(grid["P"])
         if "sat" in form:

@@ -332,6 +332,9 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
                                      f"[{'m/s^2' if k == 'a_s' else 'm/s'}]")
             if not p.get("m_a", 0.0) >= 0:
                 raise ValueError(f"m_a = {p['m_a']!r} is out of bounds: must be >= 0 [-]")
+            for k in ("f_a", "f_e"):
+                if not np.isfinite(p.get(k, 0.0)):
+                    raise ValueError(f"{k} = {p[k]!r} is not a finite number")
             if not p.get("a_e", 0.0) >= 0:
                 raise ValueError(f"a_e = {p['a_e']!r} is out of bounds: must be >= 0 "
                                  f"[m/s^2]")

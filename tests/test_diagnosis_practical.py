@@ -194,6 +194,10 @@ def test_acceleration_level_part_is_even_in_a_and_starts_at_its_onset():
         assert extension_force(2.0, 0.1, a, 0.0, 1.0, 0.0, e) == pytest.approx(want)
     with pytest.raises(ValueError, match="a_e = -0.1 is out of bounds"):
         pack_extensions({"acceleration": {"f_a": 0.0, "a_s": 1.0, "v_c": 1.0, "a_e": -0.1}})
+    for k in ("f_e", "f_a", "a_e"):
+        with pytest.raises(ValueError, match=f"{k} = nan"):
+            pack_extensions({"acceleration": {"f_a": 0.0, "a_s": 1.0, "v_c": 1.0,
+                                              k: float("nan")}})
 
 
 @pytest.mark.slow

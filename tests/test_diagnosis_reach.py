@@ -312,3 +312,40 @@ def test_acceleration_start_keeps_its_level_part_only_where_the_odd_part_falls_s
     q = acc.start(data, Ff, seed000 + noise, ctx)
     assert isinstance(q["f_e"], Fixed) and q["f_e"] == 0.0
     assert q["f_a"] == pytest.approx(0.3, rel=0.2)
+
+
+def test_slip_memory_follows_its_signal_over_the_travel_not_the_time():
+    from diagnosis.candidates import slip_memory
+    x = np.r_[np.linspace(0.0, 0.01, 101), np.full(100, 0.01), np.linspace(0.01, 0.02, 101)]
+    u = np.r_[np.zeros(101), np.ones(201)]  # the load steps while the slide stands
+    m = slip_memory(u, x, 0.002)
+    assert np.allclose(m[:101], 0.0)
+    assert np.allclose(m[101:201], 0.0)  # no travel, no renewal: the memory holds
+    # then it relaxes as exp(-s / D) along the travel s (exact per sample)
+    s = x[201:] - 0.01
+    assert np.allclose(m[201:], 1.0 - np.exp(-s / 0.002), atol=1e-12)
+    assert np.array_equal(slip_memory(u, x, 0.0), u)  # D = 0: none
+
+
+def test_load_start_keeps_its_memory_only_where_the_load_acts_over_a_travel():
+    # junctions renewed by sliding: the levels follow the load over a slip distance of a
+    # tenth of the stroke; the instantaneous slopes cannot follow it, the memory is kept.
+    # A load that acts at once: the memory is pinned off
+    from diagnosis.candidates import Fixed, slip_memory
+    from diagnosis.effects import CANDIDATES, make_context
+    from friction.dataset import Dataset
+    base = make_case("clean", 1.0, 0.0, n=6000)
+    t = base.t
+    load = 1000.0 * (1.0 + 0.5 * np.sin(2 * np.pi * 3.0 * t / t[-1]) + 0.3 * (t > 0.5 * t[-1]))
+    data = Dataset(t=t, x=base.x, v=base.v, a=base.a, F=base.F, load=load)
+    ctx = make_context(data)
+    load_c = CANDIDATES["load"]
+    Ff = np.tanh(data.v / (0.05 * ctx.sv))
+    rel = (load - ctx.L0) / ctx.L0
+    noise = 0.005 * np.random.default_rng(3).standard_normal(len(t))
+    D = 0.1 * (ctx.x_hi - ctx.x_lo)
+    p = load_c.start(data, Ff, 0.4 * Ff * slip_memory(rel, data.x, D) + noise, ctx)
+    assert not isinstance(p["D_L"], Fixed) and p["D_L"] > 0
+    assert p["k_Lm"] == pytest.approx(0.4, rel=0.35)
+    q = load_c.start(data, Ff, 0.4 * Ff * rel + noise, ctx)
+    assert isinstance(q["D_L"], Fixed) and q["D_L"] == 0.0 and q["k_Lm"] == 0.0

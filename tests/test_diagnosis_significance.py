@@ -7,7 +7,7 @@ from diagnosis import diagnose
 from diagnosis.benchmark import make_case, make_plant_case
 from diagnosis.core import MIN_EXCESS_CLOSED, NOISE_RATIO, decide
 from diagnosis.significance import encompassing_z, improvement_z, noise_z, z_threshold
-from diagnosis.verdict import EVENT_RATIO
+from diagnosis.verdict import EVENT_RATIO, RESOLVED_EXCESS, RESOLVED_IMPRINT
 from friction import make_model
 
 
@@ -109,11 +109,21 @@ def test_a_gap_of_two_events_is_resolved_against_the_noise_not_by_its_events():
     e.update(noise_z=z_noise, imprint=np.sqrt(np.mean(gap ** 2)) / sd)
     others = [_eff(f"other{k}", before, before, floor, 0.0) for k in range(9)]
     assert decide([e] + others, before, floor)["cause"] == "inertia"
-    # the same statistics under a gap within EVENT_RATIO x the floor: not a name
-    near = dict(e, excess_closed=1.0)
+    # the same statistics under a gap within EVENT_RATIO x the floor, closed only in part
+    # (what is left is not the floor's noise): not a name
+    near = dict(e, excess_closed=0.9 * RESOLVED_EXCESS)
     v = decide([near] + others, 0.9 * EVENT_RATIO * floor, floor)
     assert v["cause"] != "inertia" and "against the noise floor" not in v["reason"]
     assert "not significant (paired z" in v["reason"]
+    # ... closed to the floor with an imprint of a noise floor or more: resolved against
+    # the noise left behind
+    closed = dict(e, excess_closed=RESOLVED_EXCESS)
+    assert e["imprint"] >= RESOLVED_IMPRINT * floor
+    assert decide([closed] + others, 0.9 * EVENT_RATIO * floor, floor)["cause"] == "inertia"
+    # ... but an imprint below a noise floor stays with the HAC statistic
+    faint = dict(closed, imprint=0.9 * RESOLVED_IMPRINT * floor)
+    v = decide([faint] + others, 0.9 * EVENT_RATIO * floor, floor)
+    assert v["cause"] != "inertia" and "not significant (paired z" in v["reason"]
 
 
 def _eff(name, before, after, floor, z, n_params=1):

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen7`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen8`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -237,6 +237,7 @@ _S4 = "diagnosis.benchmark.seen4:"
 _S5 = "diagnosis.benchmark.seen5:"
 _S6 = "diagnosis.benchmark.seen6:"
 _S7 = "diagnosis.benchmark.seen7:"
+_S8 = "diagnosis.benchmark.seen8:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -255,8 +256,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "rolling_skid": _S4 + "rolling_skid_truth",
                    "moment_load": _S5 + "moment_load_truth",
                    "cylinder_pressure": _S6 + "cylinder_pressure_truth",
-                   "motor_attraction": _S7 + "motor_attraction_truth"},
-           sealed={"pitch_squeeze": _S + "pitch_squeeze_truth"},
+                   "motor_attraction": _S7 + "motor_attraction_truth",
+                   "pitch_squeeze": _S8 + "pitch_squeeze_truth"},
+           sealed={"weight_transfer": _S + "weight_transfer_truth"},
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
@@ -270,8 +272,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "junction_creep": _S4 + "junction_creep_truth",
                    "normal_vibration": _S5 + "normal_vibration_truth",
                    "pivot_lever": _S6 + "pivot_lever_truth",
-                   "plastic_junctions": _S7 + "plastic_junctions_truth"},
-           sealed={"hydrostatic_overload": _S + "hydrostatic_overload_truth"},
+                   "plastic_junctions": _S7 + "plastic_junctions_truth",
+                   "hydrostatic_overload": _S8 + "hydrostatic_overload_truth"},
+           sealed={"squeeze_cavitation": _S + "squeeze_cavitation_truth"},
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
@@ -285,8 +288,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "rod_seal_film": _S4 + "rod_seal_film_truth",
                    "ratchet_texture": _S5 + "ratchet_texture_truth",
                    "spring_return": _S6 + "spring_return_truth",
-                   "tilted_pad": _S7 + "tilted_pad_truth"},
-           sealed={"sprag_strut": _S + "sprag_strut_truth"},
+                   "tilted_pad": _S7 + "tilted_pad_truth",
+                   "sprag_strut": _S8 + "sprag_strut_truth"},
+           sealed={"meter_out_throttle": _S + "meter_out_throttle_truth"},
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
                          "Stribeck curve shape: exponent, Lorentzian, a speed map",
@@ -300,8 +304,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "log_weakening": _S4 + "log_weakening_truth",
                    "eyring_boundary": _S5 + "eyring_boundary_truth",
                    "starved_film": _S6 + "starved_film_truth",
-                   "rubber_hysteresis": _S7 + "rubber_hysteresis_truth"},
-           sealed={"contact_resonance": _S + "contact_resonance_truth"},
+                   "rubber_hysteresis": _S7 + "rubber_hysteresis_truth",
+                   "contact_resonance": _S8 + "contact_resonance_truth"},
+           sealed={"dither_averaging": _S + "dither_averaging_truth"},
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -319,8 +324,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "cogging": _S4 + "cogging_truth",
                    "preload_taper": _S5 + "preload_taper_truth",
                    "oil_pocket": _S6 + "oil_pocket_truth",
-                   "end_cushion": _S7 + "end_cushion_truth"},
-           sealed={"telescopic_cover": _S + "telescopic_cover_truth"},
+                   "end_cushion": _S7 + "end_cushion_truth",
+                   "telescopic_cover": _S8 + "telescopic_cover_truth"},
+           sealed={"air_spring": _S + "air_spring_truth"},
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
@@ -333,8 +339,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "basset_added_mass": _S4 + "basset_added_mass_truth",
                    "dispensing_mass": _S5 + "dispensing_mass_truth",
                    "sliding_payload": _S6 + "sliding_payload_truth",
-                   "rattling_mass": _S7 + "rattling_mass_truth"},
-           sealed={"freewheel_flywheel": _S + "freewheel_flywheel_truth"},
+                   "rattling_mass": _S7 + "rattling_mass_truth",
+                   "freewheel_flywheel": _S8 + "freewheel_flywheel_truth"},
+           sealed={"pick_and_place": _S + "pick_and_place_truth"},
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
@@ -348,8 +355,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "clock_skew": _S4 + "clock_skew_truth",
                    "timing_jitter": _S5 + "timing_jitter_truth",
                    "slew_limit": _S6 + "slew_limit_truth",
-                   "pressure_line": _S7 + "pressure_line_truth"},
-           sealed={"running_median": _S + "running_median_truth"},
+                   "pressure_line": _S7 + "pressure_line_truth",
+                   "running_median": _S8 + "running_median_truth"},
+           sealed={"deadband_reporting": _S + "deadband_reporting_truth"},
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
@@ -364,8 +372,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "third_body": _S4 + "third_body_truth",
                    "interval_lubrication": _S5 + "interval_lubrication_truth",
                    "seal_relaxation": _S6 + "seal_relaxation_truth",
-                   "tribo_oxide": _S7 + "tribo_oxide_truth"},
-           sealed={"antioxidant_depletion": _S + "antioxidant_depletion_truth"},
+                   "tribo_oxide": _S7 + "tribo_oxide_truth",
+                   "antioxidant_depletion": _S8 + "antioxidant_depletion_truth"},
+           sealed={"coating_wear_through": _S + "coating_wear_through_truth"},
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),
@@ -378,8 +387,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "oil_filled_gap": _S4 + "oil_filled_gap_truth",
                    "worn_gap": _S5 + "worn_gap_truth",
                    "drag_idler": _S6 + "drag_idler_truth",
-                   "biased_play": _S7 + "biased_play_truth"},
-           sealed={"slack_chain": _S + "slack_chain_truth"},
+                   "biased_play": _S7 + "biased_play_truth",
+                   "slack_chain": _S8 + "slack_chain_truth"},
+           sealed={"magnetic_coupling": _S + "magnetic_coupling_truth"},
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
                         "Maxwell-slip)", "modify_law"),
@@ -392,8 +402,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "zener_junction": _S4 + "zener_junction_truth",
                    "mindlin_contacts": _S5 + "mindlin_contacts_truth",
                    "rate_state_presliding": _S6 + "rate_state_presliding_truth",
-                   "tomlinson_asperities": _S7 + "tomlinson_asperities_truth"},
-           sealed={"bond_rupture": _S + "bond_rupture_truth"},
+                   "tomlinson_asperities": _S7 + "tomlinson_asperities_truth",
+                   "bond_rupture": _S8 + "bond_rupture_truth"},
+           sealed={"gouge_fabric": _S + "gouge_fabric_truth"},
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 

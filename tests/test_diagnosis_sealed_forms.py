@@ -1,9 +1,10 @@
-"""The eighth sealed truth family (diagnosis.benchmark.sealed, written in session 13, sealed:
+"""The ninth sealed truth family (diagnosis.benchmark.sealed, written in session 14, sealed:
 not run): each form builds a finite case of the requested size on every plant it applies
-to, is the base law at s = 0 and grows with its amplitude factor. No diagnosis is run on
-these forms: the family stays unseen until the end of a piece of work. Each effect record of
-:data:`diagnosis.effects.EFFECTS` names it as its ``sealed`` form (the seventh family, sealed
-before it, is :mod:`diagnosis.benchmark.seen7` since its run in session 13)."""
+to, is the base law at s = 0, grows with its amplitude factor and refuses the plants it does
+not apply to. No diagnosis is run on these forms: the family stays unseen until the end of a
+piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS` names it as its
+``sealed`` form (the eighth family, sealed before it, is :mod:`diagnosis.benchmark.seen8`
+since its run in session 14)."""
 import dataclasses
 import importlib
 
@@ -19,40 +20,22 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "pitch_squeeze", "load": "hydrostatic_overload",
-        "asymmetry": "sprag_strut", "stribeck_shape": "contact_resonance",
-        "position": "telescopic_cover", "inertia": "freewheel_flywheel",
-        "delay": "running_median", "drift": "antioxidant_depletion",
-        "backlash": "slack_chain", "gms": "bond_rupture"}
+FORM = {"acceleration": "weight_transfer", "load": "squeeze_cavitation",
+        "asymmetry": "meter_out_throttle", "stribeck_shape": "dither_averaging",
+        "position": "air_spring", "inertia": "pick_and_place",
+        "delay": "deadband_reporting", "drift": "coating_wear_through",
+        "backlash": "magnetic_coupling", "gms": "gouge_fabric"}
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
-#: the modules of truth forms: every form name any of them uses (``seen7`` is the seventh
-#: family once this one is swapped in; before, it is ``sealed``)
+#: the modules of truth forms: every form name any of them uses
 _FORM_MODULES = ("diagnosis.benchmark.truths", "diagnosis.benchmark.forms",
                  "diagnosis.benchmark.seen", "diagnosis.benchmark.seen2",
                  "diagnosis.benchmark.seen3", "diagnosis.benchmark.seen4",
                  "diagnosis.benchmark.seen5", "diagnosis.benchmark.seen6",
-                 "diagnosis.benchmark.seen7", "diagnosis.benchmark.sealed",
-                 "diagnosis.effects_backlash", "diagnosis.effects_gms")
-#: whether the family has been swapped in (it is then ``diagnosis.benchmark.sealed``)
-_SWAPPED = family.__name__ == "diagnosis.benchmark.sealed"
-
-
-@pytest.fixture(scope="module", autouse=True)
-def _records_name_the_family():
-    """The effect records naming this family as their ``sealed`` form: after the swap they
-    do so themselves and nothing is patched; before it (the draft) they still name the
-    seventh family, and each is replaced by a copy naming this family's form while the
-    module's tests run (restored after)."""
-    with pytest.MonkeyPatch.context() as mp:
-        for effect, form in FORM.items():
-            record = EFFECTS[effect]
-            if record.forms("sealed") != (form,):
-                assert not _SWAPPED, (effect, record.forms("sealed"))
-                mp.setitem(EFFECTS, effect, dataclasses.replace(
-                    record, sealed={form: getattr(family, f"{form}_truth")}))
-        yield
+                 "diagnosis.benchmark.seen7", "diagnosis.benchmark.seen8",
+                 "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
+                 "diagnosis.effects_gms")
 
 
 def test_the_family_has_one_new_form_per_effect():
@@ -62,31 +45,25 @@ def test_the_family_has_one_new_form_per_effect():
     for effect, form in FORM.items():
         assert form not in every, (effect, form)
         fn = getattr(family, f"{form}_truth")
-        assert fn.__module__ == family.__name__
+        assert fn.__module__ == "diagnosis.benchmark.sealed"
         assert getattr(fn, "fine_grid", False), form   # integrated on the fine grid
         assert f"{form}_truth" in family.__all__
     # no function of that name, nor a form of that name, anywhere else
     names = {f"{f}_truth" for f in FORM.values()}
     for name in _FORM_MODULES:
-        try:
-            mod = importlib.import_module(name)
-        except ModuleNotFoundError:
-            # the seventh family is .sealed until this one is swapped in, .seen7 after
-            assert name.endswith(".seen7") and not _SWAPPED, name
-            continue
+        mod = importlib.import_module(name)
         if mod is family:
             continue
         assert not names & set(vars(mod)), name
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
-    assert doc.startswith("The eighth sealed truth family")
-    assert "sealed: not run" in doc and "2026-11-28 (session 13)" in doc
-    assert "session 12's, was run once in session 13 and is :mod:`.seen7`" in doc
+    assert doc.startswith("The ninth sealed truth family")
+    assert "sealed: not run" in doc and "2026-11-29 (session 14)" in doc
+    assert "session 13's, was run once in session 14 and is :mod:`.seen8`" in doc
 
 
 def test_registered_forms_resolve():
-    # before the swap through the module fixture's copies of the records, after it the
-    # records themselves
+    # the effect records name this family's forms as their sealed ones
     for effect, form in FORM.items():
         assert EFFECTS[effect].forms("sealed") == (form,)
         assert EFFECTS[effect].truth(form) is getattr(family, f"{form}_truth")
@@ -105,7 +82,7 @@ def test_sealed_forms_are_finite_and_grow_on_every_plant_they_apply_to():
 @pytest.mark.parametrize("plant", ["xml350", "valve"])
 def test_sealed_forms_at_zero_amplitude_are_the_base(plant):
     # s scales the effect from nothing: at s = 0 each form is the base law (up to its own
-    # integration on the fine grid: the chain's taut strands, a stiff coupling)
+    # integration on the fine grid: the magnetic coupling's stiff series coupling)
     assert_zero_amplitude_is_the_base(FORM, plant)
 
 
@@ -113,113 +90,110 @@ def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     from diagnosis.benchmark.kinematics import fine_kinematics
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        family.contact_resonance_truth(iso, 1.0)
+        family.dither_averaging_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.bond_rupture_truth(iso, 1.0)
+        family.gouge_fabric_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.slack_chain_truth(iso, 1.0)
+        family.magnetic_coupling_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
-    # a one-way stroke (the press's) never comes back over the cover's sections the fit
-    # part moved
+    # a one-way stroke (the press's) never comes back over the positions the fit part saw
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        family.telescopic_cover_truth.__wrapped__(one_way, 1.0)
-    # a load that never changes never overloads the pad in part of the record
+        family.air_spring_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes squeezes no film
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        family.hydrostatic_overload_truth.__wrapped__(still, 1.0)
+        family.squeeze_cavitation_truth.__wrapped__(still, 1.0)
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
-def test_cover_sections_join_in_turn_and_start_again_after_a_reversal():
-    # three sections of 1 m, collapsed at 0: out to 2.5 m, back to 1 m
-    x = np.concatenate((np.linspace(0.0, 2.5, 251), np.linspace(2.5, 1.0, 151)[1:]))
-    ext, ret = family._cover(x, 0.0, 1.0, 3, 0.05)
-    out = {xi: ext[np.argmin(np.abs(x[:251] - xi))] for xi in (0.5, 1.5, 2.3)}
-    assert out == {0.5: 1.0, 1.5: 2.0, 2.3: 3.0}                  # a staircase out
-    back = {xi: ret[251 + np.argmin(np.abs(x[251:] - xi))] for xi in (2.3, 1.6, 1.1)}
-    assert back == {2.3: 1.0, 1.6: 1.0, 1.1: 2.0}                 # one section first, back
+def test_squeezed_load_rises_late_and_falls_at_once():
+    t = np.arange(7.0)
+    L = np.array([1.0, 2.0, 2.0, 2.0, 1.0, 1.5, 0.5])
+    La = family._squeezed_load(t, L, 1.0)
+    e = np.exp(-1.0)
+    assert La[0] == 1.0 and np.isclose(La[1], 2.0 - e) and np.isclose(La[3], 2.0 - e ** 3)
+    assert La[4] == 1.0 and La[6] == 0.5                             # down at once
+    assert 1.0 < La[5] < 1.5                                         # up late
 
 
-def test_freewheel_drives_the_part_forwards_only():
-    t = np.linspace(0.0, 4.0, 4001)
-    v = np.sin(0.5 * np.pi * t)            # accelerates, brakes, then runs backwards
-    a = 0.5 * np.pi * np.cos(0.5 * np.pi * t)
-    f = family._freewheel(t, v, a, 100.0)
-    push = slice(100, 900)
-    assert np.allclose(f[push], a[push] + v[push] / 100.0)        # engaged: a missed mass
-    assert np.all(f[1100:] == 0.0)         # braking faster than it coasts, then backwards
+def test_send_on_delta_holds_until_the_deadband_is_crossed():
+    ramp = np.arange(641) / 64.0                                     # 0 to 10, exact steps
+    y = family._send_on_delta(ramp, 1.0, 1000)
+    assert np.all(y <= ramp) and np.all(ramp - y < 1.0)
+    assert np.array_equal(np.unique(y), np.arange(11.0))             # a staircase of 1.0
+    assert np.array_equal(family._send_on_delta(ramp, 0.0, 1000), ramp)
+    # a plateau is held off by what the last report left, until the heartbeat
+    step = np.concatenate((np.zeros(10), np.full(30, 0.6)))
+    held = family._send_on_delta(step, 1.0, 20)
+    assert np.all(held[:20] == 0.0) and np.all(held[20:] == 0.6)
 
 
-def test_running_median_delays_ramps_and_keeps_edges():
-    u = np.arange(400, dtype=float)
-    y = family._causal_median(u, 20)
-    assert np.array_equal(y[40:], u[40:] - 20)                     # a ramp: 20 points late
-    step = (u >= 200).astype(float)
-    ys = family._causal_median(step, 20)
-    assert np.array_equal(ys, (u >= 220).astype(float))             # the edge kept, late
-    # a reversal's peak, which a shift keeps, is cut by half the delay
-    peak = np.minimum(u, 300.0 - u)
-    assert np.max(family._causal_median(peak, 20)) == np.max(peak) - 10.0
-    assert np.array_equal(family._causal_median(u, 0), u)
+def test_dither_averages_a_coulomb_level_to_the_arcsine_law():
+    u = np.linspace(0.0, 2.0, 41)
+    gd = family._dithered_curve(lambda w: np.ones_like(w), u, 1.0, phases=4096)
+    below = u < 1.0
+    assert np.allclose(gd[below], 2.0 / np.pi * np.arcsin(u[below]), atol=2e-3)
+    assert np.allclose(gd[u > 1.0], 1.0) and gd[0] == 0.0
 
 
-def test_bonds_slide_at_their_mean_and_break_again_beyond_the_opposite_stretch():
-    t = np.linspace(0.0, 10.0, 100001)
-    x = np.concatenate((np.linspace(0.0, 5.0, 50001), np.linspace(5.0, 4.0, 50001)[1:]))
-    lc = 0.1
-    thr = lc * (1.0 + family.BOND_SPREAD * (2.0 * (np.arange(256) + 0.5) / 256 - 1.0))
-    f, G = family._bonds(t, x, np.ones_like(x), thr, 0.02 * lc, 0.1 * lc)
-    steady = f[20000:49000]
-    assert abs(np.mean(steady) - 1.0) < 0.05 and np.std(steady) < 0.03
-    assert np.allclose(G, 1.0)
-    # after the reversal every bond unloads along its own stretch (no rupture, no new
-    # bond: a straight line) until the shortest reaches its opposite rupture stretch
-    back = f[50000:50000 + 2000]
-    assert np.allclose(np.diff(back), np.diff(back)[0], atol=1e-3)
-    assert f[50000 + 5000] < -0.7
+def test_part_is_carried_from_the_pick_zone_to_the_place_zone_only():
+    x = np.concatenate((np.linspace(0.5, 0.0, 6), np.linspace(0.1, 1.0, 10),
+                        np.linspace(0.9, 0.0, 10)))
+    c = family._carrying(x, 0.05, 0.95)
+    assert np.all(c[:5] == 0.0) and c[5] == 1.0                      # empty until picked
+    assert np.all(c[6:15] == 1.0) and c[15] == 0.0                   # carried, then placed
+    assert np.all(c[16:25] == 0.0) and c[25] == 1.0                  # back empty
 
 
-def test_catenary_strands_pull_weakly_at_mid_slack_and_hard_when_taut():
-    C, half, kh = 1.0, 1.0, 1e6
-    e_min = 0.02 * half
-    T = [family._strand(e, 0.0, C, e_min, kh, 0.0) for e in (1.0, 0.25, 0.04)]
-    assert np.allclose(T, [1.0, 2.0, 5.0])                          # C / sqrt(e)
-    assert family._strand(0.0, 0.0, C, e_min, kh, 0.0) > 1e3 * T[0]   # taut: stretched
-    assert family._strand(2.0 * half, 0.0, C, e_min, kh, 0.0) < T[0]
+def test_gouge_slides_at_its_strength_and_yields_early_after_a_reversal():
+    x = np.concatenate((np.linspace(0.0, 10.0, 10001), np.linspace(10.0, 5.0, 5001)[1:]))
+    G = np.ones_like(x)
+    f = family._gouge(x, G, 100.0, 0.5, family.FABRIC_FLOOR)
+    assert np.allclose(f[7000:10000], 1.0)                           # the fabric built
+    back = f[10001:]
+    # unloaded elastically (0.1 a step) to the floor in 12 steps, yields there, then
+    # hardens along an S-curve (convex at first) to the full strength
+    assert np.all(np.diff(back[:12]) < -0.099)
+    assert np.isclose(back[12], -family.FABRIC_FLOOR, atol=1e-3)
+    d = -np.diff(back[12:2000])
+    assert d[100] > d[10] > 0.0 and np.isclose(back[-1], -1.0, atol=1e-3)
 
 
-def test_sprag_amplifies_the_positive_direction_and_relieves_the_other():
+def test_weight_transfer_follows_the_signed_acceleration_in_both_directions():
     kin = plant_kinematics("xml350", quick=True)
     Fb = base_force(kin)
-    dF = family.sprag_strut_truth(kin, 1.0) - Fb
-    v99 = kin.scales["v99"]
-    fwd, back = kin.v > 0.2 * v99, kin.v < -0.2 * v99
-    assert np.all(dF[fwd] > 0.0) and np.all(dF[back] > 0.0)        # +F up, -F less negative
-    assert np.median(dF[fwd]) > np.median(dF[back])                # 1 / (1 - c) > 1 - 1 / (1 + c)
+    up = np.abs(family.weight_transfer_truth(kin, 1.0)) - np.abs(Fb)
+    v99, a99 = kin.scales["v99"], kin.scales["a99"]
+    for d in (1.0, -1.0):
+        moving = d * kin.v > 0.3 * v99
+        assert np.median(up[moving & (kin.a > 0.3 * a99)]) > 0.0     # a > 0: levels up
+        assert np.median(up[moving & (kin.a < -0.3 * a99)]) < 0.0    # a < 0: down
 
 
-def test_contact_resonance_is_a_notch_with_a_plateau_beyond():
-    zeta = family.RESONANCE_DAMPING
-    r = np.array([0.0, 0.3, 1.0, 3.0, 30.0])
-    T = family._transmissibility(r, zeta)
-    assert T[0] == 0.0 and T[1] < 0.1 and abs(T[2] - 1.0) < 1e-12
-    assert T[3] < T[2] and abs(T[4] - 2.0 * zeta) < 0.01
-
-
-def test_antioxidant_changes_nothing_during_the_induction():
+def test_meter_out_throttle_drags_only_moving_out():
     kin = plant_kinematics("valve", quick=True)
-    dF = family.antioxidant_depletion_truth(kin, 1.0) - base_force(kin)
-    u = (kin.t - kin.t[0]) / (kin.t[-1] - kin.t[0])
-    assert np.max(np.abs(dF[u < 0.9 * family.INDUCTION])) < 1e-9
-    late = np.abs(dF[u > 0.95])
-    assert np.mean(late) > 2.0 * np.mean(np.abs(dF[(u > 0.5) & (u < 0.6)]))   # accelerating
+    dF = family.meter_out_throttle_truth(kin, 1.0) - base_force(kin)
+    v99 = kin.scales["v99"]
+    assert np.all(dF >= -1e-9)
+    assert np.max(np.abs(dF[kin.v < -0.1 * v99])) < 1e-4 * np.max(dF)
+    fast, slow = kin.v > 0.8 * v99, (kin.v > 0.2 * v99) & (kin.v < 0.3 * v99)
+    assert np.median(dF[fast]) > 6.0 * np.median(dF[slow])          # ~ v^2
+
+
+def test_coating_changes_nothing_until_it_wears_through():
+    kin = plant_kinematics("valve", quick=True)
+    dF = family.coating_wear_through_truth(kin, 1.0) - base_force(kin)
+    D = np.concatenate(([0.0], np.cumsum(np.abs(np.diff(kin.x)))))
+    u = D / D[-1]
+    early, late = np.abs(dF[u < 0.15]), np.abs(dF[u > 0.85])
+    assert np.mean(early) < 0.02 * np.mean(late)
 
 
 @pytest.mark.slow
 def test_sealed_forms_reach_their_size_on_every_plant():
-    # the sizing check: every form reaches 0.96 of the requested size at strengths 0.5 and
-    # 1 on every plant it applies to (quick protocols), so the open grid's count of its
+    # the sizing check: every form reaches 0.95 to 1.05 of the requested size at strengths
+    # 0.5 and 1 on every plant it applies to (quick protocols), so the grid's count of its
     # cases (2 strengths x 2 noise levels x plants, 0.7 of the size at least) is 176
     from diagnosis.benchmark import applicable
     cases = 0
@@ -231,6 +205,6 @@ def test_sealed_forms_reach_their_size_on_every_plant():
                 case = make_plant_case(plant, effect, strength, 0.01, form=form, quick=True)
                 share = case.effect_rms / (strength * EFFECT_SIZE)
                 assert np.all(np.isfinite(case.truth))
-                assert 0.96 <= share <= 1.06, (plant, effect, form, strength, share)
+                assert 0.95 <= share <= 1.05, (plant, effect, form, strength, share)
                 cases += 2 * (share >= MIN_SIZE)
     assert cases == 176

@@ -25,10 +25,11 @@ PLANT = {"acceleration": "xml350", "load": "xml350", "asymmetry": "xml350",
          "delay": "xml350", "drift": "xml350", "backlash": "xml350", "gms": "xml350"}
 
 
-def test_the_family_is_in_the_open_grid_last():
+def test_the_family_is_in_the_open_grid_before_seen7():
     assert set(PLANT) == set(FORM) == {n for n, e in EFFECTS.items() if e.truths}
     for effect, form in FORM.items():
-        assert EFFECTS[effect].forms("all")[-2] == form, effect
+        # the seventh and eighth seen families (diagnosis.benchmark.seen7, .seen8) after it
+        assert EFFECTS[effect].forms("all")[-3] == form, effect
         assert form not in EFFECTS[effect].forms("sealed"), effect
         assert EFFECTS[effect].truth(form).__module__ == "diagnosis.benchmark.seen6"
 

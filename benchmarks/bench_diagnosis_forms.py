@@ -77,6 +77,28 @@ tests found: the periodic part no longer tries periods at which the motion repea
 not run again on them; its 40 humidity-cycle and interval-lubrication cases, re-run on
 5bb1dba, give the same 26 verdicts as on d12174d.
 
+Results of session 14 (2026-11-29; the open grid with seen7, **1788 cases listed**, 1772
+run, 16 skipped; adding seen7 renumbers the case seeds, so these compare with the 1596-case
+figures above only in sum). On the session's first code (896c69a, session 13's last; 3775 s
+wall, shared with other work): top-1 **53.3 %** (945; 54.6 % of the detectable), mean
+|shrink error| 0.285, wrong names on 138 of 1732 effect cases (8.0 %: gms -> acceleration
+24, acceleration -> position 16, inertia -> acceleration 12, backlash -> gms 7, load ->
+drift 5, delay -> gms 5, backlash -> delay 5, asymmetry -> load 5), clean 0 of 20 named (14
+``none``, 6 ``unexplained``), ripple 0 of 20 named. On a2ccae2 (significance against the
+noise a candidate leaves behind, :func:`diagnosis.verdict.resolved`; the load's memory over
+the travel): top-1 **54.4 %** (964; 55.7 % of the detectable), mean |shrink error| 0.284,
+wrong names on 138 (the same), clean and ripple none named. How these were obtained, as the
+session's time allowed: the verdict rule re-decided offline on every row of the first run
+(exact: the rows carry the ranked candidates' decision entries; +14, no new wrong name), and
+the cases the load's memory can change run again on a2ccae2 - the grid's first 220 cases
+(the valve's acceleration, load, asymmetry and stribeck_shape forms) and a part of the 370 cases
+of every plant whose effect is ``load`` or whose baseline ranked ``load`` in its first three
+(load plastic_junctions 0 -> 4/4 and junction_creep +1 on the valve; no case lost). By
+effect (first run -> a2ccae2): delay 89 -> 96/196, load 152 -> 157/194, inertia 120 ->
+122/200, gms 35 -> 37/120, stribeck_shape 35 -> 37/154, asymmetry 112 -> 113/200; the others
+unchanged (acceleration 82/200, drift 144/200, position 112/160, backlash 30/108). 500 clean
+records on a2ccae2: 0 named (240 ``none``, 260 ``unexplained``, 736 s wall).
+
 Sealed family of session 13's end (``--sealed`` then, written by another hand without running
 the diagnosis on it, run once on the code of a2ccae2, 299 s wall): 176 cases (0 skipped),
 top-1 **40.3 %** (71; 41.0 % of the detectable), mean |shrink error| 0.324, wrong names on 29

@@ -487,12 +487,18 @@ def slip_memory(u, x, D) -> np.ndarray:
     x : array_like
         Position [m] at the same samples.
     D : float
-        Memory travel [m].
+        Memory travel [m] (finite; ValueError otherwise, and for ``u`` and ``x`` of
+        different lengths).
     """
     u = np.ascontiguousarray(u, dtype=float)
+    x = np.ascontiguousarray(x, dtype=float)
+    if u.shape != x.shape:
+        raise ValueError(f"slip_memory needs u and x of one length, got {u.size} and {x.size}")
+    if not np.isfinite(D):
+        raise ValueError(f"D = {D!r} is not finite: the memory travel must be a number [m]")
     if not D > 0.0:
         return u
-    return _slip_memory(u, np.ascontiguousarray(x, dtype=float), float(D))
+    return _slip_memory(u, x, float(D))
 
 
 class Load(Candidate):

@@ -325,6 +325,10 @@ def test_slip_memory_follows_its_signal_over_the_travel_not_the_time():
     s = x[201:] - 0.01
     assert np.allclose(m[201:], 1.0 - np.exp(-s / 0.002), atol=1e-12)
     assert np.array_equal(slip_memory(u, x, 0.0), u)  # D = 0: none
+    with pytest.raises(ValueError, match="one length"):
+        slip_memory(u, x[:-1], 0.002)
+    with pytest.raises(ValueError, match="not finite"):
+        slip_memory(u, x, float("nan"))
 
 
 def test_load_start_keeps_its_memory_only_where_the_load_acts_over_a_travel():

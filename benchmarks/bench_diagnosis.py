@@ -86,8 +86,17 @@ drift 0.089. Before the 12-knot position map (a 4th-order Legendre series) posit
 before the acceleration part lagged as a whole (seed 000's "lag" form; the lag acted on the
 acceleration only) acceleration was 0.129; overall 0.082 with both.
 
-Full diagnosis of 20,000 samples, every candidate (backlash and GMS included; the speed map
-and the load inside the bristle dynamics), warm (``--speed-only --repeats 5``, 2026-11-24
+Full diagnosis of 20,000 samples, every candidate that applies (backlash and GMS included;
+the case has no load column), warm (``--speed-only --repeats 5``, 2026-11-29 03:34 UTC,
+load 1.0-1.1, one BLAS thread), the candidate fits on 2 threads (:func:`diagnosis.cluster.
+thread_fits`; the laws' kernels compiled ``nogil``): best **3.89 s**, median 4.09 s, 22.0 /
+22.4 x one base identification (0.18 s); one thread in the same rounds: best 4.94 s, median
+5.12 s (27.9 / 28.1 x). The report is the same bit for bit. Two threads gain 1.27 x, not 2:
+the fits' Python parts (scipy's trust region, each simulation's start state and trial law,
+about half of a fit) hold the interpreter lock; the widest fits (position, drift) start first.
+
+Before (one thread; 2026-11-24, session 10's machine), every candidate (backlash and GMS
+included; the speed map and the load inside the bristle dynamics), warm (``--speed-only --repeats 5``, 2026-11-24
 15:18 UTC, load 0.9, one BLAS thread): best 3.82 s, median 3.94 s, 23.6 / 22.1 x one base
 identification (0.16 / 0.18 s). Before (session 9's code):
 
@@ -141,10 +150,11 @@ def _time_base(fit) -> float:
     return time.perf_counter() - t0
 
 
-def _time_full(data):
-    """Seconds of one full diagnosis of the speed case, and its report."""
+def _time_full(data, threads=None):
+    """Seconds of one full diagnosis of the speed case (its candidate fits on ``threads``
+    threads, default the machine's cores), and its report."""
     t0 = time.perf_counter()
-    rep = diagnose(data, "lugre")
+    rep = diagnose(data, "lugre", threads=threads)
     return time.perf_counter() - t0, rep
 
 
@@ -182,20 +192,22 @@ def speed_only(n=20000, repeats=5, scipy_jacobian=False):
     Returns
     -------
     dict
-        Lists of seconds ``full``, ``base`` (and ``full_scipy``), ``load`` (1-minute load
-        average before and after), ``verdict``.
+        Lists of seconds ``full`` (the candidate fits on the machine's cores, at most 4
+        threads), ``full_serial`` (one thread), ``base`` (and ``full_scipy``), ``load``
+        (1-minute load average before and after), ``verdict``.
     """
     from diagnosis import composite
     data, fit = _speed_case(n)
     load0 = os.getloadavg()[0]
     _time_base(fit)  # warm-up: numba kernels compiled and cached, imports done
     _, rep = _time_full(data)
-    times = {"base": [], "full": []}
+    times = {"base": [], "full": [], "full_serial": []}
     if scipy_jacobian:
         times["full_scipy"] = []
     for _ in range(repeats):
         times["base"].append(_time_base(fit))
         times["full"].append(_time_full(data)[0])
+        times["full_serial"].append(_time_full(data, threads=1)[0])
         if scipy_jacobian:
             composite.STRUCTURED_JACOBIAN = False
             try:
@@ -208,9 +220,11 @@ def speed_only(n=20000, repeats=5, scipy_jacobian=False):
     print(f"full diagnosis of {n} samples, every candidate, {repeats} warm runs "
           f"(load {load0:.2f} -> {load1:.2f}, OPENBLAS_NUM_THREADS="
           f"{os.environ.get('OPENBLAS_NUM_THREADS')}); verdict {rep['verdict']['cause']}")
-    labels = {"full": "full diagnosis", "full_scipy": "  with scipy's Jacobian",
+    from diagnosis.cluster import thread_count
+    labels = {"full": f"full diagnosis, {thread_count()} thr.",
+              "full_serial": "  one thread", "full_scipy": "  with scipy's Jacobian",
               "base": "base identification"}
-    for k in ("full", "full_scipy", "base"):
+    for k in ("full", "full_serial", "full_scipy", "base"):
         if k in times:
             ratio = "" if k == "base" else (f"  ({best[k] / best['base']:.1f} / "
                                             f"{med[k] / med['base']:.1f} x base id)")

@@ -465,7 +465,7 @@ class Acceleration(Candidate):
         return F * (1.0 + _first_order(lev, data.dt, lag)) + _first_order(Fd, data.dt, lag)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _slip_memory(u, x, D):
     out = np.empty(u.size)
     y = u[0]

@@ -1,5 +1,11 @@
-"""The diagnosis' candidate fits on a ``dask.distributed`` cluster (force level and
-trajectory level).
+"""Where the diagnosis' candidate fits run: threads of this process, or a
+``dask.distributed`` cluster (force level and trajectory level).
+
+In-process, the force level's candidate fits run on :data:`THREADS` threads
+(:func:`thread_fits`): they are independent of each other, and their compiled kernels (the
+laws' simulations, ``nogil``) and LAPACK release the interpreter lock, so two cores take
+about two fits at a time. Each thread runs exactly the fit the serial loop runs; the
+report is the same.
 
 Every candidate effect is re-identified jointly with the base law on the fit record
 (:func:`diagnosis.composite.fit_composite`), independently of the others: they are mapped
@@ -20,7 +26,18 @@ called once per candidate.
 """
 from __future__ import annotations
 
-__all__ = ["candidate_fits", "applicable", "as_client", "trajectory_fits"]
+__all__ = ["candidate_fits", "applicable", "as_client", "trajectory_fits", "thread_fits",
+           "THREADS"]
+
+import contextvars
+import os
+from concurrent.futures import ThreadPoolExecutor
+
+#: threads of this process the force level's candidate fits run on when no cluster is
+#: given: ``None`` the machine's cores (at most :data:`MAX_THREADS`), 1 one after the
+#: other (a process pool that already keeps every core busy sets 1 in its workers)
+THREADS = None
+MAX_THREADS = 4
 
 
 def as_client(executor):
@@ -127,6 +144,65 @@ def candidate_fits(executor, names, law, base_names, fit, ctx, val_sets=()) -> d
     call = ShippedCall(functools.partial(_fit_one, law=law, base_names=list(base_names),
                                          fit=fit, ctx=ctx))
     return dict(zip(names, run_shipped(client, call, list(names))))
+
+
+def thread_count(threads=None) -> int:
+    """Threads the candidate fits run on: ``threads``, else :data:`THREADS`, else the
+    machine's cores (at most :data:`MAX_THREADS`)."""
+    n = threads if threads is not None else THREADS
+    if n is None:
+        n = min(os.cpu_count() or 1, MAX_THREADS)
+    n = int(n)
+    if n < 1:
+        raise ValueError(f"threads = {n}: at least 1")
+    return n
+
+
+def thread_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> dict:
+    """The candidates' joint fits on threads of this process.
+
+    Parameters
+    ----------
+    names : list of str
+        Candidate effects; those that do not apply (:func:`applicable`) are left out.
+    law : FrictionModel
+        The fitted base law (the candidates' start).
+    base_names : list of str
+        Its free parameters.
+    fit : friction.dataset.Dataset
+        The fit record [SI units].
+    ctx : diagnosis.effects.Context
+        Its scales.
+    val_sets : list of friction.dataset.Dataset
+        The held-out records (a candidate needs its columns in them).
+    threads : int, optional
+        Threads (default :func:`thread_count`); 1: ``{}`` (the caller's loop fits).
+
+    Returns
+    -------
+    dict
+        ``name -> (Composite, fit NRMSE)``, the same as the serial loop gives.
+    """
+    n = thread_count(threads)
+    names = applicable(names, law, fit, ctx, val_sets) if n > 1 else []
+    if len(names) < 2:
+        return {}
+    import functools
+    one = functools.partial(_fit_one, law=law, base_names=list(base_names), fit=fit, ctx=ctx)
+    # the widest fits first (most Jacobian columns, the cost's first order), so that no
+    # long one starts last and runs alone
+    from .effects import CANDIDATES
+    width = {}
+    for name in names:
+        cand = CANDIDATES[name].specialise(law)
+        width[name] = len(cand.force_extras(ctx)) + max(
+            (len(nv) for _, nv in cand.modify_law(law, base_names, ctx)), default=0)
+    order = sorted(names, key=lambda nm: -width[nm])
+    with ThreadPoolExecutor(max_workers=min(n, len(names))) as pool:
+        # each fit in a copy of the caller's context (its progress reporter)
+        futures = {name: pool.submit(contextvars.copy_context().run, one, name)
+                   for name in order}
+        return {name: futures[name].result() for name in names}
 
 
 def trajectory_fits(executor, names, run_one, tm, engine) -> dict:

@@ -292,7 +292,8 @@ def _note_confounding(verdict: dict, effects: list, records) -> None:
 def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed: int = 0,
              fit_fraction: float = 0.7, greedy: bool = True, progress=None,
              mapping=None, scale=None, noise_level: float | None = None,
-             base_names: list | None = None, executor=None) -> DiagnosisReport:
+             base_names: list | None = None, executor=None,
+             threads: int | None = None) -> DiagnosisReport:
     """Locate and name the sim-to-real gap of a friction model.
 
     Parameters
@@ -324,6 +325,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         Where the candidates' joint fits run: in this process (default), or mapped over a
         dask cluster, one task per candidate, the fit record scattered once
         (:mod:`diagnosis.cluster`); the report is the same.
+    threads : int, optional
+        Threads of this process the candidates' fits run on when no ``executor`` is given
+        (default :data:`diagnosis.cluster.THREADS`: the machine's cores, at most 4; 1: one
+        after the other); the report is the same.
 
     Every record is simulated from the law's steady state at its first velocity (a record
     that starts in motion), a separate held-out record that starts at rest after an
@@ -425,8 +430,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
 
     # 3. which
     effects, skipped, fitted = [], {}, {}
-    from .cluster import candidate_fits  # on a cluster: the applicable ones' fits at once
+    from .cluster import as_client, candidate_fits, thread_fits  # the fits at once
     remote = candidate_fits(executor, names, base.law, base_names, fit, ctx, val_sets)
+    if as_client(executor) is None:
+        remote = thread_fits(names, base.law, base_names, fit, ctx, val_sets, threads)
     for k, name in enumerate(names, 1):
         cand = CANDIDATES[name].specialise(base.law)
         ok, why = cand.applicable(base.law, fit, ctx)

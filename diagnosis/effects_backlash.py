@@ -353,7 +353,7 @@ def _g(v, Fc, Fs, vs, alpha):
     return Fc + (Fs - Fc) * math.exp(-abs(v / vs) ** alpha)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _contact_lugre(h, vc, s0, s1, s2, Fc, Fs, vs, alpha):
     """LuGre friction [N] of a contact moving with the per-step velocities ``vc`` [m/s]
     (step ``h`` [s], n + 1 points): bristle exact for each step's velocity; the force at a
@@ -376,7 +376,7 @@ def _contact_lugre(h, vc, s0, s1, s2, Fc, Fs, vs, alpha):
     return F
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _play(xd, half):
     """Contact positions of a kinematic play of half-width ``half`` [m] (sharp flanks),
     starting centred."""
@@ -391,7 +391,7 @@ def _play(xd, half):
     return xc
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _mass_behind_gap(h, xd, half, m, k, c, hunt, s0, s1, s2, Fc, Fs, vs, alpha):
     """A contact of mass ``m`` [kg] with LuGre friction, pushed by the drive positions ``xd``
     [m] through a gap of half-width ``half`` [m] and, once engaged, a spring ``k`` and a

@@ -268,7 +268,7 @@ def _g(v, Fc, Fs, vs, alpha):
     return Fc + (Fs - Fc) * math.exp(-abs(v / vs) ** alpha)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _maxwell_slip(h, v, k, w, s2, Fc, Fs, vs, alpha):
     """Classic Maxwell-slip: blocks of stiffness ``k`` [N/m] and break-away share ``w``
     [-] (sum 1); each sticks (z_i += dx) until k_i |z_i| reaches w_i g(v), then slips
@@ -295,7 +295,7 @@ def _maxwell_slip(h, v, k, w, s2, Fc, Fs, vs, alpha):
     return F
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _dahl(h, v, sigma, expo, s2, Fc, Fs, vs, alpha):
     """Dahl's model with a Stribeck level: dF/dx = sigma |1 - F/g sgn v|^expo
     sgn(1 - F/g sgn v), explicit on the fine grid (substeps keep sigma dx / g small)."""
@@ -317,7 +317,7 @@ def _dahl(h, v, sigma, expo, s2, Fc, Fs, vs, alpha):
     return F
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _elastoplastic(h, v, s0, s1, s2, Fc, Fs, vs, alpha, share):
     """Dupont's elasto-plastic presliding: dz/dt = v - a(z, v) |v| z / z_ss, a = 0 for
     |z| < z_ba = share z_ss (purely elastic), a smooth half-sine rise to 1 at z_ss, 1 beyond

@@ -125,7 +125,7 @@ def _push(v, p, delta, eps):
     return 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def backlash_run(t, v, th, method, z0, p0, F, Z):
     """Simulate one parameter set along (t, v); writes F[k], Z[k, 0] = z, Z[k, 1] = p."""
     n = t.size
@@ -225,7 +225,7 @@ def backlash_run(t, v, th, method, z0, p0, F, Z):
                     z = z + (z - zss) * _em1(Te * cgm * abs(ve))
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _kernel(t, v, a, load, x, th, method, state0):
     F = np.empty(t.size)
     Z = np.empty((t.size, 2))

@@ -139,7 +139,7 @@ _NK = POSITION_KNOTS
 _TWO_PI = 2.0 * math.pi
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _acc_weight(u, m):
     """Velocity weight w(u) [-] of the acceleration part at u = |v| / v_c >= 0 and exponent
     m >= 0: exp(-u) at m = 0, else (u / m)^m exp(m - u), 1 at its peak u = m."""
@@ -150,7 +150,7 @@ def _acc_weight(u, m):
     return math.exp(m * math.log(u / m) + m - u)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _acc_weight_vec(u, m):
     out = np.empty(u.size)
     for i in range(u.size):
@@ -181,7 +181,7 @@ def acceleration_weight(v, v_c: float, m_a: float = 0.0) -> np.ndarray:
     return float(w[0]) if np.ndim(v) == 0 else w.reshape(np.shape(v))
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _position_m(x, e):
     """Relative level change m(x) [-] of the stroke map in the packed vector ``e``."""
     span = e[_X_HI] - e[_X_LO]
@@ -207,7 +207,7 @@ def _position_m(x, e):
     return m
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _drift_m(t, e):
     """Relative level change d(t) [-] of the drift in the packed vector ``e``."""
     s = t - e[_T0]
@@ -229,7 +229,7 @@ def _drift_m(t, e):
     return d
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _position_vec(x, e):
     out = np.empty(x.size)
     for i in range(x.size):
@@ -237,7 +237,7 @@ def _position_vec(x, e):
     return out
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _drift_vec(t, e):
     out = np.empty(t.size)
     for i in range(t.size):
@@ -280,7 +280,7 @@ def position_map(x, x_lo: float, x_hi: float, c, **form) -> np.ndarray:
     return float(m[0]) if np.ndim(x) == 0 else m.reshape(np.shape(x))
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def extension_force(F, v, a, x, load, t, e):
     """Law force ``F`` [N] with the extensions of the packed vector ``e`` at velocity ``v``
     [m/s], acceleration ``a`` [m/s^2], position ``x`` [m], normal load ``load`` [N] and

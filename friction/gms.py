@@ -199,7 +199,7 @@ def _damping_rate(z, v, k, wk, C, fc, fs, vs, alpha, shape):
     return r / tot
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def gms_run(t, v, th, method, z0, F, Z):
     """Simulate one parameter set along (t, v); writes F[k] and Z[k, :] in place."""
     n = t.size
@@ -247,7 +247,7 @@ def gms_run(t, v, th, method, z0, F, Z):
                         z[i] = _block_piece(z[i], vp, T, g * wk[i], lam)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _kernel(t, v, a, load, x, th, method, state0):
     F = np.empty(t.size)
     Z = np.empty((t.size, N_ELEMENTS))

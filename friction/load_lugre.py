@@ -196,7 +196,7 @@ def _loaded(v, load, th):
     return fc + (fs - fc) * math.exp(-r * r), th[S20] + k3 * load
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def load_lugre_run(t, v, load, th, method, z0, F, Z):
     """Simulate one parameter set along (t, v, load); writes F[k], Z[k] in place.
 
@@ -234,7 +234,7 @@ def load_lugre_run(t, v, load, th, method, z0, F, Z):
                 z = bristle_update(z, vm, s0 * abs(vm) / gm, h, 0)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _kernel(t, v, a, load, x, th, method, state0):
     F = np.empty(t.size)
     Z = np.empty((t.size, 1))

@@ -122,7 +122,7 @@ def _em1(s):
     return math.expm1(-s)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def lugre_run(t, v, th, method, z0, F, Z):
     """Simulate one parameter set along (t, v); writes F[k] and Z[k] in place.
 
@@ -167,7 +167,7 @@ def lugre_run(t, v, th, method, z0, F, Z):
                 z = z + (z - zss) * _em1(h * cgm * abs(vm))
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def lugre_level_run(t, v, th, level, z0, F):
     """:func:`lugre_run` (exact update) with the law's friction levels scaled by ``level``
     [-] at every sample, *inside* the bristle dynamics; writes F[k] in place.
@@ -292,7 +292,7 @@ def _flush_normal(R, rb, m, D, H, G):
             H[i, j] += acc
 
 
-@njit(cache=True, fastmath=_SENS_MATH)
+@njit(cache=True, nogil=True, fastmath=_SENS_MATH)
 def _sensitivity_pass(t, v, th, method, z0, cols, F, J, Fm, scale, H, G):
     """One pass of the LuGre force with its forward sensitivities; see
     :func:`lugre_sensitivity_run` and :func:`lugre_normal_equations`.
@@ -458,7 +458,7 @@ def _sensitivity_pass(t, v, th, method, z0, cols, F, J, Fm, scale, H, G):
     return sse
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def lugre_sensitivity_run(t, v, th, method, z0, cols, F, J):
     """Forward sensitivities of the classic LuGre force along (t, v): the force F[k] and
     its derivatives with respect to chosen parameters, integrated with the bristle state
@@ -486,7 +486,7 @@ def lugre_sensitivity_run(t, v, th, method, z0, cols, F, J):
                       np.empty((0, 0)), np.empty(J.shape[1]))
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def lugre_normal_equations(t, v, th, method, z0, cols, Fm, scale, H, G):
     """Gauss-Newton normal equations of the scaled residual ``r = (F - Fm) scale`` in one
     sensitivity pass, without storing the ``N x D`` Jacobian: adds ``(scale J)^T (scale J)``
@@ -496,7 +496,7 @@ def lugre_normal_equations(t, v, th, method, z0, cols, Fm, scale, H, G):
                              Fm, scale, H, G)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _kernel(t, v, a, load, x, th, method, state0):
     F = np.empty(t.size)
     Z = np.empty(t.size)  # contiguous 1-D for the loop; the (N, 1) state view is free

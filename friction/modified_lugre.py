@@ -209,7 +209,7 @@ def _lag_step(q, u0, u1, h, tau):
     return u1 + (q - u0) * e - (u1 - u0) * phi
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def mlugre_run(t, v, a, th, method, z0, q0, F, Z, Q):
     """Simulate one parameter set along (t, v, a); writes F[k], Z[k], Q[k] in place.
 
@@ -290,7 +290,7 @@ def mlugre_run(t, v, a, th, method, z0, q0, F, Z, Q):
             u = u1
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _kernel(t, v, a, load, x, th, method, state0):
     S = np.empty((t.size, 2))
     F = np.empty(t.size)

@@ -125,7 +125,7 @@ _LAYOUT = ("beta", "alpha", "c0", "k0", "eps", "f0", "swap_alpha_eps")
 BETA, ALPHA, C0, K0, EPS, F0, SWAP = range(len(_LAYOUT))
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def mre_run(t, v, x, th, method, y0, F, Y):
     """Simulate Eqs. (1a,b) for one packed theta along (t, v, x); writes F and Y in place."""
     n = t.size
@@ -154,7 +154,7 @@ def mre_run(t, v, x, th, method, y0, F, Y):
                 y = bristle_update(y, vm, decay * abs(vm), h, 0)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _kernel(t, v, a, load, x, th, method, state0):
     F = np.empty(t.size)
     Y = np.empty((t.size, 1))

@@ -50,7 +50,7 @@ def stribeck_force(v, th):
     return th[B]  # sgn(0) = 0 (seed 000 Eq. 6)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def stribeck_run(v, th, F):
     """F[k] = F(v[k]) for a packed theta, constants hoisted and the exp skipped where it
     cannot change g (see :func:`friction.lugre._g_fast`)."""
@@ -72,7 +72,7 @@ def stribeck_run(v, th, F):
             F[k] = b  # sgn(0) = 0 (seed 000 Eq. 6)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _kernel(t, v, a, load, x, th, method, state0):
     F = np.empty(t.size)
     stribeck_run(v, th, F)

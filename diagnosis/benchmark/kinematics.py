@@ -209,6 +209,9 @@ def _init_worker(cache):
     # worker processes start fresh (spawn: numba's OpenMP forbids fork) and get the plants'
     # kinematics from the parent instead of re-simulating them
     _KIN_CACHE.update(cache)
+    # the pool's processes keep the cores busy: each diagnosis fits its candidates in turn
+    from diagnosis import cluster
+    cluster.THREADS = 1
 
 
 def fine_motion(kin):

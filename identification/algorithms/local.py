@@ -124,7 +124,7 @@ def compress_normal_equations(c2, g, H):
                      np.ascontiguousarray(H, float))
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _compress(c2, g, H):
     D = g.size
     d = np.empty(D)
@@ -341,7 +341,7 @@ def noise_level(F) -> float:
     return float(_noise_level(F))
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _noise_level(F):
     """:func:`noise_level` compiled (one pass for the second differences, two selections
     for the medians; numpy's calls cost more than the work on 10,000 samples)."""
@@ -358,7 +358,7 @@ def _noise_level(F):
     return 1.4826 * _median(d2) / math.sqrt(6.0) / sd
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _median(a):
     """``np.median`` of a finite 1-D array, exactly, by counting: a histogram of 2048
     bins over [min, max] (the bin index is monotone in the value, so the bins keep the

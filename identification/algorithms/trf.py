@@ -41,7 +41,7 @@ class TrfResult:
         self.__dict__.update(kw)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _strictly_feasible(x, lb, ub, rstep):
     """scipy's ``make_strictly_feasible``: a coordinate at (or within ``rstep`` relative
     of) a bound moves that far inside; ``rstep=0``: to the next float inside."""
@@ -65,7 +65,7 @@ def _strictly_feasible(x, lb, ub, rstep):
     return out
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _cl_scaling(x, g, lb, ub):
     """Coleman-Li scaling vector ``v`` and its derivative ``dv`` (finite bounds)."""
     n = x.size
@@ -81,7 +81,7 @@ def _cl_scaling(x, g, lb, ub):
     return v, dv
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _setup(x, f, J, lb, ub):
     """One iteration's scaled problem: gradient, its scaled infinity norm, the scaling
     ``d``, ``diag_h``, ``g_h``, ``J_h`` and the SVD of the augmented ``[J_h; diag_h^.5]``
@@ -108,7 +108,7 @@ def _setup(x, f, J, lb, ub):
     return g, gn, d, diag_h, g_h, Ja[:m].copy(), uf, s, Vt.T.copy()
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _solve_tr(n, m, uf, s, V, Delta, alpha0, has_alpha):
     """scipy's ``solve_lsq_trust_region`` (More's method on one SVD; rtol 0.01, 10
     iterations)."""
@@ -151,7 +151,7 @@ def _solve_tr(n, m, uf, s, V, Delta, alpha0, has_alpha):
     return p, alpha
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _step_to_bound(x, s, lb, ub):
     """scipy's ``step_size_to_bound``: the step along ``s`` to the first face and which
     coordinates reach it (-1 lower, 1 upper, 0 none)."""
@@ -168,13 +168,13 @@ def _step_to_bound(x, s, lb, ub):
     return mn, hits
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _quadratic(J, g, s, diag):
     Js = J @ s
     return 0.5 * (np.dot(Js, Js) + np.dot(s * diag, s)) + np.dot(s, g)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _min_quad_1d(a, b, lo, hi, c):
     """scipy's ``minimize_quadratic_1d``: (t, value) at the best of lo, hi and the
     interior extremum."""
@@ -192,7 +192,7 @@ def _min_quad_1d(a, b, lo, hi, c):
     return best_t, best_y
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _trial(x, J_h, diag_h, g_h, d, uf, s, V, Delta, alpha0, has_alpha, lb, ub, theta):
     """The trust-region step of one trial (scipy's ``solve_lsq_trust_region`` then
     ``select_step``: the interior step, its reflection at the first face, or the scaled

@@ -1,0 +1,59 @@
+"""The force level's candidate fits on threads of this process (diagnosis.cluster.thread_fits):
+the same report as one after the other, the fits really side by side, bad counts refused."""
+import threading
+
+import numpy as np
+import pytest
+
+from diagnosis import cluster, diagnose
+from diagnosis.benchmark import make_case
+
+
+@pytest.fixture(scope="module")
+def case():
+    return make_case("drift", 1.0, 0.02, n=3000, seed=3)
+
+
+def _effects(rep):
+    return {e["name"]: (e["gap_closed"], e["validation_after"], e["significance_z"])
+            for e in rep["effects"]}
+
+
+def test_two_threads_give_the_serial_report_bit_for_bit(case):
+    serial = diagnose(case, "lugre", threads=1)
+    threaded = diagnose(case, "lugre", threads=2)
+    assert _effects(serial) == _effects(threaded)
+    assert serial["verdict"] == threaded["verdict"]
+    assert len(serial["effects"]) >= 8  # every candidate that applies was fitted
+
+
+def test_the_fits_run_on_two_threads(case, monkeypatch):
+    seen = {}
+    fit_one = cluster._fit_one
+
+    def spy(name, **kw):
+        seen[name] = threading.get_ident()
+        return fit_one(name, **kw)
+    monkeypatch.setattr(cluster, "_fit_one", spy)
+    diagnose(case, "lugre", candidates=["delay", "drift", "inertia", "asymmetry"], threads=2)
+    assert set(seen) == {"delay", "drift", "inertia", "asymmetry"}
+    assert len(set(seen.values())) == 2
+    assert threading.get_ident() not in seen.values()
+    seen.clear()
+    diagnose(case, "lugre", candidates=["delay", "drift"], threads=1)
+    assert seen == {}  # one thread: the caller's own loop fits them
+
+
+def test_a_count_below_one_is_refused_by_name(case):
+    with pytest.raises(ValueError, match="threads = 0"):
+        cluster.thread_count(0)
+    assert cluster.thread_count(3) == 3
+    assert 1 <= cluster.thread_count() <= cluster.MAX_THREADS
+
+
+def test_progress_reaches_the_caller_from_the_threads(case):
+    lines = []
+    diagnose(case, "lugre", candidates=["delay", "drift", "inertia"], threads=2,
+             progress=lambda n, info: lines.append(info))
+    assert any("candidate" in ln for ln in lines)
+    assert np.all([isinstance(ln, str) for ln in lines])

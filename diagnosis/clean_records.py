@@ -228,9 +228,9 @@ def _run_one(job, quick=False, cache_dir=None, give_level="coloured"):
 
 
 def _worker_init(cache, quick, cache_dir):
-    from . import benchmark, cluster
+    from . import benchmark
     benchmark._KIN_CACHE.update(cache)
-    cluster.THREADS = 1  # the pool's processes keep the cores busy
+    os.environ["FRICTIONLAB_THREADS"] = "1"  # the pool's processes keep the cores busy
 
 
 def _call(args):

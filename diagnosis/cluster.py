@@ -34,8 +34,9 @@ import os
 from concurrent.futures import ThreadPoolExecutor
 
 #: threads of this process the force level's candidate fits run on when no cluster is
-#: given: ``None`` the machine's cores (at most :data:`MAX_THREADS`), 1 one after the
-#: other (a process pool that already keeps every core busy sets 1 in its workers)
+#: given: ``None`` the environment's ``FRICTIONLAB_THREADS``, else the machine's cores (at
+#: most :data:`MAX_THREADS`); 1 one after the other (a process pool that already keeps
+#: every core busy sets ``FRICTIONLAB_THREADS=1`` in its workers)
 THREADS = None
 MAX_THREADS = 4
 
@@ -148,10 +149,16 @@ def candidate_fits(executor, names, law, base_names, fit, ctx, val_sets=()) -> d
 
 def thread_count(threads=None) -> int:
     """Threads the candidate fits run on: ``threads``, else :data:`THREADS`, else the
-    machine's cores (at most :data:`MAX_THREADS`)."""
+    environment's ``FRICTIONLAB_THREADS``, else the machine's cores (at most
+    :data:`MAX_THREADS`)."""
     n = threads if threads is not None else THREADS
     if n is None:
-        n = min(os.cpu_count() or 1, MAX_THREADS)
+        env = os.environ.get("FRICTIONLAB_THREADS", "").strip()
+        try:
+            n = int(env) if env else min(os.cpu_count() or 1, MAX_THREADS)
+        except ValueError:
+            raise ValueError(f"FRICTIONLAB_THREADS = {env!r}: give a whole number of "
+                             f"threads >= 1") from None
     n = int(n)
     if n < 1:
         raise ValueError(f"threads = {n}: at least 1")

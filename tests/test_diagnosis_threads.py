@@ -57,3 +57,12 @@ def test_progress_reaches_the_caller_from_the_threads(case):
              progress=lambda n, info: lines.append(info))
     assert any("candidate" in ln for ln in lines)
     assert np.all([isinstance(ln, str) for ln in lines])
+
+
+def test_the_environment_sets_the_count_and_a_bad_one_is_named(monkeypatch):
+    monkeypatch.setenv("FRICTIONLAB_THREADS", "1")
+    assert cluster.thread_count() == 1
+    monkeypatch.setenv("FRICTIONLAB_THREADS", "two")
+    with pytest.raises(ValueError, match="FRICTIONLAB_THREADS = 'two'"):
+        cluster.thread_count()
+    assert cluster.thread_count(2) == 2  # an explicit count wins

@@ -2,6 +2,7 @@
 protocol (cached), with the base law its cases are diagnosed with."""
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import dataclass
 
@@ -210,8 +211,8 @@ def _init_worker(cache):
     # kinematics from the parent instead of re-simulating them
     _KIN_CACHE.update(cache)
     # the pool's processes keep the cores busy: each diagnosis fits its candidates in turn
-    from diagnosis import cluster
-    cluster.THREADS = 1
+    # (diagnosis.cluster.thread_count)
+    os.environ["FRICTIONLAB_THREADS"] = "1"
 
 
 def fine_motion(kin):

@@ -30,12 +30,13 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from friction.base import FrictionModel
+from friction.lugre import lugre_level_run
+from friction.steps import split_at_reversals
 from identification.space import ParameterSpace
 
 from .candidates import Candidate, Context, Fixed
-from friction.lugre import lugre_level_run
 
-__all__ = ["Composite", "fit_composite", "law_space", "reporting", "STATIC_LEVELS",
+__all__ = ["Composite", "fit_composite", "law_space", "reporting", "simulate_split", "STATIC_LEVELS",
            "STATIC_LEVEL_SPAN", "LONG_JACOBIAN_BYTES", "STRUCTURED_JACOBIAN"]
 
 _STAGE_ORDER = {"modify_law": 0, "multiplicative": 1, "additive": 2, "shift": 3}
@@ -95,10 +96,7 @@ class Composite:
         kw = _law_inputs(self.law, data)
         s0 = self.law.record_start_state(data.t, data.v, F=data.F, **kw)
         lev = _inside_level(self.effects, self.extras, data, self.ctx)
-        if lev is None:
-            F = self.law.simulate(data.t, data.v, state0=s0, **kw)
-        else:
-            F = self.law.simulate_level(data.t, data.v, lev, state0=s0)
+        F = simulate_split(self.law, data.t, data.v, kw, s0, lev)
         return _apply_effects(F, self.effects, self.extras, data, self.ctx, self.law)
 
     def describe(self) -> dict:
@@ -117,6 +115,35 @@ class Composite:
         if own:
             out["parameters"] = own
         return out
+
+
+def simulate_split(law, t, v, inputs, state0, level=None) -> np.ndarray:
+    """The law's force [N] at the samples ``t`` [s], simulated with a sample added at each
+    velocity reversal inside a step (:func:`friction.steps.split_at_reversals`): each side
+    of a reversal is a step of its own, as the diagnosis simulates every model.
+
+    Parameters
+    ----------
+    law : FrictionModel
+    t, v : ndarray
+        Time [s] and velocity [m/s].
+    inputs : dict
+        The law's further inputs (:func:`_law_inputs`: ``a``, ``x``, ``load``).
+    state0 : ndarray
+        The state at ``t[0]``.
+    level : ndarray, optional
+        Relative level inside the bristle dynamics [-] (:meth:`friction.lugre.LuGre.
+        simulate_level`).
+    """
+    names = list(inputs)
+    chans = [inputs[n] for n in names] + ([level] if level is not None else [])
+    tt, vv, cc, idx = split_at_reversals(np.asarray(t, float), np.asarray(v, float), *chans)
+    kw = dict(zip(names, cc[:len(names)]))
+    if level is None:
+        F = law.simulate(tt, vv, state0=state0, **kw)
+    else:
+        F = law.simulate_level(tt, vv, cc[-1], state0=state0)
+    return F if idx is None else F[idx]
 
 
 def _law_inputs(law, data) -> dict:
@@ -317,6 +344,8 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     u0 = np.concatenate([u_law0, np.clip(u_ex0, 0.0, 1.0)])
     # kernel inputs validated once; each evaluation only repacks theta
     t, v, a, load, x = law._inputs(fit.t, fit.v, **_law_inputs(law, fit))
+    # simulated with a sample at each reversal inside a step (as Composite.predict)
+    t_r, v_r, (a_r, load_r, x_r), at_samples = split_at_reversals(t, v, a, load, x)
     kern = law._kernel
     sd = float(np.std(fit.F)) or 1.0
     F0 = float(fit.F[0])
@@ -354,11 +383,15 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
             s0 = (law.initial_state() if trial is None
                   else trial._start_from(t, v, a, load, x, F0))
             if inside:
-                F = np.empty(t.size)
-                lugre_level_run(t, v, theta, _inside_level(effects, extras, fit, ctx),
-                                float(s0[0]), F)
+                lev = _inside_level(effects, extras, fit, ctx)
+                if at_samples is not None:
+                    lev = np.interp(t_r, t, lev)
+                F = np.empty(t_r.size)
+                lugre_level_run(t_r, v_r, theta, lev, float(s0[0]), F)
             else:
-                F, _ = kern(t, v, a, load, x, theta, 0, s0)
+                F, _ = kern(t_r, v_r, a_r, load_r, x_r, theta, 0, s0)
+            if at_samples is not None:
+                F = F[at_samples]
             memo.clear()
             memo[key] = (F, trial)
         return memo[key]

@@ -208,11 +208,12 @@ def test_candidate_fit_on_the_normal_equations(effect, monkeypatch):
     assert solved
     # the acceleration part's weight exponent m_a (at its bound 0 on this seed-000 case)
     # leaves a flat valley along f_a, a_s, v_c: the float32 normal equations end within
-    # 4e-6 of the cost and 2e-4 of f_a from scipy's end
-    assert cost == pytest.approx(cost_ref, rel=1e-5)
+    # 2e-5 of the cost and 1.3e-3 of f_a from scipy's end (4e-6 and 2e-4 before the
+    # reversal samples of simulate_split moved the valley)
+    assert cost == pytest.approx(cost_ref, rel=3e-5)
     width = {e.name: e.hi - e.lo for e in cand.force_extras(ctx)}
     for k, val in ref.extras.items():
-        assert got.extras[k] == pytest.approx(val, rel=1e-3, abs=1e-4 * width[k]), k
+        assert got.extras[k] == pytest.approx(val, rel=2e-3, abs=1e-4 * width[k]), k
     assert ticks and all(n >= 1 for n, _ in ticks)
     assert ticks[-1][1].startswith(f"fit {effect} cost=")
 

@@ -21,6 +21,7 @@ from numba import njit
 from friction import make_model
 from friction.lugre import bristle_update
 from friction.shapes import SHAPES, stribeck_g
+from friction.steps import split_at_reversals
 
 from .kinematics import PlantKinematics, fine_kinematics
 
@@ -389,10 +390,16 @@ def sampled_base_force(kin: PlantKinematics) -> np.ndarray:
     motion (what the diagnosis' own law computes): :func:`base_force` minus this is the
     base's discretisation at the data rate, which no candidate is asked to explain."""
     law = kin.base
+    # as the diagnosis simulates every model: a sample added at each reversal in a step
+    # (diagnosis.composite.simulate_split)
     if law.name == "mre_lugre":
         fk = fine_kinematics(kin)
-        return law.simulate(kin.t, kin.v, x=fk.x[::fk.step])
-    return law.simulate(kin.t, kin.v)
+        t, v, (x,), idx = split_at_reversals(kin.t, kin.v, fk.x[::fk.step])
+        F = law.simulate(t, v, x=x)
+    else:
+        t, v, _, idx = split_at_reversals(kin.t, kin.v)
+        F = law.simulate(t, v)
+    return F if idx is None else F[idx]
 
 
 def _level(kin: PlantKinematics) -> float:

@@ -52,7 +52,8 @@ def run_diagnose_cli(args) -> int:
         rep = diagnose(sets[0], args.model, validation=sets[1:] or None, seed=args.seed,
                        candidates=_candidates(args), progress=not quiet,
                        noise_level=_noise_level(args, mapping, scale),
-                       executor=getattr(args, "executor", None))
+                       executor=getattr(args, "executor", None),
+                       threads=getattr(args, "threads", None))
     from .report_html import write_html
     return _emit(rep, args, write_html)
 

@@ -108,6 +108,9 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--noise-record", default=None,
                    help="a standstill record (CSV/.mat, same --map/--scale): the spread of its "
                    "force channel is the noise level")
+    g.add_argument("--threads", type=int, default=None,
+                   help="threads the candidates' fits run on (default: the machine's cores, "
+                   "at most 4, or FRICTIONLAB_THREADS; 1: one after the other); same report")
     return ap
 
 

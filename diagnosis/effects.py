@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen8`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen9`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -238,6 +238,7 @@ _S5 = "diagnosis.benchmark.seen5:"
 _S6 = "diagnosis.benchmark.seen6:"
 _S7 = "diagnosis.benchmark.seen7:"
 _S8 = "diagnosis.benchmark.seen8:"
+_S9 = "diagnosis.benchmark.seen9:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -257,8 +258,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "moment_load": _S5 + "moment_load_truth",
                    "cylinder_pressure": _S6 + "cylinder_pressure_truth",
                    "motor_attraction": _S7 + "motor_attraction_truth",
-                   "pitch_squeeze": _S8 + "pitch_squeeze_truth"},
-           sealed={"weight_transfer": _S + "weight_transfer_truth"},
+                   "pitch_squeeze": _S8 + "pitch_squeeze_truth",
+                   "weight_transfer": _S9 + "weight_transfer_truth"},
+           sealed={"oil_slosh": _S + "oil_slosh_truth"},
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
@@ -273,8 +275,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "normal_vibration": _S5 + "normal_vibration_truth",
                    "pivot_lever": _S6 + "pivot_lever_truth",
                    "plastic_junctions": _S7 + "plastic_junctions_truth",
-                   "hydrostatic_overload": _S8 + "hydrostatic_overload_truth"},
-           sealed={"squeeze_cavitation": _S + "squeeze_cavitation_truth"},
+                   "hydrostatic_overload": _S8 + "hydrostatic_overload_truth",
+                   "squeeze_cavitation": _S9 + "squeeze_cavitation_truth"},
+           sealed={"piezoviscous_film": _S + "piezoviscous_film_truth"},
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
@@ -289,8 +292,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "ratchet_texture": _S5 + "ratchet_texture_truth",
                    "spring_return": _S6 + "spring_return_truth",
                    "tilted_pad": _S7 + "tilted_pad_truth",
-                   "sprag_strut": _S8 + "sprag_strut_truth"},
-           sealed={"meter_out_throttle": _S + "meter_out_throttle_truth"},
+                   "sprag_strut": _S8 + "sprag_strut_truth",
+                   "meter_out_throttle": _S9 + "meter_out_throttle_truth"},
+           sealed={"differential_cylinder": _S + "differential_cylinder_truth"},
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
                          "Stribeck curve shape: exponent, Lorentzian, a speed map",
@@ -305,8 +309,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "eyring_boundary": _S5 + "eyring_boundary_truth",
                    "starved_film": _S6 + "starved_film_truth",
                    "rubber_hysteresis": _S7 + "rubber_hysteresis_truth",
-                   "contact_resonance": _S8 + "contact_resonance_truth"},
-           sealed={"dither_averaging": _S + "dither_averaging_truth"},
+                   "contact_resonance": _S8 + "contact_resonance_truth",
+                   "dither_averaging": _S9 + "dither_averaging_truth"},
+           sealed={"melt_lubrication": _S + "melt_lubrication_truth"},
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -325,8 +330,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "preload_taper": _S5 + "preload_taper_truth",
                    "oil_pocket": _S6 + "oil_pocket_truth",
                    "end_cushion": _S7 + "end_cushion_truth",
-                   "telescopic_cover": _S8 + "telescopic_cover_truth"},
-           sealed={"air_spring": _S + "air_spring_truth"},
+                   "telescopic_cover": _S8 + "telescopic_cover_truth",
+                   "air_spring": _S9 + "air_spring_truth"},
+           sealed={"bolt_holes": _S + "bolt_holes_truth"},
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
@@ -340,8 +346,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "dispensing_mass": _S5 + "dispensing_mass_truth",
                    "sliding_payload": _S6 + "sliding_payload_truth",
                    "rattling_mass": _S7 + "rattling_mass_truth",
-                   "freewheel_flywheel": _S8 + "freewheel_flywheel_truth"},
-           sealed={"pick_and_place": _S + "pick_and_place_truth"},
+                   "freewheel_flywheel": _S8 + "freewheel_flywheel_truth",
+                   "pick_and_place": _S9 + "pick_and_place_truth"},
+           sealed={"eddy_coupling": _S + "eddy_coupling_truth"},
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
@@ -356,8 +363,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "timing_jitter": _S5 + "timing_jitter_truth",
                    "slew_limit": _S6 + "slew_limit_truth",
                    "pressure_line": _S7 + "pressure_line_truth",
-                   "running_median": _S8 + "running_median_truth"},
-           sealed={"deadband_reporting": _S + "deadband_reporting_truth"},
+                   "running_median": _S8 + "running_median_truth",
+                   "deadband_reporting": _S9 + "deadband_reporting_truth"},
+           sealed={"spatial_sampling": _S + "spatial_sampling_truth"},
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
@@ -373,8 +381,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "interval_lubrication": _S5 + "interval_lubrication_truth",
                    "seal_relaxation": _S6 + "seal_relaxation_truth",
                    "tribo_oxide": _S7 + "tribo_oxide_truth",
-                   "antioxidant_depletion": _S8 + "antioxidant_depletion_truth"},
-           sealed={"coating_wear_through": _S + "coating_wear_through_truth"},
+                   "antioxidant_depletion": _S8 + "antioxidant_depletion_truth",
+                   "coating_wear_through": _S9 + "coating_wear_through_truth"},
+           sealed={"polymer_swelling": _S + "polymer_swelling_truth"},
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),
@@ -388,8 +397,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "worn_gap": _S5 + "worn_gap_truth",
                    "drag_idler": _S6 + "drag_idler_truth",
                    "biased_play": _S7 + "biased_play_truth",
-                   "slack_chain": _S8 + "slack_chain_truth"},
-           sealed={"magnetic_coupling": _S + "magnetic_coupling_truth"},
+                   "slack_chain": _S8 + "slack_chain_truth",
+                   "magnetic_coupling": _S9 + "magnetic_coupling_truth"},
+           sealed={"preloaded_nut": _S + "preloaded_nut_truth"},
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
                         "Maxwell-slip)", "modify_law"),
@@ -403,8 +413,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "mindlin_contacts": _S5 + "mindlin_contacts_truth",
                    "rate_state_presliding": _S6 + "rate_state_presliding_truth",
                    "tomlinson_asperities": _S7 + "tomlinson_asperities_truth",
-                   "bond_rupture": _S8 + "bond_rupture_truth"},
-           sealed={"gouge_fabric": _S + "gouge_fabric_truth"},
+                   "bond_rupture": _S8 + "bond_rupture_truth",
+                   "gouge_fabric": _S9 + "gouge_fabric_truth"},
+           sealed={"kinematic_hardening": _S + "kinematic_hardening_truth"},
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 

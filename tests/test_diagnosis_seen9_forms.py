@@ -1,5 +1,5 @@
 """The ninth seen truth family (diagnosis.benchmark.seen9, sealed at the end of session 14,
-run once in session 15 on <COMMIT>, <TOP1> top-1, now open): each form builds a finite case
+run once in session 15 on ef5b06a, 33.0 % top-1, now open): each form builds a finite case
 of the requested size on every plant it applies to, is the base law at s = 0, grows with
 its amplitude factor and refuses the plants it does not apply to."""
 import dataclasses

@@ -78,6 +78,13 @@ def _forms(eff, family, plant):
     return list(EFFECTS[eff].forms(family))
 
 
+def _stable(*parts) -> int:
+    """A number [0, 2**32) fixed by ``parts`` alone (CRC-32 of their text): a case's noise
+    seed and its form's first measurement protocol in the generalisation grid."""
+    import zlib
+    return zlib.crc32("|".join(repr(p) for p in parts).encode())
+
+
 def _base_identification_seconds(plant, quick, seed):
     """Wall time of one base identification on the plant's clean case (the time baseline)."""
     from identification import identify
@@ -134,6 +141,36 @@ def load_checkpoint(path, keys) -> dict:
     return done
 
 
+def grid_jobs(plist, effects, forms, strengths, noises, clean_repeats, measured, quick,
+              seed) -> list:
+    """The benchmark's cases as jobs ``(plant, effect, strength, noise, noise seed, quick,
+    diagnosis seed, form, measurement protocol)``, in order (arguments as
+    :func:`run_benchmark`'s; ``plist`` the plants, ``[None]`` for the generic cases)."""
+    jobs = []
+    for plant in plist:
+        for eff in effects:
+            if plant is not None and not applicable(plant, eff, quick):
+                continue
+            reps = clean_repeats if eff == "clean" else 1
+            for form in _forms(eff, forms, plant):
+                # measured cases: each case's noise seed and each form's protocols follow
+                # from the case itself, not from its place in the list, so that a family
+                # added to the grid leaves every other case as it was (paired comparisons)
+                offset = _stable(plant, eff, form) % len(MEASURED)
+                i = 0
+                for s in strengths:
+                    for nz in noises:
+                        for r in range(reps):
+                            if measured and plant is not None:
+                                meas = (offset + i) % len(MEASURED)
+                                nseed = seed + 1 + _stable(plant, eff, form, s, nz, r) % 10**6
+                            else:
+                                meas, nseed = None, seed + len(jobs) + 1
+                            i += 1
+                            jobs.append((plant, eff, s, nz, nseed, quick, seed, form, meas))
+    return jobs
+
+
 def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed=0,
                   progress=None, plants=None, quick: bool = False, workers: int = 1,
                   clean_repeats: int = 1, checkpoint=None, forms: str = "first",
@@ -147,7 +184,9 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
     strengths, noises : sequence of float
         Effect strengths [-] and noise levels (fraction of std(F)) [-].
     seed : int
-        Base seed (noise seeds are ``seed + case number``; the diagnosis uses ``seed``).
+        Base seed (noise seeds are ``seed + case number``, with ``measured`` ``seed + 1 +``
+        a number fixed by the case's plant, effect, form, strength and noise; the diagnosis
+        uses ``seed``).
     progress : None, bool, tqdm or callable(n, info), optional
         As :mod:`friction.progress` says: one status line per case (``n`` = 0); ``True``:
         lines on stderr.
@@ -189,20 +228,8 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
     for plant in plist:  # simulate each plant once here; workers get the kinematics
         if plant is not None:
             plant_kinematics(plant, quick)
-    jobs = []
-    for plant in plist:
-        for eff in effects:
-            if plant is not None and not applicable(plant, eff, quick):
-                continue
-            reps = clean_repeats if eff == "clean" else 1
-            for form in _forms(eff, forms, plant):
-                for s in strengths:
-                    for nz in noises:
-                        for r in range(reps):
-                            meas = (len(jobs) % len(MEASURED)
-                                    if measured and plant is not None else None)
-                            jobs.append((plant, eff, s, nz, seed + len(jobs) + 1, quick, seed,
-                                         form, meas))
+    jobs = grid_jobs(plist, effects, forms, strengths, noises, clean_repeats, measured,
+                     quick, seed)
     say = status_lines(progress)
     rows, skipped = [], []
     keys = [_job_key(j) for j in jobs]

@@ -1,0 +1,38 @@
+"""The generalisation grid's cases keep their noise seeds and measurement protocols when a
+family is added (diagnosis.benchmark.runner.grid_jobs): paired comparisons across sessions."""
+from diagnosis.benchmark import PLANT_NAMES
+from diagnosis.benchmark.runner import MEASURED, grid_jobs
+from diagnosis.effects import EFFECTS
+
+EFFECTS_WITH_TRUTHS = [n for n, e in EFFECTS.items() if e.truths]
+
+
+def _grid(effects, forms="all"):
+    return grid_jobs(list(PLANT_NAMES), effects, forms, (0.5, 1.0), (0.01, 0.03), 1, True,
+                     False, 0)
+
+
+def test_a_case_is_the_same_job_whatever_else_is_in_the_grid():
+    full = {(j[0], j[1], j[7], j[2], j[3]): j for j in _grid(EFFECTS_WITH_TRUTHS)}
+    alone = _grid(["drift"])
+    assert alone
+    for j in alone:
+        assert full[(j[0], j[1], j[7], j[2], j[3])] == j
+
+
+def test_each_form_meets_distinct_protocols_and_seeds_differ():
+    jobs = _grid(["delay", "gms"])
+    by_form = {}
+    for j in jobs:
+        by_form.setdefault((j[0], j[1], j[7]), []).append(j)
+    for cases in by_form.values():
+        protocols = [j[8] for j in cases]
+        assert len(set(protocols)) == min(len(cases), len(MEASURED))
+    seeds = [j[4] for j in jobs]
+    assert len(set(seeds)) == len(seeds)
+
+
+def test_the_generic_cases_keep_their_numbered_seeds():
+    jobs = grid_jobs([None], ["drift", "delay"], "first", (1.0,), (0.02,), 1, False, False, 7)
+    assert [j[4] for j in jobs] == [8, 9]
+    assert all(j[8] is None for j in jobs)

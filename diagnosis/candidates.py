@@ -59,6 +59,7 @@ class Context:
     L_span: float   # load spread of the fit data [N]
     L_hi: float = 0.0  # largest load of the fit data [N]
     v_lag: float = 0.0  # lag of the velocity channel behind the position's [samples]
+    x_q: float = 0.0  # position resolution of the fit data [m] (0: not quantised)
 
 
 def make_context(fit) -> Context:
@@ -69,7 +70,29 @@ def make_context(fit) -> Context:
     L_span = float(np.ptp(fit.load)) if fit.load is not None else 0.0
     L_hi = float(np.max(fit.load)) if fit.load is not None else 0.0
     return Context(sF, sv, sa, float(np.min(fit.x)), float(np.max(fit.x)), float(fit.t[0]),
-                   float(fit.t[-1] - fit.t[0]), fit.dt, L0, L_span, L_hi, velocity_lag(fit))
+                   float(fit.t[-1] - fit.t[0]), fit.dt, L0, L_span, L_hi, velocity_lag(fit),
+                   position_quantum(fit.x))
+
+
+def position_quantum(x) -> float:
+    """The position channel's resolution [m]: the smallest step between its samples when
+    every step is a whole number of it (an encoder's count, a file's last digit), else 0.
+
+    Parameters
+    ----------
+    x : ndarray
+        Positions [m].
+    """
+    d = np.abs(np.diff(np.asarray(x, float)))
+    d = d[d > 0.0]
+    if d.size < 10:
+        return 0.0
+    q = float(d.min())
+    r = d / q
+    # (to the rounding of stored positions: 1e-3 of a count)
+    if np.mean(np.abs(r - np.round(r)) < 1e-3) < 0.99:
+        return 0.0
+    return q
 
 
 class Fixed(float):

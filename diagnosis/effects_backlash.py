@@ -106,6 +106,12 @@ class Backlash(LawCandidate):
     #: a sample and a half is what a sub-sample shift of the force channel makes at a
     #: reversal (and a ``delay`` within 1.5 samples is not named)
     MIN_SAMPLES = 1.5
+    #: shortest lost motion named ``backlash``, in counts of the position's resolution
+    #: (:attr:`diagnosis.candidates.Context.x_q`) [-]: a quantised position holds its count
+    #: for up to one count after the drive reversed, and its differences lag by half one;
+    #: a clean damping-rig record at 10 um a count (coloured noise) was named backlash for
+    #: a fitted play of 2.0 counts (0.34 of the excess, z 6.2)
+    MIN_COUNTS = 3.0
 
     def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
         """Whether the candidate applies to the base ``law`` on ``fit``, and why not.
@@ -191,6 +197,11 @@ class Backlash(LawCandidate):
             return (f"its lost motion of {gap:.3g} m is crossed within {self.MIN_SAMPLES:g} "
                     f"samples of a reversal ({floor:.3g} m at the record's acceleration): "
                     f"what a sub-sample shift makes there")
+        q = getattr(ctx, "x_q", 0.0)
+        if q > 0.0 and gap < self.MIN_COUNTS * q:
+            return (f"its lost motion of {gap:.3g} m is {gap / q:.1f} counts of the position's "
+                    f"resolution ({q:.3g} m), below {self.MIN_COUNTS:g}: what quantised "
+                    f"positions make at a reversal")
         return ""
 
 

@@ -353,3 +353,28 @@ def test_load_start_keeps_its_memory_only_where_the_load_acts_over_a_travel():
     assert p["k_Lm"] == pytest.approx(0.4, rel=0.35)
     q = load_c.start(data, Ff, 0.4 * Ff * rel + noise, ctx)
     assert isinstance(q["D_L"], Fixed) and q["D_L"] == 0.0 and q["k_Lm"] == 0.0
+
+
+def test_position_quantum_reads_an_encoder_count_and_not_a_smooth_channel():
+    from diagnosis.candidates import position_quantum
+    t = np.linspace(0.0, 2.0, 2001)
+    x = 0.02 * np.sin(2 * np.pi * t) + 0.013 * np.sin(2 * np.pi * 2.7 * t)
+    q = 1e-5
+    assert position_quantum(np.round(x / q) * q) == pytest.approx(q, rel=1e-9)
+    assert position_quantum(x) == 0.0              # not quantised
+    assert position_quantum(np.zeros(50)) == 0.0   # no motion
+
+
+def test_backlash_of_two_counts_has_no_practical_size():
+    from diagnosis.candidates import Context
+    from diagnosis.effects import CANDIDATES
+    cand = CANDIDATES["backlash"]
+    ctx = Context(sF=10.0, sv=0.5, sa=15.0, x_lo=0.0, x_hi=0.05, t0=0.0, T=1.0, dt=1e-3,
+                  L0=None, L_span=0.0, x_q=1e-5)
+    why = cand.practical({"backlash_gap": 2.0e-5}, ctx)
+    assert "2.0 counts" in why and "below 3" in why
+    assert cand.practical({"backlash_gap": 5.0e-5}, ctx) == ""
+    # unquantised positions: the rule does not apply
+    ctx0 = Context(sF=10.0, sv=0.5, sa=15.0, x_lo=0.0, x_hi=0.05, t0=0.0, T=1.0, dt=1e-3,
+                   L0=None, L_span=0.0)
+    assert cand.practical({"backlash_gap": 2.0e-5}, ctx0) == ""

@@ -19,8 +19,8 @@ grid (:mod:`diagnosis.benchmark.seen`, :mod:`diagnosis.benchmark.seen2`,
 :mod:`diagnosis.benchmark.seen8`: session 13's, run once on a2ccae2, 40.3 % top-1;
 :mod:`diagnosis.benchmark.seen9`: session 14's, run once on ef5b06a, 33.0 % top-1, below);
 the present one (one form for each of the ten effects with truths, written in session 15 by
-another hand) is sealed: not run. The open grid's latest figures include seen7 but not
-seen8 or seen9 (below).
+another hand) is sealed: not run. The open grid's latest figures include seen8 but not
+seen9 (below).
 
     python benchmarks/bench_diagnosis_forms.py [--sealed] [--workers N] [--quick]
                                                [--full-protocols] [--checkpoint FILE]
@@ -30,6 +30,25 @@ Figures: top-1 over all cases and over the detectable ones (an oracle that knows
 can tell it from the base fit), clean and out-of-library cases, the mean |shrink error|
 (reported gap closed against the truth's), per plant, per effect and per truth form; seconds
 per case against one base identification of the plant timed in the same worker.
+
+Results of session 15 (2026-11-29, short protocols, 2 workers, code of ef5b06a: the
+diagnosis simulates every model with a sample at each velocity reversal inside a step,
+:func:`diagnosis.composite.simulate_split`; its candidate fits on threads, one per worker
+here): the open grid with seen8, **1964 cases listed, 1948 run** (16 skipped), 5329 s wall
+(shared for 25 minutes with the sealed and clean runs). Top-1 **53.3 %** (1038; 54.3 % of the
+detectable), mean |shrink error| 0.302, wrong names on 179 of 1928 effect cases (9.3 %: gms
+-> acceleration 24, acceleration -> position 16, drift -> load 12, backlash -> gms 11,
+position -> acceleration 10, load -> drift 9). Clean 0 of 20 named (17 ``none``), ripple 0 of
+20. By plant: valve 61.4 %, forging press 58.7 %, isolator 51.6 %, XML-350 49.1 %, damping
+rig 46.8 %. The seen8 forms: 72 of 176 (71 when run sealed). The 1772 cases of session 14's
+grid (the same forms; the seeds differ, as adding seen8 renumbered them): 966 right on
+both codes. By plant there: XML-350 190 -> 204 of 402, where the split matters (its
+LuGre's discretisation 1.8 % -> 0.13 % of the force's spread); valve 253 -> 254, damping rig
+196 -> 192, forging press 171 -> 164, isolator 156 -> 152 (on those three the split changes
+nothing measurable: what moved is the seeds and protocols drawn anew). Asymmetry 115 ->
+128/200 (XML-350 12 of 44), drift 144 -> 137, acceleration 82 -> 78; wrong names 137 -> 147.
+From the next run on, a case's seed and protocol follow from the case itself
+(:func:`diagnosis.benchmark.runner.grid_jobs`), so runs pair case by case.
 
 Results of session 12 (2026-11-28, short protocols, 2 workers): the open grid with seen5,
 **1420 cases** (16 skipped), the same seeds before and after. On the session's first code

@@ -356,6 +356,9 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         ``where_frequency``, ``greedy``, ``noise_floor``, ``evidence``, ``skipped``, ``timing``.
     """
     t_start = time.perf_counter()
+    if executor is None:
+        from .cluster import thread_count
+        thread_count(threads)  # a bad count is refused before any fit
     say = status_lines(progress)
     fit = _as_dataset(fit_data, mapping, scale)
     # one time base for the motion channels: a velocity that lags its position (backward

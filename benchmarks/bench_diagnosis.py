@@ -91,7 +91,9 @@ the case has no load column), warm (``--speed-only --repeats 5``, 2026-11-29 03:
 load 1.0-1.1, one BLAS thread), the candidate fits on 2 threads (:func:`diagnosis.cluster.
 thread_fits`; the laws' kernels compiled ``nogil``): best **3.89 s**, median 4.09 s, 22.0 /
 22.4 x one base identification (0.18 s); one thread in the same rounds: best 4.94 s, median
-5.12 s (27.9 / 28.1 x). The report is the same bit for bit. Two threads gain 1.27 x, not 2:
+5.12 s (27.9 / 28.1 x). On the session's final code (a sample at each reversal inside a step,
+:func:`diagnosis.composite.simulate_split`; 06:11 UTC, load 1.0): 2 threads best **3.95 s**,
+median 4.12 s (23.2 / 21.5 x); one thread 5.19 / 5.35 s. The report is the same bit for bit. Two threads gain 1.27 x, not 2:
 the fits' Python parts (scipy's trust region, each simulation's start state and trial law,
 about half of a fit) hold the interpreter lock; the widest fits (position, drift) start first.
 

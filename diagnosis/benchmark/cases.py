@@ -257,5 +257,7 @@ def make_plant_case(plant: str, effect: str, strength: float = 1.0, noise: float
     return BenchCase(plant, effect, strength, noise, data, F0, kin.base, expected(effect),
                      float(np.sqrt(np.mean((F0 - Fb) ** 2)) / sdb),
                      {"amplitude": amp, "form": form, "measured": dict(measured or {}),
+                      # the base force the truth's size is measured against [N]
+                      "base_force": Fb,
                       # the base's discretisation at the data rate [N] (fine - sampled)
                       "discretisation": Fb - sampled_base_force(kin)})

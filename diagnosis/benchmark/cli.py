@@ -42,6 +42,11 @@ def format_summary(res, title: str = "withheld-effect benchmark") -> str:
                "case, timed in the same worker; loc/evid: top region in the effect's family "
                "(EXPECTED_FAMILIES / EXPECTED_EVIDENCE); true: the report's top region is the "
                "noise-free gap's (truth - base fit)")
+    below = res["overall"].get("below_practical_cases", 0)
+    if below:
+        out.append(f"  detect.: over the cases an oracle tells from the base; {below} of the "
+                   f"undetectable are below their effect's practical size (a delay of less "
+                   f"than a sample, which no verdict may name)")
     out.append(f"\n{'effect':15s} {'top-1':>9s} {'where':>9s} {'evidence':>9s} {'true':>9s} "
                f"{'undetect.':>9s}  named instead")
     for eff, e in res["per_effect"].items():
@@ -78,7 +83,8 @@ def format_summary(res, title: str = "withheld-effect benchmark") -> str:
         out.append("\nmisses (plant, effect, strength, noise -> verdict; truth shrink; "
                    "candidate ranking):")
         for r in wrong:
-            und = "(undetectable)" if r["detectable"] is False else ""
+            und = ("(below practical size)" if r.get("below_practical") else
+                   "(undetectable)" if r["detectable"] is False else "")
             out.append(f"  {r['plant']:13s} {r['effect']:14s} {r.get('form', '')[:18]:18s} "
                        f"{r.get('measured', '')[:14]:14s} s={r['strength']:<4g} "
                        f"noise={r['noise']:<5g} -> {r['verdict']:13s} truth shrink "

@@ -13,6 +13,7 @@ from ..regions import band_splits, regime_split
 from .cases import expected
 
 __all__ = ["EXPECTED_FAMILIES", "EXPECTED_EVIDENCE", "localise", "localise_gap",
+           "truth_shift", "practical_size",
            "truth_shrink", "summarise"]
 
 
@@ -128,6 +129,52 @@ def truth_shrink(data: Dataset, truth: np.ndarray, report, base_truth=None) -> d
     return {"truth": tru, "reported": rep, "error": rep - tru, "val_truth": val_truth}
 
 
+def truth_shift(t: np.ndarray, Fb: np.ndarray, F: np.ndarray,
+                most: float = 25.0) -> float:
+    """The force channel's shift [samples] that best aligns the base force ``Fb`` [N] with
+    the noise-free truth ``F`` [N] at the instants ``t`` [s] (> 0: the force lags; < 0: it
+    leads, as when the motion channels are late): the oracle's size of a ``delay`` truth,
+    whatever mechanism made it (a transport delay, a filter's group delay, a hold, an
+    encoder's latency), in the unit of the delay candidate's practical-size rule
+    (:attr:`diagnosis.candidates.Delay.MIN_SAMPLES`).
+
+    Least squares over shifts of -``most`` to ``most`` samples of the cubic spline through
+    ``Fb``: a grid of tenths of a sample, refined by a bounded scalar search.
+    """
+    from scipy.interpolate import CubicSpline
+    from scipy.optimize import minimize_scalar
+    t = np.asarray(t, float)
+    dt = float(np.median(np.diff(t)))
+    spline = CubicSpline(t, np.asarray(Fb, float))
+    F = np.asarray(F, float)
+
+    def sse(d):
+        r = F - spline(np.clip(t - d * dt, t[0], t[-1]))
+        return float(r @ r)
+    grid = np.linspace(-most, most, int(round(20 * most)) + 1)
+    k = int(np.argmin([sse(d) for d in grid]))
+    lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, grid.size - 1)]
+    if hi <= lo:
+        return float(grid[k])
+    return float(minimize_scalar(sse, bounds=(lo, hi), method="bounded",
+                                 options={"xatol": 1e-3}).x)
+
+
+def practical_size(case_effect: str, info: dict) -> str:
+    """Why the truth of a case is below its effect's practical size, so that the issue's
+    rule forbids naming it ('' when it is not): a ``delay`` truth whose shift
+    (:func:`truth_shift`, ``info["truth_shift"]``) is below the candidate's
+    :attr:`~diagnosis.candidates.Delay.MIN_SAMPLES` ("a shift smaller than a sample is not
+    a delay"). Such a case is not counted among the detectable ones: no verdict may name it.
+    """
+    from ..candidates import Delay
+    shift = info.get("truth_shift")
+    if case_effect == "delay" and shift is not None and abs(shift) < Delay.MIN_SAMPLES:
+        return (f"the truth shifts the force by {abs(shift):.2f} samples, below the "
+                f"{Delay.MIN_SAMPLES:g} a delay needs")
+    return ""
+
+
 def _score(case_effect, exp, rep, data, truth, seconds) -> dict:
     from ..verdict import decision_entries
     from ..significance import improvement_z, z_threshold
@@ -229,6 +276,9 @@ def summarise(rows) -> dict:
                "library_accuracy": float(np.mean([r["correct"] for r in lib])) if lib else None,
                "top1_accuracy_detectable": float(np.mean([r["correct"] for r in det])),
                "undetectable_cases": len(rs) - len(det),
+               # of those, the cases whose truth is below its effect's practical size
+               # (practical_size: a delay of less than a sample)
+               "below_practical_cases": sum(1 for r in rs if r.get("below_practical")),
                "localisation_accuracy": (float(np.mean([r["loc_correct"] for r in loc]))
                                          if loc else None),
                "localisation_evidence_accuracy": (

@@ -1,0 +1,43 @@
+"""The benchmark oracle's practical size of a ``delay`` truth (issue 15: a shift below a
+sample is no delay, so such a case is not counted among the detectable ones)."""
+import numpy as np
+import pytest
+
+from diagnosis.benchmark.scoring import practical_size, truth_shift
+from diagnosis.candidates import Delay
+
+
+def _record(n=2000, dt=1e-3):
+    t = np.arange(n) * dt
+    # a friction-like force: smooth, with sharp sign changes at the reversals
+    v = np.sin(2 * np.pi * 1.3 * t) + 0.3 * np.sin(2 * np.pi * 4.1 * t)
+    return t, 2.0 * np.tanh(v / 0.05) + 8.0 * v
+
+
+@pytest.mark.parametrize("d", [3.3, -7.25, 0.4])
+def test_truth_shift_recovers_a_transport_delay(d):
+    t, F = _record()
+    dt = t[1] - t[0]
+    late = np.interp(t - d * dt, t, F)
+    # linear interpolation of the truth against the oracle's spline: a few hundredths
+    assert truth_shift(t, F, late) == pytest.approx(d, abs=0.05)
+
+
+def test_a_filter_reads_as_its_group_delay():
+    from scipy.signal import lfilter
+    t, F = _record()
+    # a 5-tap moving average: group delay of 2 samples
+    avg = lfilter(np.ones(5) / 5, [1.0], F)
+    avg[:5] = F[:5]
+    # (the average also rounds the reversals' corners, which no shift undoes: 1.89)
+    assert truth_shift(t, F, avg) == pytest.approx(2.0, abs=0.15)
+
+
+def test_practical_size_names_the_rule_only_for_small_delays():
+    assert practical_size("delay", {"truth_shift": 0.6}).startswith(
+        "the truth shifts the force by 0.60 samples")
+    assert practical_size("delay", {"truth_shift": -0.6}) != ""
+    assert practical_size("delay", {"truth_shift": Delay.MIN_SAMPLES + 0.01}) == ""
+    # no shift measured, or another effect: no rule
+    assert practical_size("delay", {}) == ""
+    assert practical_size("position", {"truth_shift": 0.1}) == ""

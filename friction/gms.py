@@ -4,7 +4,8 @@ The contact is N = 4 elementary slip-blocks in parallel (after Al-Bender, Lampae
 Swevers, IEEE Trans. Autom. Control 50 (2005) 1883, written here from the model's
 description). Block i is tied to the moving body by a spring of stiffness k_i; its
 deflection z_i [m] carries the force F_i = k_i z_i. The block can carry at most its share
-of the Stribeck curve, w_i g(v) with w_i = 1/N, i.e. a deflection
+of the Stribeck curve, w_i g(v) (geometric shares summing to 1, ratio ``tilt`` of the
+softest block's to the stiffest's; ``tilt`` = 1: w_i = 1/N), i.e. a deflection
 
     d_i(v) = w_i g(v) / k_i,      g(v) = Fc + (Fs - Fc) exp(-|v/vs|^alpha)   (or lorentzian).
 
@@ -100,7 +101,7 @@ class GMSParams(FrictionParams):
                           upper=1e9, search=(1e3, 1e7), log=True)
     spread: float = param(10.0, "1", "stiffness ratio of the stiffest to the softest "
                           "slip-block (geometric; 1: one elastoplastic element)", lower=1.0,
-                          upper=1e6, search=(1.0, 1e3), log=True)
+                          upper=1e6, search=(1.0, 1e5), log=True)
     C: float = param(1e4, "N/s", "attraction rate of a slipping block's force to its share "
                      "of the Stribeck curve (frictional lag g/C)", lower=0, lower_open=True,
                      upper=1e12, search=(1.0, 1e6), log=True)
@@ -118,6 +119,9 @@ class GMSParams(FrictionParams):
     # last, so that the FMU's value references of the parameters before it keep theirs
     sigma1: float = param(0.0, "N.s/m", "micro-damping of the slip-blocks (LuGre's sigma1: "
                           "sigma1 v right after a reversal)", lower=0, search=(0.0, 1e3))
+    tilt: float = param(1.0, "1", "break-away share of the softest slip-block over the "
+                        "stiffest's (geometric; 1: equal shares)", lower=1e-4, upper=1e4,
+                        search=(1e-2, 1e2), log=True)
 
     def _check_relations(self):
         if self.shape not in SHAPES:
@@ -125,9 +129,8 @@ class GMSParams(FrictionParams):
 
 
 _LAYOUT = ("sigma0", "spread", "C", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape",
-           "sigma1")
-S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1 = range(len(_LAYOUT))
-_W = 1.0 / N_ELEMENTS  # share of the Stribeck curve each block carries
+           "sigma1", "tilt")
+S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1, TILT = range(len(_LAYOUT))
 
 
 @njit(cache=True, inline="always")
@@ -142,6 +145,18 @@ def element_stiffness(sigma0, spread, k):
     k[1] = sigma0 * c1 / tot
     k[2] = sigma0 * c2 / tot
     k[3] = sigma0 * c3 / tot
+
+
+@njit(cache=True, inline="always")
+def element_shares(tilt, w):
+    """Fill ``w[0..3]`` with the blocks' break-away shares [-]: geometric from the stiffest
+    block to the softest (ratio ``tilt``), summing to 1."""
+    r = tilt ** (1.0 / 3.0)
+    tot = 1.0 + r + r * r + r * r * r
+    w[0] = 1.0 / tot
+    w[1] = r / tot
+    w[2] = r * r / tot
+    w[3] = r * r * r / tot
 
 
 @njit(cache=True, inline="always")
@@ -206,8 +221,9 @@ def gms_run(t, v, th, method, z0, F, Z):
     k = np.empty(N_ELEMENTS)
     element_stiffness(th[S0], th[SPREAD], k)
     wk = np.empty(N_ELEMENTS)
+    element_shares(th[TILT], wk)
     for i in range(N_ELEMENTS):
-        wk[i] = _W / k[i]
+        wk[i] = wk[i] / k[i]
     C = th[CA]
     s2 = th[S2]
     b = th[B]
@@ -287,9 +303,15 @@ class GMS(FrictionModel):
 
     def _pack(self, p: GMSParams) -> np.ndarray:
         return np.array([p.sigma0, p.spread, p.C, p.sigma2, p.Fc, p.Fs, p.vs, p.alpha, p.b,
-                         SHAPES[p.shape], p.sigma1], dtype=np.float64)
+                         SHAPES[p.shape], p.sigma1, p.tilt], dtype=np.float64)
 
     # -- pieces of the law --------------------------------------------------------------
+    def element_shares(self) -> np.ndarray:
+        """Break-away shares w_i of the four blocks [-] (stiffest first; they sum to 1)."""
+        w = np.empty(N_ELEMENTS)
+        element_shares(self.params.tilt, w)
+        return w
+
     def element_stiffness(self) -> np.ndarray:
         """Stiffnesses k_i of the four blocks [N/m] (stiffest first; they sum to sigma0)."""
         k = np.empty(N_ELEMENTS)
@@ -315,7 +337,7 @@ class GMS(FrictionModel):
         v : float
             Velocity [m/s].
         """
-        return float(self.g(float(v))) * (_W / self.element_stiffness())
+        return float(self.g(float(v))) * (self.element_shares() / self.element_stiffness())
 
     def presliding_distance(self, level: float | None = None) -> float:
         """Travel from a state of rest without history until every block slips [m]: the
@@ -328,7 +350,7 @@ class GMS(FrictionModel):
             Friction level [N] (default ``Fs``).
         """
         level = self.params.Fs if level is None else float(level)
-        return float(level * _W / self.element_stiffness()[-1])
+        return float(level * self.element_shares()[-1] / self.element_stiffness()[-1])
 
     def virgin_force(self, x, level: float | None = None) -> np.ndarray:
         """Presliding force [N] of a first loading from rest without history by the
@@ -345,7 +367,7 @@ class GMS(FrictionModel):
         """
         level = self.params.Fs if level is None else float(level)
         k = self.element_stiffness()
-        d = level * (_W / k)
+        d = level * (self.element_shares() / k)
         x = np.asarray(x, dtype=float)
         return np.sum(k * np.clip(x[..., None], -d, d), axis=-1)
 
@@ -357,7 +379,7 @@ class GMS(FrictionModel):
     def state_scales(self) -> np.ndarray:
         """Typical magnitude of each state [m]: each block's largest break-away deflection
         (the reference integrator's absolute tolerance scales with it)."""
-        return max(self.params.Fc, self.params.Fs) * (_W / self.element_stiffness())
+        return max(self.params.Fc, self.params.Fs) * (self.element_shares() / self.element_stiffness())
 
     # -- analytic pieces ----------------------------------------------------------------
     def steady_state(self, v, **inputs) -> np.ndarray:
@@ -372,10 +394,11 @@ class GMS(FrictionModel):
         v = float(v)
         g = float(self.g(v))
         k = self.element_stiffness()
+        w = self.element_shares()
         lam = p.C / g
         out = np.empty(N_ELEMENTS)
         for i in range(N_ELEMENTS):
-            out[i] = _block_rate(float(state[i]), v, g * (_W / k[i]), lam)
+            out[i] = _block_rate(float(state[i]), v, g * (w[i] / k[i]), lam)
         return out
 
     def force(self, state, v, **inputs) -> float:
@@ -397,7 +420,7 @@ class GMS(FrictionModel):
             return np.zeros(N_ELEMENTS)
         k = self.element_stiffness()
         g = float(self.g(v0))
-        d = np.array([g * (_W / k[i]) for i in range(N_ELEMENTS)])
+        d = g * (self.element_shares() / k)
         return d if v0 > 0 else -d
 
     def _start_from(self, t, v, a, load, x, F0=None) -> np.ndarray:
@@ -423,13 +446,13 @@ class GMS(FrictionModel):
         k = self.element_stiffness()
         target = F0 - p.sigma2 * v0 - p.b
         if v0 == 0.0:
-            d = p.Fs * (_W / k)
+            d = p.Fs * (self.element_shares() / k)
             sgn, lo, hi = 1.0, -float(np.max(d)), float(np.max(d))
 
             def state(u):
                 return np.clip(u, -d, d)
         else:
-            d = float(self.g(v0)) * (_W / k)
+            d = float(self.g(v0)) * (self.element_shares() / k)
             sgn, lo, hi = math.copysign(1.0, v0), 0.0, 2.0 * float(np.max(d))
 
             def state(u):

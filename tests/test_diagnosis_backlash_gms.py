@@ -77,9 +77,11 @@ def test_gms_candidate_shares_the_base_curve_and_stiffness():
                                         "alpha", "b"])
     # the base's bristle damping is the blocks' micro-damping
     assert names == ["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "spread",
-                     "C"]
+                     "C", "tilt"]
     par = GMS.own_parameters(law)
     assert par["spread"] == 20.0 and par["C"] == 3e3
+    # equal break-away shares unless the fit tilts them
+    assert par["tilt"] == 1.0 and [par[f"w{i}"] for i in range(1, 5)] == [0.25] * 4
     assert par["presliding"] == pytest.approx(BASE["Fs"] / 4 / k[-1])
     # the steady state is the base's Stribeck curve
     vv = np.array([-0.05, -1e-3, 2e-3, 0.04])
@@ -292,7 +294,7 @@ def test_the_records_list_parameters_truths_localisation_and_fmu():
     from diagnosis.benchmark import CASES
     ctx = _ctx()
     for name, law, own in (("backlash", "backlash_lugre", {"delta": "m"}),
-                           ("gms", "gms", {"spread": "1", "C": "N/s"})):
+                           ("gms", "gms", {"spread": "1", "C": "N/s", "tilt": "1"})):
         e = EFFECTS[name]
         assert e.plant_entry == "law" and e.fmu and name in FMU_EFFECTS
         assert law in native_catalogue()          # the FMU that carries it

@@ -2,8 +2,8 @@
  * kernel.
  *
  * Four slip-blocks, stiffness k_i (geometric, sum sigma0, ratio `spread` stiffest/softest),
- * each carrying a quarter of the Stribeck curve g(v): break-away deflection
- * d_i = g / (4 k_i). With s = sgn(v), u_i = s z_i and lam = C / g:
+ * each carrying its share w_i of the Stribeck curve g(v) (geometric, sum 1, ratio `tilt`
+ * softest/stiffest): break-away deflection d_i = w_i g / k_i. With s = sgn(v), u_i = s z_i and lam = C / g:
  *
  *   du_i/dt = min(|v|, lam (d_i - u_i))      (stick: move with the body; slip: attraction)
  *   F       = sum_i (k_i z_i + sigma1 (k_i / sigma0) dz_i/dt) + sigma2 v + b
@@ -20,7 +20,7 @@
 
 /* p[] and theta: the fields of friction.gms.GMSParams in declaration order
  * (= friction.gms._LAYOUT) */
-enum { S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1, TH_N };
+enum { S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1, TILT, TH_N };
 
 static int gms_pack(const double *p, double *th, char *msg, size_t msglen)
 {
@@ -42,6 +42,17 @@ static void gms_stiffness(double sigma0, double spread, double k[GMS_N])
     k[1] = sigma0 * c1 / tot;
     k[2] = sigma0 * c2 / tot;
     k[3] = sigma0 * c3 / tot;
+}
+
+/* friction.gms.element_shares */
+static void gms_shares(double tilt, double w[GMS_N])
+{
+    const double r = pow(tilt, 1.0 / 3.0);
+    const double tot = 1.0 + r + r * r + r * r * r;
+    w[0] = 1.0 / tot;
+    w[1] = r / tot;
+    w[2] = r * r / tot;
+    w[3] = r * r * r / tot;
 }
 
 /* friction.gms._block_piece */
@@ -90,15 +101,16 @@ static double gms_block_rate(double z, double v, double d, double lam)
 static double gms_damping_rate(const double *th, const double z[GMS_N], double v,
                                const double k[GMS_N])
 {
-    double g, lam, tot = 0.0, r = 0.0;
+    double g, lam, tot = 0.0, r = 0.0, w[GMS_N];
     int i;
     if (v == 0.0)
         return 0.0;
     g = fl_stribeck_g(v, th[FC], th[FS], th[VS], th[ALPHA], th[SHAPE]);
     lam = th[CA] / g;
+    gms_shares(th[TILT], w);
     for (i = 0; i < GMS_N; ++i) {
         tot += k[i];
-        r += k[i] * gms_block_rate(z[i], v, g * ((1.0 / GMS_N) / k[i]), lam);
+        r += k[i] * gms_block_rate(z[i], v, g * (w[i] / k[i]), lam);
     }
     return r / tot;
 }
@@ -116,8 +128,9 @@ static void gms_kernel(int n, const double *t, const double *v, const double *a,
     (void)load;
     (void)x;
     gms_stiffness(th[S0], th[SPREAD], k);
+    gms_shares(th[TILT], wk);
     for (i = 0; i < GMS_N; ++i) {
-        wk[i] = (1.0 / GMS_N) / k[i];
+        wk[i] = wk[i] / k[i];
         z[i] = state0[i];
     }
     for (j = 0; j < n; ++j) {
@@ -160,7 +173,7 @@ static void gms_kernel(int n, const double *t, const double *v, const double *a,
 static void gms_derivatives(const double *th, const double *state, double v, double a,
                             double load, double x, double *dstate)
 {
-    double k[GMS_N];
+    double k[GMS_N], w[GMS_N];
     const double g = fl_stribeck_g_np(v, th[FC], th[FS], th[VS], th[ALPHA], th[SHAPE]);
     const double lam = th[CA] / g;
     int i;
@@ -168,8 +181,9 @@ static void gms_derivatives(const double *th, const double *state, double v, dou
     (void)load;
     (void)x;
     gms_stiffness(th[S0], th[SPREAD], k);
+    gms_shares(th[TILT], w);
     for (i = 0; i < GMS_N; ++i)
-        dstate[i] = gms_block_rate(state[i], v, g * ((1.0 / GMS_N) / k[i]), lam);
+        dstate[i] = gms_block_rate(state[i], v, g * (w[i] / k[i]), lam);
 }
 
 /* GMS.force */

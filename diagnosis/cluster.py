@@ -33,6 +33,8 @@ import contextvars
 import os
 from concurrent.futures import ThreadPoolExecutor
 
+from threadpoolctl import threadpool_limits
+
 #: threads of this process the force level's candidate fits run on when no cluster is
 #: given: ``None`` the environment's ``FRICTIONLAB_THREADS``, else the machine's cores (at
 #: most :data:`MAX_THREADS`); 1 one after the other (a process pool that already keeps
@@ -205,7 +207,11 @@ def thread_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> 
         width[name] = len(cand.force_extras(ctx)) + max(
             (len(nv) for _, nv in cand.modify_law(law, base_names, ctx)), default=0)
     order = sorted(names, key=lambda nm: -width[nm])
-    with ThreadPoolExecutor(max_workers=min(n, len(names))) as pool:
+    # one BLAS thread per fit while they run side by side: each fit's trust-region steps
+    # take SVDs of its Jacobian, and two fits whose BLAS spawns a thread per core each
+    # oversubscribe the cores (OpenBLAS's threads spin while they wait; measured below)
+    with threadpool_limits(limits=1, user_api="blas"), \
+            ThreadPoolExecutor(max_workers=min(n, len(names))) as pool:
         # each fit in a copy of the caller's context (its progress reporter)
         futures = {name: pool.submit(contextvars.copy_context().run, one, name)
                    for name in order}

@@ -28,17 +28,21 @@ def test_two_threads_give_the_serial_report_bit_for_bit(case):
 
 
 def test_the_fits_run_on_two_threads(case, monkeypatch):
-    seen = {}
+    from threadpoolctl import threadpool_info
+    seen, blas = {}, set()
     fit_one = cluster._fit_one
 
     def spy(name, **kw):
         seen[name] = threading.get_ident()
+        # side by side, each fit's SVDs run on one BLAS thread (no oversubscription)
+        blas.update(i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas")
         return fit_one(name, **kw)
     monkeypatch.setattr(cluster, "_fit_one", spy)
     diagnose(case, "lugre", candidates=["delay", "drift", "inertia", "asymmetry"], threads=2)
     assert set(seen) == {"delay", "drift", "inertia", "asymmetry"}
     assert len(set(seen.values())) == 2
     assert threading.get_ident() not in seen.values()
+    assert blas == {1}
     seen.clear()
     diagnose(case, "lugre", candidates=["delay", "drift"], threads=1)
     assert seen == {}  # one thread: the caller's own loop fits them

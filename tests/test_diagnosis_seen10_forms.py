@@ -1,5 +1,5 @@
 """The tenth seen truth family (diagnosis.benchmark.seen10, sealed at the end of session 15,
-run once in session 16 on <COMMIT>, <TOP1> top-1, now open): each form builds a finite case
+run once in session 16 on 5aa9452, 40.3 % top-1, now open): each form builds a finite case
 of the requested size on every plant it applies to, is the base law at s = 0, grows with
 its amplitude factor and refuses the plants it does not apply to."""
 import dataclasses

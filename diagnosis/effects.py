@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen9`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen10`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -239,6 +239,7 @@ _S6 = "diagnosis.benchmark.seen6:"
 _S7 = "diagnosis.benchmark.seen7:"
 _S8 = "diagnosis.benchmark.seen8:"
 _S9 = "diagnosis.benchmark.seen9:"
+_S10 = "diagnosis.benchmark.seen10:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -259,8 +260,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "cylinder_pressure": _S6 + "cylinder_pressure_truth",
                    "motor_attraction": _S7 + "motor_attraction_truth",
                    "pitch_squeeze": _S8 + "pitch_squeeze_truth",
-                   "weight_transfer": _S9 + "weight_transfer_truth"},
-           sealed={"oil_slosh": _S + "oil_slosh_truth"},
+                   "weight_transfer": _S9 + "weight_transfer_truth",
+                   "oil_slosh": _S10 + "oil_slosh_truth"},
+           sealed={"dilatancy_hardening": _S + "dilatancy_hardening_truth"},
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
@@ -276,8 +278,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "pivot_lever": _S6 + "pivot_lever_truth",
                    "plastic_junctions": _S7 + "plastic_junctions_truth",
                    "hydrostatic_overload": _S8 + "hydrostatic_overload_truth",
-                   "squeeze_cavitation": _S9 + "squeeze_cavitation_truth"},
-           sealed={"piezoviscous_film": _S + "piezoviscous_film_truth"},
+                   "squeeze_cavitation": _S9 + "squeeze_cavitation_truth",
+                   "piezoviscous_film": _S10 + "piezoviscous_film_truth"},
+           sealed={"full_contact": _S + "full_contact_truth"},
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
@@ -293,8 +296,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "spring_return": _S6 + "spring_return_truth",
                    "tilted_pad": _S7 + "tilted_pad_truth",
                    "sprag_strut": _S8 + "sprag_strut_truth",
-                   "meter_out_throttle": _S9 + "meter_out_throttle_truth"},
-           sealed={"differential_cylinder": _S + "differential_cylinder_truth"},
+                   "meter_out_throttle": _S9 + "meter_out_throttle_truth",
+                   "differential_cylinder": _S10 + "differential_cylinder_truth"},
+           sealed={"chevron_grooves": _S + "chevron_grooves_truth"},
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
                          "Stribeck curve shape: exponent, Lorentzian, a speed map",
@@ -310,8 +314,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "starved_film": _S6 + "starved_film_truth",
                    "rubber_hysteresis": _S7 + "rubber_hysteresis_truth",
                    "contact_resonance": _S8 + "contact_resonance_truth",
-                   "dither_averaging": _S9 + "dither_averaging_truth"},
-           sealed={"melt_lubrication": _S + "melt_lubrication_truth"},
+                   "dither_averaging": _S9 + "dither_averaging_truth",
+                   "melt_lubrication": _S10 + "melt_lubrication_truth"},
+           sealed={"granular_flow": _S + "granular_flow_truth"},
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -331,8 +336,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "oil_pocket": _S6 + "oil_pocket_truth",
                    "end_cushion": _S7 + "end_cushion_truth",
                    "telescopic_cover": _S8 + "telescopic_cover_truth",
-                   "air_spring": _S9 + "air_spring_truth"},
-           sealed={"bolt_holes": _S + "bolt_holes_truth"},
+                   "air_spring": _S9 + "air_spring_truth",
+                   "bolt_holes": _S10 + "bolt_holes_truth"},
+           sealed={"immersed_plunger": _S + "immersed_plunger_truth"},
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
@@ -347,8 +353,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "sliding_payload": _S6 + "sliding_payload_truth",
                    "rattling_mass": _S7 + "rattling_mass_truth",
                    "freewheel_flywheel": _S8 + "freewheel_flywheel_truth",
-                   "pick_and_place": _S9 + "pick_and_place_truth"},
-           sealed={"eddy_coupling": _S + "eddy_coupling_truth"},
+                   "pick_and_place": _S9 + "pick_and_place_truth",
+                   "eddy_coupling": _S10 + "eddy_coupling_truth"},
+           sealed={"centrifugal_flyweights": _S + "centrifugal_flyweights_truth"},
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
@@ -364,8 +371,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "slew_limit": _S6 + "slew_limit_truth",
                    "pressure_line": _S7 + "pressure_line_truth",
                    "running_median": _S8 + "running_median_truth",
-                   "deadband_reporting": _S9 + "deadband_reporting_truth"},
-           sealed={"spatial_sampling": _S + "spatial_sampling_truth"},
+                   "deadband_reporting": _S9 + "deadband_reporting_truth",
+                   "spatial_sampling": _S10 + "spatial_sampling_truth"},
+           sealed={"belt_transit": _S + "belt_transit_truth"},
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
@@ -382,8 +390,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "seal_relaxation": _S6 + "seal_relaxation_truth",
                    "tribo_oxide": _S7 + "tribo_oxide_truth",
                    "antioxidant_depletion": _S8 + "antioxidant_depletion_truth",
-                   "coating_wear_through": _S9 + "coating_wear_through_truth"},
-           sealed={"polymer_swelling": _S + "polymer_swelling_truth"},
+                   "coating_wear_through": _S9 + "coating_wear_through_truth",
+                   "polymer_swelling": _S10 + "polymer_swelling_truth"},
+           sealed={"zddp_tribofilm": _S + "zddp_tribofilm_truth"},
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),
@@ -398,8 +407,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "drag_idler": _S6 + "drag_idler_truth",
                    "biased_play": _S7 + "biased_play_truth",
                    "slack_chain": _S8 + "slack_chain_truth",
-                   "magnetic_coupling": _S9 + "magnetic_coupling_truth"},
-           sealed={"preloaded_nut": _S + "preloaded_nut_truth"},
+                   "magnetic_coupling": _S9 + "magnetic_coupling_truth",
+                   "preloaded_nut": _S10 + "preloaded_nut_truth"},
+           sealed={"harmonic_drive": _S + "harmonic_drive_truth"},
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
                         "Maxwell-slip)", "modify_law"),
@@ -414,8 +424,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "rate_state_presliding": _S6 + "rate_state_presliding_truth",
                    "tomlinson_asperities": _S7 + "tomlinson_asperities_truth",
                    "bond_rupture": _S8 + "bond_rupture_truth",
-                   "gouge_fabric": _S9 + "gouge_fabric_truth"},
-           sealed={"kinematic_hardening": _S + "kinematic_hardening_truth"},
+                   "gouge_fabric": _S9 + "gouge_fabric_truth",
+                   "kinematic_hardening": _S10 + "kinematic_hardening_truth"},
+           sealed={"asperity_interlocking": _S + "asperity_interlocking_truth"},
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 

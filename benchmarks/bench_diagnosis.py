@@ -97,6 +97,14 @@ median 4.12 s (23.2 / 21.5 x); one thread 5.19 / 5.35 s. The report is the same 
 the fits' Python parts (scipy's trust region, each simulation's start state and trial law,
 about half of a fit) hold the interpreter lock; the widest fits (position, drift) start first.
 
+Session 16 (the GMS candidate's break-away ``tilt`` and wider split; one BLAS thread per fit
+while the fits run on threads, :func:`diagnosis.cluster.thread_fits`), 2026-11-29 08:27 UTC,
+load 0.6-1.0: 2 threads best **3.67 s**, median 3.84 s (23.4 / 24.3 x one base
+identification, 0.16 s); one thread 5.12 / 5.17 s. With OpenBLAS left at its default of a
+thread per core (``OPENBLAS_NUM_THREADS=2``, what a user's ``frictionlab diagnose`` has), 3
+warm runs each, the session-15 code (75fb8dd) took best **7.73 s** on 2 threads (over the
+5 s goal: the two fits' SVDs oversubscribe the cores) and this code **3.94 s**.
+
 Before (one thread; 2026-11-24, session 10's machine), every candidate (backlash and GMS
 included; the speed map and the load inside the bristle dynamics), warm (``--speed-only --repeats 5``, 2026-11-24
 15:18 UTC, load 0.9, one BLAS thread): best 3.82 s, median 3.94 s, 23.6 / 22.1 x one base

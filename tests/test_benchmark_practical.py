@@ -41,3 +41,15 @@ def test_practical_size_names_the_rule_only_for_small_delays():
     # no shift measured, or another effect: no rule
     assert practical_size("delay", {}) == ""
     assert practical_size("position", {"truth_shift": 0.1}) == ""
+
+
+def test_truth_shift_refuses_bad_records_by_name():
+    t, F = _record(200)
+    with pytest.raises(ValueError, match="one length"):
+        truth_shift(t, F, F[:-1])
+    bad = F.copy()
+    bad[7] = np.nan
+    with pytest.raises(ValueError, match=r"F\[7\] is not finite"):
+        truth_shift(t, F, bad)
+    with pytest.raises(ValueError, match="increase"):
+        truth_shift(t[::-1], F, F)

@@ -143,10 +143,17 @@ def truth_shift(t: np.ndarray, Fb: np.ndarray, F: np.ndarray,
     """
     from scipy.interpolate import CubicSpline
     from scipy.optimize import minimize_scalar
-    t = np.asarray(t, float)
+    t, Fb, F = (np.asarray(a, float) for a in (t, Fb, F))
+    if not (t.shape == Fb.shape == F.shape and t.ndim == 1 and t.size >= 4):
+        raise ValueError(f"truth_shift needs t, Fb and F of one length (>= 4), got "
+                         f"{t.size}, {Fb.size} and {F.size}")
+    for name, a in (("t", t), ("Fb", Fb), ("F", F)):
+        if not np.all(np.isfinite(a)):
+            raise ValueError(f"{name}[{int(np.flatnonzero(~np.isfinite(a))[0])}] is not finite")
+    if not np.all(np.diff(t) > 0):
+        raise ValueError("t must increase strictly [s]")
     dt = float(np.median(np.diff(t)))
-    spline = CubicSpline(t, np.asarray(Fb, float))
-    F = np.asarray(F, float)
+    spline = CubicSpline(t, Fb)
 
     def sse(d):
         r = F - spline(np.clip(t - d * dt, t[0], t[-1]))

@@ -149,3 +149,52 @@ def test_parts_a_start_pins_do_not_move_the_joint_fit():
     assert pinned.extras["dm"] == plain.extras["dm"]
     assert pinned.extras["m_x"] == 0.0 and pinned.extras["tau_x"] == 1e-3
     assert abs(plain.extras["dm"] - 0.2) < 0.02
+
+
+def test_the_joint_fit_keeps_the_best_of_alternative_starts():
+    """A start hook that returns a list offers alternative starts: the joint fit runs from
+    each and keeps the best on the fit record, whichever comes first."""
+    from friction import make_model
+    from friction.dataset import Dataset
+    from diagnosis.candidates import Candidate, Extra, Fixed
+    from diagnosis.composite import fit_composite
+    from diagnosis.effects import make_context
+
+    class Mass(Candidate):
+        order = 0
+
+        def force_extras(self, ctx):
+            return [Extra("dm", 0.0, -1.0, 1.0, "kg")]
+
+        def apply(self, F, p, data, ctx):
+            return F + p["dm"] * data.a
+
+        def start(self, fit, Ff, r, ctx, basis=None):
+            alts = [{"dm": Fixed(0.0)}, {"dm": 0.1}]  # the first pins the mass off
+            return alts[::-1] if self.order else alts
+
+    dt = 1e-3
+    t = np.arange(4000) * dt
+    v = 0.02 * np.sin(2 * np.pi * 0.8 * t) + 0.004 * np.sin(2 * np.pi * 3.3 * t)
+    a = np.gradient(v, dt)
+    law = make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=5.0, Fc=1.0, Fs=1.5,
+                     vs=2e-3)
+    F = law.simulate(t, v) + 0.2 * a
+    F = F + 0.01 * np.std(F) * np.random.default_rng(5).standard_normal(t.size)
+    data = Dataset.from_arrays(t, F, x=np.cumsum(v) * dt, v=v, a=a, check_units=False)
+    ctx = make_context(data)
+    fits = []
+    for order in (0, 1):
+        cand = Mass("m", "")
+        cand.order = order
+        fits.append(fit_composite(law, ["Fc"], [cand], data, ctx))
+    for comp, nr in fits:
+        assert abs(comp.extras["dm"] - 0.2) < 0.01
+    assert fits[0][1] == fits[1][1]
+    # the pinned alternative alone ends far worse
+
+    class MassOff(Mass):
+        def start(self, fit, Ff, r, ctx, basis=None):
+            return {"dm": Fixed(0.0)}
+    off, nr_off = fit_composite(law, ["Fc"], [MassOff("m", "")], data, ctx)
+    assert off.extras["dm"] == 0.0 and nr_off > 1.5 * fits[0][1]

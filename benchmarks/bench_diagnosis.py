@@ -105,6 +105,11 @@ thread per core (``OPENBLAS_NUM_THREADS=2``, what a user's ``frictionlab diagnos
 warm runs each, the session-15 code (75fb8dd) took best **7.73 s** on 2 threads (over the
 5 s goal: the two fits' SVDs oversubscribe the cores) and this code **3.94 s**.
 
+Session 17 (``inertia``'s coupled part and mass trend: its start grid and a second start
+from the rigid form; joint fits without pinned columns), 2026-11-29 11:23 UTC, load
+0.4-0.9, nothing else running: 2 threads best **3.45 s**, median 3.51 s (22.2 / 21.9 x one
+base identification, 0.15 s); one thread 4.86 / 4.93 s.
+
 Before (one thread; 2026-11-24, session 10's machine), every candidate (backlash and GMS
 included; the speed map and the load inside the bristle dynamics), warm (``--speed-only --repeats 5``, 2026-11-24
 15:18 UTC, load 0.9, one BLAS thread): best 3.82 s, median 3.94 s, 23.6 / 22.1 x one base

@@ -32,6 +32,20 @@ can tell it from the base fit), clean and out-of-library cases, the mean |shrink
 (reported gap closed against the truth's), per plant, per effect and per truth form; seconds
 per case against one base identification of the plant timed in the same worker.
 
+Results of session 17 (2026-11-29, short protocols, code of 005e0e4: ``inertia`` with a
+coupled part and a mass trend, joint fits without pinned columns and from alternative
+starts; the valve and XML-350 on 1 + 2 workers, the other plants on 2, beside other runs):
+the open grid with seen9 and seen10, **2316 cases listed, 2300 run** (16 skipped). Top-1
+**52.9 %** (1217; **56.1 %** of the 2167 detectable, 53.9 % counting the 92 delay cases
+below a sample as detectable), mean |shrink error| 0.300, wrong names on 245 of 2260 effect
+cases (10.8 %: gms -> acceleration 26, drift -> load 21, acceleration -> position 19,
+backlash -> gms 15, inertia -> acceleration 15). Clean 0 of 20 named (17 ``none``), ripple 0
+of 20. By plant: forging press 59.5 %, valve 58.5 %, XML-350 51.9 %, isolator 51.6 %, damping
+rig 44.6 %. On session 15's forms: 1070 of 1940 (58.4 % of the detectable; session 15 had
+1038 of 1948, 54.3 %, on other seeds); the seen9 and seen10 forms 147 of 360. Paired with
+the same seeds on the valve and XML-350 (code of 41ad387 there, 982 cases): right 529 -> 543,
+inertia 71 -> 86 of 100, the other effects 458 -> 457, wrong names 78 -> 77.
+
 Results of session 15 (2026-11-29, short protocols, 2 workers, code of ef5b06a: the
 diagnosis simulates every model with a sample at each velocity reversal inside a step,
 :func:`diagnosis.composite.simulate_split`; its candidate fits on threads, one per worker

@@ -2,6 +2,7 @@
 fmpy's low-level API with its log messages captured."""
 from __future__ import annotations
 
+import atexit
 import functools
 import pathlib
 import shutil
@@ -10,11 +11,19 @@ import tempfile
 __all__ = ["built_fmus", "built_native_fmus", "LoggedSlave"]
 
 
+def _scratch(prefix: str) -> pathlib.Path:
+    """A temporary folder removed when the process ends (each test process built its FMUs
+    into a new one and left it: hundreds piled up in the temporary directory)."""
+    out = pathlib.Path(tempfile.mkdtemp(prefix=prefix))
+    atexit.register(shutil.rmtree, out, ignore_errors=True)
+    return out
+
+
 @functools.lru_cache(maxsize=None)
 def built_fmus(only: tuple | None = None) -> pathlib.Path:
     """Build (and validate) the FMUs into a temporary folder once per process; returns it."""
     from .build import build_all
-    out = pathlib.Path(tempfile.mkdtemp(prefix="frictionlab_fmus_"))
+    out = _scratch("frictionlab_fmus_")
     build_all(out, only=list(only) if only else None, progress=False, kinds=("pythonfmu",))
     return out
 
@@ -25,7 +34,7 @@ def built_native_fmus(only: tuple | None = None) -> pathlib.Path:
     each is validated with fmpy. Returns the folder (``<name>_native.fmu`` files)."""
     from .native.build import build_native, native_catalogue
     from .build import validate
-    out = pathlib.Path(tempfile.mkdtemp(prefix="frictionlab_native_"))
+    out = _scratch("frictionlab_native_")
     for name in (only or tuple(native_catalogue())):
         path = build_native(name, out)
         problems = validate(path)

@@ -75,6 +75,13 @@ def test_bad_parameters_are_refused_by_name(kw, name):
         coupled_part(np.zeros(10), **args)
 
 
+def test_a_velocity_that_is_not_a_number_is_refused_at_its_sample():
+    v = np.zeros(10)
+    v[4] = np.nan
+    with pytest.raises(ValueError, match=r"^v\[4\] = nan is not finite"):
+        coupled_part(v, 1e-3, 0.01, 1.0, 1.0)
+
+
 def test_the_candidate_fits_a_payload_that_slips():
     """A payload held by its friction up to 0.3 of the top acceleration: the candidate's
     start finds the part, and its form leaves far less of the force than a rigid mass."""
@@ -105,13 +112,26 @@ def test_the_candidate_fits_a_payload_that_slips():
     assert left @ left < 0.2 * rigid
 
 
+def _lugre_with_mass(n, seed):
+    """A LuGre law and a record of its force plus a 0.2 kg mass error, 1 % noise (n samples
+    at 1 kHz)."""
+    from friction import make_model
+    from friction.dataset import Dataset
+    dt = 1e-3
+    t = np.arange(n) * dt
+    v = 0.02 * np.sin(2 * np.pi * 0.8 * t) + 0.004 * np.sin(2 * np.pi * 3.3 * t)
+    a = np.gradient(v, dt)
+    law = make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=5.0, Fc=1.0, Fs=1.5,
+                     vs=2e-3)
+    F = law.simulate(t, v) + 0.2 * a
+    F = F + 0.01 * np.std(F) * np.random.default_rng(seed).standard_normal(t.size)
+    return law, Dataset.from_arrays(t, F, x=np.cumsum(v) * dt, v=v, a=a, check_units=False)
+
+
 def test_parts_a_start_pins_do_not_move_the_joint_fit():
     """A joint fit with extras a data start pinned (the coupled part off) ends where the
     fit without those extras ends, to the last bit: pinned columns stay out of the solved
     vector (in scipy's trust region their zero columns still shaped the steps)."""
-    from dataclasses import replace
-    from friction import make_model
-    from friction.dataset import Dataset
     from diagnosis.candidates import Candidate, Extra, Fixed
     from diagnosis.composite import fit_composite
     from diagnosis.effects import make_context
@@ -131,15 +151,7 @@ def test_parts_a_start_pins_do_not_move_the_joint_fit():
         def start(self, fit, Ff, r, ctx, basis=None):
             return {"m_x": Fixed(0.0), "tau_x": Fixed(1e-3)}
 
-    dt = 1e-3
-    t = np.arange(5000) * dt
-    v = 0.02 * np.sin(2 * np.pi * 0.8 * t) + 0.004 * np.sin(2 * np.pi * 3.3 * t)
-    a = np.gradient(v, dt)
-    law = make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=5.0, Fc=1.0, Fs=1.5,
-                     vs=2e-3)
-    F = law.simulate(t, v) + 0.2 * a
-    F = F + 0.01 * np.std(F) * np.random.default_rng(4).standard_normal(t.size)
-    data = Dataset.from_arrays(t, F, x=np.cumsum(v) * dt, v=v, a=a, check_units=False)
+    law, data = _lugre_with_mass(5000, seed=4)
     ctx = make_context(data)
     start = law.with_values(Fc=1.3, Fs=1.2, sigma2=2.0)
     names = ["Fc", "Fs", "sigma2"]
@@ -154,8 +166,6 @@ def test_parts_a_start_pins_do_not_move_the_joint_fit():
 def test_the_joint_fit_keeps_the_best_of_alternative_starts():
     """A start hook that returns a list offers alternative starts: the joint fit runs from
     each and keeps the best on the fit record, whichever comes first."""
-    from friction import make_model
-    from friction.dataset import Dataset
     from diagnosis.candidates import Candidate, Extra, Fixed
     from diagnosis.composite import fit_composite
     from diagnosis.effects import make_context
@@ -173,15 +183,7 @@ def test_the_joint_fit_keeps_the_best_of_alternative_starts():
             alts = [{"dm": Fixed(0.0)}, {"dm": 0.1}]  # the first pins the mass off
             return alts[::-1] if self.order else alts
 
-    dt = 1e-3
-    t = np.arange(4000) * dt
-    v = 0.02 * np.sin(2 * np.pi * 0.8 * t) + 0.004 * np.sin(2 * np.pi * 3.3 * t)
-    a = np.gradient(v, dt)
-    law = make_model("lugre", sigma0=1e5, sigma1=300.0, sigma2=5.0, Fc=1.0, Fs=1.5,
-                     vs=2e-3)
-    F = law.simulate(t, v) + 0.2 * a
-    F = F + 0.01 * np.std(F) * np.random.default_rng(5).standard_normal(t.size)
-    data = Dataset.from_arrays(t, F, x=np.cumsum(v) * dt, v=v, a=a, check_units=False)
+    law, data = _lugre_with_mass(4000, seed=5)
     ctx = make_context(data)
     fits = []
     for order in (0, 1):

@@ -1164,6 +1164,10 @@ def coupled_part(v, dt, tau, g_up, g_dn) -> np.ndarray:
         (>= 0; 0: a one-way coupling; inf: it never slips).
     """
     v = np.ascontiguousarray(v, dtype=float)
+    bad = np.flatnonzero(~np.isfinite(v))
+    if bad.size:
+        raise ValueError(f"v[{bad[0]}] = {float(v[bad[0]])!r} is not finite: the axis velocity must "
+                         f"be a number at every sample [m/s]")
     for name, val in (("dt", dt), ("tau", tau)):
         if not (np.isfinite(val) and val > 0):
             raise ValueError(f"{name} = {val!r} is out of bounds: must be > 0 [s]")

@@ -58,14 +58,25 @@ def run_libcosim(fmus: dict, connections, *, step_size: float, stop_time: float,
         log_output_level(CosimLogLevel.WARNING)
     except ImportError:
         pass
+    # libcosim crashes the process (SIGSEGV) on a missing or unreadable FMU: every file is
+    # read with fmpy first, whose errors name it
+    vrs = {}
+    for name, path in fmus.items():
+        path = os.fspath(path)
+        if not os.path.isfile(path):
+            raise FileNotFoundError(f"FMU of instance {name!r} not found: {path}")
+        try:
+            md = read_model_description(path)
+        except Exception as exc:
+            raise ValueError(f"FMU of instance {name!r} ({path}) is not a readable FMU: "
+                             f"{exc}") from exc
+        vrs[name] = {v.name: (v.valueReference, v.type) for v in md.modelVariables}
     ns = int(round(step_size * 1e9))
     ex = CosimExecution.from_step_size(step_size=ns)
-    idx, vrs = {}, {}
+    idx = {}
     for name, path in fmus.items():
         slave = CosimLocalSlave(fmu_path=os.path.abspath(os.fspath(path)), instance_name=name)
         idx[name] = ex.add_local_slave(local_slave=slave)
-        md = read_model_description(os.fspath(path))
-        vrs[name] = {v.name: (v.valueReference, v.type) for v in md.modelVariables}
     for inst, values in (parameters or {}).items():
         for var, val in values.items():
             vr, typ = vrs[inst][var]

@@ -1,6 +1,12 @@
 """Co-simulation master: algorithms, proof against the reference, errors, external tools."""
 from __future__ import annotations
 
+import json
+import pathlib
+import subprocess
+import sys
+import textwrap
+
 import fmpy
 import numpy as np
 import pytest
@@ -143,6 +149,36 @@ def test_libcosim_gives_our_jacobi_trajectories(fmu_dir):
     for c in REC:
         np.testing.assert_allclose(ext[c], ours[c][1:], rtol=1e-9,
                                    atol=1e-12 * np.max(np.abs(ours[c])))
+
+
+def test_libcosim_is_never_handed_a_missing_or_broken_fmu(fmu_dir, tmp_path):
+    """libcosim itself dies with SIGSEGV on a missing FMU path; ``run_libcosim`` must answer
+    a Python error naming the instance and file first. Run in a child process, so that a
+    regression fails this test instead of killing the test session."""
+    pytest.importorskip("libcosimpy", reason="libcosimpy (OSP libcosim) is not importable")
+    broken = tmp_path / "broken.fmu"
+    broken.write_bytes(b"not a zip")
+    good = str(_loop(fmu_dir)["friction"])
+    code = textwrap.dedent(f"""
+        import json, sys
+        sys.path.insert(0, {str(pathlib.Path(__file__).resolve().parents[1])!r})
+        from fmus.external import run_libcosim
+        out = []
+        for bad in ({str(tmp_path / 'gone.fmu')!r}, {str(broken)!r}):
+            fmus = {{"friction": {good!r}, "mass": bad}}
+            try:
+                run_libcosim(fmus, [], step_size=1e-4, stop_time=1e-3, record=[])
+                out.append(["no error", ""])
+            except Exception as exc:
+                out.append([type(exc).__name__, str(exc)])
+        print(json.dumps(out))
+    """)
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=300)
+    assert res.returncode == 0, f"child died (rc {res.returncode}): {res.stderr[-2000:]}"
+    (k1, m1), (k2, m2) = json.loads(res.stdout.strip().splitlines()[-1])
+    assert k1 == "FileNotFoundError" and "'mass'" in m1 and "gone.fmu" in m1
+    assert k2 == "ValueError" and "'mass'" in m2 and "broken.fmu" in m2
 
 
 @pytest.mark.parametrize("sequential,alg", [(True, "gauss-seidel"), (False, "jacobi")])

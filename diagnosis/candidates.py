@@ -256,7 +256,9 @@ class LawCandidate(Candidate):
         raise NotImplementedError
 
     def start_law(self, law, names, fit, ctx: Context):
-        """``law`` (a :meth:`modify_law` variant) started on the data (:meth:`start_values`).
+        """``law`` (a :meth:`modify_law` variant) started on the data (:meth:`start_values`);
+        ``(law, pinned)`` when the start pinned some of its values (:class:`Fixed`: the
+        joint fit keeps them).
 
         Parameters
         ----------
@@ -269,7 +271,11 @@ class LawCandidate(Candidate):
         ctx : diagnosis.candidates.Context
             Scales of the fit record (:func:`diagnosis.candidates.make_context`).
         """
-        return law.with_values(**self.start_values(law, names, fit, ctx))
+        vals = self.start_values(law, names, fit, ctx)
+        pinned = tuple(n for n, x in vals.items() if isinstance(x, Fixed))
+        law = law.with_values(**vals)
+        # values the start pinned (:class:`Fixed`) stay out of the joint fit
+        return (law, pinned) if pinned else law
 
     def own_law_names(self, law):
         """The law parameters that are this candidate's own, :attr:`OWN` (a transfer
@@ -1180,7 +1186,10 @@ def coupled_part(v, dt, tau, g_up, g_dn) -> np.ndarray:
 class Inertia(Candidate):
     """A mass the inverse dynamics misses: ``dm`` rigidly on the axis (its acceleration
     smoothed by ``tau_af`` as the data's may be), a trend of it over the record (``dm_t``:
-    a tank that empties, material taken on) and a part of mass ``m_p`` *coupled* to the axis
+    a tank that empties, material taken on), its change along the stroke (``dm_x``: a cable
+    chain, a linkage or arm whose reflected inertia depends on the configuration) and with
+    the speed (``dm_v``, times (v / sv)^2: flyweights or clutch shoes that move out as a
+    shaft speeds up), and a part of mass ``m_p`` *coupled* to the axis
     (:func:`coupled_part`: through a lag ``tau_p``, slipping beyond the accelerations
     ``g_up`` / ``g_dn`` the coupling can give it).
 
@@ -1188,7 +1197,7 @@ class Inertia(Candidate):
     behind an induction coupling, a loose part in a pocket - each is a mass the axis
     accelerates only as far as its coupling lets it. The rigid ``dm a`` alone reached 2-7 of
     20 grid cases of those forms (freewheel, rattling, sliding payload). The coupled part and
-    the trend are measured-force extras (:meth:`force_extras`, zero: the plain mass error);
+    the variations are measured-force extras (:meth:`force_extras`, zero: the plain mass error);
     the trajectory level changes the plant's mass by ``dm``.
     """
     #: coupling time constants the start tries, x the sample interval [-], and the grips,
@@ -1210,6 +1219,9 @@ class Inertia(Candidate):
         smooth = Extra("tau_af", ctx.dt, 0.0, MAX_FILTER_SAMPLES * ctx.dt, "s")
         return self.extras(ctx) + [
             smooth, Extra("dm_t", 0.0, -m, m, "kg"),
+            # the mass across the fit record's stroke, and at its top speed over at rest: a
+            # speed-dependent inertia grows several-fold (flyweights flying out)
+            Extra("dm_x", 0.0, -m, m, "kg"), Extra("dm_v", 0.0, -m, 10.0 * m, "kg"),
             # a part the coupling lets slip takes less than the axis's acceleration, so
             # its mass may be many times what the force scale gives a rigid one
             Extra("m_p", 0.0, 0.0, 20.0 * m, "kg"),
@@ -1217,15 +1229,27 @@ class Inertia(Candidate):
             Extra("g_up", 3.0 * ctx.sa, 0.0, 3.0 * ctx.sa, "m/s^2"),
             Extra("g_dn", 3.0 * ctx.sa, 0.0, 3.0 * ctx.sa, "m/s^2")]
 
+    #: the mass's optional variations: their names, in the order the start tries them
+    VARIATIONS = ("dm_t", "dm_x", "dm_v")
+
     def _columns(self, data, p, ctx):
+        """The smoothed acceleration [m/s^2] and the columns of :attr:`VARIATIONS` (a times
+        the record's time, position and squared speed, each scaled to about +-0.5 or 0..1
+        on the fit record)."""
         a = _zero_phase(data.a, data.dt, p.get("tau_af", 0.0))
         tt = (np.asarray(data.t, float) - (ctx.t0 + 0.5 * ctx.T)) / max(ctx.T, data.dt)
-        return a, a * tt
+        xx = ((np.asarray(data.x, float) - 0.5 * (ctx.x_lo + ctx.x_hi))
+              / max(ctx.x_hi - ctx.x_lo, 1e-12))
+        vv = (np.asarray(data.v, float) / ctx.sv) ** 2
+        return a, {"dm_t": a * tt, "dm_x": a * xx, "dm_v": a * vv}
 
     def start(self, fit, Ff, r, ctx, basis=None) -> dict:
-        """Start values of the coupled part and the trend from the base's fit residual
-        ``r`` [N]: linear in the masses, so each coupling (lag :attr:`START_TAUS`, grips
-        :attr:`START_GRIPS` each way) is solved by least squares beside the rigid mass, its trend and ``basis`` (the base's
+        """Start values of the coupled part and the mass's variations from the base's fit
+        residual ``r`` [N]: linear in the masses. The variations (:attr:`VARIATIONS`) are
+        added one at a time, the best first, each kept where it leaves less than
+        :attr:`PART_GAIN` of the squared residual without it (else pinned off); then each
+        coupling (lag :attr:`START_TAUS`, grips :attr:`START_GRIPS` each way) is solved by
+        least squares beside the rigid mass, the kept variations and ``basis`` (the base's
         own changes, :func:`diagnosis.composite.base_basis`); the part is kept where it
         leaves less than :attr:`PART_GAIN` of the rigid mass's squared residual, else pinned
         off (:class:`Fixed`). Where it is kept the rigid form (part off) is offered beside
@@ -1234,18 +1258,28 @@ class Inertia(Candidate):
         sub = _subsample(fit.t.size)
         B = _basis_rows(basis, sub)
         ex = {e.name: e for e in self.force_extras(ctx)}
-        a, at = self._columns(fit, {"tau_af": ctx.dt}, ctx)
+        a, var = self._columns(fit, {"tau_af": ctx.dt}, ctx)
+        # each variation only where the data ask for it, added greedily: fitted beside a
+        # constant mass it follows the base's misfit, and a trend extrapolates into every
+        # later record
+        kept = []
         sse0, c0 = _lsq(_with(a[sub, None], B), r[sub])
-        sse_t, c_t = _lsq(_with(np.column_stack([a[sub], at[sub]]), B), r[sub])
-        # the trend only where the data ask for it: fitted beside a constant mass it
-        # follows the base's misfit, and a trend extrapolates into every later record
-        trend = sse_t < self.PART_GAIN * sse0
-        if trend:
-            sse0, c0 = sse_t, c_t
-        rigid = np.column_stack([a[sub], at[sub]]) if trend else a[sub, None]
+        while True:
+            trials = [(_lsq(_with(np.column_stack([a[sub]] + [var[k][sub] for k in kept + [n]]),
+                                  B), r[sub]), n)
+                      for n in self.VARIATIONS if n not in kept]
+            if not trials:
+                break
+            (sse_n, c_n), n = min(trials, key=lambda tr: tr[0][0])
+            if not sse_n < self.PART_GAIN * sse0:
+                break
+            kept.append(n)
+            sse0, c0 = sse_n, c_n
+        rigid = np.column_stack([a[sub]] + [var[k][sub] for k in kept])
+        varied = {n: (0.0 if n in kept else Fixed(0.0)) for n in self.VARIATIONS}
         part_off = {"m_p": Fixed(0.0), "tau_p": Fixed(ex["tau_p"].x0),
                     "g_up": Fixed(ex["g_up"].hi), "g_dn": Fixed(ex["g_dn"].hi)}
-        best = (sse0, {"dm": c0[0], "dm_t": c0[1] if trend else Fixed(0.0), **part_off})
+        best = (sse0, {"dm": c0[0], **varied, **part_off})
         for k in self.START_TAUS:
             tau = float(np.clip(k * ctx.dt, ex["tau_p"].lo, ex["tau_p"].hi))
             for gu in self.START_GRIPS:
@@ -1255,30 +1289,28 @@ class Inertia(Candidate):
                     col = coupled_part(fit.v, fit.dt, tau, g_up, g_dn)[sub]
                     sse, c = _lsq(_with(np.column_stack([rigid, col]), B), r[sub])
                     if sse < best[0] and sse < self.PART_GAIN * sse0:
-                        best = (sse, {"dm": c[0], "dm_t": c[1] if trend else Fixed(0.0),
-                                      "m_p": c[rigid.shape[1]],
+                        best = (sse, {"dm": c[0], **varied, "m_p": c[rigid.shape[1]],
                                       "tau_p": tau, "g_up": g_up, "g_dn": g_dn})
         p = best[1]
-        # the rigid mass and its trend start at 0 (their residual is linear in them): the
-        # least-squares mass fitted beside the base's changes started the joint fit in a
+        # the rigid mass and its variations start at 0 (their residual is linear in them):
+        # the least-squares mass fitted beside the base's changes started the joint fit in a
         # worse basin (a raw-acceleration truth on the valve closed 0.24 of the gap, not 0.75)
         del p["dm"]
-        if not isinstance(p["dm_t"], Fixed):
-            p["dm_t"] = 0.0
         if isinstance(p["m_p"], Fixed):
             return p
         p["m_p"] = float(np.clip(p["m_p"], ex["m_p"].lo, ex["m_p"].hi))
         # and the rigid form beside it (the joint fit keeps the better on the fit record):
         # a part that fits the base's residual can hold the base's parameters where they
         # absorbed a mass error (a cable chain on the valve: Fc stayed at 3 x its value)
-        return [p, {"dm_t": p["dm_t"], **part_off}]
+        return [p, {**varied, **part_off}]
 
     def apply(self, F, p, data, ctx):
         # mass error of the inverse dynamics leaks dm * a into the "measured" friction
-        a, at = self._columns(data, p, ctx)
+        a, var = self._columns(data, p, ctx)
         out = F + p["dm"] * a
-        if p.get("dm_t", 0.0) != 0.0:
-            out = out + p["dm_t"] * at
+        for n in self.VARIATIONS:
+            if p.get(n, 0.0) != 0.0:
+                out = out + p[n] * var[n]
         if p.get("m_p", 0.0) != 0.0:
             out = out + p["m_p"] * coupled_part(data.v, data.dt, p["tau_p"], p["g_up"],
                                                 p["g_dn"])

@@ -332,7 +332,12 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         for eff in effects:
             start_law = getattr(eff, "start_law", None)
             if start_law is not None:
-                law = start_law(law, base_names, fit, ctx)
+                started = start_law(law, base_names, fit, ctx)
+                # ``(law, pinned)``: law parameters the start pinned (a part of the
+                # candidate the data do not ask for) stay at their values, out of the
+                # solved vector
+                law, pinned = started if isinstance(started, tuple) else (started, ())
+                base_names = [n for n in base_names if n not in pinned]
     nb = len(base_names)
     # no law parameter to fit (the transfer scores calibrate only a candidate's own): the
     # law stays at its values

@@ -22,9 +22,16 @@ base's fitted LuGre values: one home for the physics, and its native FMU
 map such as :func:`friction.extensions.extension_force` cannot express it.
 
 The measured force is the one the contact holds while the drive crosses the play
-(``gap="hold"``: a force read at the contact, or a preloaded joint). Offered on a classic
-LuGre base (identify's default); other bases have no play-operator form here and are
-skipped with the reason.
+(``gap="hold"``: a force read at the contact, or a preloaded joint), or only the offset
+(``gap="free"``: a torque read at the motor); the start picks the option on the data. What
+bridges the play adds its own force while the drive crosses it: the law's ``gap_bias`` [N]
+(a weight or return spring the contact holds), ``gap_stiffness`` [N/m] (an anti-backlash
+spring: the force ramps across the gap) and ``gap_drag`` [N] (a slip-clutch idler: a
+plateau against the motion). They are linear in the force given the play's motion, so the
+start solves them by least squares for every gap it tries and keeps them only where they
+leave less than :data:`ACROSS_GAIN` of that gap's squared residual; otherwise they stay 0
+and out of the joint fit. Offered on a classic LuGre base (identify's default); other bases
+have no play-operator form here and are skipped with the reason.
 
 The gap is non-convex in the residual (a flat segment that is too short only moves the
 reversal transitions), so its start is chosen on the data before the joint fit
@@ -73,10 +80,11 @@ import math
 
 import numpy as np
 from numba import njit
+from scipy.optimize import minimize_scalar
 
 from friction import make_model
 
-from .candidates import Context, LawCandidate
+from .candidates import Context, Fixed, LawCandidate
 
 __all__ = ["Backlash", "gap_start", "TRUTHS", "backlash_truth", "GAP_GRID",
            "FINE", "fine_grid", "reversal_travels", "contact_record",
@@ -94,6 +102,15 @@ START_NFEV = 15
 REVERSAL_SHARE = 0.75
 #: truth integration grid, steps per data sample
 FINE = 10
+#: what bridges the play (the law's forces across the gap, :mod:`friction.backlash`)
+ACROSS = ("gap_bias", "gap_stiffness", "gap_drag")
+#: share of the play's squared residual without them below which the start keeps them [-]
+ACROSS_GAIN = 0.8
+#: range of :func:`gap_start`'s grid, x the model-free estimate [-]; the ratio of its
+#: neighbouring gaps [-] and the evaluations of the refinement between them
+GAP_SPAN = (0.2, 1.5)
+GAP_STEP = (GAP_SPAN[1] / GAP_SPAN[0]) ** (1.0 / (GAP_GRID - 1))
+REFINE_EVALS = 20
 
 
 class Backlash(LawCandidate):
@@ -144,7 +161,7 @@ class Backlash(LawCandidate):
         vals = {n: getattr(law.params, n) for n in _LUGRE_VALUES}
         return make_model("backlash_lugre", delta=float(delta), gap="hold", **vals)
 
-    OWN = ("delta",)
+    OWN = ("delta", "gap_bias", "gap_stiffness", "gap_drag")
 
     def start_values(self, law, names, fit, ctx: Context) -> dict:
         """The gap and what the drive feels while crossing it, chosen on the data
@@ -165,7 +182,7 @@ class Backlash(LawCandidate):
         """
         # start: a tenth of a percent of the stroke; :meth:`start_law` moves it onto the data
         delta = max(1e-4 * (ctx.x_hi - ctx.x_lo), 1e-6)
-        return [(self.law_for(law, delta), list(base_names) + ["delta"])]
+        return [(self.law_for(law, delta), list(base_names) + ["delta", *ACROSS])]
 
     def own_parameters(self, law) -> dict:
         """The candidate's own parameters of a fitted ``law``: ``backlash_gap`` [m] (the
@@ -176,7 +193,10 @@ class Backlash(LawCandidate):
         law : FrictionModel
             The fitted variant (a backlash_lugre or gms law).
         """
-        return {"backlash_gap": 2.0 * float(law.params.delta)}
+        p = law.params
+        out = {"backlash_gap": 2.0 * float(p.delta)}
+        out.update({n: float(getattr(p, n, 0.0)) for n in ACROSS})
+        return out
 
     def practical(self, p: dict, ctx: Context) -> str:
         """Why a fitted gap (``p["delta"]`` [m] or ``p["backlash_gap"]``) is too small to name
@@ -309,7 +329,11 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
     the estimate x both options x the law's values re-identified (also with sigma1 = 0) or
     as fitted (a record without play keeps the base's), each a compiled run from the
     record's start state. With no LuGre parameter in ``names`` (a transfer calibration of
-    the gap alone) nothing is re-identified.
+    the gap alone) nothing is re-identified. For each, the forces across the play
+    (:data:`ACROSS` in ``names``) are solved by least squares on its residual
+    (:func:`_across_fit`) and kept where they leave less than :data:`ACROSS_GAIN` of it;
+    otherwise they start pinned at 0 (:class:`diagnosis.candidates.Fixed`: out of the joint
+    fit).
 
     Parameters
     ----------
@@ -328,7 +352,7 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
     floor = max(ctx.sv * ctx.dt, 1e-7)
     gap0 = float(np.median(travels)) if travels.size else floor
     gap0 = min(max(gap0, floor), GAP_STROKE_MAX * stroke)
-    lugre_names = [n for n in names if n != "delta"]
+    lugre_names = [n for n in names if n != "delta" and n not in ACROSS]
     lugre = make_model("lugre", **{n: getattr(law.params, n) for n in _LUGRE_VALUES})
     law_u = (fit_composite(lugre, lugre_names, [], contact_record(fit, 0.5 * gap0), ctx,
                            extras0={}, max_nfev=START_NFEV)[0].law if lugre_names else lugre)
@@ -341,17 +365,75 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
         starts.append(dict(undone, sigma1=0.0))
     # the law's own bound on delta (a record in radians can span more than the 1 m it takes)
     hi = next(i.upper for i in law.Params.info() if i.name == "delta")
-    best = (math.inf, None)
+    across = [n for n in ACROSS if n in names]
+    off = {n: Fixed(0.0) for n in across}
+
+    def trial(vals, mode, g, bridged):
+        law_g = law.with_values(delta=0.5 * g, gap=mode, **vals, **{n: 0.0 for n in ACROSS})
+        s0 = law_g.record_start_state(fit.t, fit.v, F=fit.F)
+        F, Z = law_g.simulate(fit.t, fit.v, state0=s0, return_state=True)
+        r = fit.F - F
+        start = {"delta": 0.5 * g, "gap": mode, **vals, **off}
+        if not bridged:
+            return float(r @ r), start
+        # what bridges the play is linear in its forces given the play's motion
+        sse, c = _across_fit(fit, Z[:, 1], 0.5 * g, r, across)
+        start.update(zip(across, c))
+        return sse, start
+
+    grid = np.minimum(gap0 * np.geomspace(*GAP_SPAN, GAP_GRID), 2.0 * hi)
+    top = (math.inf, None, None, None)
     for vals in starts:
         for mode in ("hold", "free"):
-            for g in np.minimum(gap0 * np.geomspace(0.2, 1.5, GAP_GRID), 2.0 * hi):
-                trial = law.with_values(delta=0.5 * float(g), gap=mode, **vals)
-                s0 = trial.record_start_state(fit.t, fit.v, F=fit.F)
-                F = trial.simulate(fit.t, fit.v, state0=s0)
-                sse = float(np.sum((fit.F - F) ** 2))
-                if sse < best[0]:
-                    best = (sse, {"delta": 0.5 * float(g), "gap": mode, **vals})
-    return best[1]
+            for g in grid:
+                sse, start = trial(vals, mode, float(g), False)
+                if sse < top[0]:
+                    top = (sse, start, vals, mode)
+    sse, start, vals, mode = top
+
+    def refine(mode, g0, bridged):
+        # the gap between the grid's neighbours of ``g0`` (the grid's steps of a third
+        # leave a residual at every reversal that forces across the play would take up)
+        res = minimize_scalar(lambda lg: trial(vals, mode, math.exp(lg), bridged)[0],
+                              bounds=(math.log(g0 / GAP_STEP),
+                                      math.log(min(g0 * GAP_STEP, 2.0 * hi))),
+                              method="bounded",
+                              options={"maxiter": REFINE_EVALS, "xatol": 1e-3})
+        return trial(vals, mode, math.exp(res.x), bridged)
+
+    fine = refine(mode, 2.0 * start["delta"], False)
+    if fine[0] < sse:
+        sse, start = fine
+    if not across:
+        return start
+    # what bridges the play, at the gap the play alone found (either option): fitted from
+    # every trial gap, the forces drew a stiff spring across a play of a tenth of the
+    # truth's, which fitted the record and not the held-out one
+    g = 2.0 * start["delta"]
+    bridged = min((refine(m, g, True) for m in ("hold", "free")), key=lambda st: st[0])
+    # kept only where they leave less than ACROSS_GAIN of the play's residual without them
+    return bridged[1] if bridged[0] < ACROSS_GAIN * sse else start
+
+
+def _across_fit(fit, p, delta: float, r, names):
+    """Least-squares forces of what bridges a play of half-width ``delta`` [m] (the law's
+    ``gap_bias`` [N], ``gap_stiffness`` [N/m], ``gap_drag`` [N], those in ``names``) on the
+    residual ``r`` [N] of the law without them, along the play offsets ``p`` [m]; the
+    stiffness and drag kept >= 0. Returns (squared residual left [N^2], the forces)."""
+    from scipy.optimize import lsq_linear
+    from friction.backlash import ENGAGE_BAND
+    eps = ENGAGE_BAND * delta
+    u = delta - np.abs(p)
+    w = np.where(u >= eps, 1.0, np.where(u <= 0.0, 0.0, u / max(eps, 1e-300)))
+    cols = {"gap_bias": w, "gap_stiffness": w * p, "gap_drag": w * np.sign(fit.v)}
+    A = np.column_stack([cols[n] for n in names])
+    if not np.any(A):
+        return float(r @ r), np.zeros(len(names))
+    scale = np.maximum(np.max(np.abs(A), axis=0), 1e-300)
+    lo = np.array([-np.inf if n == "gap_bias" else 0.0 for n in names])
+    sol = lsq_linear(A / scale, r, bounds=(lo, np.inf))
+    left = r - (A / scale) @ sol.x
+    return float(left @ left), sol.x / scale
 
 
 _LUGRE_VALUES = ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape",

@@ -33,6 +33,13 @@ the first change of the force). The option ``gap`` says what the drive feels mea
   motor of a geared drive): a dead zone at each reversal. Within eps of a flank the
   contact's force phi(delta - |p|) (sigma0 z + sigma1 dz/dt + sigma2 v_c) is taken up.
 
+Whatever the option, what bridges the play adds to it while the drive touches neither flank,
+(1 - phi(delta - |p|)) (``gap_bias`` + ``gap_stiffness`` p + ``gap_drag`` sgn v) [N]: a
+weight or return spring the contact holds (a bias), an anti-backlash spring (the force
+ramps across the gap), a slip-clutch idler (a drag against the motion). All three are 0 by
+default; they change the force only, not the motion (the contact still stands still in the
+gap: their force stays below its break-away).
+
 ``delta = 0`` is the LuGre law (the same arithmetic, bit for bit: no cut at reversals). At
 steady sliding the contact rests on the leading flank and the force is LuGre's Stribeck
 curve (:meth:`BacklashLuGre.steady_state`). A record that starts at rest starts in the
@@ -83,6 +90,14 @@ class BacklashLuGreParams(LuGreParams):
     delta: float = param(2e-6, "m", "half-width of the backlash gap (lost motion 2 delta at "
                          "a reversal)", lower=0.0, upper=1.0, search=(1e-6, 5e-3), log=True)
     gap: str = "hold"
+    gap_bias: float = param(0.0, "N", "force the drive feels while it crosses the play, "
+                            "beyond the offset b (a weight or return spring the contact holds)",
+                            search=(-1.0, 1.0))
+    gap_stiffness: float = param(0.0, "N/m", "stiffness of a spring across the play (an "
+                                 "anti-backlash spring: the force ramps across the gap)",
+                                 lower=0.0, search=(0.0, 1e5))
+    gap_drag: float = param(0.0, "N", "Coulomb drag across the play, against the drive's "
+                            "motion (a slip-clutch idler)", lower=0.0, search=(0.0, 1.0))
 
     def _check_relations(self):
         super()._check_relations()
@@ -90,8 +105,8 @@ class BacklashLuGreParams(LuGreParams):
             raise ParameterError(f"gap = {self.gap!r}: must be one of {sorted(GAP_MODES)}")
 
 
-_LAYOUT = _LUGRE_LAYOUT + ("delta", "gap")
-DELTA, GAP = len(_LUGRE_LAYOUT), len(_LUGRE_LAYOUT) + 1
+_LAYOUT = _LUGRE_LAYOUT + ("delta", "gap", "gap_bias", "gap_stiffness", "gap_drag")
+DELTA, GAP, GB, GK, GD = (len(_LUGRE_LAYOUT) + i for i in range(5))
 
 
 @njit(cache=True, inline="always")
@@ -125,6 +140,18 @@ def _push(v, p, delta, eps):
     return 0.0
 
 
+@njit(cache=True, inline="always")
+def _across(v, p, delta, eps, bias, stiffness, drag):
+    """What the drive feels through the play itself while it touches neither flank [N]
+    (``gap_bias`` + ``gap_stiffness`` p + ``gap_drag`` sgn v), faded out over the flank's
+    band as the contact takes the force up."""
+    w = 1.0 - _band(delta - abs(p), eps)
+    if w == 0.0:
+        return 0.0
+    sv = 1.0 if v > 0.0 else (-1.0 if v < 0.0 else 0.0)
+    return w * (bias + stiffness * p + drag * sv)
+
+
 @njit(cache=True, nogil=True)
 def backlash_run(t, v, th, method, z0, p0, F, Z):
     """Simulate one parameter set along (t, v); writes F[k], Z[k, 0] = z, Z[k, 1] = p."""
@@ -137,6 +164,8 @@ def backlash_run(t, v, th, method, z0, p0, F, Z):
     elif p < -delta:
         p = -delta
     free = th[GAP] == 1.0
+    gb, gk, gd = th[GB], th[GK], th[GD]
+    across = gb != 0.0 or gk != 0.0 or gd != 0.0
     s0 = th[S0]
     s1 = th[S1]
     b = th[B]
@@ -168,6 +197,8 @@ def backlash_run(t, v, th, method, z0, p0, F, Z):
                 F[k] = touch * (s0 * z + s1 * zd + s2 * vc) + b
         else:
             F[k] = s0 * z + s1 * zd + s2 * vc + b
+        if across:
+            F[k] += _across(vk, p, delta, eps, gb, gk, gd)
         Z[k, 0] = z
         Z[k, 1] = p
         if k + 1 < n:
@@ -267,7 +298,8 @@ class BacklashLuGre(DirectionalStribeck, FrictionModel):
         return np.array([p.sigma0, p.sigma1, p.sigma2, p.resolved("sigma2", -1),
                          p.Fc, p.resolved("Fc", -1), p.Fs, p.resolved("Fs", -1),
                          p.vs, p.resolved("vs", -1), p.alpha, p.b, SHAPES[p.shape],
-                         p.delta, GAP_MODES[p.gap]], dtype=np.float64)
+                         p.delta, GAP_MODES[p.gap], p.gap_bias, p.gap_stiffness,
+                         p.gap_drag], dtype=np.float64)
 
     # -- pieces of the law --------------------------------------------------------------
     def contact_velocity(self, state, v) -> float:
@@ -316,13 +348,16 @@ class BacklashLuGre(DirectionalStribeck, FrictionModel):
         vc = self.contact_velocity(state, v)
         zd = self.derivatives(state, v)[0]
         f = p.sigma0 * float(state[0]) + p.sigma1 * zd + float(self.sigma2_of(vc)) * vc
+        eps = ENGAGE_BAND * p.delta
+        extra = _across(float(v), float(state[1]), p.delta, eps, p.gap_bias,
+                        p.gap_stiffness, p.gap_drag)
         if p.gap == "free":
-            touch = _band(p.delta - abs(float(state[1])), ENGAGE_BAND * p.delta)
+            touch = _band(p.delta - abs(float(state[1])), eps)
             if touch == 0.0:
-                return p.b
+                return p.b + extra
             if touch != 1.0:
-                return touch * f + p.b
-        return f + p.b
+                return touch * f + p.b + extra
+        return f + p.b + extra
 
     def _start_from(self, t, v, a, load, x, F0=None) -> np.ndarray:
         """:meth:`record_start_state`. From the motion alone as every law (at rest: the

@@ -40,9 +40,12 @@ def test_backlash_candidate_is_the_base_behind_a_play_and_reports_the_lost_motio
     assert law.name == "backlash_lugre" and law.params.gap == "hold"
     for n in ("sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "alpha", "b"):
         assert getattr(law.params, n) == getattr(base.params, n)
-    assert BACKLASH.own_parameters(law) == {"backlash_gap": pytest.approx(2e-3)}
+    assert BACKLASH.own_parameters(law) == {"backlash_gap": pytest.approx(2e-3),
+                                            "gap_bias": 0.0, "gap_stiffness": 0.0,
+                                            "gap_drag": 0.0}
     (var, names), = BACKLASH.modify_law(base, ["sigma0", "Fc"], _ctx())
-    assert names == ["sigma0", "Fc", "delta"] and var.name == "backlash_lugre"
+    assert names == ["sigma0", "Fc", "delta", "gap_bias", "gap_stiffness", "gap_drag"]
+    assert var.name == "backlash_lugre"
     # a gap of 0 is the base law bit for bit (the play operator cuts nothing)
     t, x, v, _ = _motion(3000, 1e-3, 0)
     np.testing.assert_array_equal(BACKLASH.law_for(base, 0.0).simulate(t, v),
@@ -173,8 +176,10 @@ def test_candidate_law_runs_in_its_law_fmu_to_1e_10(which, kind):
     from fmus.native.build import SUFFIX
     from fmus.testing import LoggedSlave, built_native_fmus
     base = make_model("lugre", **BASE, alpha=1.7, b=0.05)
-    law = (BACKLASH.law_for(base, 4e-4).with_values(gap="free") if which == "backlash"
-           else GMS.law_for(base, spread=30.0, C=4e3))
+    # backlash with forces across the play (a bias, a spring, a drag): the FMU carries them
+    law = (BACKLASH.law_for(base, 4e-4).with_values(gap="free", gap_bias=0.05,
+                                                    gap_stiffness=2e3, gap_drag=0.2)
+           if which == "backlash" else GMS.law_for(base, spread=30.0, C=4e3))
     path = (built_native_fmus((law.name,)) / f"{law.name}{SUFFIX}.fmu" if kind == "native"
             else _pythonfmu_dir() / f"{law.name}.fmu")
     t, x, v, _ = _motion(3000, 1e-3, 2)
@@ -293,7 +298,9 @@ def test_the_records_list_parameters_truths_localisation_and_fmu():
     from fmus.native.build import native_catalogue
     from diagnosis.benchmark import CASES
     ctx = _ctx()
-    for name, law, own in (("backlash", "backlash_lugre", {"delta": "m"}),
+    for name, law, own in (("backlash", "backlash_lugre", {"delta": "m", "gap_bias": "N",
+                                                          "gap_stiffness": "N/m",
+                                                          "gap_drag": "N"}),
                            ("gms", "gms", {"spread": "1", "C": "N/s", "tilt": "1"})):
         e = EFFECTS[name]
         assert e.plant_entry == "law" and e.fmu and name in FMU_EFFECTS
@@ -308,3 +315,28 @@ def test_the_records_list_parameters_truths_localisation_and_fmu():
 def resolve_generic(e):
     from diagnosis.effects import resolve
     return resolve(e.generic_truth)
+
+
+def test_the_start_keeps_what_bridges_the_play_only_where_the_data_ask():
+    """The forces across the play (bias, anti-backlash spring, drag) are solved by least
+    squares for each trial gap: on a rigid play (no force across it) the start pins all
+    three at 0, out of the joint fit; on a play bridged by a spring and a drag, read at the
+    motor, it keeps them near their values and picks ``free``."""
+    from diagnosis.candidates import Fixed
+    t, x, v, rng = _motion(6000, 1e-3, 3)
+    base = make_model("lugre", **BASE)
+    (law, names), = BACKLASH.modify_law(base, ["Fc", "Fs", "sigma2"], _ctx())
+    rigid = _record(eb.backlash_truth("rigid", t, v, 2e-3, BASE), t, x, v, rng)
+    p = eb.gap_start(law, names, rigid, make_context(rigid))
+    assert all(isinstance(p[n], Fixed) and p[n] == 0.0 for n in eb.ACROSS)
+    assert p["delta"] == pytest.approx(1e-3, rel=0.25)
+    _, pinned = BACKLASH.start_law(law, names, rigid, make_context(rigid))
+    assert set(pinned) == set(eb.ACROSS)
+    truth = BACKLASH.law_for(base, 1e-3).with_values(gap="free", gap_stiffness=400.0,
+                                                    gap_drag=0.3)
+    bridged = _record(truth.simulate(t, v), t, x, v, rng, noise=0.01)
+    p = eb.gap_start(law, names, bridged, make_context(bridged))
+    assert p["gap"] == "free" and p["delta"] == pytest.approx(1e-3, rel=0.25)
+    assert not isinstance(p["gap_drag"], Fixed)
+    assert p["gap_drag"] == pytest.approx(0.3, rel=0.3)
+    assert p["gap_stiffness"] == pytest.approx(400.0, rel=0.3)

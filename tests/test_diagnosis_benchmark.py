@@ -123,8 +123,9 @@ def test_inertia_and_acceleration_filter_the_acceleration_channel():
     inertia, acc = CANDIDATES["inertia"], CANDIDATES["acceleration"]
     # without the filter (the trajectory level's formula): dm times the a column
     np.testing.assert_allclose(inertia.apply(F0, {"dm": 2.0}, data, ctx), 2.0 * data.a)
-    assert {e.name for e in inertia.force_extras(ctx)} == {"dm", "tau_af", "dm_t", "m_p",
-                                                           "tau_p", "g_up", "g_dn"}
+    assert {e.name for e in inertia.force_extras(ctx)} == {"dm", "tau_af", "dm_t", "dm_x",
+                                                           "dm_v", "m_p", "tau_p", "g_up",
+                                                           "g_dn"}
     assert [e.name for e in inertia.extras(ctx)] == ["dm"]  # the trajectory level's
     # the zero-phase filter removes the chatter and keeps the slow part where it is
     y = inertia.apply(F0, {"dm": 1.0, "tau_af": 2 * data.dt}, data, ctx)

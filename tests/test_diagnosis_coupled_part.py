@@ -200,3 +200,63 @@ def test_the_joint_fit_keeps_the_best_of_alternative_starts():
             return {"dm": Fixed(0.0)}
     off, nr_off = fit_composite(law, ["Fc"], [MassOff("m", "")], data, ctx)
     assert off.extras["dm"] == 0.0 and nr_off > 1.5 * fits[0][1]
+
+
+def _mass_record(m_of, seed=6):
+    """A record whose force is only a mass term m(x, v) a (1 % noise, 1 kHz, 6 s)."""
+    from friction.dataset import Dataset
+    dt = 1e-3
+    t = np.arange(6000) * dt
+    v = 0.05 * np.sin(2 * np.pi * 0.7 * t) + 0.02 * np.sin(2 * np.pi * 2.3 * t)
+    x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1])) * dt])
+    a = np.gradient(v, dt)
+    F = m_of(x, v) * a
+    F = F + 0.01 * np.std(F) * np.random.default_rng(seed).standard_normal(t.size)
+    return Dataset(t=t, x=x, v=v, a=a, F=F)
+
+
+@pytest.mark.parametrize("kind", ["position", "speed"])
+def test_the_start_keeps_a_mass_that_varies_along_the_stroke_or_with_the_speed(kind):
+    """A mass growing along the stroke (a cable chain: 1 -> 2 kg) or with the squared speed
+    (flyweights: 0.5 kg at rest, 3 kg at the top speed): the start keeps that variation,
+    pins the others off, and the candidate's form leaves far less of the force than a
+    rigid mass; the variation's mass comes out near the truth's."""
+    from diagnosis.candidates import Fixed
+    from diagnosis.effects import CANDIDATES, make_context
+    if kind == "position":
+        def m_of(x, v):
+            return 1.0 + (x - x.min()) / np.ptp(x)
+        name, other = "dm_x", "dm_v"
+    else:
+        def m_of(x, v):
+            return 0.5 + 2.5 * (v / np.abs(v).max()) ** 2
+        name, other = "dm_v", "dm_x"
+    data = _mass_record(m_of)
+    ctx = make_context(data)
+    inertia = CANDIDATES["inertia"]
+    p = inertia.start(data, np.zeros(len(data)), data.F, ctx)
+    p = p[0] if isinstance(p, list) else p
+    assert p[name] == 0.0 and not isinstance(p[name], Fixed)  # kept, started at 0
+    assert isinstance(p[other], Fixed) and isinstance(p["dm_t"], Fixed)
+    # the kept form, solved by least squares, leaves < 5 % of the rigid mass's residual
+    a, var = inertia._columns(data, {"tau_af": 0.0}, ctx)
+    A = np.column_stack([a, var[name]])
+    c, res = np.linalg.lstsq(A, data.F, rcond=None)[:2]
+    rigid = np.linalg.lstsq(a[:, None], data.F, rcond=None)[1][0]
+    assert res[0] < 0.05 * rigid
+    span = 1.0 if kind == "position" else 2.5 * (ctx.sv / np.abs(data.v).max()) ** 2
+    assert abs(c[1] - span) < 0.1 * span
+    # and apply() draws that form
+    out = inertia.apply(np.zeros(len(data)), {"dm": c[0], name: c[1]}, data, ctx)
+    np.testing.assert_allclose(out, A @ c, rtol=1e-12, atol=1e-12)
+
+
+def test_a_rigid_mass_keeps_every_variation_off():
+    """A constant 0.7 kg: no variation is kept (each would follow only the noise)."""
+    from diagnosis.candidates import Fixed
+    from diagnosis.effects import CANDIDATES, make_context
+    data = _mass_record(lambda x, v: np.full_like(x, 0.7))
+    ctx = make_context(data)
+    p = CANDIDATES["inertia"].start(data, np.zeros(len(data)), data.F, ctx)
+    p = p[0] if isinstance(p, list) else p
+    assert all(isinstance(p[n], Fixed) and p[n] == 0.0 for n in ("dm_t", "dm_x", "dm_v"))

@@ -185,8 +185,8 @@ def test_c_kernel_equals_numba(name):
 
 
 def test_reversal_inside_a_step_engagement_and_the_limits_bit_for_bit():
-    """Reversals inside steps, an engagement inside a step, a huge attraction rate and a
-    gap of zero: the C kernels equal numba to the bit."""
+    """Reversals inside steps, an engagement inside a step, a huge attraction rate, a gap
+    of zero and forces across the play: the C kernels equal numba to the bit."""
     t = np.concatenate((np.arange(400) * 5e-5, 0.02 + np.cumsum(np.full(300, 1.3e-4))))
     v = 2e-3 * np.sin(2 * np.pi * 40 * t) + 1e-4
     v[100:130] = 0.0
@@ -194,7 +194,12 @@ def test_reversal_inside_a_step_engagement_and_the_limits_bit_for_bit():
               # unequal break-away shares (the softest block a twentieth of the stiffest's)
               GMS(GMS.Params(spread=1e4, tilt=0.05, sigma1=30.0)),
               BacklashLuGre(), BacklashLuGre(BacklashLuGre.Params(delta=0.0)),
-              BacklashLuGre(BacklashLuGre.Params(delta=3e-6, gap="free", Fc_neg=2.0))]
+              BacklashLuGre(BacklashLuGre.Params(delta=3e-6, gap="free", Fc_neg=2.0)),
+              # what bridges the play: a bias, an anti-backlash spring and a drag
+              BacklashLuGre(BacklashLuGre.Params(delta=3e-6, gap="free", gap_bias=0.1,
+                                                 gap_stiffness=2e4, gap_drag=0.3)),
+              BacklashLuGre(BacklashLuGre.Params(delta=3e-6, gap_bias=-0.2,
+                                                 gap_stiffness=5e4, gap_drag=0.1))]
     for m in cases_:
         law = claw(m.name)
         for method in (0, 1):

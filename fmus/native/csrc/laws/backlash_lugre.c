@@ -8,6 +8,8 @@
  *   dz/dt = v_c - sigma0 |v_c| / g(v_c) z
  *   F     = sigma0 z + sigma1 dz/dt + sigma2 v_c + b
  *           (gap "free": phi(delta - |p|) (sigma0 z + sigma1 dz/dt + sigma2 v_c) + b)
+ *         + (1 - phi(delta - |p|)) (gap_bias + gap_stiffness p + gap_drag sgn v)
+ *           (what bridges the play, while the drive touches neither flank)
  *
  * method 0 (exact): the step is cut at a velocity reversal (fl_steps.h, delta > 0 only);
  * the play is advanced exactly in the drive's travel on each piece (the free gap closes at
@@ -21,9 +23,10 @@
 
 /* p[]: the fields of friction.backlash.BacklashLuGreParams in declaration order */
 enum { P_S0, P_S1, P_S2, P_FC, P_FS, P_VS, P_ALPHA, P_B, P_FCN, P_FSN, P_VSN, P_S2N, P_SHAPE,
-       P_DELTA, P_GAP, P_N };
+       P_DELTA, P_GAP, P_GB, P_GK, P_GD, P_N };
 /* theta: friction.backlash._LAYOUT */
-enum { S0, S1, S2P, S2N, FCP, FCN, FSP, FSN, VSP, VSN, ALPHA, B, SHAPE, DELTA, GAP, TH_N };
+enum { S0, S1, S2P, S2N, FCP, FCN, FSP, FSN, VSP, VSN, ALPHA, B, SHAPE, DELTA, GAP, GB, GK, GD,
+       TH_N };
 
 static const char *const bl_gap_names[] = {"hold", "free"};
 
@@ -51,6 +54,9 @@ static int bl_pack(const double *p, double *th, char *msg, size_t msglen)
     th[SHAPE] = p[P_SHAPE];
     th[DELTA] = p[P_DELTA];
     th[GAP] = p[P_GAP];
+    th[GB] = p[P_GB];
+    th[GK] = p[P_GK];
+    th[GD] = p[P_GD];
     return 0;
 }
 
@@ -84,6 +90,16 @@ static double bl_push(double v, double p, double delta, double eps)
     return 0.0;
 }
 
+/* friction.backlash._across */
+static double bl_across(double v, double p, double delta, double eps, const double *th)
+{
+    const double w = 1.0 - bl_band(delta - fabs(p), eps);
+    const double sv = v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0);
+    if (w == 0.0)
+        return 0.0;
+    return w * (th[GB] + th[GK] * p + th[GD] * sv);
+}
+
 /* friction.backlash.backlash_run */
 static void bl_kernel(int n, const double *t, const double *v, const double *a,
                       const double *load, const double *x, const double *th, int method,
@@ -92,6 +108,7 @@ static void bl_kernel(int n, const double *t, const double *v, const double *a,
     const double delta = th[DELTA];
     const double eps = BL_BAND * delta;
     const int free_gap = th[GAP] == 1.0;
+    const int across = th[GB] != 0.0 || th[GK] != 0.0 || th[GD] != 0.0;
     const double s0 = th[S0], s1 = th[S1], b = th[B];
     const double is0 = 1.0 / s0;
     const double alpha = th[ALPHA], shape = th[SHAPE];
@@ -131,6 +148,8 @@ static void bl_kernel(int n, const double *t, const double *v, const double *a,
         } else {
             F[k] = s0 * z + s1 * zd + s2 * vc + b;
         }
+        if (across)
+            F[k] += bl_across(vk, p, delta, eps, th);
         S[2 * k] = z;
         S[2 * k + 1] = p;
         if (k + 1 < n) {
@@ -234,18 +253,19 @@ static void bl_derivatives(const double *th, const double *state, double v, doub
 static double bl_force(const double *th, const double *state, double v, double a,
                        double load, double x)
 {
-    double d[2], vc, f;
+    double d[2], vc, f, extra;
     vc = bl_contact_velocity(th, state, v);
     bl_derivatives(th, state, v, a, load, x, d);
     f = th[S0] * state[0] + th[S1] * d[0] + (vc >= 0.0 ? th[S2P] : th[S2N]) * vc;
+    extra = bl_across(v, state[1], th[DELTA], BL_BAND * th[DELTA], th);
     if (th[GAP] == 1.0) {
         const double touch = bl_band(th[DELTA] - fabs(state[1]), BL_BAND * th[DELTA]);
         if (touch == 0.0)
-            return th[B];
+            return th[B] + extra;
         if (touch != 1.0)
-            return touch * f + th[B];
+            return touch * f + th[B] + extra;
     }
-    return f + th[B];
+    return f + th[B] + extra;
 }
 
 const fl_law_def fl_law_backlash_lugre = {

@@ -514,16 +514,38 @@ def _contact_constants(kin: PlantKinematics, p):
     return m, kh, 2.0 * 0.5 * math.sqrt(kh * m)
 
 
+@njit(cache=True)
+def _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
+    """One step ``h`` [s] of a light contact of mass ``m`` [kg] with LuGre friction
+    (``s0`` [N/m], ``s1``, ``s2`` [N s/m], the curve ``Fc``, ``Fs`` [N], ``vs`` [m/s],
+    ``alpha``, ``shape``) under the coupling force ``fc`` [N] from the velocity ``v``
+    [m/s] and bristle ``z`` [m]: (its friction [N] at the step's start, the velocity and
+    bristle after it); semi-implicit Euler of the mass, the bristle advanced exactly at
+    the new velocity (:func:`friction.lugre.bristle_update`)."""
+    g = stribeck_g(v, Fc, Fs, vs, alpha, shape)
+    ff = s0 * z + s1 * (v - s0 * abs(v) * z / g) + s2 * v
+    v = v + h * (fc - ff) / m
+    z = bristle_update(z, v, s0 * abs(v) / stribeck_g(v, Fc, Fs, vs, alpha, shape), h, 0)
+    return ff, v, z
+
+
+def _substeps(kin: PlantKinematics, rate: float):
+    """(step [s], drive positions [m], sub-steps per grid step) of sub-steps of ``kin``'s
+    grid that resolve a light contact's motion whose fastest rate is ``rate`` [1/s] (at
+    most 0.3 / ``rate``; 4 to 400 per grid step), the drive's positions interpolated."""
+    n_sub = int(min(max(math.ceil(rate * kin.dt / 0.3), 4), 400))
+    t2 = kin.t[0] + (kin.dt / n_sub) * np.arange((kin.t.size - 1) * n_sub + 1)
+    return kin.dt / n_sub, np.interp(t2, kin.t, kin.x), n_sub
+
+
 def _run_driven_contact(kin: PlantKinematics, p, half, gap_kind, g1, g2, m, kh, ch,
                         c_gap=0.0):
     """:func:`_driven_contact` along ``kin``'s motion with the base LuGre ``p``, on
     sub-steps that resolve the contact's stiffest and most damped motion (``c_gap``
     [N s/m]: the largest damping the play adds), sampled back on ``kin``'s grid [N]."""
     rate = max(math.sqrt(kh / m), (float(p.sigma1) + float(p.sigma2) + ch + c_gap) / m)
-    n_sub = int(min(max(math.ceil(rate * kin.dt / 0.3), 4), 400))
-    t2 = kin.t[0] + (kin.dt / n_sub) * np.arange((kin.t.size - 1) * n_sub + 1)
-    xd = np.interp(t2, kin.t, kin.x)
-    F = _driven_contact(kin.dt / n_sub, xd, half, gap_kind, g1, g2, m, kh, ch,
+    h, xd, n_sub = _substeps(kin, rate)
+    F = _driven_contact(h, xd, half, gap_kind, g1, g2, m, kh, ch,
                         float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
                         float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
     return F[::n_sub]

@@ -1,5 +1,5 @@
 """The eleventh seen truth family (diagnosis.benchmark.seen11, sealed at the end of session 16,
-run once in session 17 on <COMMIT>, <TOP1> top-1, now open): each form builds a finite case
+run once in session 17 on e33ce5f, 47.7 % top-1, now open): each form builds a finite case
 of the requested size on every plant it applies to, is the base law at s = 0, grows with
 its amplitude factor and refuses the plants it does not apply to."""
 import dataclasses

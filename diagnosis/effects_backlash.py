@@ -88,7 +88,7 @@ from .candidates import Context, Fixed, LawCandidate
 
 __all__ = ["Backlash", "gap_start", "TRUTHS", "backlash_truth", "GAP_GRID",
            "FINE", "fine_grid", "reversal_travels", "contact_record",
-           "reversal_travel_floor"]
+           "reversal_travel_floor", "across_force", "ACROSS"]
 
 #: gaps tried by :func:`gap_start` around the model-free estimate of the lost motion
 GAP_GRID = 8
@@ -200,7 +200,9 @@ class Backlash(LawCandidate):
 
     def practical(self, p: dict, ctx: Context) -> str:
         """Why a fitted gap (``p["delta"]`` [m] or ``p["backlash_gap"]``) is too small to name
-        ('' when it is large enough; see :data:`MIN_SAMPLES`).
+        ('' when it is large enough; see :data:`MIN_SAMPLES`), or why its forces across the
+        play (:func:`across_force`) are not a play's: beyond the contact's break-away level
+        max(``Fc``, ``Fs``) the contact could not stand in the gap.
 
         Parameters
         ----------
@@ -217,6 +219,12 @@ class Backlash(LawCandidate):
             return (f"its lost motion of {gap:.3g} m is crossed within {self.MIN_SAMPLES:g} "
                     f"samples of a reversal ({floor:.3g} m at the record's acceleration): "
                     f"what a sub-sample shift makes there")
+        if "Fc" in p and "Fs" in p:
+            held, level = across_force(p), max(float(p["Fc"]), float(p["Fs"]))
+            if held > level:
+                return (f"what bridges its play pushes the contact with up to {held:.3g} N, "
+                        f"beyond its break-away level {level:.3g} N: the contact would not "
+                        f"stand in the gap, so the fit draws a presliding spring, not a play")
         q = getattr(ctx, "x_q", 0.0)
         if q > 0.0 and gap < self.MIN_COUNTS * q:
             return (f"its lost motion of {gap:.3g} m is {gap / q:.1f} counts of the position's "
@@ -377,7 +385,7 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
         if not bridged:
             return float(r @ r), start
         # what bridges the play is linear in its forces given the play's motion
-        sse, c = _across_fit(fit, Z[:, 1], 0.5 * g, r, across)
+        sse, c = _across_fit(fit, Z[:, 1], 0.5 * g, r, across, _break_away(law_g.params))
         start.update(zip(across, c))
         return sse, start
 
@@ -415,11 +423,29 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
     return bridged[1] if bridged[0] < ACROSS_GAIN * sse else start
 
 
-def _across_fit(fit, p, delta: float, r, names):
+def _break_away(p) -> float:
+    """The contact's break-away level [N]: the largest static level of the law's values
+    ``p`` (either direction)."""
+    return max(float(x) for x in (p.Fc, p.Fs, getattr(p, "Fc_neg", None) or 0.0,
+                                  getattr(p, "Fs_neg", None) or 0.0))
+
+
+def across_force(p) -> float:
+    """The largest force [N] what bridges the play puts on the standing contact,
+    |``gap_bias``| + ``gap_stiffness`` delta + ``gap_drag``, of the law's values ``p`` (a
+    mapping or parameters; 0 without them)."""
+    get = p.get if isinstance(p, dict) else (lambda n, d=0.0: getattr(p, n, d))
+    return (abs(float(get("gap_bias", 0.0))) + float(get("gap_stiffness", 0.0))
+            * float(get("delta", 0.0)) + float(get("gap_drag", 0.0)))
+
+
+def _across_fit(fit, p, delta: float, r, names, level: float):
     """Least-squares forces of what bridges a play of half-width ``delta`` [m] (the law's
     ``gap_bias`` [N], ``gap_stiffness`` [N/m], ``gap_drag`` [N], those in ``names``) on the
-    residual ``r`` [N] of the law without them, along the play offsets ``p`` [m]; the
-    stiffness and drag kept >= 0. Returns (squared residual left [N^2], the forces)."""
+    residual ``r`` [N] of the law without them, along the play offsets ``p`` [m]; each
+    within the contact's break-away ``level`` [N] (the contact stands still in the gap: a
+    stiff spring across a tiny play is a presliding spring, not a play), the stiffness and
+    drag >= 0. Returns (squared residual left [N^2], the forces)."""
     from scipy.optimize import lsq_linear
     from friction.backlash import ENGAGE_BAND
     eps = ENGAGE_BAND * delta
@@ -430,8 +456,10 @@ def _across_fit(fit, p, delta: float, r, names):
     if not np.any(A):
         return float(r @ r), np.zeros(len(names))
     scale = np.maximum(np.max(np.abs(A), axis=0), 1e-300)
-    lo = np.array([-np.inf if n == "gap_bias" else 0.0 for n in names])
-    sol = lsq_linear(A / scale, r, bounds=(lo, np.inf))
+    cap = {"gap_bias": level, "gap_stiffness": level / max(delta, 1e-300), "gap_drag": level}
+    lo = np.array([-level if n == "gap_bias" else 0.0 for n in names]) * scale
+    hi = np.array([cap[n] for n in names]) * scale
+    sol = lsq_linear(A / scale, r, bounds=(lo, hi))
     left = r - (A / scale) @ sol.x
     return float(left @ left), sol.x / scale
 

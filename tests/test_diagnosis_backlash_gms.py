@@ -340,3 +340,20 @@ def test_the_start_keeps_what_bridges_the_play_only_where_the_data_ask():
     assert not isinstance(p["gap_drag"], Fixed)
     assert p["gap_drag"] == pytest.approx(0.3, rel=0.3)
     assert p["gap_stiffness"] == pytest.approx(400.0, rel=0.3)
+
+
+def test_forces_across_the_play_beyond_the_break_away_are_no_play():
+    """A fit whose forces across the play exceed the contact's break-away draws a
+    presliding spring in a tiny gap (a harmonic drive's compliance on the XML-350: a gap of
+    2.5 um, a spring of 7.5e5 N/m, 1.6 N across against Fc 0.95 N): not named; within the
+    break-away it is."""
+    ctx = _ctx()
+    ok = {"delta": 2e-3, "Fc": 2.0, "Fs": 2.8, "gap_bias": 0.2, "gap_stiffness": 300.0,
+          "gap_drag": 0.5}
+    assert eb.across_force(ok) == pytest.approx(0.2 + 0.6 + 0.5)
+    assert BACKLASH.practical(ok, ctx) == ""
+    stiff = dict(ok, gap_stiffness=2000.0)          # 4 N across a 2.8 N break-away
+    why = BACKLASH.practical(stiff, ctx)
+    assert "break-away" in why and "4.7 N" in why
+    law = BACKLASH.law_for(make_model("lugre", **BASE), 2e-3).with_values(gap_stiffness=2e3)
+    assert eb.across_force(law.params) == pytest.approx(4.0)

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen11`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen12`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -241,6 +241,7 @@ _S8 = "diagnosis.benchmark.seen8:"
 _S9 = "diagnosis.benchmark.seen9:"
 _S10 = "diagnosis.benchmark.seen10:"
 _S11 = "diagnosis.benchmark.seen11:"
+_S12 = "diagnosis.benchmark.seen12:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -263,8 +264,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "pitch_squeeze": _S8 + "pitch_squeeze_truth",
                    "weight_transfer": _S9 + "weight_transfer_truth",
                    "oil_slosh": _S10 + "oil_slosh_truth",
-                   "dilatancy_hardening": _S11 + "dilatancy_hardening_truth"},
-           sealed={"tilt_wedge": _S + "tilt_wedge_truth"},
+                   "dilatancy_hardening": _S11 + "dilatancy_hardening_truth",
+                   "tilt_wedge": _S12 + "tilt_wedge_truth"},
+           sealed={"sprung_gib": _S + "sprung_gib_truth"},
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
@@ -282,8 +284,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "hydrostatic_overload": _S8 + "hydrostatic_overload_truth",
                    "squeeze_cavitation": _S9 + "squeeze_cavitation_truth",
                    "piezoviscous_film": _S10 + "piezoviscous_film_truth",
-                   "full_contact": _S11 + "full_contact_truth"},
-           sealed={"flash_desorption": _S + "flash_desorption_truth"},
+                   "full_contact": _S11 + "full_contact_truth",
+                   "flash_desorption": _S12 + "flash_desorption_truth"},
+           sealed={"scuffing_healing": _S + "scuffing_healing_truth"},
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
@@ -301,8 +304,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "sprag_strut": _S8 + "sprag_strut_truth",
                    "meter_out_throttle": _S9 + "meter_out_throttle_truth",
                    "differential_cylinder": _S10 + "differential_cylinder_truth",
-                   "chevron_grooves": _S11 + "chevron_grooves_truth"},
-           sealed={"helical_buckling": _S + "helical_buckling_truth"},
+                   "chevron_grooves": _S11 + "chevron_grooves_truth",
+                   "helical_buckling": _S12 + "helical_buckling_truth"},
+           sealed={"chip_scraper": _S + "chip_scraper_truth"},
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
                          "Stribeck curve shape: exponent, Lorentzian, a speed map",
@@ -320,8 +324,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "contact_resonance": _S8 + "contact_resonance_truth",
                    "dither_averaging": _S9 + "dither_averaging_truth",
                    "melt_lubrication": _S10 + "melt_lubrication_truth",
-                   "granular_flow": _S11 + "granular_flow_truth"},
-           sealed={"readsorption": _S + "readsorption_truth"},
+                   "granular_flow": _S11 + "granular_flow_truth",
+                   "readsorption": _S12 + "readsorption_truth"},
+           sealed={"thermoviscous_film": _S + "thermoviscous_film_truth"},
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -343,8 +348,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "telescopic_cover": _S8 + "telescopic_cover_truth",
                    "air_spring": _S9 + "air_spring_truth",
                    "bolt_holes": _S10 + "bolt_holes_truth",
-                   "immersed_plunger": _S11 + "immersed_plunger_truth"},
-           sealed={"beam_sag": _S + "beam_sag_truth"},
+                   "immersed_plunger": _S11 + "immersed_plunger_truth",
+                   "beam_sag": _S12 + "beam_sag_truth"},
+           sealed={"festoon_cable": _S + "festoon_cable_truth"},
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
@@ -361,8 +367,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "freewheel_flywheel": _S8 + "freewheel_flywheel_truth",
                    "pick_and_place": _S9 + "pick_and_place_truth",
                    "eddy_coupling": _S10 + "eddy_coupling_truth",
-                   "centrifugal_flyweights": _S11 + "centrifugal_flyweights_truth"},
-           sealed={"fluid_coupling": _S + "fluid_coupling_truth"},
+                   "centrifugal_flyweights": _S11 + "centrifugal_flyweights_truth",
+                   "fluid_coupling": _S12 + "fluid_coupling_truth"},
+           sealed={"telescopic_stage": _S + "telescopic_stage_truth"},
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
@@ -380,8 +387,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "running_median": _S8 + "running_median_truth",
                    "deadband_reporting": _S9 + "deadband_reporting_truth",
                    "spatial_sampling": _S10 + "spatial_sampling_truth",
-                   "belt_transit": _S11 + "belt_transit_truth"},
-           sealed={"aerated_load_cell": _S + "aerated_load_cell_truth"},
+                   "belt_transit": _S11 + "belt_transit_truth",
+                   "aerated_load_cell": _S12 + "aerated_load_cell_truth"},
+           sealed={"lossy_telemetry": _S + "lossy_telemetry_truth"},
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
@@ -400,8 +408,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "antioxidant_depletion": _S8 + "antioxidant_depletion_truth",
                    "coating_wear_through": _S9 + "coating_wear_through_truth",
                    "polymer_swelling": _S10 + "polymer_swelling_truth",
-                   "zddp_tribofilm": _S11 + "zddp_tribofilm_truth"},
-           sealed={"particle_ingress": _S + "particle_ingress_truth"},
+                   "zddp_tribofilm": _S11 + "zddp_tribofilm_truth",
+                   "particle_ingress": _S12 + "particle_ingress_truth"},
+           sealed={"differential_expansion": _S + "differential_expansion_truth"},
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),
@@ -418,8 +427,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "slack_chain": _S8 + "slack_chain_truth",
                    "magnetic_coupling": _S9 + "magnetic_coupling_truth",
                    "preloaded_nut": _S10 + "preloaded_nut_truth",
-                   "harmonic_drive": _S11 + "harmonic_drive_truth"},
-           sealed={"wire_rope": _S + "wire_rope_truth"},
+                   "harmonic_drive": _S11 + "harmonic_drive_truth",
+                   "wire_rope": _S12 + "wire_rope_truth"},
+           sealed={"jaw_coupling": _S + "jaw_coupling_truth"},
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
                         "Maxwell-slip)", "modify_law"),
@@ -436,8 +446,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "bond_rupture": _S8 + "bond_rupture_truth",
                    "gouge_fabric": _S9 + "gouge_fabric_truth",
                    "kinematic_hardening": _S10 + "kinematic_hardening_truth",
-                   "asperity_interlocking": _S11 + "asperity_interlocking_truth"},
-           sealed={"capillary_bridges": _S + "capillary_bridges_truth"},
+                   "asperity_interlocking": _S11 + "asperity_interlocking_truth",
+                   "capillary_bridges": _S12 + "capillary_bridges_truth"},
+           sealed={"cyclic_hardening": _S + "cyclic_hardening_truth"},
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 

@@ -1,10 +1,10 @@
-"""The twelfth sealed truth family (diagnosis.benchmark.sealed, written in session 17 by
+"""The thirteenth sealed truth family (diagnosis.benchmark.sealed, written in session 18 by
 another hand, sealed: not run): each form builds a finite case of the requested size on every
 plant it applies to, is the base law at s = 0, grows with its amplitude factor and refuses
 the plants it does not apply to. No diagnosis is run on these forms: the family stays unseen
 until the end of a piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS`
-names it as its ``sealed`` form (the eleventh family, sealed before it, is
-:mod:`diagnosis.benchmark.seen11` since its run in session 17)."""
+names it as its ``sealed`` form (the twelfth family, sealed before it, is
+:mod:`diagnosis.benchmark.seen12` since its run in session 18)."""
 import dataclasses
 import importlib
 
@@ -21,11 +21,11 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "tilt_wedge", "load": "flash_desorption",
-        "asymmetry": "helical_buckling", "stribeck_shape": "readsorption",
-        "position": "beam_sag", "inertia": "fluid_coupling",
-        "delay": "aerated_load_cell", "drift": "particle_ingress",
-        "backlash": "wire_rope", "gms": "capillary_bridges"}
+FORM = {"acceleration": "sprung_gib", "load": "scuffing_healing",
+        "asymmetry": "chip_scraper", "stribeck_shape": "thermoviscous_film",
+        "position": "festoon_cable", "inertia": "telescopic_stage",
+        "delay": "lossy_telemetry", "drift": "differential_expansion",
+        "backlash": "jaw_coupling", "gms": "cyclic_hardening"}
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
@@ -36,8 +36,9 @@ _FORM_MODULES = ("diagnosis.benchmark.truths", "diagnosis.benchmark.forms",
                  "diagnosis.benchmark.seen5", "diagnosis.benchmark.seen6",
                  "diagnosis.benchmark.seen7", "diagnosis.benchmark.seen8",
                  "diagnosis.benchmark.seen9", "diagnosis.benchmark.seen10",
-                 "diagnosis.benchmark.seen11", "diagnosis.benchmark.sealed",
-                 "diagnosis.effects_backlash", "diagnosis.effects_gms")
+                 "diagnosis.benchmark.seen11", "diagnosis.benchmark.seen12",
+                 "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
+                 "diagnosis.effects_gms")
 
 
 def test_the_family_has_one_new_form_per_effect():
@@ -59,9 +60,9 @@ def test_the_family_has_one_new_form_per_effect():
         assert not names & set(vars(mod)), name
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
-    assert doc.startswith("The twelfth sealed truth family")
-    assert "sealed: not run" in doc and "2026-11-29 (session 17)" in doc
-    assert "session 16's, was run once in session 17 and is :mod:`.seen11`" in doc
+    assert doc.startswith("The thirteenth sealed truth family")
+    assert "sealed: not run" in doc and "2026-11-29 (session 18)" in doc
+    assert "session 17's, was run once in session 18 and is :mod:`.seen12`" in doc
 
 
 def test_registered_forms_resolve():
@@ -102,20 +103,20 @@ def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     from diagnosis.benchmark.kinematics import fine_kinematics
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        family.readsorption_truth(iso, 1.0)
+        family.thermoviscous_film_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.capillary_bridges_truth(iso, 1.0)
+        family.cyclic_hardening_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.wire_rope_truth(iso, 1.0)
+        family.jaw_coupling_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
     # a one-way stroke (the press's) never comes back over the positions the fit part saw
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        family.beam_sag_truth.__wrapped__(one_way, 1.0)
-    # a load that never changes heats no contact more than another
+        family.festoon_cable_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes passes no critical load
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        family.flash_desorption_truth.__wrapped__(still, 1.0)
+        family.scuffing_healing_truth.__wrapped__(still, 1.0)
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
@@ -131,137 +132,107 @@ def _triangle(plant="valve", n=4001, v=0.01):
                            kin.base, kin.seed_law, "triangle", step=FINE)
 
 
-def test_inclined_pad_load_peaks_inside_and_starts_linear():
-    K = np.array([0.0, 1e-4, 0.01, 0.5, 1.19, 2.0, 10.0])
-    f = family._inclined_pad_load(K)
-    assert f[0] == 0.0 and np.isclose(f[1], 0.5e-4, rtol=1e-3)
-    assert np.isclose(f[2], 6.0 / 1e-4 * (np.log1p(0.01) - 0.02 / 2.01), rtol=1e-9)
-    assert f[1] < f[2] < f[3] < f[4] and f[4] > f[5] > f[6] > 0.0      # best near 1.19
-    assert np.isclose(family.PAD_LOAD_MAX, f[4], rtol=1e-3)
+def test_the_gib_keeps_what_the_last_hard_acceleration_left():
+    a = np.array([0.0, 0.2, 1.0, 0.5, 0.0, -0.2, -1.0, 0.0, 9.0])
+    g = family._gib_shift(a, 0.35, 1.0)
+    assert g[0] == 0.0 and g[1] == 0.0                                # inside the dead band
+    assert np.isclose(g[2], 0.65) and np.isclose(g[3], 0.65) and np.isclose(g[4], 0.35)
+    assert np.isclose(g[6], -0.65) and np.isclose(g[7], -0.35) and g[8] == 1.0
 
 
-def test_tilt_wedge_lifts_speeding_up_only():
-    kin = plant_kinematics("xml350", quick=True)
-    d = np.abs(family.tilt_wedge_truth(kin, 1.0)) - np.abs(base_force(kin))
-    v99, a99, Fc = kin.scales["v99"], kin.scales["a99"], float(kin.base.params.Fc)
-    fast, rate = np.abs(kin.v) > 0.5 * v99, kin.v * kin.a
-    assert np.median(d[fast & (rate > 0.2 * v99 * a99)]) < -0.1 * Fc   # speeding up
-    assert abs(np.median(d[fast & (rate < -0.2 * v99 * a99)])) < 0.01 * Fc   # braking
+def test_the_film_fails_above_one_load_and_heals_below_another():
+    L = np.array([0.0, 1.0, 1.0, 0.5, 0.5, 0.0, 0.0])
+    path = np.arange(L.size) * 10.0
+    phi = family._scuffed(path, L, 0.65, 0.35, 1.0)
+    assert phi[0] == 0.0 and phi[1] > 0.99 and phi[3] == phi[4] == phi[2]   # a relay
+    assert phi[5] < 1e-3
+    # at rest (no path) nothing changes
+    assert family._scuffed(np.zeros(3), np.array([0.0, 1.0, 1.0]), 0.65, 0.35, 1.0)[2] == 0.0
 
 
-def test_flash_temperature_desorbs_the_film_at_load_and_speed_together():
-    phi = family._desorbed(np.array([1.0, 1.5, 0.5, 1.5, 5.0]),
-                           np.array([1.0, 1.0, 1.0, 0.2, 0.0]), 1.0, 0.04)
-    assert np.isclose(phi[0], 0.5)                                    # at the critical one
-    assert phi[1] > 0.99 and phi[2] < 0.01                            # the load decides
-    assert phi[3] < 0.01 and phi[4] < 1e-6                            # not when slow
-
-
-def test_a_pushed_cable_drags_more_than_a_pulled_one_the_longer_it_is():
-    ell = np.array([1.0, 2.0, 3.0])
-    pull = family._cable_drag(ell, np.ones(3), 0.3)
-    push = family._cable_drag(ell, -np.ones(3), 0.3)
-    assert np.allclose(pull, 0.3 * ell) and np.allclose(push, np.tan(0.3 * ell))
-    assert np.all(np.diff(push / pull) > 0.0)
-    # near lock-up the drive's force limit caps it
-    assert family._cable_drag(10.0, -1.0, 0.3) == np.tan(family.BUCKLING_MAX)
+def test_the_scraper_pushes_a_pile_one_way_only():
+    t = np.linspace(0.0, 2.0, 20001)
+    v = np.where(t < 1.0, 1.0, 0.0)
+    p = family._pile(t, v, 1.0 - v, 0.3, 0.01)
+    assert np.isclose(p[10000], 1.0 - np.exp(-1.0 / 0.3), rtol=1e-3)
+    assert p[12000] < 1e-6                                            # dropped after it
     kin = plant_kinematics("valve", quick=True)
-    d = np.abs(family.helical_buckling_truth(kin, 1.0)) - np.abs(base_force(kin))
+    d = np.abs(family.chip_scraper_truth(kin, 1.0)) - np.abs(base_force(kin))
     v99 = kin.scales["v99"]
-    assert np.median(d[kin.v < -0.5 * v99]) > 1.2 * np.median(d[kin.v > 0.5 * v99]) > 0.0
+    assert np.median(d[kin.v > 0.5 * v99]) > 0.0
+    assert abs(np.median(d[kin.v < -0.5 * v99])) < 1e-9
 
 
-def test_readsorption_leaves_slow_sliding_covered():
-    va = 0.1
-    bare = family._uncovered(np.array([0.0, 0.005, 0.01, -0.1, 1.0]), va)
-    assert bare[0] == 0.0 and bare[1] < 1e-8 and bare[2] < 1e-4
-    assert np.isclose(bare[3], np.exp(-1.0)) and np.isclose(bare[4], np.exp(-0.1))
-    kin = plant_kinematics("valve", quick=True)
-    d = np.abs(family.readsorption_truth(kin, 1.0)) - np.abs(base_force(kin))
-    v99, Fc = kin.scales["v99"], float(kin.base.params.Fc)
-    slow = (np.abs(kin.v) > 0.01 * v99) & (np.abs(kin.v) < 0.05 * v99)
-    assert np.median(d[np.abs(kin.v) > 0.8 * v99]) > 0.2 * Fc
-    assert np.median(np.abs(d[slow])) < 1e-3 * Fc                    # (the bristle remembers)
+def test_the_heated_film_drags_most_below_the_top_speed():
+    u = np.linspace(0.0, 3.0, 3001)
+    f = family._thermal_thinning(u, 4.0)
+    assert f[0] == 0.0 and np.isclose(f[1] / u[1], 1.0, rtol=1e-4)   # linear when cool
+    assert np.isclose(u[np.argmax(f)], np.sqrt(np.e / 4.0), atol=2e-3)   # peak at x = 1
+    assert np.all(np.diff(f[np.argmax(f) + 1:]) < 0.0)
+    assert np.allclose(family._thermal_thinning(-u, 4.0), -f)
 
 
-def test_beam_slope_under_the_load_is_odd_about_midspan():
-    u = np.array([0.0, 0.5 - np.sqrt(3.0) / 6.0, 0.3, 0.5, 0.7, 1.0])
-    f = family._sag_pull(u)
-    assert f[0] == 0.0 and f[3] == 0.0 and f[5] == 0.0
-    assert np.isclose(f[1], 1.0) and np.isclose(f[2], -f[4]) and f[2] > 0.0
-    # a force of the position alone: the same going up and down
+def test_the_festoon_tightens_steeply_as_it_nears_taut():
+    d = np.array([0.2, 0.5, 0.9, 0.99])
+    H = family._catenary_tension(d, 1.0)
+    beta = d / (2.0 * H)
+    assert np.allclose(np.sinh(beta) / beta, 1.0 / d, rtol=1e-9)
+    assert np.all(np.diff(H) > 0.0) and H[3] - H[2] > H[2] - H[1]
     kin = _triangle()
-    d = family.beam_sag_truth.__wrapped__(kin, 1.0) - family.beam_sag_truth.__wrapped__(kin,
-                                                                                        0.0)
-    up, down = slice(300, 1700), slice(2300, 3700)
-    xs = np.linspace(kin.x[up].min(), kin.x[up].max(), 7)[1:-1]
-    iu, idn = np.argsort(kin.x[up]), np.argsort(kin.x[down])
-    assert np.allclose(np.interp(xs, kin.x[up][iu], d[up][iu]),
-                       np.interp(xs, kin.x[down][idn], d[down][idn]), atol=1e-9)
-    assert np.ptp(d) > 0.1 * float(kin.base.params.Fc)
+    d = family.festoon_cable_truth.__wrapped__(kin, 1.0) - \
+        family.festoon_cable_truth.__wrapped__(kin, 0.0)
+    assert np.allclose(d, np.interp(kin.x, np.sort(kin.x), d[np.argsort(kin.x)]), atol=1e-9)
 
 
-def test_fluid_coupling_holds_at_speed_and_lets_go_near_rest():
-    t = np.arange(20001) * 1e-4
-    # w' = (v |v| - w |w|) / v_c: held at a steady speed, a step follows tanh
-    assert np.allclose(family._fluid_part(t, np.full(t.size, 0.01), 0.2, 1e9), 0.01)
-    w = family._fluid_part(t, np.where(t < 0.5, 0.01, 1.0), 0.2, 1e9)
-    exact = np.tanh((t - 0.5) / 0.2 + np.arctanh(0.01))
-    assert np.max(np.abs(w[5001:] - exact[5001:])) < 1e-3
-    # the axis stopped, the coupling transmits ~ w^2 only: the part coasts on algebraically
-    w = family._fluid_part(t, np.where(t < 1.0, 1.0, 0.0), 0.2, 1e9)
-    assert np.isclose(w[-1], 1.0 / (1.0 + 1.0 / 0.2), rtol=1e-3)
+def test_the_stage_is_picked_up_at_a_stop_and_left_behind():
+    h = 1e-4
+    t = np.arange(40001) * h
+    xd = np.where(t < 2.0, 0.5 * t, 1.0 - 0.5 * (t - 2.0))
+    f = family._stage_force(h, xd, 0.2, 1.0, 2.0, 1e4, 200.0)
+    assert np.all(f[t < 0.39] == 0.0)                                 # free inside it
+    # entrained at the stop it is pushed at the carriage's speed against its friction
+    assert np.isclose(np.median(f[(t > 0.6) & (t < 1.9)]), 2.0, rtol=1e-2)
+    # the carriage turns: the stage coasts on, stops, and waits for the other stop
+    assert np.all(f[(t > 2.05) & (t < 2.6)] == 0.0)
+    assert np.median(f[(t > 3.1) & (t < 3.9)]) < -1.9
 
 
-def test_aerated_cell_lags_longer_at_low_pressure():
-    t = np.arange(4001) * 1e-3
-    up = family._aerated_lag(t, np.where(t >= 1.0, 1.0, 0.0), 0.1, 2.0)
-    down = family._aerated_lag(t, np.where(t >= 1.0, -1.0, 0.0), 0.1, 2.0)
-    # time to go 63 % of the way: the pressure rises to 1.5 p0 or falls to 0.5 p0
-    k_up = np.argmax(up >= 1.0 - np.exp(-1.0))
-    k_dn = np.argmax(down <= -(1.0 - np.exp(-1.0)))
-    assert 1000 < k_up < k_dn and (k_dn - 1000) > 2.0 * (k_up - 1000)
-    assert up[-1] > 0.999 and down[-1] < -0.999
+def test_lost_telegrams_hold_the_last_value():
+    t = np.arange(100) * 1.0
+    F = np.sin(0.1 * t)
+    held = family._held(t, F, np.array([10.0, 12.0, 50.0]), np.array([5.0, 5.0, 2.0]))
+    assert np.all(held[10:17] == F[10]) and held[17] == F[17]         # merged losses
+    assert np.all(held[50:52] == F[50]) and np.array_equal(held[:10], F[:10])
 
 
-def test_particles_enter_at_fixed_points_and_wear_off():
-    tr = np.linspace(0.0, 1.0, 100001)
-    r = family._particle_levels(tr, 2026, 8, 0.1, 0.005)
-    again = family._particle_levels(tr, 2026, 8, 0.1, 0.005)
-    assert np.array_equal(r, again) and r[0] == 0.0 and np.all(r >= 0.0)
-    jumps = np.flatnonzero(np.diff(r) > 2e-4)                          # being pressed in
-    assert 0.05 <= tr[jumps[0]] and tr[jumps[-1]] <= 0.96
-    one = family._particle_levels(tr, 2026, 1, 0.1, 0.005)
-    k = int(np.argmax(one))
-    assert one[min(k + 20000, tr.size - 1)] < 0.2 * one[k]            # worn off over 0.2
+def test_the_expansion_rises_with_the_carriage_and_falls_as_the_rail_follows():
+    kin = plant_kinematics("xml350", quick=True)
+    d = family.differential_expansion_truth(kin, 1.0) - base_force(kin)
+    assert np.all(np.isfinite(d)) and np.max(np.abs(d)) > 0.0
+    assert np.max(np.abs(family.differential_expansion_truth(kin, 0.0) - base_force(kin))) \
+        < 1e-9
 
 
-def test_wire_rope_turns_the_force_fast_then_slowly():
+def test_the_spider_takes_up_the_force_and_sags_back_as_it_relaxes():
     kin = _triangle()
-    F = family.wire_rope_truth.__wrapped__(kin, 1.0)
+    F = family.jaw_coupling_truth.__wrapped__(kin, 1.0)
     Fc = float(kin.base.params.Fc)
     rev = np.argmax(kin.t >= 0.2)
-    after = F[rev:rev + 1500]
-    # from the sliding level one way to the other after the reversal: the first 40 % of the
-    # swing (the strands sticking) takes less drive travel than 55 to 95 % (the core alone)
-    dx = kin.x[rev] - kin.x[rev:rev + 1500]
-    swing = (after[0] - after) / (after[0] + Fc)
-
-    def travel(share):
-        return dx[np.argmax(swing >= share)]
-    assert 0.0 < travel(0.4) < travel(0.95) - travel(0.55)
-    assert abs(F[-1000] + Fc) < 0.2 * Fc                               # sliding again
+    assert abs(F[rev - 100] - np.median(F[rev - 600:rev - 100])) < 0.2 * Fc   # sliding
+    assert abs(F[-1000] + Fc) < 0.3 * Fc                               # sliding again
+    assert np.all(np.isfinite(F))
 
 
-def test_bridges_pull_back_as_sin_of_their_tilt_up_to_depinning():
-    ud, tilt = 2.0, np.radians(60.0)
-    f = family._bridge_force(np.array([0.0, 1e-6, ud, -ud]), ud, tilt)
-    assert f[0] == 0.0 and np.isclose(f[2], 1.0) and np.isclose(f[3], -1.0)
-    h = ud / np.tan(tilt)
-    assert np.isclose(f[1], 1e-6 / h / np.sin(tilt), rtol=1e-6)       # linear at first
-    # concave: the slope falls with the tilt
-    u = np.linspace(0.0, ud, 101)
-    assert np.all(np.diff(family._bridge_force(u, ud, tilt), 2) < 0.0)
+def test_the_junctions_harden_with_slip_and_recover_at_rest():
+    t = np.linspace(0.0, 12.0, 12001)
+    # slide 2 s, rest 8 s (eight recovery times), slide on 2 s
+    x = np.minimum(t, 2.0) + np.maximum(t - 10.0, 0.0)
+    f = family._hardening_junctions(t, x, 0.01, 0.6, 0.03, 1.0)
+    assert np.isclose(f[3], 0.3)                                      # elastic at first
+    assert 0.4 < f[8] < 0.6                                           # yields soft
+    assert f[1990] > 0.999                                            # hardened by the slip
+    assert f[10020] < 0.9                                             # soft again after rest
+    assert f[-1] > 0.999
 
 
 @pytest.mark.slow

@@ -1,12 +1,12 @@
-"""The twelfth sealed truth family: one more mechanism per effect, kept out of all tuning.
+"""The thirteenth sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-11-29 (session 17) by another hand, once, without running the diagnosis on it;
+Written 2026-11-29 (session 18) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 16's, was run once in session 17 and is :mod:`.seen11`). Once its
-results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen11` did. Each
+sealed before it, session 17's, was run once in session 18 and is :mod:`.seen12`). Once its
+results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen12` did. Each
 form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen11`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen12`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`), taken from the friction literature or from real
 machines, integrated along the plant's continuous motion on the grid :data:`.kinematics.FINE`
@@ -18,67 +18,63 @@ amplitude monotonically from the base law at ``s`` = 0 (its calibration,
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``tilt_wedge``: the acceleration's moment pitches the carriage on its
-                   compliant plain pads; speeding up, the leading edge rises and the
-                   pads form converging wedges whose hydrodynamic lift (Reynolds 1886;
-                   Michell's inclined pad, 1905) grows with the speed and, as the
-                   inclined pad's load function, first with and then against the tilt:
-                   the levels fall while the carriage speeds up, not while it brakes
-load               ``flash_desorption``: the adsorbed boundary film desorbs where the
-                   flash temperature of the asperity contacts (Blok 1937; Jaeger 1942;
-                   at high Peclet number and Hertzian contacts ~ sqrt(load x speed),
-                   Archard 1959) passes the film's critical temperature (Frewing 1944):
-                   the levels step up in the heavily loaded fast strokes, not at rest
-asymmetry          ``helical_buckling``: a cable (a hose, a push-pull rod) dragged in a
-                   channel by the carriage: pulled, it slides with its weight's
-                   friction; pushed, it buckles into a helix whose wall contact force
-                   grows as the square of its compression (Lubinski 1962), and its
-                   friction grows as tan of its length towards lock-up (Wu and
-                   Juvkam-Wold 1995): one direction drags more, more along the stroke
-stribeck_shape     ``readsorption``: the boundary lubricant re-adsorbs on a spot in the
-                   time between two asperity encounters (Kingsbury 1960; Rowe 1966):
-                   the faster the sliding, the less of the surface is covered at the
-                   next encounter, and the levels rise towards the bare metal's as
-                   exp(-v_a / |v|): flat at low speed, then a step up in log-speed
-position           ``beam_sag``: the carriage runs on a beam (a gantry's cross-beam)
-                   that sags under it: at every position it sits in its own deflection,
-                   and moving on takes its weight times the slope there (a moving load
-                   on an elastic beam, Timoshenko 1922): a force of the position alone,
-                   drawing the carriage towards the middle of the span, both ways
-inertia            ``fluid_coupling``: a rotating part driven through a hydrodynamic
-                   (Foettinger) fluid coupling, whose torque follows the difference of
-                   the two wheels' heads, ~ omega |omega|: at speed a tightly coupled,
-                   lagged mass; near rest and through the reversals the coupling all but
-                   lets go and the part coasts
-delay              ``aerated_load_cell``: the force read as the pressure of a preloaded
-                   hydraulic load cell through a damping restrictor, the transducer's
-                   oil holding entrained air: the air's compliance ~ 1 / p^2 (Merritt
-                   1967) makes the lag long at low pressure and short at high: a delay
-                   set by the force's own level, longest at its most negative
-drift              ``particle_ingress``: contaminant particles swept into the contact at
-                   random points of the record's travel embed in the softer surface
-                   and plough it until they are worn down or ejected over a tenth of
-                   the travel (Nikas 2010): the levels jump up at each ingress and
-                   decay with the sliding, in a sequence fixed by its seed
-backlash           ``wire_rope``: drive and contact joined by a wire rope (a cable
-                   drive) whose strands stick, then slip on each other as the load
-                   changes (Costello 1997; Bouc-Wen for wire-rope elements, Demetriades,
-                   Constantinou and Reinhorn 1993): after each reversal the force turns
-                   fast while the strands stick and slowly once they slip: a lost motion
-                   through a hysteretic, softening coupling
-gms                ``capillary_bridges``: capillary bridges of condensed water around the
-                   asperity contacts whose contact lines stay pinned (contact-angle
-                   hysteresis, Furmidge 1962) until the bridges' tilt reaches the
-                   advancing angle, then slide: beside the bristle, a presliding force
-                   2 gamma w sin(theta) sin(phi) of the tilt phi, a play of the travel;
-                   at ``s`` = 0 the base itself
+acceleration       ``sprung_gib``: a tapered gib strip (the slideway's adjusting wedge)
+                   centred by a spring and held in its pocket by the friction of its
+                   faces: once its inertial force passes that holding force it shifts
+                   along the taper and changes the preload (a play operator of the
+                   acceleration, Prandtl 1928 / Krasnosel'skii and Pokrovskii 1989;
+                   gibs, Slocum 1992): the levels follow the acceleration's play
+load               ``scuffing_healing``: the boundary film fails above a critical load
+                   (scuffing, Dyson 1975) and heals only below a lower one (boundary
+                   film re-formation, Bowden and Tabor 1950), each transition completed
+                   over a sliding distance: the levels follow a relay (Schmitt trigger)
+                   of the load, paced by the travel
+asymmetry          ``chip_scraper``: a way scraper (wiper blade) angled to bulldoze chips
+                   and coolant ahead of it one way and ride over them the other: the
+                   pile it pushes grows with the travel since the last reversal and
+                   saturates as it spills round the blade (the bulldozing resistance of
+                   a blade, Reece 1964; McKyes 1985); dropped at each reversal
+stribeck_shape     ``thermoviscous_film``: a full film whose viscous shear heats it
+                   (Nahme-Griffith number ~ v^2): its viscosity falls exponentially
+                   with the temperature (Reynolds' law), so the film's drag ~ v e^-W(N v^2)
+                   rises, peaks and falls at speed (thermal thinning; Crook 1961;
+                   Johnson and Greenwood 1980)
+position           ``festoon_cable``: a cable hanging in a catenary from an anchor below
+                   the stroke to the carriage (a festoon): its horizontal tension, from
+                   sinh(beta) / beta = length / span (Irvine 1981), pulls the carriage
+                   towards the anchor and rises steeply as the cable nears taut: a
+                   force of the position alone, both ways
+inertia            ``telescopic_stage``: a second (outer) stage of a telescopic axis
+                   carried between two end stops: the carriage runs free inside it,
+                   entrains it at each stop (a damped impact, vibro-impact, Babitsky
+                   1998) and leaves it behind where its own guide friction stops it: a
+                   mass picked up and dropped by the travel's history
+delay              ``lossy_telemetry``: the force sent over a radio telemetry link that
+                   loses telegrams in bursts (the Gilbert-Elliott channel, Gilbert
+                   1960; Elliott 1963); the logger holds the last value received: stale
+                   stretches of random lengths at a sequence fixed by its seed
+drift              ``differential_expansion``: the carriage warms with the friction
+                   power faster than the rail it heats in turn: their temperature
+                   difference closes the preload (thermal errors of machines, Bryan
+                   1990): the levels rise with the difference of two lags of the power,
+                   up while the carriage leads and back as the rail catches up
+backlash           ``jaw_coupling``: drive and contact joined by an elastomer-spider jaw
+                   coupling with clearance: across the clearance nothing, then the
+                   spider's rubber, stiff at once and relaxing (a standard linear solid,
+                   Zener 1948): after each reversal the force overshoots and sags back
+                   as the rubber creeps, more the slower the drive
+gms                ``cyclic_hardening``: asperity junctions beside the bristle whose
+                   yield hardens isotropically with the accumulated slip path (Voce 1948)
+                   and recovers statically in time at rest (Chaboche 1989): after a rest
+                   the presliding layer yields low and hardens over a path; through
+                   quick reversals it stays hard; at ``s`` = 0 the base itself
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``readsorption`` needs a
-Stribeck curve (not the isolator's mre_lugre), ``beam_sag`` a record that revisits its
-positions (not the press), ``flash_desorption`` a load that changes, ``wire_rope`` and
-``capillary_bridges`` a classic LuGre base (valve, damping rig, XML-350); each raises a
-``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
+Where a form applies: as its effect's record (``truth_applies``); ``thermoviscous_film``
+needs a Stribeck curve (not the isolator's mre_lugre), ``festoon_cable`` a record that
+revisits its positions (not the press), ``scuffing_healing`` a load that changes,
+``jaw_coupling`` and ``cyclic_hardening`` a classic LuGre base (valve, damping rig, XML-350);
+each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
 
@@ -86,72 +82,76 @@ import math
 
 import numpy as np
 from numba import njit
+from scipy.special import lambertw
 
 from friction.shapes import SHAPES
 
 from ..effects_backlash import PLANT_GAP_SHARE
 from .kinematics import PlantKinematics
 from .seen11 import _direction, _nest_offset
-from .truths import (_base_parts, _bump_centre, _contact_constants, _level,
+from .truths import (_base_parts, _bump_centre, _contact_constants, _lag, _level,
                      _light_contact_step, _lugre_params, _motion_time, _presliding_path,
-                     _smooth_max0, _span, _substeps, level_inside, on_fine_grid)
+                     _span, _substeps, level_inside, on_fine_grid)
 
-__all__ = ["FORMS", "tilt_wedge_truth", "flash_desorption_truth", "helical_buckling_truth",
-           "readsorption_truth", "beam_sag_truth", "fluid_coupling_truth",
-           "aerated_load_cell_truth", "particle_ingress_truth", "wire_rope_truth",
-           "capillary_bridges_truth"]
+__all__ = ["FORMS", "sprung_gib_truth", "scuffing_healing_truth", "chip_scraper_truth",
+           "thermoviscous_film_truth", "festoon_cable_truth", "telescopic_stage_truth",
+           "lossy_telemetry_truth", "differential_expansion_truth", "jaw_coupling_truth",
+           "cyclic_hardening_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "tilt_wedge", "load": "flash_desorption",
-         "asymmetry": "helical_buckling", "stribeck_shape": "readsorption",
-         "position": "beam_sag", "inertia": "fluid_coupling",
-         "delay": "aerated_load_cell", "drift": "particle_ingress",
-         "backlash": "wire_rope", "gms": "capillary_bridges"}
+FORMS = {"acceleration": "sprung_gib", "load": "scuffing_healing",
+         "asymmetry": "chip_scraper", "stribeck_shape": "thermoviscous_film",
+         "position": "festoon_cable", "inertia": "telescopic_stage",
+         "delay": "lossy_telemetry", "drift": "differential_expansion",
+         "backlash": "jaw_coupling", "gms": "cyclic_hardening"}
+
+
+def _travel(kin: PlantKinematics) -> np.ndarray:
+    """The sliding path [m] along ``kin``'s grid (the integral of |v|), from 0."""
+    v = np.abs(np.asarray(kin.v, float))
+    return np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(kin.t))))
 
 
 # -- acceleration ---------------------------------------------------------------------------
-#: ``tilt_wedge``'s convergence ratio K = (h_in - h_out) / h_out of the pads at a99 speeding
-#: up [-] (beyond K = 1.19 the inclined pad's load falls again); the levels' fall at v99
-#: and the load function's peak at strength 1 [-]; the lowest relative level [-]
-TILT_CONVERGENCE, WEDGE_LIFT, WEDGE_FLOOR = 2.0, 0.6, 0.05
+#: ``sprung_gib``'s holding force of the gib's faces, over its inertial force at a99 [-]
+#: (the play's half-width in a / a99); the levels' change per unit of the gib's shift (in
+#: a / a99) at strength 1 [-]; the lowest relative level [-]
+GIB_HOLD, GIB_PRELOAD, GIB_FLOOR = 0.35, 0.8, 0.05
+#: the gib's travel in its pocket either way from centre (in the units of its shift) [-]
+GIB_TRAVEL = 1.0
 
 
-def _inclined_pad_load(K):
-    """The load function [-] of Michell's inclined plane pad of convergence ratio ``K``
-    [-] (>= 0; the gap falls from (1 + K) h_0 to h_0 in the sliding direction): W h_0^2 /
-    (eta U B^2 L) = (6 / K^2) (ln(1 + K) - 2 K / (2 + K)); K / 2 - 3 K^2 / 4 below 1e-3
-    (its series). 0 for a parallel gap, its largest (0.160) at K = 1.19."""
-    K = np.maximum(np.asarray(K, float), 0.0)
-    small = K < 1e-3
-    Ks = np.where(small, 1.0, K)
-    exact = 6.0 / (Ks * Ks) * (np.log1p(Ks) - 2.0 * Ks / (2.0 + Ks))
-    return np.where(small, 0.5 * K - 0.75 * K * K, exact)
-
-
-#: the inclined pad's largest load function value [-] (at K = 1.19)
-PAD_LOAD_MAX = float(np.max(_inclined_pad_load(np.linspace(0.5, 2.5, 20001))))
+def _gib_shift(a, hold, travel):
+    """The gib's shift [-] (in units of its inertial force at a99 over its spring's
+    stiffness) along the relative accelerations ``a`` [-]: quasi-static, k g + m a is
+    held within +-H by the faces' friction, so g follows the play operator of ``a`` of
+    half-width ``hold`` [-] (``a`` less its stop operator, :func:`.seen11._nest_offset`),
+    within its pocket's ends +-``travel`` [-]; starts centred on the first acceleration's
+    play."""
+    a = np.ascontiguousarray(a, dtype=float)
+    return np.clip(a - _nest_offset(a, hold) - a[0], -travel, travel)
 
 
 @on_fine_grid
-def tilt_wedge_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A carriage on oil-lubricated plain pads, pitched by the acceleration's moment on the
-    pads' compliance (quasi-static: the pitch modes are far faster than the motion).
-    Speeding up (a v > 0), the leading edge rises and each pad forms a converging wedge of
-    convergence ratio K = :data:`TILT_CONVERGENCE` max(a sgn(v), 0) / a99 (the direction
-    rounded over 2 % of v99, the hinge over 2 % of a99); braking, it diverges and lifts
-    nothing (the film cavitates). The wedge's hydrodynamic load, eta U B^2 L f(K) / h_0^2
-    (:func:`_inclined_pad_load`, h_0 set by the asperities), takes that much load off the
-    asperities: the Coulomb and Stribeck levels are the base's times 1 - ``s``
-    :data:`WEDGE_LIFT` (|v| / v99) f(K) / f_max (at least :data:`WEDGE_FLOOR`), inside the
-    bristle dynamics; the viscous term is the base's.
+def sprung_gib_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A slideway whose preload is set by a tapered gib strip, centred by a spring and held
+    in its pocket by the friction of its faces: its inertial force m_g a, with the
+    spring's k g, must pass the holding force H before it shifts along the taper; then
+    it moves until they balance again. Quasi-static (the gib is light and stiffly
+    sprung), its shift is the play operator of a / a99 of half-width :data:`GIB_HOLD`
+    (:func:`_gib_shift`), up to the ends of its pocket, :data:`GIB_TRAVEL` either way.
+    Shifted into the taper it tightens the slideway, out of it it
+    loosens it: the Coulomb and Stribeck levels are the base's times 1 + ``s``
+    :data:`GIB_PRELOAD` x the shift (at least :data:`GIB_FLOOR`), inside the bristle
+    dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
+        The motion on the fine grid (a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the pads' lift per unit of speed and load function (their
-        width squared over the film's), / its value at strength 1.
+        Amplitude factor [-]: the taper's preload per unit of the gib's shift, / its value
+        at strength 1.
 
     Returns
     -------
@@ -160,62 +160,68 @@ def tilt_wedge_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The wedge term of Reynolds' equation (Reynolds 1886, On the theory of lubrication,
-    Phil. Trans. R. Soc. 177) and the inclined plane pad's load (Michell 1905, Z. Math.
-    Phys. 52; Cameron 1981, Basic Lubrication Theory, ch. 4); the pitch of a carriage under
-    its inertial moment. The candidate adds a force odd in a fading with the speed and
-    raises the levels with |a|, lagged; the open forms lag the velocity, a film's speed or
-    a contact state, heat the contact, skid rolling elements, move load between ball rows
-    or supports, press a seal, pull the carriage with the thrust, squeeze the films by the
-    tilt's rate, starve the contact by a sloshing bath or dilate its pores. Here the
-    levels fall only while the carriage speeds up, in proportion to the speed, and not
-    monotonically in |a|: a harder start tilts the pads past their best wedge.
+    The play (backlash) operator of hysteresis (Prandtl 1928; Krasnosel'skii and
+    Pokrovskii 1989, Systems with Hysteresis); tapered gibs setting a slideway's preload
+    (Slocum 1992, Precision Machine Design, ch. 8). The candidate adds a force odd in a
+    fading with the speed and raises the levels with |a|, lagged; the open forms lag the
+    velocity, a film or a contact state, heat the contact, skid rolling elements, move load
+    between rows or supports, press seals, pull with the thrust, squeeze films, starve the
+    contact, dilate it or lift it on a wedge. Here the levels keep what the last hard
+    acceleration left them: a memory of the signed acceleration with a dead band, up
+    after a hard push one way, down after one the other way, unchanged in between.
     """
-    v = np.asarray(kin.v, float)
-    v99 = max(kin.scales["v99"], 1e-12)
-    a99 = max(kin.scales["a99"], 1e-12)
-    up = _smooth_max0(np.asarray(kin.a, float) * _direction(kin) / a99, 0.02)
-    lift = np.abs(v) / v99 * _inclined_pad_load(TILT_CONVERGENCE * up) / PAD_LOAD_MAX
-    lev = 1.0 - max(float(s), 0.0) * WEDGE_LIFT * lift
-    return level_inside(kin, np.clip(lev, WEDGE_FLOOR, None), np.ones_like(lev))
+    shift = _gib_shift(np.asarray(kin.a, float) / max(kin.scales["a99"], 1e-12), GIB_HOLD,
+                       GIB_TRAVEL)
+    lev = 1.0 + max(float(s), 0.0) * GIB_PRELOAD * shift
+    return level_inside(kin, np.clip(lev, GIB_FLOOR, None), np.ones_like(lev))
 
 
 # -- load -------------------------------------------------------------------------------------
-#: ``flash_desorption``'s critical flash temperature, relative to that of the mean load at
-#: v99 [-]; the width of the film's desorption in it [-]; the levels' rise where the film
-#: has desorbed at strength 1 [-]
-DESORPTION_AT, DESORPTION_WIDTH, DESORPTION_RISE = 1.0, 0.04, 0.8
+#: ``scuffing_healing``'s critical loads where the film fails and heals, as shares of the
+#: load's range [-]; the sliding distance a transition takes, x the record's travel [-];
+#: the levels' rise where the film has failed at strength 1 [-]
+SCUFF_AT, HEAL_AT, SCUFF_PATH, SCUFF_RISE = 0.65, 0.35, 0.02, 0.6
 
 
-def _desorbed(L, v, at, width):
-    """The share [-] of the boundary film desorbed at the relative loads ``L`` [-] and
-    speeds ``v`` [-] (over the mean load and v99): the flash temperature of Hertzian
-    contacts at high Peclet number, ~ sqrt(L |v|) relative to that of the mean load at
-    v99, against the film's critical temperature ``at`` [-], desorbing over ``width`` [-]
-    as a Langmuir film's coverage, 1 / (1 + exp(-(T - T_c) / width))."""
-    T = np.sqrt(np.clip(np.asarray(L, float), 0.0, None) * np.abs(np.asarray(v, float)))
-    return 0.5 * (1.0 + np.tanh(0.5 * (T - at) / width))
+@njit(cache=True)
+def _scuffed(path, L, hi, lo, ell):
+    """The failed share [-] of the boundary film along the sliding ``path`` [m] and loads
+    ``L`` [N]: above ``hi`` [N] it fails, below ``lo`` [N] it heals, each towards its end
+    exponentially over the path ``ell`` [m]; in between it keeps its state (a relay of the
+    load). Starts intact."""
+    n = L.size
+    out = np.empty(n)
+    phi = 0.0
+    out[0] = 0.0
+    for k in range(1, n):
+        e = math.exp(-(path[k] - path[k - 1]) / ell)
+        if L[k] >= hi:
+            phi = 1.0 + (phi - 1.0) * e
+        elif L[k] <= lo:
+            phi = phi * e
+        out[k] = phi
+    return out
 
 
 @on_fine_grid
-def flash_desorption_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """An adsorbed boundary film (a fatty acid, a friction modifier) that desorbs where the
-    asperity contacts' flash temperature passes its critical temperature: the flash
-    temperature of a moving heat source mu L v over Hertzian contacts (radius ~ L^(1/3)) at
-    high Peclet number is ~ L^(1/2) |v|^(1/2), here relative to that of the mean load at
-    v99; the film's critical temperature is :data:`DESORPTION_AT` of it, its desorption
-    :data:`DESORPTION_WIDTH` wide (:func:`_desorbed`). Where it has desorbed the metal
-    touches: the Coulomb and Stribeck levels are the base's times 1 + ``s``
-    :data:`DESORPTION_RISE` x the desorbed share, inside the bristle dynamics; the
-    viscous term is the base's. ValueError if the load does not change.
+def scuffing_healing_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A boundary film that fails where the load passes a critical value (scuffing: the
+    adsorbed film and then the oxide break through) and re-forms only where the load has
+    fallen below a lower one (the film heals once the contact is light enough): the
+    critical loads are :data:`SCUFF_AT` and :data:`HEAL_AT` of the load's range above its
+    least, each transition completed over the sliding distance :data:`SCUFF_PATH` x the
+    record's travel (:func:`_scuffed`). Where it has failed the metal touches: the
+    Coulomb and Stribeck levels are the base's times 1 + ``s`` :data:`SCUFF_RISE` x the
+    failed share, inside the bristle dynamics; the viscous term is the base's. ValueError
+    if the load does not change.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (v [m/s], load [N]) and its base law.
+        The motion on the fine grid (t [s], v [m/s], load [N]) and its base law.
     s : float
-        Amplitude factor [-]: the bare metal's friction over the film's, minus 1, /
-        :data:`DESORPTION_RISE`.
+        Amplitude factor [-]: the bare contact's friction over the film's, minus 1, /
+        :data:`SCUFF_RISE`.
 
     Returns
     -------
@@ -224,270 +230,77 @@ def flash_desorption_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Blok's critical temperature hypothesis (Blok 1937, Theoretical study of temperature
-    rise at surfaces of actual contact under oiliness lubricating conditions, Proc. Inst.
-    Mech. Eng. General Discussion on Lubrication 2); moving heat sources (Jaeger 1942,
-    Proc. R. Soc. N.S.W. 76; Archard 1959, The temperature of rubbing surfaces, Wear 2);
-    the desorption of boundary films at a critical temperature (Frewing 1944, Proc. R. Soc.
-    A 182; Bowden and Tabor 1950, The Friction and Lubrication of Solids). The candidate's
-    levels are affine in the load (with a direction's slope, a viscous slope and a memory
-    over the travel); the open forms are powers, one direction, a square-root viscous term,
-    the Stribeck velocity, a logistic step of the load, a creep in time, the load's rate,
-    a play, a ratchet with the travel, a hinge at a capacity, a lag while it rises, an
-    exponential viscous term and a saturating contact area. Here the load acts through the
-    speed: at rest and in slow strokes it changes nothing, in fast ones it decides whether
-    the film holds.
+    Scuffing as the failure of the boundary film at a critical load (Dyson 1975, Scuffing -
+    a review, Tribology 8; the IRG transition diagrams, de Gee, Begelinger and Salomon
+    1985); the healing of boundary films (Bowden and Tabor 1950, The Friction and
+    Lubrication of Solids). The candidate's levels are affine in the load; the open forms
+    are powers, one direction, square-root and exponential viscous terms, the Stribeck
+    velocity, a logistic step, a creep in time, the load's rate, a play, a ratchet with
+    the travel, a hinge, a lag while it rises, a saturating area and a flash temperature.
+    Here a relay: between the two critical loads the levels are those of the last one
+    passed, and they change with the travel, not at once.
     """
     L = np.asarray(kin.load, float)
     L0 = max(float(np.mean(np.abs(L))), 1e-12)
     # a change below 1e-6 of the mean load over the record is round-off, not a change
     if float(np.ptp(L)) <= 1e-6 * L0:
-        raise ValueError(f"load (flash_desorption): the {kin.plant} record's load does not "
+        raise ValueError(f"load (scuffing_healing): the {kin.plant} record's load does not "
                          f"change")
-    v = np.asarray(kin.v, float) / max(kin.scales["v99"], 1e-12)
-    phi = _desorbed(L / L0, v, DESORPTION_AT, DESORPTION_WIDTH)
-    lev = 1.0 + max(float(s), 0.0) * DESORPTION_RISE * phi
+    path = _travel(kin)
+    lo, span = float(np.min(L)), float(np.ptp(L))
+    phi = _scuffed(path, np.ascontiguousarray(L), lo + SCUFF_AT * span, lo + HEAL_AT * span,
+                   SCUFF_PATH * max(float(path[-1]), 1e-300))
+    lev = 1.0 + max(float(s), 0.0) * SCUFF_RISE * phi
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- asymmetry -------------------------------------------------------------------------------
-#: ``helical_buckling``'s channel entry below the stroke the record visits, x that stroke
-#: [-] (the cable's length in the channel runs from it to the carriage); the cable's
-#: B l (its length over its lock-up length, x pi / 2) at the stroke's far end [-]; the
-#: largest B l (the drive's force limit near lock-up) [-]; the pushed cable's drag at the
-#: stroke's middle at strength 1, x the friction level [-]
-CHANNEL_ENTRY, BUCKLING_REACH, BUCKLING_MAX, BUCKLING_DRAG = 4.0, 1.0, 1.45, 0.6
-
-
-def _cable_drag(ell, direction, B):
-    """The drag [-] (per unit of the cable's A = sqrt(4 E I w / r)) of a cable ``ell`` [m]
-    long in its channel, moved along it: pulled (``direction`` 1), the friction of its
-    weight, mu w l = A B l; pushed (-1), helically buckled: dF/dl = mu (w + r F^2 / (4 E
-    I)), F = A tan(B l) (B = mu sqrt(w r / (4 E I)) [1/m], B l at most
-    :data:`BUCKLING_MAX`); in between (a rounded direction) their blend. Positive: it
-    opposes the motion."""
-    Bl = np.minimum(B * np.asarray(ell, float), BUCKLING_MAX)
-    d = np.asarray(direction, float)
-    return 0.5 * (1.0 + d) * Bl + 0.5 * (1.0 - d) * np.tan(Bl)
-
-
-@on_fine_grid
-def helical_buckling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A cable (a hose, a push-pull rod) fixed to the carriage and dragged in a channel
-    whose entry lies :data:`CHANNEL_ENTRY` strokes below the stroke the record visits: the
-    length in the channel is l = x - x_e. Moving up (v > 0) the carriage pulls it, and it
-    slides with the friction of its weight; moving down it pushes it, the cable buckles
-    into a helix against the channel's wall, and the wall's contact force, r F^2 / (4 E I)
-    per length, makes the compression grow as tan(B l) (:func:`_cable_drag`), B set so
-    that B l is :data:`BUCKLING_REACH` at the stroke's far end. The drag, opposing the
-    motion (the direction rounded over 2 % of v99), is added to the base's force; at
-    strength 1 the pushed cable's at the stroke's middle is :data:`BUCKLING_DRAG` x the
-    friction level.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law.
-    s : float
-        Amplitude factor [-]: the cable's weight per length (its bending stiffness in
-        proportion: its lock-up length fixed), / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    The wall contact force of a helically buckled tube (Lubinski, Althouse and Logan 1962,
-    Helical buckling of tubing sealed in packers, J. Petrol. Technol. 14) and the lock-up
-    of coiled tubing pushed along a horizontal well (Wu and Juvkam-Wold 1995, Coiled tubing
-    buckling implication in drilling and completing horizontal wells, SPE Drilling and
-    Completion 10); push-pull cables and hoses dragged along with a carriage. The
-    candidate shifts a direction's levels and viscous slope (and an offset); the open forms
-    keep a direction's share, move its Stribeck velocity, viscous slope or tail, roll a
-    lip, follow a thrust, a film laid by the outstroke, a texture, a return spring, a wedge
-    film, a strut, a throttle, a cylinder's areas or grooves that pump. Here the direction
-    pushed drags more, the more the longer the cable pushed: tan of the length, near its
-    lock-up.
-    """
-    F, _ = _base_parts(kin)
-    span = _span(kin)
-    ell = np.asarray(kin.x, float) - (kin.scales["x_lo"] - CHANNEL_ENTRY * span)
-    B = BUCKLING_REACH / ((CHANNEL_ENTRY + 1.0) * span)
-    A = BUCKLING_DRAG * _level(kin) / math.tan(B * (CHANNEL_ENTRY + 0.5) * span)
-    drag = _cable_drag(ell, _direction(kin), B)
-    return F + max(float(s), 0.0) * A * _direction(kin) * drag
-
-
-# -- stribeck_shape --------------------------------------------------------------------------
-#: ``readsorption``'s speed v_a = lambda / tau_a (the asperities' spacing over the
-#: lubricant's adsorption time), x v99 [-]; the bare metal's levels over the covered
-#: surface's, minus 1, at strength 1 [-]
-READSORPTION_SPEED, BARE_RISE = 0.5, 0.6
-
-
-def _uncovered(v, va):
-    """The share [-] of the surface left bare at the next asperity encounter at the speeds
-    ``v`` [m/s]: a spot exposed for t_e = lambda / |v| re-adsorbs the lubricant as 1 -
-    exp(-t_e / tau_a) (first-order adsorption), so exp(-``va`` / |v|), ``va`` = lambda /
-    tau_a [m/s]; 0 at rest."""
-    a = np.abs(np.asarray(v, float))
-    return np.exp(-va / np.maximum(a, 1e-300))
-
-
-@on_fine_grid
-def readsorption_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A boundary lubricant (an additive adsorbing from the oil) that the asperity
-    encounters strip off and that re-adsorbs between two of them: a spot is exposed for
-    the time lambda / |v| between encounters and is covered again as 1 - exp(-t / tau_a),
-    so the share left bare at the next encounter is exp(-v_a / |v|) (:func:`_uncovered`;
-    v_a = :data:`READSORPTION_SPEED` v99). The bare share rubs metal on metal: the Stribeck
-    curve is the base's times 1 + ``s`` :data:`BARE_RISE` exp(-v_a / |v|), inside the
-    bristle dynamics; the viscous term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law (a Stribeck curve).
-    s : float
-        Amplitude factor [-]: the bare metal's levels over the covered surface's, minus 1,
-        / :data:`BARE_RISE`.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    The coverage of a boundary lubricant set by the time between asperity encounters and
-    its adsorption rate (Kingsbury 1960, Heat of adsorption of a boundary lubricant, ASLE
-    Trans. 3; Rowe 1966, Some aspects of the heat of adsorption in the function of a
-    boundary lubricant, ASLE Trans. 9). The candidate bends the base's drop (an exponent,
-    the Lorentzian, a log-speed map over 2.5 decades); the open forms add tails, drops, a
-    spike, a lift-off, a second drop, a logarithmic weakening, an Eyring strengthening, a
-    rise at the top speed, a hump, a notch, a dither's loss of stiction, a melt's fall
-    and a granular layer's rational rise from rest. Here nothing changes at low speed
-    (flat to all orders: exp(-v_a / |v|)), then the levels step up over a decade of speed
-    towards the bare metal's.
-    """
-    if kin.base.name == "mre_lugre":
-        raise ValueError("stribeck_shape (readsorption): the mre_lugre base has no "
-                         "Stribeck curve")
-    va = READSORPTION_SPEED * max(kin.scales["v99"], 1e-12)
-    lev = 1.0 + max(float(s), 0.0) * BARE_RISE * _uncovered(kin.v, va)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- position --------------------------------------------------------------------------------
-#: ``beam_sag``'s supports beyond the stroke the record visits, each x that stroke [-];
-#: the largest force of the sag at strength 1 (the carriage's weight times the beam's
-#: largest slope under it), x the friction level [-]
-SUPPORT_MARGIN, SAG_FORCE = 0.1, 0.8
-
-
-def _sag_pull(u):
-    """The slope [-] of a simply supported beam under a point load at the share ``u`` [-]
-    of its span, at the load, over its largest value: P a b (b - a) / (3 E I L) with a =
-    u L, b = (1 - u) L, i.e. u (1 - u) (1 - 2 u) over its peak (at u = 1/2 - sqrt(3)/6);
-    0 at the supports and at midspan, odd about midspan. The load sits in its own
-    deflection, so moving it on takes P times this slope (the work into the beam)."""
-    u = np.clip(np.asarray(u, float), 0.0, 1.0)
-    peak = (0.5 - math.sqrt(3.0) / 6.0) * (0.5 + math.sqrt(3.0) / 6.0) * math.sqrt(3.0) / 3.0
-    return u * (1.0 - u) * (1.0 - 2.0 * u) / peak
-
-
-@on_fine_grid
-def beam_sag_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage runs on a beam (a gantry's cross-beam, a bridge rail) simply supported
-    :data:`SUPPORT_MARGIN` x the stroke beyond each end of the stroke the record visits,
-    which sags under the carriage's weight P: at every position the carriage sits in its
-    own deflection, whose slope under it is P a b (b - a) / (3 E I L) (:func:`_sag_pull`).
-    Its potential energy falls towards midspan, so the beam draws it there with P times
-    that slope: the drive's force is the base's minus that pull, whatever the direction of
-    motion and at rest alike; its largest at strength 1 is :data:`SAG_FORCE` x the
-    friction level. The contact's friction is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (x [m]) and its base law.
-    s : float
-        Amplitude factor [-]: P^2 L^2 / (E I), / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    The moving load on an elastic beam (Timoshenko 1922, On the forced vibrations of
-    bridges, Phil. Mag. 43; Fryba 1972, Vibration of Solids and Structures under Moving
-    Loads), here quasi-static; gantries and bridge cranes whose carriages run towards the
-    middle of a sagging beam. The candidate scales the friction along the stroke (a map, a
-    waviness of two harmonics, a defect) and adds a periodic force of x; the open forms are
-    level maps (a defect, waviness, a worn section, runout, a bow, a transfer film, a
-    taper, a port's wake), a periodic detent force, a cushion's orifice drag, a cover's
-    staircase, a trapped gas spring, a seal over bolt holes and a plunger's Couette drag.
-    Here one force of the position alone over the whole stroke, odd about the span's
-    middle (the cubic of the beam's influence line), not periodic and not a level.
-    """
-    if _bump_centre(kin) is None:
-        raise ValueError(f"position (beam_sag): the held-out part of the {kin.plant} record "
-                         f"never revisits the positions of its fit part")
-    F, _ = _base_parts(kin)
-    span = _span(kin)
-    lo = kin.scales["x_lo"] - SUPPORT_MARGIN * span
-    u = (np.asarray(kin.x, float) - lo) / ((1.0 + 2.0 * SUPPORT_MARGIN) * span)
-    return F - max(float(s), 0.0) * SAG_FORCE * _level(kin) * _sag_pull(u)
-
-
-# -- inertia ---------------------------------------------------------------------------------
-#: ``fluid_coupling``'s part mass at strength 1, x the friction level / a99 [kg per N s^2/m];
-#: the coupling's lag at v99 (the part's mass over its torque's slope in the slip there), x
-#: the motion's time scale [-]; the part's own spin-down time on its bearings, x the
-#: motion's time scale [-]
-FLUID_MASS, FLUID_LAG, SPIN_DOWN = 0.4, 0.2, 20.0
+#: ``chip_scraper``'s travel over which the pile fills (spills round the blade), and over
+#: which it is dropped after a reversal, x the stroke the record visits [-]; the full
+#: pile's drag at strength 1, x the friction level [-]
+PILE_FILL, PILE_DROP, PILE_DRAG = 0.3, 0.01, 0.6
 
 
 @njit(cache=True)
-def _fluid_part(t, v, vc, tau_d):
-    """The speed [m/s] of a part driven through a fluid coupling along the axis speeds
-    ``v`` [m/s] at the times ``t`` [s]: w' = (v |v| - w |w|) / ``vc`` - w / ``tau_d``
-    (``vc`` [m], the coupling's torque over the part's mass ~ the difference of the wheels'
-    heads; ``tau_d`` [s] its spin-down on its bearings), the w |w| and w terms taken at the
-    new step (stable at any step). Starts at the axis's speed."""
+def _pile(t, v_push, v_back, fill, drop):
+    """The pile [-] (over the full one) a scraper pushes along the times ``t`` [s]: it
+    gathers at the pushing speeds ``v_push`` [m/s] (>= 0) as p' = v_push (1 - p) / ``fill``
+    (the film's chips per travel, spilling round the blade as it fills) and is left
+    behind at the return speeds ``v_back`` [m/s] (>= 0) as p' = -v_back p / ``drop``; each
+    step exact at its start's rates. Starts empty."""
     n = t.size
-    w = np.empty(n)
-    w[0] = v[0]
+    out = np.empty(n)
+    p = 0.0
+    out[0] = 0.0
     for k in range(1, n):
         h = t[k] - t[k - 1]
-        w[k] = (w[k - 1] + h * v[k] * abs(v[k]) / vc) / (1.0 + h * abs(w[k - 1]) / vc
-                                                          + h / tau_d)
-    return w
+        up = v_push[k - 1] / fill
+        rate = up + v_back[k - 1] / drop
+        if rate > 0.0:
+            target = up / rate
+            p = target + (p - target) * math.exp(-rate * h)
+        out[k] = p
+    return out
 
 
 @on_fine_grid
-def fluid_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A rotating part (a drum, a roll) driven from the axis through a hydrodynamic fluid
-    coupling: the torque is the difference of the wheels' heads, ~ omega_p |omega_p| -
-    omega_t |omega_t| (Euler's turbine equation; the coupling's similarity law, T ~ rho
-    omega^2 D^5 at a given slip), so in axis units the part's speed w follows w' = (v |v| -
-    w |w|) / v_c (:func:`_fluid_part`; it spins down on its bearings over
-    :data:`SPIN_DOWN` x the motion's time scale): linearised, a lag v_c / (2 |v|),
-    :data:`FLUID_LAG` x the motion's time scale at v99, longer the slower the axis. The
-    inverse dynamics misses the force the coupling takes, m (v |v| - w |w|) / v_c, m =
-    ``s`` :data:`FLUID_MASS` x the friction level / a99; it is added to the base's force.
+def chip_scraper_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A way scraper (a wiper blade) on the carriage, angled so that moving up (v > 0) it
+    bulldozes the chips and coolant lying on the way ahead of it, while moving down it
+    rides over them and leaves its pile behind: the pile gathers with the travel since the
+    last reversal and spills round the blade as it fills, over :data:`PILE_FILL` x the
+    stroke; it is dropped over :data:`PILE_DROP` x the stroke after a reversal
+    (:func:`_pile`; the direction rounded over 2 % of v99). Pushing it takes a drag in
+    proportion to it (a blade's bulldozing resistance, ~ the pile's weight), ``s``
+    :data:`PILE_DRAG` x the friction level when full, added to the base's force.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the part's mass (the coupling's size with it: its lag
-        fixed), / its value at strength 1.
+        Amplitude factor [-]: the chips per travel lying on the way (the full pile's
+        weight), / its value at strength 1.
 
     Returns
     -------
@@ -496,67 +309,211 @@ def fluid_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Hydrodynamic couplings (Foettinger 1905, the fluid transmitter; its torque ~ rho omega^2
-    D^5 lambda(slip)); conveyor and drum drives started through fluid couplings. The
-    candidate and the open forms are masses (constant, filtered, along the stroke, through
-    a ratio or a lossy gear, in time, behind a spring, in a fluid, with the speed), a
-    payload held by Coulomb friction or carried between two zones, a part rattling in a
-    pocket, a flywheel through a freewheel and a part behind an eddy-current coupling,
-    whose force follows the slip speed whatever the speed; here the coupling's stiffness in
-    the slip grows with the speed itself: at speed the part follows closely, near rest the
-    coupling transmits almost nothing and through a reversal the part runs on.
+    The fundamental earthmoving equation of a blade's resistance (Reece 1964, Proc. Inst.
+    Mech. Eng. 179; McKyes 1985, Soil Cutting and Tillage); way wipers and scrapers of
+    machine tools pushing chips. The candidate shifts a direction's levels and viscous
+    slope (and an offset); the open forms keep a direction's share, its Stribeck velocity,
+    viscous slope or tail, roll a lip, follow a thrust, a film laid by the outstroke, a
+    texture, a return spring, a wedge film, a strut, a throttle, a cylinder's areas,
+    pumping grooves or a buckling cable. Here the direction pushing drags more the farther
+    it has gone since the reversal, the same wherever along the stroke it turned.
     """
     F, _ = _base_parts(kin)
-    if s <= 0.0:
-        return F
-    T = max(_motion_time(kin), 1e-12)
-    v = np.ascontiguousarray(kin.v, dtype=float)
-    vc = 2.0 * max(kin.scales["v99"], 1e-12) * FLUID_LAG * T
-    w = _fluid_part(np.ascontiguousarray(kin.t, dtype=float), v, vc, SPIN_DOWN * T)
-    m = float(s) * FLUID_MASS * _level(kin) / max(kin.scales["a99"], 1e-12)
-    return F + m * (v * np.abs(v) - w * np.abs(w)) / vc
+    d = _direction(kin)
+    v = np.asarray(kin.v, float)
+    span = _span(kin)
+    p = _pile(np.ascontiguousarray(kin.t, dtype=float),
+              np.ascontiguousarray(0.5 * (1.0 + d) * np.maximum(v, 0.0)),
+              np.ascontiguousarray(0.5 * (1.0 - d) * np.maximum(-v, 0.0)),
+              PILE_FILL * span, PILE_DROP * span)
+    return F + max(float(s), 0.0) * PILE_DRAG * _level(kin) * p * 0.5 * (1.0 + d)
 
 
-# -- delay -----------------------------------------------------------------------------------
-#: ``aerated_load_cell``'s lag at the cell's preload pressure (zero force) at strength 1
-#: [data samples]; the preload, x the record's largest |force| (the pressure is p_0 (1 +
-#: F / F_p)) [-]
-AIR_LAG, CELL_PRELOAD = 3.0, 2.5
+# -- stribeck_shape --------------------------------------------------------------------------
+#: ``thermoviscous_film``'s Nahme-Griffith number at v99 (the viscous heating's rise of
+#: beta T) [-]; the film's drag at v99 without heating at strength 1, x the friction
+#: level [-]
+NAHME_AT_TOP, THERMO_DRAG = 4.0, 0.8
 
 
-@njit(cache=True)
-def _aerated_lag(t, F, tau0, Fp):
-    """What the transducer reads [N] of the force ``F`` [N] at the times ``t`` [s]: the
-    pressure p = p_0 (1 + F / ``Fp``) reaches it through a restrictor into a volume whose
-    entrained air's compliance is ~ (p_0 / p)^2 (isothermal gas), so its reading y lags by
-    tau(y) = ``tau0`` / (1 + y / ``Fp``)^2 [s], exact for each step at that lag (the
-    pressure at least 1e-3 p_0). Starts at the first force."""
-    n = t.size
-    y = np.empty(n)
-    y[0] = F[0]
-    for k in range(1, n):
-        p = max(1.0 + y[k - 1] / Fp, 1e-3)
-        e = math.exp(-(t[k] - t[k - 1]) * p * p / tau0)
-        y[k] = F[k] + (y[k - 1] - F[k]) * e
-    return y
+def _thermal_thinning(u, nahme):
+    """The film's drag [-] at the relative speeds ``u`` [-] (over v99), over its unheated
+    drag at v99: u exp(-x), the viscosity's thinning x = beta dT solving x = N u^2 exp(-x)
+    (the heat of the shear at that viscosity, Nahme-Griffith number ``nahme`` [-] at v99),
+    i.e. x = W(N u^2) (Lambert's W)."""
+    u = np.asarray(u, float)
+    x = np.real(lambertw(nahme * u * u))
+    return u * np.exp(-x)
 
 
 @on_fine_grid
-def aerated_load_cell_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force read as the pressure of a hydraulic load cell (a pressure capsule)
-    preloaded to p_0, so that p = p_0 (1 + F / F_p) (F_p = :data:`CELL_PRELOAD` x the
-    record's largest |force|) stays positive whatever the force's sign; the transducer
-    sits behind a damping restrictor, and its oil holds entrained air whose compliance,
-    isothermal, is ~ (p_0 / p)^2: the reading follows the pressure with the lag tau(p) =
-    tau_0 (p_0 / p)^2 (:func:`_aerated_lag`), tau_0 = ``s`` :data:`AIR_LAG` data samples.
-    At ``s`` = 0 the force itself.
+def thermoviscous_film_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A full lubricant film in the contact beside its asperities whose shear heats it:
+    its viscosity falls as exp(-beta dT) (Reynolds' viscosity law) with the temperature
+    rise dT the shear's heat eta v^2 makes through the film, so beta dT = x solves x = N
+    u^2 exp(-x) (u = v / v99, N = :data:`NAHME_AT_TOP` the Nahme-Griffith number at v99):
+    the film's drag ~ u exp(-W(N u^2)) (:func:`_thermal_thinning`) rises linearly, peaks
+    and falls at speed. It is added to the base's force, ``s`` :data:`THERMO_DRAG` x the
+    friction level at v99 without heating.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s]) and its base law.
+        The motion on the fine grid (v [m/s]) and its base law (a Stribeck curve).
     s : float
-        Amplitude factor [-]: the volume of air entrained (the lag at the preload), /
+        Amplitude factor [-]: the film's unheated viscosity (its area over its
+        thickness), / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Viscous heating and thermal thinning of lubricant films (the Nahme-Griffith number,
+    Nahme 1940, Ing.-Arch. 11; Crook 1961, The lubrication of rollers III, Phil. Trans. R.
+    Soc. A 254; Johnson and Greenwood 1980, Thermal analysis of an Eyring fluid in
+    elastohydrodynamic traction, Wear 61). The candidate bends the base's drop (an
+    exponent, the Lorentzian, a log-speed map); the open forms add tails, drops, a spike,
+    a lift-off, a second drop, logarithmic weakening, Eyring strengthening, a rise at the
+    top speed, a hump, a notch, a dither, a melt, a granular rise and re-adsorption. Here
+    a viscous drag that is linear at low speed and falls beyond its peak: thermal
+    runaway of the film, not a boundary level.
+    """
+    if kin.base.name == "mre_lugre":
+        raise ValueError("stribeck_shape (thermoviscous_film): the mre_lugre base has no "
+                         "Stribeck curve")
+    F, _ = _base_parts(kin)
+    u = np.asarray(kin.v, float) / max(kin.scales["v99"], 1e-12)
+    drag = _thermal_thinning(u, NAHME_AT_TOP)
+    return F + max(float(s), 0.0) * THERMO_DRAG * _level(kin) * drag
+
+
+# -- position --------------------------------------------------------------------------------
+#: ``festoon_cable``'s anchor below the stroke the record visits, x that stroke [-]; the
+#: cable's length over its span at the stroke's far end [-]; the tension's change over the
+#: stroke at strength 1, x the friction level [-]
+FESTOON_ANCHOR, FESTOON_SLACK, FESTOON_FORCE = 0.5, 1.05, 0.8
+
+
+def _catenary_tension(d, length):
+    """The horizontal tension [-] (x the cable's weight per length times its length) of a
+    cable of ``length`` [m] hung between two points ``d`` [m] apart at one height: beta =
+    w d / (2 H) solves sinh(beta) / beta = r = length / d (Newton's iteration from the
+    shallow cable's sqrt(6 (r - 1)), damped), H / (w length) = d / (2 beta length)."""
+    r = length / np.asarray(d, float)
+    beta = np.sqrt(6.0 * (r - 1.0)) / (1.0 + 0.1 * np.sqrt(6.0 * (r - 1.0)))
+    for _ in range(60):
+        f = np.sinh(beta) / beta - r
+        df = (beta * np.cosh(beta) - np.sinh(beta)) / (beta * beta)
+        beta = np.maximum(beta - f / df, 1e-6)
+    return np.asarray(d, float) / (2.0 * beta * length)
+
+
+@on_fine_grid
+def festoon_cable_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A cable (a festoon: a power cable, a hose) hanging in a catenary from an anchor
+    :data:`FESTOON_ANCHOR` x the stroke below the stroke the record visits to the carriage,
+    :data:`FESTOON_SLACK` x the span at the stroke's far end long: its horizontal tension H,
+    from sinh(beta) / beta = length / span, beta = w span / (2 H)
+    (:func:`_catenary_tension`), pulls the carriage towards the anchor, slack near it and
+    rising steeply as the cable nears taut. The drive's force is the base's plus H (its
+    least over the stroke taken off: the cable's pull at the near end is an offset no
+    mechanism of the friction explains), scaled so that its change over the stroke is
+    ``s`` :data:`FESTOON_FORCE` x the friction level, whatever the direction and at rest
+    alike. The contact's friction is the base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (x [m]) and its base law.
+    s : float
+        Amplitude factor [-]: the cable's weight per length, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    The elastic catenary (Irvine 1981, Cable Structures); festoon cable systems of cranes
+    and gantries. The candidate scales the friction along the stroke and adds a periodic
+    force of x; the open forms are level maps, a periodic detent force, a cushion's
+    drag, a cover's staircase, a gas spring, bolt holes, a plunger's drag and a sagging
+    beam's pull towards its middle. Here one force of the position alone, monotonic over
+    the stroke and steepening towards its far end as the cable's sag vanishes.
+    """
+    if _bump_centre(kin) is None:
+        raise ValueError(f"position (festoon_cable): the held-out part of the {kin.plant} "
+                         f"record never revisits the positions of its fit part")
+    F, _ = _base_parts(kin)
+    span = _span(kin)
+    anchor = kin.scales["x_lo"] - FESTOON_ANCHOR * span
+    length = FESTOON_SLACK * (1.0 + FESTOON_ANCHOR) * span
+    d = np.clip(np.asarray(kin.x, float) - anchor, 1e-3 * span, None)
+    H = _catenary_tension(d, length)
+    lo = float(_catenary_tension(FESTOON_ANCHOR * span, length))
+    hi = float(_catenary_tension((1.0 + FESTOON_ANCHOR) * span, length))
+    return F + max(float(s), 0.0) * FESTOON_FORCE * _level(kin) * (H - lo) / (hi - lo)
+
+
+# -- inertia ---------------------------------------------------------------------------------
+#: ``telescopic_stage``'s mass at strength 1, x the friction level / a99 [kg per N s^2/m];
+#: the carriage's free travel inside it, x the stroke the record visits [-]; its own guide
+#: friction, x its inertial force at a99 [-]; the stops' contact period, x the motion's
+#: time scale [-]
+STAGE_MASS, STAGE_PLAY, STAGE_FRICTION, STOP_PERIOD = 1.0, 0.3, 0.1, 0.1
+
+
+@njit(cache=True)
+def _stage_force(h, xd, half, m, fs, k, c):
+    """The force [N] the carriage at the drive positions ``xd`` [m] (step ``h`` [s]) exerts
+    on a stage of mass ``m`` [kg] it runs inside with a free travel of +-``half`` [m]: at
+    either stop a spring ``k`` [N/m] and damper ``c`` [N s/m] (compressive only); the stage
+    slides on its guides with the Coulomb force ``fs`` [N] and sticks where that holds it.
+    Semi-implicit Euler of the stage. Starts centred, at rest."""
+    n = xd.size
+    out = np.empty(n)
+    y = xd[0]
+    w = 0.0
+    for j in range(n):
+        vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
+        e = xd[j] - y
+        f = 0.0
+        if e > half:
+            f = max(k * (e - half) + c * (vd - w), 0.0)
+        elif e < -half:
+            f = min(k * (e + half) + c * (vd - w), 0.0)
+        out[j] = f
+        if w != 0.0:
+            wn = w + h * (f - fs * (1.0 if w > 0.0 else -1.0)) / m
+            w = 0.0 if wn * w < 0.0 else wn
+        elif abs(f) > fs:
+            w = h * (f - fs * (1.0 if f > 0.0 else -1.0)) / m
+        y = y + h * w
+    return out
+
+
+@on_fine_grid
+def telescopic_stage_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage runs inside a second (outer) stage of a telescopic axis with a free
+    travel of :data:`STAGE_PLAY` x the stroke between two end stops: inside it the stage
+    stays where it was left, held by its own guides' Coulomb friction (a deceleration of
+    :data:`STAGE_FRICTION` a99); at a stop the carriage entrains it through the stop's
+    damped spring (rubber buffers: a contact period :data:`STOP_PERIOD` x the motion's time
+    scale, critically damped) and pushes or pulls it along until it slows faster than the stage's
+    friction stops it (:func:`_stage_force`, on sub-steps). The inverse dynamics misses
+    the stage: its force is added to the base's; the stage's mass is ``s``
+    :data:`STAGE_MASS` x the friction level / a99.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s], x [m]) and its base law.
+    s : float
+        Amplitude factor [-]: the stage's mass (its guides' friction in proportion), /
         its value at strength 1.
 
     Returns
@@ -566,65 +523,124 @@ def aerated_load_cell_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The effective bulk modulus of oil with entrained air (Merritt 1967, Hydraulic Control
-    Systems, ch. 2: the gas's compliance V_g p_0 / p^2), hydraulic load cells and the
-    snubbers (restrictors) in front of pressure transducers. The open forms delay by one
-    amount (a shift, a hold, a transport), filter linearly (a lag, Bessel, a moving average,
-    a converter's FIR, a line's echoes) or by rank (a running median), let the delay drift,
-    wander or grow with the force's rate or its slowness, with the motion's slowness or
-    with the position, or shift the motion; here the lag is set by the force's own level:
-    long where the force pulls (the capsule unloads), short where it pushes.
+    Vibro-impact systems (Babitsky 1998, Theory of Vibro-Impact Systems and
+    Applications); multi-stage telescopic slides and telescopic forks, whose outer stages
+    are picked up at the inner stage's stops. The candidate's mass is constant, varies in
+    time, along the stroke or with the squared speed, or holds a coupled part that slips;
+    the open forms filter, flex, gear, lose, add fluid mass, dispense, slide a payload,
+    rattle a part across a small pocket, freewheel, carry a payload between zones or
+    couple through eddies, flyweights or a fluid coupling. Here the stage is picked up
+    only after the carriage has run through a third of the stroke from where it turned,
+    and left behind where the carriage slows: the mass depends on the travel's history.
     """
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    Fp = CELL_PRELOAD * max(float(np.max(np.abs(F))), 1e-300)
-    return _aerated_lag(np.ascontiguousarray(kin.t, dtype=float), np.ascontiguousarray(F),
-                        float(s) * AIR_LAG * kin.sample_dt, Fp)
+    T = max(_motion_time(kin), 1e-12)
+    a99 = max(kin.scales["a99"], 1e-12)
+    m = float(s) * STAGE_MASS * _level(kin) / a99
+    omega = 2.0 * math.pi / (STOP_PERIOD * T)
+    k = m * omega * omega
+    c = 2.0 * math.sqrt(k * m)
+    h, xd, n_sub = _substeps(kin, omega)
+    f = _stage_force(h, xd, 0.5 * STAGE_PLAY * _span(kin), m, STAGE_FRICTION * m * a99, k,
+                     c)
+    return F + f[::n_sub]
 
 
-# -- drift -----------------------------------------------------------------------------------
-#: ``particle_ingress``'s particles over the record [-]; their seed [-]; the travel over
-#: which one is worn down or ejected, and over which it is pressed in, x the record's
-#: travel [-]; the levels' rise of a particle of mean size at strength 1 [-]
-PARTICLES, PARTICLE_SEED, PARTICLE_WEAR, PARTICLE_PRESS, PARTICLE_RISE = \
-    8, 2026, 0.1, 0.005, 0.5
+# -- delay -----------------------------------------------------------------------------------
+#: ``lossy_telemetry``'s bursts of lost telegrams over the record [-]; their seed [-]; their
+#: mean length at strength 1 [data samples]
+BURSTS, BURST_SEED, BURST_LENGTH = 150, 1963, 3.0
 
 
-def _particle_levels(travel, seed, count, wear, press):
-    """The levels' relative rise [-] of particles that enter the contact at ``count``
-    random points of the relative travel ``travel`` [-] (0 to 1; uniform over 5-95 %,
-    from ``seed``), of sizes 0.5 to 1.5 [-]: each is pressed in over the travel ``press``
-    [-] and worn down or ejected over ``wear`` [-], (1 - exp(-d / press)) exp(-d / wear)
-    of the travel d since it entered."""
-    rng = np.random.default_rng(seed)
-    at = np.sort(rng.uniform(0.05, 0.95, count))
-    size = rng.uniform(0.5, 1.5, count)
-    tr = np.asarray(travel, float)
-    out = np.zeros_like(tr)
-    for x0, a in zip(at, size):
-        d = np.maximum(tr - x0, 0.0)
-        out += a * -np.expm1(-d / press) * np.exp(-d / wear)
+def _held(t, F, starts, lengths):
+    """The force [N] a logger holds at the times ``t`` [s] when the telegrams of ``F`` [N]
+    are lost from ``starts`` [s] for ``lengths`` [s] (overlapping losses merged): within a
+    loss the value received last, at its start; elsewhere the force."""
+    order = np.argsort(starts)
+    a, b = np.asarray(starts, float)[order], np.asarray(starts, float)[order] + \
+        np.asarray(lengths, float)[order]
+    out = np.array(F, float)
+    k = 0
+    while k < a.size:
+        end = b[k]
+        j = k + 1
+        while j < a.size and a[j] <= end:
+            end = max(end, b[j])
+            j += 1
+        i0, i1 = np.searchsorted(t, a[k]), np.searchsorted(t, end)
+        if i0 < t.size:
+            out[i0:i1] = F[i0]
+        k = j
     return out
 
 
 @on_fine_grid
-def particle_ingress_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Contaminant particles (dust, chips, wear debris from elsewhere) swept into the
-    contact by the sliding at :data:`PARTICLES` random points of the record's travel (a
-    sequence fixed by :data:`PARTICLE_SEED`, the same share of the travel on every plant):
-    each embeds in the softer surface and ploughs it, raising the levels by its size (0.5
-    to 1.5 x ``s`` :data:`PARTICLE_RISE`) as it is pressed in, then less as it is worn down
-    or ejected, over :data:`PARTICLE_WEAR` of the travel (:func:`_particle_levels`): the
-    Coulomb and Stribeck levels are the base's times 1 + that rise, inside the bristle
-    dynamics; the viscous term is the base's. Nothing changes at rest.
+def lossy_telemetry_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force sent from the carriage over a radio telemetry link that loses telegrams
+    in bursts (a Gilbert-Elliott channel: fading and interference come and go): the
+    logger holds the last value received until the link recovers. :data:`BURSTS` bursts
+    over the record, at times and of relative lengths (exponentially distributed) fixed
+    by :data:`BURST_SEED`, of mean length ``s`` :data:`BURST_LENGTH` data samples
+    (:func:`_held`). At ``s`` = 0 the force itself.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s]) and its base law.
+    s : float
+        Amplitude factor [-]: the bursts' mean length, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Burst-error channels (Gilbert 1960, Capacity of a burst-noise channel, Bell Syst. Tech.
+    J. 39; Elliott 1963, Estimates of error rates for codes on burst-noise channels, Bell
+    Syst. Tech. J. 42); wireless torque and force telemetry on moving parts. The open
+    forms delay by one amount, filter linearly or by rank, hold at a fieldbus's clock,
+    let the delay drift, wander or follow the force's rate, level or slowness, the
+    motion's speed or the position, or shift the motion; here the force is held stale
+    over random stretches and exact between them.
+    """
+    F, _ = _base_parts(kin)
+    if s <= 0.0:
+        return F
+    t = np.asarray(kin.t, float)
+    rng = np.random.default_rng(BURST_SEED)
+    starts = t[0] + (t[-1] - t[0]) * np.sort(rng.uniform(0.02, 0.98, BURSTS))
+    lengths = float(s) * BURST_LENGTH * kin.sample_dt * rng.exponential(1.0, BURSTS)
+    return _held(t, F, starts, lengths)
+
+
+# -- drift -----------------------------------------------------------------------------------
+#: ``differential_expansion``'s carriage and rail heating times, x the record's length [-];
+#: the levels' rise per unit of the temperature difference (in units of the mean friction
+#: power's steady heating) at strength 1 [-]
+CARRIAGE_HEATING, RAIL_HEATING, EXPANSION_RISE = 0.05, 0.3, 1.0
+
+
+@on_fine_grid
+def differential_expansion_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage is heated by the friction power |F_f v| (over its mean) and warms
+    with the time constant :data:`CARRIAGE_HEATING` x the record; the rail is heated by the
+    carriage and follows it with :data:`RAIL_HEATING` x the record (two first-order lags,
+    :func:`.truths._lag`). Their temperature difference expands the carriage against the
+    rail and closes the preload: the Coulomb and Stribeck levels are the base's times 1 +
+    ``s`` :data:`EXPANSION_RISE` x (T_carriage - T_rail), inside the bristle dynamics; the
+    viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the particles' size (their ploughing), / its value at
+        Amplitude factor [-]: the preload per unit of the temperature difference (the
+        carriage's expansion coefficient and the guide's stiffness), / its value at
         strength 1.
 
     Returns
@@ -634,75 +650,80 @@ def particle_ingress_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Hard particles entrained into lubricated contacts, their indentation, embedding and
-    ploughing (Nikas 2010, A state-of-the-art review on the effects of particulate
-    contamination and related topics in machine-element contacts, Proc. IMechE J 224);
-    the ingress of chips and dust past a slideway's wipers. The candidate is a trend, a
-    saturating change, a step and a cycle in time; the open forms warm up, wear in (in
-    time, with the load and travel), step, heat, cycle, rise and fall with debris, drop
-    with grease shots, relax in log time, grow an oxide and spall, oxidise after an
-    induction, wear a coating through, swell as sqrt(t) or grow a tribofilm. Here a
-    sequence of sudden rises at random points, each decaying with the sliding: the levels
-    jump, creep back, and jump again when the next particle comes.
+    Thermal errors of machine tools (Bryan 1990, International status of thermal error
+    research, CIRP Annals 39; Mayr et al. 2012, Thermal issues in machine tools, CIRP
+    Annals 61); the preload of linear guides rising as the carriage warms. The candidate is
+    a trend, a saturating change, a step and a cycle in time; the open forms warm up (the
+    oil thinning), wear in, step, cycle, rise and fall with debris, drop with grease
+    shots, relax, oxidise, wear through, swell, grow a tribofilm or take in particles.
+    Here the levels follow the difference of two lags of the friction power: up while
+    the carriage leads, back as the rail catches up, up again when the power rises.
     """
-    v = np.abs(np.asarray(kin.v, float))
-    path = np.concatenate(([0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(kin.t))))
-    travel = path / max(float(path[-1]), 1e-300)
-    rise = _particle_levels(travel, PARTICLE_SEED, PARTICLES, PARTICLE_WEAR, PARTICLE_PRESS)
-    lev = 1.0 + max(float(s), 0.0) * PARTICLE_RISE * rise
+    F, Ff = _base_parts(kin)
+    t = np.asarray(kin.t, float)
+    power = np.abs(Ff * np.asarray(kin.v, float))
+    power = power / max(float(np.mean(power)), 1e-300)
+    T = float(t[-1] - t[0])
+    carriage = _lag(t, power - power[0], CARRIAGE_HEATING * T)
+    diff = carriage - _lag(t, carriage, RAIL_HEATING * T)
+    lev = 1.0 + max(float(s), 0.0) * EXPANSION_RISE * diff
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: the lost motion of ``wire_rope`` at strength 1 (the deflection between the Coulomb levels
-#: either way, beyond the stiff coupling's), as a share of the stroke [-] (the open
-#: backlash forms' play); the share of the Coulomb level the strands carry by sticking
-#: [-]; their slip deflection, x the rope's deflection at the Coulomb level [-]; the rope's
-#: stiffness at ``s`` = 0, x the stiff coupling's of the other forms [-]
-GAP_SHARE, STRAND_SHARE, STRAND_SLIP, ROPE_STIFF = PLANT_GAP_SHARE, 0.6, 0.15, 10.0
+#: the lost motion of ``jaw_coupling`` at strength 1 (the clearance plus the spider's relaxed
+#: deflection between the Coulomb levels either way), as a share of the stroke [-] (the
+#: open backlash forms' play); the clearance's share of it [-]; the rubber's instant
+#: stiffness over its relaxed one [-]; its relaxation time, x the motion's time scale [-];
+#: the spider's stiffness at ``s`` = 0, x the stiff coupling's of the other forms [-]
+GAP_SHARE, CLEARANCE_SHARE, RUBBER_STIFFENING, RUBBER_RELAXATION, SPIDER_STIFF = \
+    PLANT_GAP_SHARE, 0.4, 5.0, 0.1, 10.0
 
 
 @njit(cache=True)
-def _rope_contact(h, xd, ke, kz, zy, c, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
-    """LuGre friction [N] of a contact of mass ``m`` [kg] pulled by the drive positions
-    ``xd`` [m] (grid step ``h`` [s]) through a wire rope: an elastic core ``ke`` [N/m] of
-    the deflection e = drive - contact, and strands of stiffness ``kz`` [N/m] whose
-    sticking deflection z slips beyond ``zy`` [m] (Bouc-Wen, exponent 1: z' = e' (1 - z /
-    zy) while e' z > 0, e' otherwise; at most zy), damped by ``c`` [N s/m]. Semi-implicit
-    Euler of the mass, the bristle advanced exactly at the contact's velocity
-    (:func:`.truths._light_contact_step`). Starts at rest, undeflected."""
+def _jaw_contact(h, xd, half, k0, km, tau, c, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
+    """LuGre friction [N] of a contact of mass ``m`` [kg] driven by the drive positions
+    ``xd`` [m] (step ``h`` [s]) through a jaw coupling's clearance +-``half`` [m] and its
+    elastomer spider, a standard linear solid in compression: the relaxed spring ``k0``
+    [N/m] beside a Maxwell arm (spring ``km`` [N/m], relaxation time ``tau`` [s]) whose
+    force q follows q' = km d' - q / tau of the compression d (relaxing freely out of
+    contact), damped by ``c`` [N s/m]; no tension. Semi-implicit Euler of the mass
+    (:func:`.truths._light_contact_step`). Starts at rest, centred."""
     n = xd.size
     F = np.empty(n)
     x = xd[0]
     v = 0.0
     z = 0.0
-    zb = 0.0
+    q = 0.0
+    d_old = 0.0
+    decay = math.exp(-h / tau)
     for j in range(n):
         vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
-        de = h * (vd - v)
-        if de * zb > 0.0:
-            zb = zb + de * (1.0 - abs(zb) / zy)
-        else:
-            zb = zb + de
-        zb = min(max(zb, -zy), zy)
-        fc = ke * (xd[j] - x) + kz * zb + c * (vd - v)
+        e = xd[j] - x
+        d = max(abs(e) - half, 0.0)
+        q = q * decay + km * (d - d_old)
+        d_old = d
+        fc = 0.0
+        if d > 0.0:
+            side = 1.0 if e > 0.0 else -1.0
+            fc = side * max(k0 * d + q + c * side * (vd - v), 0.0)
         F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha, shape)
         x = x + h * v
     return F
 
 
 @on_fine_grid
-def wire_rope_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact joined by a wire rope (a cable drive): no play, but a coupling
-    whose strands first stick (stiff) and then slip on each other as the load changes
-    (:func:`_rope_contact`): an elastic core k_e and strands that carry up to
-    :data:`STRAND_SHARE` of the Coulomb level by sticking, slipping beyond a deflection of
-    :data:`STRAND_SLIP` x the rope's deflection e_c at the Coulomb level, damped at the
-    ratio 0.5 of its initial stiffness. e_c = ``s``^2 :data:`GAP_SHARE` x the stroke / 2
-    + Fc / (:data:`ROPE_STIFF` kh) (kh the stiff coupling of the other forms,
-    :func:`.truths._contact_constants`), so the lost motion of a reversal is about 2 e_c.
-    The contact is light, with the base's LuGre friction; the measured force is its
-    friction. At ``s`` = 0 the base itself.
+def jaw_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact joined by a jaw coupling with an elastomer spider and clearance
+    (:func:`_jaw_contact`): across the clearance (:data:`CLEARANCE_SHARE` of the lost
+    motion) nothing holds the contact; then the spider's rubber is compressed, a standard
+    linear solid :data:`RUBBER_STIFFENING` x stiffer at once than relaxed, relaxing over
+    :data:`RUBBER_RELAXATION` x the motion's time scale, damped at the ratio 0.5 of its
+    instant stiffness. The lost motion of a reversal at the Coulomb level is ``s``^2
+    :data:`GAP_SHARE` x the stroke (the rest of it the relaxed spider's deflection, plus
+    Fc / (:data:`SPIDER_STIFF` kh), kh the stiff coupling of the other forms,
+    :func:`.truths._contact_constants`). The contact is light, with the base's LuGre
+    friction; the measured force is its friction. At ``s`` = 0 the base itself.
 
     Parameters
     ----------
@@ -719,71 +740,87 @@ def wire_rope_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Wire ropes' hysteresis from the strands' and wires' friction (Costello 1997, Theory of
-    Wire Rope); wire-rope elements modelled by Bouc-Wen's hysteresis (Demetriades,
-    Constantinou and Reinhorn 1993, Study of wire rope systems for seismic protection of
-    equipment in buildings, Eng. Struct. 15); capstan and cable drives. The candidate holds
-    or frees the force across a play; the open forms couple it rigidly, compliantly, by
-    impacts, a linear spring, an oil film, an idler's drag, a bias, slack chain strands, a
-    magnetic pull, a spring preload on one side or a strain-wave gear that hardens, with a
-    play varying with the position or the travel; here a dissipative coupling: after each
-    reversal it is stiff until the strands slip, then soft: the force turns fast at first
-    and slowly beyond, the opposite of the hardening gear.
+    The standard linear solid (Zener 1948, Elasticity and Anelasticity of Metals);
+    elastomer jaw (spider) couplings, their clearance and the rubber's dynamic stiffness
+    (Gent 2001, Engineering with Rubber). The candidate holds or frees the force across a
+    play, with a bias, a spring or a drag across it; the open forms couple rigidly,
+    compliantly (a linear spring-damper), by impacts, springs, oil, an idler, a bias,
+    chains, magnets, a preload, a hardening gear or a slipping rope, with a play varying
+    with the position or the travel. Here a play and then a coupling whose stiffness
+    depends on the rate: the force overshoots as the drive takes up the spider fast and
+    sags back as the rubber creeps.
     """
-    p = _lugre_params(kin, "backlash (wire_rope)")
+    p = _lugre_params(kin, "backlash (jaw_coupling)")
     if s <= 0.0:
         return _base_parts(kin)[0]
     m, kh, _ = _contact_constants(kin, p)
     Fc = float(p.Fc)
-    ec = 0.5 * float(s) ** 2 * GAP_SHARE * float(np.ptp(kin.x)) + Fc / (ROPE_STIFF * kh)
-    ke = (1.0 - STRAND_SHARE) * Fc / ec
-    zy = STRAND_SLIP * ec
-    kz = STRAND_SHARE * Fc / zy
-    c = 2.0 * 0.5 * math.sqrt((ke + kz) * m)
-    h, xd, n_sub = _substeps(kin, max(math.sqrt((ke + kz + float(p.sigma0)) / m),
+    lost = float(s) ** 2 * GAP_SHARE * float(np.ptp(kin.x))
+    half = 0.5 * CLEARANCE_SHARE * lost
+    k0 = Fc / (0.5 * (1.0 - CLEARANCE_SHARE) * lost + Fc / (SPIDER_STIFF * kh))
+    km = (RUBBER_STIFFENING - 1.0) * k0
+    c = 2.0 * 0.5 * math.sqrt((k0 + km) * m)
+    h, xd, n_sub = _substeps(kin, max(math.sqrt((k0 + km + float(p.sigma0)) / m),
                                       (float(p.sigma1) + float(p.sigma2) + c) / m))
-    F = _rope_contact(h, xd, ke, kz, zy, c, m, float(p.sigma0), float(p.sigma1),
-                      float(p.sigma2), Fc, float(p.Fs), float(p.vs), float(p.alpha),
-                      SHAPES[p.shape])
+    F = _jaw_contact(h, xd, half, k0, km, RUBBER_RELAXATION * max(_motion_time(kin), 1e-12),
+                     c, m, float(p.sigma0), float(p.sigma1), float(p.sigma2), Fc,
+                     float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
     return F[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: the capillary bridges' depinning tilt travel at strength 1, beyond the base bristle's
-#: path, as a share of the stroke / 3 [-]; their share of the friction at strength 1 [-];
-#: the bridges' tilt at depinning (the advancing angle less the equilibrium one) [rad]
-PRESLIDING_SHARE, CAPILLARY_SHARE, DEPINNING_TILT = 0.05, 0.5, math.radians(60.0)
+#: the junctions' elastic travel at strength 1, beyond the base bristle's path, as a share
+#: of the stroke / 3 [-]; their share of the friction at strength 1 [-]; the yield's share
+#: lost when fully recovered [-]; the slip path that hardens them, x their elastic travel
+#: [-]; their static recovery time, x the motion's time scale [-]
+PRESLIDING_SHARE, JUNCTION_SHARE, SOFTENING, HARDENING_PATH, RECOVERY_TIME = \
+    0.05, 0.7, 0.6, 3.0, 2.0
 
 
-def _bridge_force(u, ud, tilt):
-    """The pinned bridges' force [-], relative to their retention force, at the tilt
-    travels ``u`` [m] (within +-``ud`` [m], where they depin at the tilt ``tilt`` [rad]):
-    2 gamma w sin(theta) sin(phi), tan(phi) = u / h, h = ``ud`` / tan(``tilt``) the
-    bridges' height, over its value at ``ud``."""
-    h = ud / math.tan(tilt)
-    u = np.asarray(u, float)
-    return u / np.sqrt(h * h + u * u) / math.sin(tilt)
+@njit(cache=True)
+def _hardening_junctions(t, x, ud, soft, path, tau):
+    """The junctions' force [-] (over the sliding level) along the positions ``x`` [m] at
+    the times ``t`` [s]: elastic over the travel ``ud`` [m] at full hardness, yielding at
+    1 - ``soft`` exp(-p / ``path``) of the sliding level, p the accumulated slip path [m]
+    (Voce's isotropic hardening), which recovers at rest as p' = -p / ``tau`` [s] (static
+    recovery). Starts recovered, unloaded."""
+    n = x.size
+    out = np.empty(n)
+    u = 0.0
+    p = 0.0
+    out[0] = 0.0
+    for k in range(1, n):
+        p = p * math.exp(-(t[k] - t[k - 1]) / tau)
+        u = u + (x[k] - x[k - 1]) / ud
+        y = 1.0 - soft * math.exp(-p / path)
+        if abs(u) > y:
+            p = p + (abs(u) - y) * ud
+            y = 1.0 - soft * math.exp(-p / path)
+            u = y if u > 0.0 else -y
+        out[k] = u
+    return out
 
 
 @on_fine_grid
-def capillary_bridges_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Capillary bridges of condensed water around the asperity contacts, beside the
-    bristle: their contact lines stay pinned while the sliding tilts them (contact-angle
-    hysteresis), each pulling back 2 gamma w sin(theta) sin(phi) at the tilt phi, tan(phi)
-    = u / h (:func:`_bridge_force`); at the tilt :data:`DEPINNING_TILT` the contact line on
-    the moving side depins and the bridge slides on with its retention force. The tilt
-    travel u is thus a play of the travel within +-u_d (:func:`.seen11._nest_offset`), u_d
-    the base bristle's path Fs / sigma0 plus ``s`` :data:`PRESLIDING_SHARE` x the stroke /
-    3. A share w = :data:`CAPILLARY_SHARE` min(``s``, 1) of the friction is the bridges'
-    (their retention at the Stribeck level, the viscous term the base's): F = (1 - w)
-    F_lugre + w (g(v) f(u) + sigma2 v). At ``s`` = 0 the base itself.
+def cyclic_hardening_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Asperity junctions beside the bristle that harden isotropically with the slip: an
+    elastic layer over the travel u_d at full hardness that yields at 1 - :data:`SOFTENING`
+    exp(-p / p_h) of the Stribeck level (Voce's law; p the accumulated slip path, p_h =
+    :data:`HARDENING_PATH` u_d), the hardening recovering in time, p' = -p / tau (static
+    recovery, tau = :data:`RECOVERY_TIME` x the motion's time scale)
+    (:func:`_hardening_junctions`). u_d is the base bristle's path Fs / sigma0 plus ``s``
+    :data:`PRESLIDING_SHARE` x the stroke / 3; a share w = :data:`JUNCTION_SHARE` min(``s``,
+    1) of the friction is the junctions' (their yield at the Stribeck level, the viscous
+    term the base's): F = (1 - w) F_lugre + w (g(v) f + sigma2 v). At ``s`` = 0 the base
+    itself.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
+        The motion on the fine grid (t [s], x [m], v [m/s]) and its base law (a classic
+        LuGre).
     s : float
-        Amplitude factor [-]: the bridges' share (up to ``s`` = 1) and their depinning
+        Amplitude factor [-]: the junctions' share (up to ``s`` = 1) and their elastic
         travel (as the open presliding forms' path).
 
     Returns
@@ -793,28 +830,24 @@ def capillary_bridges_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The retention force of pinned drops and bridges, gamma w (cos theta_r - cos theta_a)
-    (Furmidge 1962, Studies at phase interfaces I: the sliding of liquid drops on solid
-    surfaces and a theory for spray retention, J. Colloid Sci. 17); capillary condensation
-    at asperity contacts (Bocquet, Charlaix, Ciliberto and Crassous 1998, Moisture-induced
-    ageing in granular media and the kinetics of capillary condensation, Nature 396).
-    Maxwell-slip (the candidate, ``maxwell4``, ``maxwell10``) and the Mindlin contacts
-    follow Masing's rule, Dahl, Bouc-Wen and Bliman-Sorine path laws, elasto-plastic an
-    elastic range, the Zener junction and the rate-and-state interface rate-dependent
-    creep, the Tomlinson contacts multistable tips, the bonds elements born and broken,
-    the gouge a fabric turned over, the kinematic hardening a back-stress and the
-    interlocking asperities a climb out of a nest; here a geometric capillary force of a
-    play: after a reversal the bridges unbend slowly at first (the force's slope sin(phi)'
-    is least at the largest tilt), fastest as they pass upright, and depin at a corner.
+    Isotropic (Voce) hardening (Voce 1948, The relationship between stress and strain for
+    homogeneous deformation, J. Inst. Met. 74) and static recovery (Chaboche 1989,
+    Constitutive equations for cyclic plasticity and cyclic viscoplasticity, Int. J.
+    Plast. 5); work-hardening of asperity junctions (Bowden and Tabor 1950). Maxwell-slip
+    (the candidate) and the open forms follow Masing's rule, path laws, an elastic range,
+    rate-dependent creep, multistable tips, bonds, a fabric, a back-stress, a climb out
+    of a nest or capillary bridges; here the junctions' yield depends on how far they
+    have slipped since they last rested: soft after a stop, hard through quick reversals.
     """
-    p = _lugre_params(kin, "gms (capillary_bridges)")
+    p = _lugre_params(kin, "gms (cyclic_hardening)")
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
     e0, extra = _presliding_path(kin, s, PRESLIDING_SHARE)
     ud = e0 + extra
-    w = CAPILLARY_SHARE * min(float(s), 1.0)
+    w = JUNCTION_SHARE * min(float(s), 1.0)
     v = np.asarray(kin.v, float)
-    u = _nest_offset(np.ascontiguousarray(kin.x, dtype=float), ud)
-    Fb = kin.base.g(v) * _bridge_force(u, ud, DEPINNING_TILT) + float(p.sigma2) * v
-    return (1.0 - w) * F + w * Fb
+    f = _hardening_junctions(np.ascontiguousarray(kin.t, dtype=float),
+                             np.ascontiguousarray(kin.x, dtype=float), ud, SOFTENING,
+                             HARDENING_PATH * ud, RECOVERY_TIME * max(_motion_time(kin), 1e-12))
+    return (1.0 - w) * F + w * (kin.base.g(v) * f + float(p.sigma2) * v)

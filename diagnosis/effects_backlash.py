@@ -73,6 +73,10 @@ strengths 0.5 and 1 x noise 1 % and 3 %, run 03:08 UTC on a shared machine): val
 xml350 3/4, damping_rig 0/4 - there ``backlash`` ranks first and closes the truth's share
 (79-95 %) but its paired z (2.2 on 420 held-out samples with few reversals) stays below
 the family-wise 2.88, so the verdict is ``unexplained``; where-family 10/12 (|v|).
+The generalisation grid's 144 backlash cases (twelve truth forms, same seeds): 31 named
+before the forces across the play and the refined gap, 43 with them; wrong names 31 -> 24
+(anti-backlash spring 2 -> 5 of 12, impact 0 -> 5, biased play 0 -> 3, compliant 5 -> 7,
+worn gap 5 -> 4; eccentric gear, preloaded nut, slack chain and magnetic coupling 0).
 """
 from __future__ import annotations
 

@@ -1,5 +1,5 @@
 """The twelfth seen truth family (diagnosis.benchmark.seen12, sealed at the end of session 17,
-run once in session 18 on <COMMIT>, <TOP1> top-1, now open): each form builds a finite case
+run once in session 18 on f5cb1e9, 29.5 % top-1, now open): each form builds a finite case
 of the requested size on every plant it applies to, is the base law at s = 0, grows with
 its amplitude factor and refuses the plants it does not apply to."""
 import dataclasses

@@ -966,13 +966,20 @@ class Position(Candidate):
     ``g(x)`` [N] (:data:`ADD_NAMES`): a force of the position alone, the same in both
     directions of motion - a linear motor's detent (cogging) force, a spring or cable
     along the stroke - which a level scale, changing sign with the velocity, cannot make
-    (the grid's cogging truth: 0 of 16 named with the scale alone). The trajectory level
-    and the FMU blocks keep the scaled map."""
+    (the grid's cogging truth: 0 of 16 named with the scale alone), and its smooth course
+    over the stroke (:attr:`POLY_NAMES`: a spring, counterweight or cable along the stroke,
+    a carriage on a sagging beam). The trajectory level and the FMU blocks keep the scaled
+    map."""
     stage_doc = "friction level scaled along the stroke, and a force of the position"
     NAMES = POSITION_NAMES + POSITION_FORM_NAMES
     #: amplitudes of the additive periodic force [N] (cosine, sine; first and second
     #: harmonic of the waviness' wavelength ``lambda_x``), fitted at the force level only
     ADD_NAMES = ("q_c1", "q_s1", "q_c2", "q_s2")
+    #: amplitudes of the additive force's smooth course over the stroke [N] (Legendre
+    #: polynomials of degree 1-3 of the position across the fit record's stroke, constant
+    #: beyond it): a spring, a counterweight or a cable along the stroke, a carriage on a
+    #: sagging beam, gravity along an axis whose tilt changes with the position
+    POLY_NAMES = ("q_x1", "q_x2", "q_x3")
     #: shortest wavelength and narrowest defect, in samples of travel at the top speed:
     #: finer than this along the motion the data cannot tell a map from noise
     MIN_SAMPLES = 8.0
@@ -1016,7 +1023,14 @@ class Position(Candidate):
 
     def force_extras(self, ctx):
         return self.extras(ctx) + [Extra(n, 0.0, -ctx.sF, ctx.sF, "N")
-                                   for n in self.ADD_NAMES]
+                                   for n in self.ADD_NAMES + self.POLY_NAMES]
+
+    def _poly(self, x, ctx):
+        """The smooth additive force's columns at positions ``x`` [m]: P1, P2, P3 of the
+        position mapped onto [-1, 1] across the fit record's stroke (clipped beyond)."""
+        u = np.clip(2.0 * (np.asarray(x, float) - ctx.x_lo) / self._span(ctx) - 1.0,
+                    -1.0, 1.0)
+        return u, 0.5 * (3.0 * u * u - 1.0), 0.5 * (5.0 * u ** 3 - 3.0 * u)
 
     def _packed(self, p, ctx):
         return pack_extensions({"position": {n: p[n] for n in self.NAMES if n in p}},
@@ -1029,14 +1043,18 @@ class Position(Candidate):
         return np.cos(ph), np.sin(ph), np.cos(2.0 * ph), np.sin(2.0 * ph)
 
     def _additive(self, p, x, ctx):
-        """The force of the position alone [N] (zero without its amplitudes)."""
+        """The force of the position alone [N] (zero without its amplitudes): periodic and
+        smooth along the stroke."""
+        out = 0.0
+        if any(p.get(n, 0.0) for n in self.POLY_NAMES):
+            out = sum(p.get(n, 0.0) * c for n, c in zip(self.POLY_NAMES, self._poly(x, ctx)))
         if not any(p.get(n, 0.0) for n in self.ADD_NAMES):
-            return 0.0
+            return out
         if not (np.isfinite(p["lambda_x"]) and p["lambda_x"] > 0):
             raise ValueError(f"lambda_x = {p['lambda_x']!r} is out of bounds: the wavelength "
                              f"of the force of the position must be > 0 [m]")
-        return sum(p[n] * h for n, h in zip(self.ADD_NAMES,
-                                            self._harmonics(x, ctx.x_lo, p["lambda_x"])))
+        return out + sum(p[n] * h for n, h in zip(self.ADD_NAMES,
+                                                  self._harmonics(x, ctx.x_lo, p["lambda_x"])))
 
     def apply(self, F, p, data, ctx):
         # friction level varying along the stroke: a friction map over the fit record's
@@ -1047,7 +1065,8 @@ class Position(Candidate):
 
     #: the map is linear in the knot values, the waviness' amplitudes and the defect's
     #: height, the additive force in its amplitudes
-    exact_extras = POSITION_NAMES + ("p_c1", "p_s1", "p_c2", "p_s2", "d_x") + ADD_NAMES
+    exact_extras = (POSITION_NAMES + ("p_c1", "p_s1", "p_c2", "p_s2", "d_x") + ADD_NAMES
+                    + POLY_NAMES)
 
     def jac(self, F, p, data, ctx):
         """``d apply / dF = 1 + m(x)``; the columns of :attr:`exact_extras` exactly, ``F``
@@ -1063,6 +1082,7 @@ class Position(Candidate):
         harm = self._harmonics(x, ctx.x_lo, p["lambda_x"])
         cols.update({n: F * h for n, h in zip(("p_c1", "p_s1", "p_c2", "p_s2"), harm)})
         cols.update({n: h for n, h in zip(self.ADD_NAMES, harm)})
+        cols.update({n: c for n, c in zip(self.POLY_NAMES, self._poly(x, ctx))})
         cols["d_x"] = F * np.exp(-0.5 * ((x - p["x_d"]) / p["w_d"]) ** 2)
         return 1.0 + position_change(x, self._packed(p, ctx)), cols
 
@@ -1105,13 +1125,16 @@ class Position(Candidate):
                     best = (e, xd, w)
         _, xd, w = best
         G = (f * np.exp(-0.5 * ((x - xd) / w) ** 2))[:, None]
-        HPG = np.column_stack([H, P, G])
+        Q = np.column_stack(self._poly(x, ctx))
+        HPG = np.column_stack([H, P, G, Q])
         _, allc = _lsq(_with(HPG, B), rr)
         allc = allc[:HPG.shape[1]]
-        nk = len(POSITION_NAMES)
+        nk, nq = len(POSITION_NAMES), len(self.POLY_NAMES)
         out = dict(zip(POSITION_NAMES, allc[:nk]))
-        out.update(zip(("p_c1", "p_s1", "p_c2", "p_s2") + self.ADD_NAMES, allc[nk:-1]))
-        out.update(lambda_x=lam, d_x=allc[-1], x_d=xd, w_d=w)
+        out.update(zip(("p_c1", "p_s1", "p_c2", "p_s2") + self.ADD_NAMES,
+                       allc[nk:-1 - nq]))
+        out.update(zip(self.POLY_NAMES, allc[-nq:]))
+        out.update(lambda_x=lam, d_x=allc[-1 - nq], x_d=xd, w_d=w)
         ex.update({e.name: e for e in self.force_extras(ctx)})
         return {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
 

@@ -224,6 +224,49 @@ def test_position_carries_a_force_of_the_position_alone_with_exact_columns():
         assert np.allclose(cols[n], num, atol=1e-6)
 
 
+def test_position_carries_a_smooth_force_along_the_stroke():
+    """A spring along the stroke and a carriage on a sagging beam: forces of the position
+    alone, smooth over the stroke. The start's least squares recovers them in the Legendre
+    columns, which are exact derivative columns and constant beyond the fit stroke."""
+    from diagnosis.effects import CANDIDATES, make_context
+    from friction.dataset import Dataset
+    t = np.linspace(0.0, 4.0, 4001)
+    x = 0.05 * np.sin(2 * np.pi * 0.5 * t) + 0.01 * np.sin(2 * np.pi * 1.7 * t)
+    v = np.gradient(x, t)
+    Ff = np.tanh(v / 0.01)
+    spring = -40.0 * (x - x.mean())                       # 40 N/m about the middle [N]
+    # a carriage on a simply supported beam sits in its own deflection ~ a^2 (L - a)^2;
+    # moving on takes its weight times the slope: a cubic pulling towards mid-span [N]
+    a = (x - x.min()) / np.ptp(x)
+    sag = -0.8 * 8.0 * (a * (1.0 - a) * (1.0 - 2.0 * a))
+    rng = np.random.default_rng(2)
+    data = Dataset.from_arrays(t=t, x=x, v=v, F=Ff + spring + sag
+                               + 0.005 * rng.standard_normal(t.size))
+    ctx = make_context(data)
+    pos = CANDIDATES["position"]
+    assert set(pos.POLY_NAMES) <= {e.name for e in pos.force_extras(ctx)}
+    assert not set(pos.POLY_NAMES) & {e.name for e in pos.trajectory_extras(ctx)}
+    p = pos.start(data, Ff, np.asarray(data.F) - Ff, ctx)
+    left = np.asarray(data.F) - pos.apply(Ff, p, data, ctx)
+    assert np.std(left) < 0.05 * np.std(spring + sag)
+    # the smooth part alone is the spring and the sag (about their mean: the offset is b's)
+    q = {n: p[n] for n in pos.POLY_NAMES}
+    smooth = pos._additive(q, x, ctx)
+    truth = spring + sag - np.mean(spring + sag)
+    assert np.std(smooth - np.mean(smooth) - truth) < 0.05 * np.std(truth)
+    out = pos.apply(Ff, p, data, ctx)
+    _, cols = pos.jac(Ff, p, data, ctx)
+    for n in pos.POLY_NAMES:
+        h = 1e-6
+        num = (pos.apply(Ff, dict(p, **{n: p[n] + h}), data, ctx) - out) / h
+        assert np.allclose(cols[n], num, atol=1e-6)
+    # beyond the fit stroke the smooth force holds its end value
+    far = Dataset.from_arrays(t=t[:3], x=np.full(3, x.max() + 1.0), v=np.zeros(3),
+                              F=np.zeros(3))
+    end = Dataset.from_arrays(t=t[:3], x=np.full(3, x.max()), v=np.zeros(3), F=np.zeros(3))
+    assert np.allclose(pos._additive(q, far.x, ctx), pos._additive(q, end.x, ctx))
+
+
 def test_cogging_force_is_named_position():
     # a linear motor's detent force (seen family 4): 0.3 x the friction level, period 6 %
     # of the stroke, added to the base force; the level-scaled map closed 0 of 16 grid cases

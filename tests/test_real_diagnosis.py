@@ -69,7 +69,9 @@ def test_emps_time_split_names_asymmetry(real_data, fraction):
 
 def test_emps_reverse_time_split_ranks_asymmetry_first(real_data):
     """The halves swapped (fit the second, hold out the first): asymmetry still first with
-    its twins, but at the rule (33 % above the floor): the forward split is the robust one."""
+    its twins, but at the rule (33 % above the floor): the forward split is the robust one.
+    Since the position map has its smooth force along the stroke it runs second closer
+    behind (15.7 % against 18.1 %; it was under 0.7 x)."""
     from identification.real_data import load_emps
     est = load_emps("estimation")
     k = len(est) // 2
@@ -77,23 +79,30 @@ def test_emps_reverse_time_split_ranks_asymmetry_first(real_data):
     assert rep["verdict"]["cause"] in ("asymmetry", "unexplained"), rep.summary()
     top, runner = rep["effects"][0], rep["effects"][1]
     assert top["name"] == "asymmetry" and 0.12 < top["gap_closed"] < 0.28
-    assert top["excess_closed"] > 0.28 and runner["gap_closed"] < 0.7 * top["gap_closed"]
+    assert top["excess_closed"] > 0.28 and runner["gap_closed"] < 0.95 * top["gap_closed"]
     fv_pos, fv_neg, _, _ = _twins(rep)
     assert 1.3 < fv_neg / fv_pos < 1.7
 
 
 def test_emps_pulse_record_without_step_transients(real_data):
     """Held out on the pulse record between its steps (30 ms after each left out):
-    asymmetry ranks first and closes about a third of the gap above the floor - at the
-    rule, so the verdict is not robust (it names asymmetry at 30-50 ms, not at 10, 20 or
-    100 ms); with the steps kept it closes a tenth of the gap (test_diagnosis)."""
+    asymmetry closes about a third of the gap above the floor - at the rule, so the verdict
+    is not robust (it names asymmetry at 30-50 ms, not at 10, 20 or 100 ms); with the steps
+    kept it closes a tenth of the gap (test_diagnosis). The position map with its smooth
+    force along the stroke (1.5 N over the 0.25 m stroke, 4 % of std(F)) closes as much
+    (17.3 % against 16.5 %) and is named by a hair: the two tie, and neither is robust."""
     from identification.real_data import emps_pulse_segments, load_emps
     rep = diagnose(load_emps("estimation"), "lugre", validation=emps_pulse_segments(0.03))
-    assert rep["verdict"]["cause"] in ("asymmetry", "unexplained"), rep.summary()
-    top, runner = rep["effects"][0], rep["effects"][1]
-    assert top["name"] == "asymmetry" and 0.12 < top["gap_closed"] < 0.25
-    assert 0.25 < top["excess_closed"] < 0.42
-    assert top["significance_z"] > 5 and runner["gap_closed"] < 0.7 * top["gap_closed"]
+    assert rep["verdict"]["cause"] in ("asymmetry", "position", "unexplained"), rep.summary()
+    by = {e["name"]: e for e in rep["effects"]}
+    asym, top = by["asymmetry"], rep["effects"][0]
+    assert top["name"] in ("asymmetry", "position")
+    assert 0.12 < asym["gap_closed"] < 0.25 and 0.25 < asym["excess_closed"] < 0.42
+    assert asym["significance_z"] > 5
+    # the two lead, nearly tied, far ahead of every other candidate
+    rest = [e for e in rep["effects"] if e["name"] not in ("asymmetry", "position")]
+    assert all(e["gap_closed"] < 0.7 * asym["gap_closed"] for e in rest)
+    assert abs(by["position"]["gap_closed"] - asym["gap_closed"]) < 0.15 * asym["gap_closed"]
     fv_pos, fv_neg, _, _ = _twins(rep)
     assert 1.3 < fv_neg / fv_pos < 1.7
 

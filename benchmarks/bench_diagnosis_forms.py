@@ -34,6 +34,15 @@ can tell it from the base fit), clean and out-of-library cases, the mean |shrink
 (reported gap closed against the truth's), per plant, per effect and per truth form; seconds
 per case against one base identification of the plant timed in the same worker.
 
+Session 18 (2026-11-29; parts of the grid, paired by key with session 17's full run below,
+same seeds; the full grid was not run on this code): ``backlash`` with forces across the play
+144 cases 31 -> 43 named, wrong names 31 -> 24; ``inertia`` with masses along the stroke and
+with the speed, inertia and acceleration 520 cases 244 -> 250 (wrong 72 -> 74); ``position``
+with a smooth force along the stroke, position and drift 468 cases 299 -> 314 (wrong 40 ->
+37); gms 156 and asymmetry, delay, position, clean 744 unchanged (55 -> 55, 414 -> 414).
+Summed, about 1250 of session 17's 2300 (54.3 %; 57.7 % of the 2167 detectable). seen11 and
+seen12 (352 cases) have joined the grid since.
+
 Results of session 17 (2026-11-29, short protocols, code of 005e0e4: ``inertia`` with a
 coupled part and a mass trend, joint fits without pinned columns and from alternative
 starts; the valve and XML-350 on 1 + 2 workers, the other plants on 2, beside other runs):

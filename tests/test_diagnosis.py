@@ -55,12 +55,15 @@ def test_emps_points_at_direction_asymmetry(real_data):
     # response to the record's 5 V controller-output steps (178 N of motor force, already
     # in gtau * vir: identification.real_data.emps_pulse_evidence; not an external 5 N)
     # and the structural flexibility they excite, outside the library. So the verdict
-    # names no *other* effect, and asymmetry ranks first; fitted and held out on the two
-    # halves of DATA_EMPS it names asymmetry (tests/test_real_diagnosis.py).
+    # names no *other* effect; asymmetry ranked first until the position map had its
+    # smooth force along the stroke, which closes a little more here (11.2 % against
+    # 9.4 %, both far under the rule); fitted and held out on the two halves of DATA_EMPS
+    # it names asymmetry (tests/test_real_diagnosis.py).
     assert rep["base"]["params"]["b"] == pytest.approx(-3.16, abs=0.3)
     assert rep["verdict"]["cause"] in ("asymmetry", "unexplained"), rep.summary()
-    top = rep["effects"][0]
-    assert top["name"] == "asymmetry" and top["gap_closed"] > 0.05
+    by = {e["name"]: e for e in rep["effects"]}
+    assert rep["effects"][0]["name"] in ("asymmetry", "position")
+    assert by["asymmetry"]["gap_closed"] > 0.05
     # the fitted direction twins show the worn screw (README of emps/: Fv+ 166.7, Fv- 240.4
     # N s/m, ratio 1.44; Fc+ 20.14, Fc- 20.63 N)
     p = rep["effect_details"]["asymmetry"]["params"]

@@ -199,9 +199,10 @@ def test_candidate_law_runs_in_its_law_fmu_to_1e_10(which, kind):
             F[k + 1] = s.get("F")
         assert not s.errors()
         # a parameter outside its bounds answers fmi2Error naming it
-        bad = "delta" if which == "backlash" else "spread"
-        assert s.set(bad, -1.0) >= 3
-        assert any(bad in m for m in s.errors())
+        for bad in (("delta", "gap_stiffness", "gap_drag") if which == "backlash"
+                    else ("spread",)):
+            assert s.set(bad, -1.0) >= 3
+            assert any(bad in m for m in s.errors())
     finally:
         s.close()
     assert np.max(np.abs(F - ref)) <= 1e-10 * np.max(np.abs(ref))

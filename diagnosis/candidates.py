@@ -338,8 +338,8 @@ def _zero_phase(u, dt, tau):
 
 class Acceleration(Candidate):
     """Seed 000's acceleration-dependent part ``f_a tanh(a / a_s) w(v)`` and a level part
-    even in the acceleration, ``F (1 + f_e max(|a| - a_e, 0))``, lagged as a whole
-    (:meth:`apply`); a fitted part that is a mass term defers to ``inertia``
+    even and odd in the acceleration, ``F (1 + f_e max(|a| - a_e, 0) + f_o a)``, lagged as a
+    whole (:meth:`apply`); a fitted part that is a mass term defers to ``inertia``
     (:meth:`defers`).
 
     The level part: accelerating either way loads the contact - rolling elements that
@@ -347,6 +347,14 @@ class Acceleration(Candidate):
     pressure that accelerates a cylinder presses its seal. The odd part changes sign with
     ``a`` (it lowers friction while braking), so such truths were beyond it: on the grid's
     rolling-skid, moment-load and cylinder-pressure forms 1 of 60 cases was named.
+
+    The odd level part ``f_o a``: what the signed acceleration moves onto the contact. A
+    carriage whose centre of mass sits above its drive line pitches, and moves normal load
+    from one support onto another of other friction; an iron-core linear motor's pull grows
+    with its thrust ``m a + F`` (its cross term); a screw's thrust presses its nut. The
+    additive odd part cannot draw it (it does not follow the direction of sliding), nor the
+    even one (it does not change sign with ``a``): the grid's weight-transfer form was named
+    in 0 of 20 cases, the motor-attraction form in 4.
 
     Tried in session 11 and not kept: a frictional memory *inside* the bristle dynamics
     (Hess and Soom: the level ``(g(v_lagged) / g(v))^k``, ``k`` and the memory time
@@ -377,7 +385,10 @@ class Acceleration(Candidate):
                 # raises the levels whatever the sign of a; the odd part above cannot: it
                 # changes sign with a, so it lowers friction when braking
                 Extra("f_e", 0.0, -1.0 / ctx.sa, 1.0 / ctx.sa, "s^2/m"),
-                Extra("a_e", 0.0, 0.0, 0.9 * ctx.sa, "m/s^2")]
+                Extra("a_e", 0.0, 0.0, 0.9 * ctx.sa, "m/s^2"),
+                # the level part odd in a: what the signed acceleration moves onto the
+                # contact (a pitching carriage's load transfer, a motor's thrust pull)
+                Extra("f_o", 0.0, -1.0 / ctx.sa, 1.0 / ctx.sa, "s^2/m")]
 
     #: onsets of the level part tried by the start, x the acceleration scale [-], and the
     #: share of the odd part's squared residual below which the start keeps it [-]
@@ -391,27 +402,31 @@ class Acceleration(Candidate):
 
     def start(self, fit, Ff, r, ctx, basis=None) -> dict:
         """Start values from the base's fit residual ``r`` [N]: the part is linear in
-        ``f_a`` and ``f_e``, so every point of a grid of ``a_s``, ``v_c``, ``m_a``, the
-        level part's onset :attr:`LEVEL_ONSETS` (and the lag, where fitted) is solved by
-        least squares and the best one starts the fit (from ``f_a = 0`` the residual is
-        flat in the others, and the weight's peak is not convex); the level part is kept
-        where it leaves less than :attr:`LEVEL_GAIN` of the odd part's squared residual,
-        else pinned off (:class:`Fixed`). The
-        changes the base's own parameters can make (``basis``, :func:`diagnosis.composite.
-        base_basis`) are fitted beside each point: a base identified without the part has
-        absorbed what its Stribeck curve can mimic of it."""
+        ``f_a``, ``f_e`` and ``f_o``, so every point of a grid of ``a_s``, ``v_c``, ``m_a``,
+        the even level part's onset :attr:`LEVEL_ONSETS` (and the lag, where fitted) is
+        solved by least squares and the best one starts the fit (from ``f_a = 0`` the
+        residual is flat in the others, and the weight's peak is not convex). The level
+        parts are added greedily, the better of the even and the odd one first, each kept
+        only where it leaves less than :attr:`LEVEL_GAIN` of the squared residual before
+        it, else pinned off (:class:`Fixed`). The changes the base's own parameters can
+        make (``basis``, :func:`diagnosis.composite.base_basis`) are fitted beside each
+        point: a base identified without the part has absorbed what its Stribeck curve can
+        mimic of it."""
         sub = _subsample(fit.t.size)
         B = _basis_rows(basis, sub)
         a, v, rr = fit.a, fit.v, r
         ex = {e.name: e for e in self.extras(ctx)}
         lags = [0.0, ctx.dt, 3.0 * ctx.dt] if "tau_lag" in {
             e.name for e in self.force_extras(ctx)} else [0.0]
-        # the level part's column at each onset and lag (beside every point of the grid)
-        levels = {(a_e, lag): _first_order(_over_onset(a, a_e * ctx.sa), fit.dt, lag)[sub]
-                  * Ff[sub]
-                  for a_e in self.LEVEL_ONSETS for lag in lags}
+        # the level parts' columns at each onset and lag (beside every point of the grid)
+        evens = {(a_e, lag): _first_order(_over_onset(a, a_e * ctx.sa), fit.dt, lag)[sub]
+                 * Ff[sub]
+                 for a_e in self.LEVEL_ONSETS for lag in lags}
+        odds = {lag: _first_order(a, fit.dt, lag)[sub] * Ff[sub] for lag in lags}
         raw = float(rr[sub] @ rr[sub])
-        best = {False: (raw, {}), True: (raw, {})}  # without and with the level part
+        # best start without a level part, with the even, the odd and both level parts
+        best = {k: (raw, {}) for k in ("", "e", "o", "eo")}
+        off = {"f_e": Fixed(0.0), "a_e": Fixed(0.0), "f_o": Fixed(0.0)}
         for a_s in (0.1 * ctx.sa, 0.3 * ctx.sa, ctx.sa):
             ta = np.tanh(a / a_s)
             for v_c in np.geomspace(ex["v_c"].lo, ex["v_c"].hi, 7):
@@ -420,23 +435,33 @@ class Acceleration(Candidate):
                     for lag in lags:
                         b = _first_order(b0, fit.dt, lag)[sub]
                         odd = {"a_s": a_s, "v_c": float(v_c), "m_a": m, "tau_lag": lag}
-                        sse, c = _lsq(_with(b[:, None], B), rr[sub])
-                        if sse < best[False][0]:
-                            best[False] = (sse, {**odd, "f_a": c[0], "f_e": Fixed(0.0),
-                                                 "a_e": Fixed(0.0)})
+                        # (kind, level columns beside the part, their names, onset)
+                        trials = [("", [], (), 0.0), ("o", [odds[lag]], ("f_o",), 0.0)]
                         for a_e in self.LEVEL_ONSETS:
-                            cols = np.column_stack([b, levels[(a_e, lag)]])
-                            sse, c = _lsq(_with(cols, B), rr[sub])
-                            if sse < best[True][0]:
-                                best[True] = (sse, {**odd, "f_a": c[0], "f_e": c[1],
-                                                    "a_e": a_e * ctx.sa})
-        # the level part only where it changes the fit: fitted beside a part that is
-        # enough, it follows the fit record's noise (the damping rig's short records:
-        # 4 of its named memory, aging and flash-temperature truths lost, the level
+                            ev = evens[(a_e, lag)]
+                            trials += [("e", [ev], ("f_e",), a_e * ctx.sa),
+                                       ("eo", [ev, odds[lag]], ("f_e", "f_o"), a_e * ctx.sa)]
+                        for kind, cols, put, a_e in trials:
+                            sse, c = _lsq(_with(np.column_stack([b] + cols), B), rr[sub])
+                            if sse < best[kind][0]:
+                                vals = {**odd, **off, "f_a": c[0]}
+                                vals.update({k: c[j] for j, k in enumerate(put, 1)})
+                                if "f_e" in put:
+                                    vals["a_e"] = a_e
+                                best[kind] = (sse, vals)
+        # the level parts only where they change the fit: fitted beside a part that is
+        # enough, the even one followed the fit record's noise (the damping rig's short
+        # records: 4 of its named memory, aging and flash-temperature truths lost, the level
         # part's start 0.82-0.98 of the odd part's squared residual; the skid and
         # moment-load truths it reaches on the valve, 0.42-0.45)
-        p = best[best[True][0] < self.LEVEL_GAIN * best[False][0]][1]
-        for k in ("f_a", "f_e"):
+        kind = ""
+        one = min(("e", "o"), key=lambda k: best[k][0])
+        if best[one][0] < self.LEVEL_GAIN * best[""][0]:
+            kind = one
+            if best["eo"][0] < self.LEVEL_GAIN * best[one][0]:
+                kind = "eo"
+        p = best[kind][1]
+        for k in ("f_a", "f_e", "f_o"):
             if k in p and not isinstance(p[k], Fixed):
                 p[k] = float(np.clip(p[k], ex[k].lo, ex[k].hi))
         return p
@@ -468,9 +493,13 @@ class Acceleration(Candidate):
             raise ValueError(f"a_s = {p['a_s']!r} is out of bounds: the acceleration scale "
                              f"must be > 0 [m/s^2]")
         a = np.asarray(fit.a, float)
+        F = np.asarray(fit.F, float)
+        # the odd parts: the additive one and the odd level part (on a one-way stroke the
+        # level times a is a mass term too)
         Fd = p["f_a"] * np.tanh(a / p["a_s"]) * acceleration_weight(fit.v, p["v_c"],
-                                                                    p.get("m_a", 0.0))
-        lev = np.asarray(fit.F, float) * p.get("f_e", 0.0) * _over_onset(a, p.get("a_e", 0.0))
+                                                                    p.get("m_a", 0.0)) \
+            + F * p.get("f_o", 0.0) * a
+        lev = F * p.get("f_e", 0.0) * _over_onset(a, p.get("a_e", 0.0))
         aa, ee, ll = float(a @ a), float(Fd @ Fd), float(lev @ lev)
         if not (aa > 0 and ee > 0):
             return "", ""
@@ -491,7 +520,8 @@ class Acceleration(Candidate):
         lag = p.get("tau_lag", 0.0)
         # the level part (even in a), lagged as the rest: a cylinder's pressure follows
         # the force demand through the oil's compliance
-        lev = p.get("f_e", 0.0) * _over_onset(data.a, p.get("a_e", 0.0))
+        lev = p.get("f_e", 0.0) * _over_onset(data.a, p.get("a_e", 0.0)) \
+            + p.get("f_o", 0.0) * data.a
         return F * (1.0 + _first_order(lev, data.dt, lag)) + _first_order(Fd, data.dt, lag)
 
 
@@ -656,7 +686,12 @@ class Drift(Candidate):
     (:func:`friction.extensions.drift_change`). A warm-up that levels off within the record
     is the saturating part (the linear form alone closed 23 % of a +60 % warm-up of time
     constant T/3: it cannot bend), a change of lubricant or a regulated temperature is the
-    step; their time scales are chosen on the data (:meth:`start`).
+    step; their time scales are chosen on the data (:meth:`start`). A change that
+    accelerates (``k_run``, ``tau_run``: an exponential growth from the record's start,
+    normalised to its change over the record) is a runaway the other parts cannot forecast:
+    oil that oxidises autocatalytically once its antioxidant is spent, wear whose debris
+    feeds more wear. A linear trend and a saturating part of opposite signs bend that way
+    inside the record but not beyond it.
 
     Tried in session 10 and not kept: the same levels inside a classic LuGre's bristle
     dynamics (as :class:`LoadInside`): on the valve and the damping rig 1 drift case
@@ -679,7 +714,12 @@ class Drift(Candidate):
                 # record, so what repeats is told from a change that happens once
                 Extra("P_cyc", 0.5 * T, self.CYCLE_MIN * T, T / self.CYCLES_SEEN, "s"),
                 Extra("k_c1", 0.0, -1.0, 1.0, "1"), Extra("k_s1", 0.0, -1.0, 1.0, "1"),
-                Extra("k_c2", 0.0, -1.0, 1.0, "1"), Extra("k_s2", 0.0, -1.0, 1.0, "1")]
+                Extra("k_c2", 0.0, -1.0, 1.0, "1"), Extra("k_s2", 0.0, -1.0, 1.0, "1"),
+                # a change that accelerates (autocatalytic oxidation, wear feeding itself):
+                # its change over the fit record and its e-folding time, from a tenth of the
+                # record (sharper is a step's) to three records (slower is the trend's)
+                Extra("k_run", 0.0, -2.0, 2.0, "1"),
+                Extra("tau_run", 0.3 * T, 0.1 * T, 3.0 * T, "s")]
 
     #: shortest share of the fit record on either side of the step, and over which the
     #: saturating part may complete 95 % of its change (tau_sat >= STEP_MARGIN / 3 x T) [-]
@@ -712,7 +752,7 @@ class Drift(Candidate):
     #: record. (Choosing among every single part and pair too follows the noise of the
     #: record's last fifth: of the grid's 100 drift cases 65 named, 63 before, 12 gained and
     #: 10 lost; adding the trend alone to the two: 63; the trend question alone: 72)
-    FORMS = (("sat", "step"), ("lin", "sat", "step"))
+    FORMS = (("sat", "step"), ("lin", "sat", "step"), ("run", "step"))
     #: the form of a level that comes and goes, and the share of the chosen form's squared
     #: residual on the whole fit record below which it is taken instead [-]. (Not by
     #: forecasting the last fifth: an interval lubrication's shots leave it quiet, and every
@@ -729,7 +769,8 @@ class Drift(Candidate):
     #: each part's parameters (pinned where the chosen form leaves the part out) and the
     #: value that switches it off
     PARTS = {"lin": ("k_drift",), "sat": ("k_sat", "tau_sat"),
-             "step": ("k_step", "t_step", "w_step"), "cyc": DRIFT_CYCLE_NAMES}
+             "step": ("k_step", "t_step", "w_step"), "cyc": DRIFT_CYCLE_NAMES,
+             "run": ("k_run", "tau_run")}
     #: the periodic part's amplitudes, in the order of its regressors
     CYCLE_AMPS = DRIFT_CYCLE_NAMES[1:]
 
@@ -792,7 +833,8 @@ class Drift(Candidate):
                "tau_sat": grid.get("tau", ex["tau_sat"].x0), "k_step": amp.get("k_step", 0.0),
                "t_step": grid.get("ts", ex["t_step"].x0), "w_step": grid.get("w", ex["w_step"].x0),
                "P_cyc": grid.get("P", ex["P_cyc"].x0),
-               **{k: amp.get(k, 0.0) for k in self.CYCLE_AMPS}}
+               **{k: amp.get(k, 0.0) for k in self.CYCLE_AMPS},
+               "k_run": amp.get("k_run", 0.0), "tau_run": grid.get("taur", ex["tau_run"].x0)}
         out = {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
         for part, names in self.PARTS.items():
             if part not in form:
@@ -809,9 +851,9 @@ class Drift(Candidate):
     def _amplitudes(self, form):
         """The amplitude names of the regressors of ``form``, in :meth:`_form_columns`'
         order."""
-        names = {"lin": ("k_drift",), "sat": ("k_sat",), "step": ("k_step",),
-                 "cyc": self.CYCLE_AMPS}
-        return [n for part in ("lin", "cyc", "sat", "step") if part in form
+        names = {"lin": ("k_drift",), "run": ("k_run",), "sat": ("k_sat",),
+                 "step": ("k_step",), "cyc": self.CYCLE_AMPS}
+        return [n for part in ("lin", "run", "cyc", "sat", "step") if part in form
                 for n in names[part]]
 
     def _form_columns(self, form, t, f, rr, ctx, ex, ts_hi, fixed=None, nuis=None,
@@ -832,8 +874,16 @@ class Drift(Candidate):
         def cyc(P):
             psi = 2.0 * np.pi * (t - ctx.t0) / P
             return [f * np.cos(psi), f * np.sin(psi), f * np.cos(2 * psi), f * np.sin(2 * psi)]
+        def run(tau):
+            return f * np.expm1(np.clip(t - ctx.t0, 0.0, None) / tau) / np.expm1(T / tau)
         grid = dict(fixed or {})
         base = [lin] if "lin" in form else []
+        if "run" in form:
+            if "taur" not in grid:
+                taus = np.geomspace(ex["tau_run"].lo, ex["tau_run"].hi, 16)
+                grid["taur"] = min(taus, key=lambda tau: _lsq(
+                    _with(np.column_stack(base + [run(tau)]), nuis), rr)[0])
+            base = base + [run(grid["taur"])]
         if "cyc" in form:
             if "P" not in grid:
                 grid["P"] = min(periods, key=lambda P: _lsq(

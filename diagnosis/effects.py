@@ -249,7 +249,7 @@ _G = "diagnosis.effects_gms:"
 EFFECTS: dict[str, Effect] = {e.name: e for e in (
     Effect(Acceleration("acceleration", "acceleration-dependent part / frictional lag "
                         "(seed 000), levels raised by |a|", "additive"),
-           plant_entry="force", fmu=True, levels=("f_a", "f_e"), inputs=("a",),
+           plant_entry="force", fmu=True, levels=("f_a", "f_e", "f_o"), inputs=("a",),
            families=("accel/decel", "|a|"), evidence=("|a|",),
            truths={"lagged_fd": _T + "acceleration_truth",
                    "frictional_memory": _F + "frictional_memory_truth",

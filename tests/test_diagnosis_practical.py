@@ -180,6 +180,13 @@ def test_stroke_map_and_drift_forms_are_the_documented_formulas():
     np.testing.assert_allclose(drift_change(t, e), want, atol=1e-14)
     e = pack_extensions({"drift": {"P_cyc": 0.0, "k_c1": 0.1}}, t0=0.5, T=2.0)
     assert not np.any(drift_change(t, e))
+    # the accelerating part: 0 before t0, k_run at t0 + T, exponential between
+    e = pack_extensions({"drift": {"k_run": 0.3, "tau_run": 0.4}}, t0=0.5, T=2.0)
+    want = np.where(t > 0.5, 0.3 * np.expm1((t - 0.5) / 0.4) / np.expm1(2.0 / 0.4), 0.0)
+    np.testing.assert_allclose(drift_change(t, e), want, atol=1e-14)
+    assert drift_change(np.array([2.5]), e)[0] == pytest.approx(0.3)
+    with pytest.raises(ValueError, match="tau_run = 0.0 is out of bounds"):
+        pack_extensions({"drift": {"k_run": 0.3, "tau_run": 0.0}}, t0=0.5, T=2.0)
     with pytest.raises(ValueError, match="k_s2 = .*nan.* is not a finite number"):
         pack_extensions({"drift": {"P_cyc": 0.7, "k_s2": float("nan")}}, t0=0.5, T=2.0)
 
@@ -194,7 +201,12 @@ def test_acceleration_level_part_is_even_in_a_and_starts_at_its_onset():
         assert extension_force(2.0, 0.1, a, 0.0, 1.0, 0.0, e) == pytest.approx(want)
     with pytest.raises(ValueError, match="a_e = -0.1 is out of bounds"):
         pack_extensions({"acceleration": {"f_a": 0.0, "a_s": 1.0, "v_c": 1.0, "a_e": -0.1}})
-    for k in ("f_e", "f_a", "a_e"):
+    # the odd level part F (1 + f_o a): braking lowers the level accelerating raises
+    e = pack_extensions({"acceleration": {"f_a": 0.0, "a_s": 1.0, "v_c": 1.0, "f_o": 0.1}})
+    for a, want in ((1.5, 2.0 * 1.15), (-1.5, 2.0 * 0.85), (0.0, 2.0)):
+        assert extension_force(2.0, 0.1, a, 0.0, 1.0, 0.0, e) == pytest.approx(want)
+    assert extension_force(-2.0, -0.1, 1.5, 0.0, 1.0, 0.0, e) == pytest.approx(-2.0 * 1.15)
+    for k in ("f_e", "f_a", "a_e", "f_o"):
         with pytest.raises(ValueError, match=f"{k} = nan"):
             pack_extensions({"acceleration": {"f_a": 0.0, "a_s": 1.0, "v_c": 1.0,
                                               k: float("nan")}})
@@ -237,6 +249,12 @@ def test_an_acceleration_part_that_is_a_mass_term_defers_to_inertia():
     # reflected inertia) is still the mass error
     geared = dict(level, f_a=3.0, f_e=0.3 / ctx.sa)  # level part 0.3 x the odd part
     assert acc.defers(geared, fit_F, ctx)[0] == "inertia"
+    # the odd level part F f_o a: on a reversing stroke it follows the direction of
+    # sliding (no mass term); on a one-way stroke (F of one sign) it is dm a
+    odd_level = dict(mass_like, f_a=0.0, f_o=0.5 / ctx.sa)
+    assert acc.defers(odd_level, fit_F, ctx) == ("", "")
+    one_way = Dataset.from_arrays(t, 1.0 + 0.01 * v, x=fit.x, v=v, a=a)
+    assert acc.defers(odd_level, one_way, ctx)[0] == "inertia"
     with pytest.raises(ValueError, match="a_s"):
         acc.defers(dict(mass_like, a_s=0.0), fit, ctx)
     # the other candidates never defer

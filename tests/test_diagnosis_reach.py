@@ -153,6 +153,51 @@ def test_drift_start_keeps_its_trend_only_where_the_trend_forecasts():
     assert comp.extras["k_step"] == pytest.approx(0.3, abs=0.1)
 
 
+def test_drift_start_forecasts_a_runaway():
+    """Oil whose antioxidant is spent at 0.1 T oxidises autocatalytically: its levels grow
+    exponentially (e-folding 0.25 T) after an induction period with none. Fitted on the
+    record's first 70 %, the start takes the accelerating part (``k_run``, ``tau_run``),
+    and it forecasts the last 30 % - where most of the change comes - better than the trend
+    and the saturating part, which bend that way inside the record but not beyond it. (A
+    runaway whose start is still within the noise at the end of the fit record, as the
+    grid's antioxidant form with its induction to 0.35 T, is beyond any forecast.)"""
+    from diagnosis.candidates import Fixed
+    from diagnosis.effects import CANDIDATES, make_context
+    data = make_case("clean", 1.0, 0.0, n=6000)
+    whole = make_context(data)
+    u = (data.t - whole.t0) / whole.T
+    level = 1.0 + 0.5 * np.sin(2 * np.pi * 7.3 * u)  # friction varies with the motion
+    y = np.expm1(np.clip(u - 0.1, 0.0, None) / 0.25)
+    d = 0.6 * y / y[-1]
+    rng = np.random.default_rng(7)
+    r = level * d + 0.01 * rng.standard_normal(u.size)
+    fit_data = data.split(0.7)[0]
+    ctx = make_context(fit_data)
+    n = len(fit_data)
+    drift = CANDIDATES["drift"]
+    p = drift.start(fit_data, level[:n], r[:n], ctx)
+    assert not isinstance(p["k_run"], Fixed) and p["k_run"] > 0
+    forecast = level * drift_change_of(drift, p, data, ctx)
+    miss = r[n:] - forecast[n:]
+    # the forms without it, each fitted alone on the same record
+    for form in (("lin", "sat", "step"), ("sat", "step")):
+        drift.FORMS = (form,)  # this instance only, for the comparison
+        try:
+            q = drift.start(fit_data, level[:n], r[:n], ctx)
+        finally:
+            del drift.FORMS
+        other = r[n:] - level[n:] * drift_change_of(drift, q, data, ctx)[n:]
+        assert np.sqrt(np.mean(miss ** 2)) < 0.5 * np.sqrt(np.mean(other ** 2)), form
+    assert np.sqrt(np.mean(miss ** 2)) < 0.25 * np.sqrt(np.mean(d[n:] ** 2))
+
+
+def drift_change_of(drift, p, data, ctx):
+    """The relative level change d(t) [-] of the drift candidate's values ``p`` on
+    ``data``'s times."""
+    from friction.extensions import drift_change
+    return drift_change(data.t, drift._packed({k: float(v) for k, v in p.items()}, ctx))
+
+
 def test_drift_start_finds_a_level_that_comes_and_goes():
     # an ambient cycling under a thermostat or interval lubrication's shots: the level
     # repeats with a period of a fraction of the record. The start picks the periodic
@@ -421,3 +466,47 @@ def test_backlash_of_two_counts_has_no_practical_size():
     ctx0 = Context(sF=10.0, sv=0.5, sa=15.0, x_lo=0.0, x_hi=0.05, t0=0.0, T=1.0, dt=1e-3,
                    L0=None, L_span=0.0)
     assert cand.practical({"backlash_gap": 2.0e-5}, ctx0) == ""
+
+
+def test_acceleration_level_odd_in_a_draws_a_pitching_carriage():
+    """A carriage whose centre of mass sits h above its drive line pitches when it
+    accelerates: m a h / L of normal load moves from the front support (a rolling block,
+    mu 0.01) onto the rear one (a sliding pad, mu 0.1), until the front one would lift off.
+    The friction level then follows the signed acceleration in both directions of sliding
+    (more pushing forwards and braking backwards, less the other two ways): neither the odd
+    additive part nor the even level part draws it; the odd level part f_o does, with the
+    sign and size of the transfer, and the start pins the even part off."""
+    from diagnosis.candidates import Fixed
+    from diagnosis.effects import CANDIDATES, make_context
+    from friction.dataset import Dataset
+    t = np.linspace(0.0, 4.0, 4001)
+    x = 0.05 * np.sin(2 * np.pi * 0.5 * t) + 0.01 * np.sin(2 * np.pi * 1.7 * t)
+    v = np.gradient(x, t)
+    a = np.gradient(v, t)
+    m, g0, h, L = 20.0, 9.81, 0.1, 0.4
+    dN = np.clip(m * a * h / L, -0.5 * m * g0, 0.5 * m * g0)  # rear gains, front loses [N]
+    N_rear, N_front = 0.5 * m * g0 + dN, 0.5 * m * g0 - dN
+    level0 = 0.1 * 0.5 * m * g0 + 0.01 * 0.5 * m * g0         # at rest [N]
+    F = (0.1 * N_rear + 0.01 * N_front) * np.tanh(v / 0.005)
+    Ff = level0 * np.tanh(v / 0.005)                          # the base, fitted at rest
+    rng = np.random.default_rng(3)
+    data = Dataset.from_arrays(t=t, x=x, v=v, a=a,
+                               F=F + 0.005 * level0 * rng.standard_normal(t.size))
+    ctx = make_context(data)
+    acc = CANDIDATES["acceleration"]
+    p = acc.start(data, Ff, np.asarray(data.F) - Ff, ctx)
+    # the transfer's relative level change per m/s^2: (0.1 - 0.01) m h / L / level0
+    want = 0.09 * m * h / L / level0
+    assert p["f_o"] == pytest.approx(want, rel=0.1)
+    assert isinstance(p["f_e"], Fixed) and p["f_e"] == 0.0
+    left = np.asarray(data.F) - acc.apply(Ff, p, data, ctx)
+    assert np.std(left) < 1.1 * 0.005 * level0  # down to the noise (the part is 7 x it)
+    # the in-process formula is the extension's (the friction_effects FMU block's)
+    from friction.extensions import extension_force, pack_extensions
+    q = dict(p, tau_lag=0.0)
+    e = pack_extensions({"acceleration": {k: float(q[k]) for k in
+                                          ("f_a", "a_s", "v_c", "m_a", "f_e", "a_e", "f_o")}})
+    direct = acc.apply(Ff, q, data, ctx)
+    for k in range(0, t.size, 97):
+        assert extension_force(Ff[k], v[k], a[k], x[k], 1.0, t[k], e) == \
+            pytest.approx(direct[k], rel=1e-12, abs=1e-12)

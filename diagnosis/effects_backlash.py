@@ -224,7 +224,7 @@ class Backlash(LawCandidate):
                     f"samples of a reversal ({floor:.3g} m at the record's acceleration): "
                     f"what a sub-sample shift makes there")
         if "Fc" in p and "Fs" in p:
-            held, level = across_force(p), max(float(p["Fc"]), float(p["Fs"]))
+            held, level = across_force(p), _break_away(p)
             if held > level:
                 return (f"what bridges its play pushes the contact with up to {held:.3g} N, "
                         f"beyond its break-away level {level:.3g} N: the contact would not "
@@ -429,9 +429,9 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
 
 def _break_away(p) -> float:
     """The contact's break-away level [N]: the largest static level of the law's values
-    ``p`` (either direction)."""
-    return max(float(x) for x in (p.Fc, p.Fs, getattr(p, "Fc_neg", None) or 0.0,
-                                  getattr(p, "Fs_neg", None) or 0.0))
+    ``p`` (a mapping or parameters; either direction)."""
+    get = p.get if isinstance(p, dict) else (lambda n, d=None: getattr(p, n, d))
+    return max(float(get(n, None) or 0.0) for n in ("Fc", "Fs", "Fc_neg", "Fs_neg"))
 
 
 def across_force(p) -> float:

@@ -501,6 +501,12 @@ def test_acceleration_level_odd_in_a_draws_a_pitching_carriage():
     assert isinstance(p["f_e"], Fixed) and p["f_e"] == 0.0
     left = np.asarray(data.F) - acc.apply(Ff, p, data, ctx)
     assert np.std(left) < 1.1 * 0.005 * level0  # down to the noise (the part is 7 x it)
+    # on a one-way stroke (the force of one sign) F f_o a is a mass error scaled by the
+    # level: the start does not try it
+    one_way = Dataset.from_arrays(t=t, x=x, v=v, a=a, F=np.abs(np.asarray(data.F)))
+    q1 = acc.start(one_way, np.abs(Ff), np.abs(np.asarray(data.F)) - np.abs(Ff),
+                   make_context(one_way))
+    assert isinstance(q1["f_o"], Fixed) and q1["f_o"] == 0.0
     # the in-process formula is the extension's (the friction_effects FMU block's)
     from friction.extensions import extension_force, pack_extensions
     q = dict(p, tau_lag=0.0)

@@ -380,7 +380,7 @@ EFFECTS_INPUTS = (("F_law", "N", "force of the friction law"),
                   ("x", "m", "position"),
                   ("load", "N", "normal load"))
 #: effects block: parameters that must be > 0 (the others are free or switches)
-EFFECTS_POSITIVE = ("a_s", "v_c", "T", "L0", "tau_run")
+EFFECTS_POSITIVE = ("a_s", "v_c", "T", "L0")
 #: parameters of the ``friction_effects`` block that must be >= 0
 EFFECTS_NONNEGATIVE = ("m_a", "a_e")
 

@@ -11,10 +11,7 @@ applied in the order multiplicative then additive:
                    ``d = k_drift (t - t0) / T + k_sat (1 - exp(-(t - t0) / tau_sat))
                    + k_step / (1 + exp(-(t - t_step) / w_step))`` (the saturating part 0
                    before ``t0``; ``tau_sat <= 0``: a step at ``t0``; ``w_step <= 0``: a
-                   sharp step), an accelerating part ``k_run (exp((t - t0) / tau_run) - 1)
-                   / (exp(T / tau_run) - 1)`` (0 before ``t0``; ``k_run`` the change at
-                   ``t0 + T``; a runaway: autocatalytic oil oxidation, wear that feeds
-                   itself), plus a part that comes and goes with period ``P_cyc``
+                   sharp step), plus a part that comes and goes with period ``P_cyc``
                    (two harmonics, ``k_c1 cos(psi) + k_s1 sin(psi) + k_c2 cos(2 psi) +
                    k_s2 sin(2 psi)``, ``psi = 2 pi (t - t0) / P_cyc``; ``P_cyc <= 0``:
                    none): an ambient that cycles under a thermostat or a dehumidifier, an
@@ -56,7 +53,7 @@ import numpy as np
 from numba import njit
 
 __all__ = ["EXTENSIONS", "EXTENSION_PARAMS", "EXTENSION_INDEX", "POSITION_KNOTS", "POSITION_NAMES",
-           "POSITION_FORM_NAMES", "DRIFT_NAMES", "DRIFT_CYCLE_NAMES", "DRIFT_RUN_NAMES", "extension_force", "pack_extensions",
+           "POSITION_FORM_NAMES", "DRIFT_NAMES", "DRIFT_CYCLE_NAMES", "extension_force", "pack_extensions",
            "acceleration_weight",
            "position_map", "position_change", "drift_change"]
 
@@ -76,11 +73,7 @@ POSITION_FORM_NAMES = ("lambda_x", "p_c1", "p_s1", "p_c2", "p_s2", "d_x", "x_d",
 #: the drift's periodic part (period [s], relative cosine/sine amplitudes of the first two
 #: harmonics [-]); appended last in the packed layout, so earlier FMU value references stay
 DRIFT_CYCLE_NAMES = ("P_cyc", "k_c1", "k_s1", "k_c2", "k_s2")
-#: the drift's accelerating part (relative change at t0 + T [-], e-folding time [s]);
-#: appended last in the packed layout
-DRIFT_RUN_NAMES = ("k_run", "tau_run")
-DRIFT_NAMES = ("k_drift", "k_sat", "tau_sat", "k_step", "t_step", "w_step") + DRIFT_CYCLE_NAMES \
-    + DRIFT_RUN_NAMES
+DRIFT_NAMES = ("k_drift", "k_sat", "tau_sat", "k_step", "t_step", "w_step") + DRIFT_CYCLE_NAMES
 
 #: packed layout: (name, default, unit, description)
 EXTENSION_PARAMS = (
@@ -131,9 +124,6 @@ EXTENSION_PARAMS = (
     ("a_e", 0.0, "m/s^2", "|a| from which the acceleration part's level part acts (>= 0)"),
     ("f_o", 0.0, "s^2/m", "relative level change per m/s^2 of the signed acceleration (the "
                           "acceleration part's level part, odd in a)"),
-    ("k_run", 0.0, "1", "relative level change at t0 + T of the drift's accelerating part, "
-                        "k_run (exp((t - t0) / tau_run) - 1) / (exp(T / tau_run) - 1)"),
-    ("tau_run", 1.0, "s", "e-folding time of the drift's accelerating part (> 0)"),
 )
 
 #: index of each name in the packed vector
@@ -150,10 +140,6 @@ _K_SAT, _TAU_SAT, _K_STEP, _T_STEP, _W_STEP = (EXTENSION_INDEX[k] for k in
 _USE_LOAD, _L0, _K_L = (EXTENSION_INDEX[k] for k in ("use_load", "L0", "k_L"))
 _P_CYC, _K_C1 = (EXTENSION_INDEX[k] for k in ("P_cyc", "k_c1"))
 _F_E, _A_E, _F_O = (EXTENSION_INDEX[k] for k in ("f_e", "a_e", "f_o"))
-_K_RUN, _TAU_RUN = (EXTENSION_INDEX[k] for k in ("k_run", "tau_run"))
-#: largest exponent of the accelerating part (a forecast far beyond the record saturates
-#: there instead of overflowing)
-_RUN_MAX = 50.0
 _NK = POSITION_KNOTS
 _TWO_PI = 2.0 * math.pi
 
@@ -241,9 +227,6 @@ def _drift_m(t, e):
             d += e[_K_STEP] * 0.5 * (1.0 + math.tanh(0.5 * (t - e[_T_STEP]) / e[_W_STEP]))
         elif t >= e[_T_STEP]:
             d += e[_K_STEP]
-    if e[_K_RUN] != 0.0 and s > 0.0:  # accelerating part, k_run at t0 + T
-        d += e[_K_RUN] * math.expm1(min(s / e[_TAU_RUN], _RUN_MAX)) \
-            / math.expm1(min(e[_T] / e[_TAU_RUN], _RUN_MAX))
     if e[_P_CYC] > 0.0:  # periodic part, two harmonics (k_c1, k_s1, k_c2, k_s2 in a row)
         psi = _TWO_PI * s / e[_P_CYC]
         d += (e[_K_C1] * math.cos(psi) + e[_K_C1 + 1] * math.sin(psi)
@@ -376,9 +359,6 @@ def pack_extensions(effects: dict, *, x_lo: float = 0.0, x_hi: float = 1.0, t0: 
                     e[ix[n]] = p[n]
                 if not np.isfinite(e[ix[n]]):
                     raise ValueError(f"{n} = {e[ix[n]]!r} is not a finite number")
-            if not e[ix["tau_run"]] > 0:
-                raise ValueError(f"tau_run = {float(e[ix['tau_run']])!r} is out of bounds: "
-                                 f"must be > 0 [s]")
             e[ix["t0"]], e[ix["T"]] = t0, T
         elif name == "load":
             if L0 is None or not L0 > 0:

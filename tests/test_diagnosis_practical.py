@@ -180,13 +180,6 @@ def test_stroke_map_and_drift_forms_are_the_documented_formulas():
     np.testing.assert_allclose(drift_change(t, e), want, atol=1e-14)
     e = pack_extensions({"drift": {"P_cyc": 0.0, "k_c1": 0.1}}, t0=0.5, T=2.0)
     assert not np.any(drift_change(t, e))
-    # the accelerating part: 0 before t0, k_run at t0 + T, exponential between
-    e = pack_extensions({"drift": {"k_run": 0.3, "tau_run": 0.4}}, t0=0.5, T=2.0)
-    want = np.where(t > 0.5, 0.3 * np.expm1((t - 0.5) / 0.4) / np.expm1(2.0 / 0.4), 0.0)
-    np.testing.assert_allclose(drift_change(t, e), want, atol=1e-14)
-    assert drift_change(np.array([2.5]), e)[0] == pytest.approx(0.3)
-    with pytest.raises(ValueError, match="tau_run = 0.0 is out of bounds"):
-        pack_extensions({"drift": {"k_run": 0.3, "tau_run": 0.0}}, t0=0.5, T=2.0)
     with pytest.raises(ValueError, match="k_s2 = .*nan.* is not a finite number"):
         pack_extensions({"drift": {"P_cyc": 0.7, "k_s2": float("nan")}}, t0=0.5, T=2.0)
 

@@ -153,51 +153,6 @@ def test_drift_start_keeps_its_trend_only_where_the_trend_forecasts():
     assert comp.extras["k_step"] == pytest.approx(0.3, abs=0.1)
 
 
-def test_drift_start_forecasts_a_runaway():
-    """Oil whose antioxidant is spent at 0.1 T oxidises autocatalytically: its levels grow
-    exponentially (e-folding 0.25 T) after an induction period with none. Fitted on the
-    record's first 70 %, the start takes the accelerating part (``k_run``, ``tau_run``),
-    and it forecasts the last 30 % - where most of the change comes - better than the trend
-    and the saturating part, which bend that way inside the record but not beyond it. (A
-    runaway whose start is still within the noise at the end of the fit record, as the
-    grid's antioxidant form with its induction to 0.35 T, is beyond any forecast.)"""
-    from diagnosis.candidates import Fixed
-    from diagnosis.effects import CANDIDATES, make_context
-    data = make_case("clean", 1.0, 0.0, n=6000)
-    whole = make_context(data)
-    u = (data.t - whole.t0) / whole.T
-    level = 1.0 + 0.5 * np.sin(2 * np.pi * 7.3 * u)  # friction varies with the motion
-    y = np.expm1(np.clip(u - 0.1, 0.0, None) / 0.25)
-    d = 0.6 * y / y[-1]
-    rng = np.random.default_rng(7)
-    r = level * d + 0.01 * rng.standard_normal(u.size)
-    fit_data = data.split(0.7)[0]
-    ctx = make_context(fit_data)
-    n = len(fit_data)
-    drift = CANDIDATES["drift"]
-    p = drift.start(fit_data, level[:n], r[:n], ctx)
-    assert not isinstance(p["k_run"], Fixed) and p["k_run"] > 0
-    forecast = level * drift_change_of(drift, p, data, ctx)
-    miss = r[n:] - forecast[n:]
-    # the forms without it, each fitted alone on the same record
-    for form in (("lin", "sat", "step"), ("sat", "step")):
-        drift.FORMS = (form,)  # this instance only, for the comparison
-        try:
-            q = drift.start(fit_data, level[:n], r[:n], ctx)
-        finally:
-            del drift.FORMS
-        other = r[n:] - level[n:] * drift_change_of(drift, q, data, ctx)[n:]
-        assert np.sqrt(np.mean(miss ** 2)) < 0.5 * np.sqrt(np.mean(other ** 2)), form
-    assert np.sqrt(np.mean(miss ** 2)) < 0.25 * np.sqrt(np.mean(d[n:] ** 2))
-
-
-def drift_change_of(drift, p, data, ctx):
-    """The relative level change d(t) [-] of the drift candidate's values ``p`` on
-    ``data``'s times."""
-    from friction.extensions import drift_change
-    return drift_change(data.t, drift._packed({k: float(v) for k, v in p.items()}, ctx))
-
-
 def test_drift_start_finds_a_level_that_comes_and_goes():
     # an ambient cycling under a thermostat or interval lubrication's shots: the level
     # repeats with a period of a fraction of the record. The start picks the periodic

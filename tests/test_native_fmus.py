@@ -340,7 +340,7 @@ def test_effects_block_equals_the_formula(ndir):
                          "drift": {"k_drift": 0.05, "k_sat": 0.4, "tau_sat": 0.01,
                                    "k_step": -0.2, "t_step": 0.02, "w_step": 0.002,
                                    "P_cyc": 0.013, "k_c1": 0.1, "k_s1": -0.05, "k_c2": 0.02,
-                                   "k_s2": -0.03, "k_run": 0.3, "tau_run": 0.02},
+                                   "k_s2": -0.03},
                          "load": {"k_L": 0.8}},
                         x_lo=0.0, x_hi=0.1, t0=0.0, T=2.0, L0=50.0)
     s = LoggedSlave(_path(ndir, "friction_effects"))
@@ -362,7 +362,6 @@ def test_effects_block_equals_the_formula(ndir):
     assert s.set("a_s", 0.0) == 3 and "a_s > 0" in s.errors()[-1]
     assert s.set("m_a", -0.5) == 3 and "m_a >= 0" in s.errors()[-1]
     assert s.set("a_e", -0.5) == 3 and "a_e >= 0" in s.errors()[-1]
-    assert s.set("tau_run", 0.0) == 3 and "tau_run > 0" in s.errors()[-1]
     assert s.set("m_a", 0.0) == 0  # seed 000's weight, exp(-|v| / v_c)
     s.close()
 

@@ -4,14 +4,10 @@
  * FL_E_* indices into fl_model.h from that one Python list): switches use_* (0 or 1), the
  * acceleration part (f_a, a_s, v_c, m_a and its level parts f_e, a_e, f_o), the position map
  * (x_lo, x_hi, c_x1.., the waviness lambda_x, p_c1, p_s1, p_c2, p_s2 and the local defect
- * d_x, x_d, w_d), the drift (k_drift, t0, T, k_sat, tau_sat, k_step, t_step, w_step, the
- * periodic part P_cyc, k_c1, k_s1, k_c2, k_s2 and the accelerating part k_run, tau_run) and
- * the load levels (L0, k_L). */
+ * d_x, x_d, w_d), the drift (k_drift, t0, T, k_sat, tau_sat, k_step, t_step, w_step and
+ * the periodic part P_cyc, k_c1, k_s1, k_c2, k_s2) and the load levels (L0, k_L). */
 #ifndef FL_EFFECTS_H
 #define FL_EFFECTS_H
-
-/* largest exponent of the drift's accelerating part (friction.extensions._RUN_MAX) */
-#define FL_RUN_MAX 50.0
 
 #include <math.h>
 #include <stdio.h>
@@ -71,11 +67,6 @@ static double fl_drift_m(double t, const double *e)
             d += e[FL_E_K_STEP] * 0.5 * (1.0 + tanh(0.5 * (t - e[FL_E_T_STEP]) / e[FL_E_W_STEP]));
         else if (t >= e[FL_E_T_STEP])
             d += e[FL_E_K_STEP];
-    }
-    if (e[FL_E_K_RUN] != 0.0 && s > 0.0) {  /* accelerating part, k_run at t0 + T */
-        double u = s / e[FL_E_TAU_RUN], uT = e[FL_E_T] / e[FL_E_TAU_RUN];
-        d += e[FL_E_K_RUN] * expm1(u < FL_RUN_MAX ? u : FL_RUN_MAX)
-             / expm1(uT < FL_RUN_MAX ? uT : FL_RUN_MAX);
     }
     if (e[FL_E_P_CYC] > 0.0) {  /* periodic part, two harmonics */
         double psi = 2.0 * 3.14159265358979323846 * s / e[FL_E_P_CYC];

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen12`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen13`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -242,6 +242,7 @@ _S9 = "diagnosis.benchmark.seen9:"
 _S10 = "diagnosis.benchmark.seen10:"
 _S11 = "diagnosis.benchmark.seen11:"
 _S12 = "diagnosis.benchmark.seen12:"
+_S13 = "diagnosis.benchmark.seen13:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -265,8 +266,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "weight_transfer": _S9 + "weight_transfer_truth",
                    "oil_slosh": _S10 + "oil_slosh_truth",
                    "dilatancy_hardening": _S11 + "dilatancy_hardening_truth",
-                   "tilt_wedge": _S12 + "tilt_wedge_truth"},
-           sealed={"sprung_gib": _S + "sprung_gib_truth"},
+                   "tilt_wedge": _S12 + "tilt_wedge_truth",
+                   "sprung_gib": _S13 + "sprung_gib_truth"},
+           sealed={"payne_softening": _S + "payne_softening_truth"},
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
@@ -285,8 +287,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "squeeze_cavitation": _S9 + "squeeze_cavitation_truth",
                    "piezoviscous_film": _S10 + "piezoviscous_film_truth",
                    "full_contact": _S11 + "full_contact_truth",
-                   "flash_desorption": _S12 + "flash_desorption_truth"},
-           sealed={"scuffing_healing": _S + "scuffing_healing_truth"},
+                   "flash_desorption": _S12 + "flash_desorption_truth",
+                   "scuffing_healing": _S13 + "scuffing_healing_truth"},
+           sealed={"normal_stress_memory": _S + "normal_stress_memory_truth"},
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
@@ -305,8 +308,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "meter_out_throttle": _S9 + "meter_out_throttle_truth",
                    "differential_cylinder": _S10 + "differential_cylinder_truth",
                    "chevron_grooves": _S11 + "chevron_grooves_truth",
-                   "helical_buckling": _S12 + "helical_buckling_truth"},
-           sealed={"chip_scraper": _S + "chip_scraper_truth"},
+                   "helical_buckling": _S12 + "helical_buckling_truth",
+                   "chip_scraper": _S13 + "chip_scraper_truth"},
+           sealed={"hall_commutation": _S + "hall_commutation_truth"},
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
                          "Stribeck curve shape: exponent, Lorentzian, a speed map",
@@ -325,8 +329,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "dither_averaging": _S9 + "dither_averaging_truth",
                    "melt_lubrication": _S10 + "melt_lubrication_truth",
                    "granular_flow": _S11 + "granular_flow_truth",
-                   "readsorption": _S12 + "readsorption_truth"},
-           sealed={"thermoviscous_film": _S + "thermoviscous_film_truth"},
+                   "readsorption": _S12 + "readsorption_truth",
+                   "thermoviscous_film": _S13 + "thermoviscous_film_truth"},
+           sealed={"turbulent_film": _S + "turbulent_film_truth"},
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -349,8 +354,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "air_spring": _S9 + "air_spring_truth",
                    "bolt_holes": _S10 + "bolt_holes_truth",
                    "immersed_plunger": _S11 + "immersed_plunger_truth",
-                   "beam_sag": _S12 + "beam_sag_truth"},
-           sealed={"festoon_cable": _S + "festoon_cable_truth"},
+                   "beam_sag": _S12 + "beam_sag_truth",
+                   "festoon_cable": _S13 + "festoon_cable_truth"},
+           sealed={"curved_guide": _S + "curved_guide_truth"},
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
@@ -368,8 +374,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "pick_and_place": _S9 + "pick_and_place_truth",
                    "eddy_coupling": _S10 + "eddy_coupling_truth",
                    "centrifugal_flyweights": _S11 + "centrifugal_flyweights_truth",
-                   "fluid_coupling": _S12 + "fluid_coupling_truth"},
-           sealed={"telescopic_stage": _S + "telescopic_stage_truth"},
+                   "fluid_coupling": _S12 + "fluid_coupling_truth",
+                   "telescopic_stage": _S13 + "telescopic_stage_truth"},
+           sealed={"frame_recoil": _S + "frame_recoil_truth"},
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
@@ -388,8 +395,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "deadband_reporting": _S9 + "deadband_reporting_truth",
                    "spatial_sampling": _S10 + "spatial_sampling_truth",
                    "belt_transit": _S11 + "belt_transit_truth",
-                   "aerated_load_cell": _S12 + "aerated_load_cell_truth"},
-           sealed={"lossy_telemetry": _S + "lossy_telemetry_truth"},
+                   "aerated_load_cell": _S12 + "aerated_load_cell_truth",
+                   "lossy_telemetry": _S13 + "lossy_telemetry_truth"},
+           sealed={"charge_leakage": _S + "charge_leakage_truth"},
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
@@ -409,8 +417,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "coating_wear_through": _S9 + "coating_wear_through_truth",
                    "polymer_swelling": _S10 + "polymer_swelling_truth",
                    "zddp_tribofilm": _S11 + "zddp_tribofilm_truth",
-                   "particle_ingress": _S12 + "particle_ingress_truth"},
-           sealed={"differential_expansion": _S + "differential_expansion_truth"},
+                   "particle_ingress": _S12 + "particle_ingress_truth",
+                   "differential_expansion": _S13 + "differential_expansion_truth"},
+           sealed={"shear_degradation": _S + "shear_degradation_truth"},
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),
@@ -428,8 +437,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "magnetic_coupling": _S9 + "magnetic_coupling_truth",
                    "preloaded_nut": _S10 + "preloaded_nut_truth",
                    "harmonic_drive": _S11 + "harmonic_drive_truth",
-                   "wire_rope": _S12 + "wire_rope_truth"},
-           sealed={"jaw_coupling": _S + "jaw_coupling_truth"},
+                   "wire_rope": _S12 + "wire_rope_truth",
+                   "jaw_coupling": _S13 + "jaw_coupling_truth"},
+           sealed={"hydraulic_link": _S + "hydraulic_link_truth"},
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
                         "Maxwell-slip)", "modify_law"),
@@ -447,8 +457,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "gouge_fabric": _S9 + "gouge_fabric_truth",
                    "kinematic_hardening": _S10 + "kinematic_hardening_truth",
                    "asperity_interlocking": _S11 + "asperity_interlocking_truth",
-                   "capillary_bridges": _S12 + "capillary_bridges_truth"},
-           sealed={"cyclic_hardening": _S + "cyclic_hardening_truth"},
+                   "capillary_bridges": _S12 + "capillary_bridges_truth",
+                   "cyclic_hardening": _S13 + "cyclic_hardening_truth"},
+           sealed={"junction_peeling": _S + "junction_peeling_truth"},
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 

@@ -5,8 +5,6 @@ import numpy as np
 import pytest
 
 from diagnosis.benchmark import plant_kinematics
-from diagnosis.effects import EFFECTS
-from truth_form_checks import assert_builds_and_grows
 
 #: the family's form of each effect
 FORM = {"acceleration": "contact_aging", "load": "load_stribeck", "asymmetry": "lip_roll",
@@ -19,18 +17,6 @@ FORM = {"acceleration": "contact_aging", "load": "load_stribeck", "asymmetry": "
 PLANT = {"acceleration": "xml350", "load": "mre_isolator", "asymmetry": "xml350",
          "stribeck_shape": "xml350", "position": "xml350", "inertia": "xml350",
          "delay": "xml350", "drift": "xml350", "backlash": "xml350", "gms": "xml350"}
-
-
-def test_the_family_is_in_the_open_grid_before_seen3():
-    for effect, form in FORM.items():
-        # the third to thirteenth seen families (diagnosis.benchmark.seen3 to .seen13) after it
-        assert EFFECTS[effect].forms("all")[-12] == form, effect
-        assert EFFECTS[effect].truth(form).__module__ == "diagnosis.benchmark.seen2"
-
-
-@pytest.mark.parametrize("effect", sorted(PLANT))
-def test_seen2_form_builds_a_case_and_grows_with_its_amplitude(effect):
-    assert_builds_and_grows(effect, FORM[effect], PLANT[effect])
 
 
 def test_seen2_forms_refuse_plants_they_do_not_apply_to():

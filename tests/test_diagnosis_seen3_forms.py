@@ -7,8 +7,7 @@ import numpy as np
 import pytest
 
 from diagnosis.benchmark import plant_kinematics
-from diagnosis.effects import EFFECTS
-from truth_form_checks import assert_builds_and_grows, assert_zero_amplitude_is_the_base
+from truth_form_checks import assert_zero_amplitude_is_the_base
 
 #: the family's form of each effect
 FORM = {"acceleration": "flash_temperature", "load": "film_breakdown",
@@ -20,20 +19,6 @@ FORM = {"acceleration": "flash_temperature", "load": "film_breakdown",
 PLANT = {"acceleration": "xml350", "load": "xml350", "asymmetry": "xml350",
          "stribeck_shape": "xml350", "position": "xml350", "inertia": "xml350",
          "delay": "xml350", "drift": "xml350", "backlash": "xml350", "gms": "xml350"}
-
-
-def test_the_family_is_in_the_open_grid_before_seen4():
-    assert set(PLANT) == set(FORM) == {n for n, e in EFFECTS.items() if e.truths}
-    for effect, form in FORM.items():
-        # the fourth to thirteenth seen families (diagnosis.benchmark.seen4 to .seen13) after it
-        assert EFFECTS[effect].forms("all")[-11] == form, effect
-        assert form not in EFFECTS[effect].forms("sealed"), effect
-        assert EFFECTS[effect].truth(form).__module__ == "diagnosis.benchmark.seen3"
-
-
-@pytest.mark.parametrize("effect", sorted(PLANT))
-def test_seen3_form_builds_a_case_and_grows_with_its_amplitude(effect):
-    assert_builds_and_grows(effect, FORM[effect], PLANT[effect])
 
 
 def test_seen3_forms_refuse_plants_they_do_not_apply_to():

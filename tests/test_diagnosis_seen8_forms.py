@@ -11,8 +11,7 @@ from diagnosis.benchmark import EFFECT_SIZE, PLANT_NAMES, make_plant_case, plant
 from diagnosis.benchmark import seen8 as family
 from diagnosis.benchmark.runner import MIN_SIZE
 from diagnosis.benchmark.truths import base_force
-from diagnosis.effects import EFFECTS
-from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_on_every_plant,
+from truth_form_checks import (assert_finite_and_grow_on_every_plant,
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
@@ -26,28 +25,14 @@ FORM = {"acceleration": "pitch_squeeze", "load": "hydrostatic_overload",
 PLANT = {effect: "xml350" for effect in FORM}
 
 
-def test_the_family_is_in_the_open_grid_before_seen9():
-    assert family.FORMS == FORM
-    assert set(PLANT) == set(FORM) == {n for n, e in EFFECTS.items() if e.truths}
-    for effect, form in FORM.items():
-        # the ninth to thirteenth seen families (diagnosis.benchmark.seen9 to .seen13) after it
-        assert EFFECTS[effect].forms("all")[-6] == form, effect
-        assert form not in EFFECTS[effect].forms("sealed"), effect
-        assert EFFECTS[effect].truth(form) is getattr(family, f"{form}_truth")
-        assert EFFECTS[effect].truth(form).__module__ == "diagnosis.benchmark.seen8"
-
-
-@pytest.mark.parametrize("effect", sorted(PLANT))
-def test_seen8_form_builds_a_case_and_grows_with_its_amplitude(effect):
-    assert_builds_and_grows(effect, FORM[effect], PLANT[effect])
-
-
 def test_seen8_forms_are_finite_and_grow_on_every_plant_they_apply_to():
     # no diagnosis: only the truths, on each plant's quick motion
     assert_finite_and_grow_on_every_plant(FORM)
 
 
 @pytest.mark.parametrize("plant", ["xml350", "valve"])
+
+
 def test_seen8_forms_at_zero_amplitude_are_the_base(plant):
     # s scales the effect from nothing: at s = 0 each form is the base law (up to its own
     # integration on the fine grid: the chain's taut strands, a stiff coupling)
@@ -76,6 +61,8 @@ def test_seen8_forms_refuse_plants_they_do_not_apply_to():
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
+
+
 def test_cover_sections_join_in_turn_and_start_again_after_a_reversal():
     # three sections of 1 m, collapsed at 0: out to 2.5 m, back to 1 m
     x = np.concatenate((np.linspace(0.0, 2.5, 251), np.linspace(2.5, 1.0, 151)[1:]))
@@ -162,6 +149,8 @@ def test_antioxidant_changes_nothing_during_the_induction():
 
 
 @pytest.mark.slow
+
+
 def test_seen8_forms_reach_their_size_on_every_plant():
     # the sizing check: every form reaches 0.96 of the requested size at strengths 0.5 and
     # 1 on every plant it applies to (quick protocols), so the open grid's count of its

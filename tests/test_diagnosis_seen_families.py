@@ -1,0 +1,44 @@
+"""The seen truth families (diagnosis.benchmark.seen2 to seen13: each written once by
+another hand, sealed, run once at the end of a session's work, then opened) checked in one
+place: each sits in the effect records' truths in the order the families were opened, after
+the forms before them and outside the sealed one, and each form builds a case on a plant's
+motion that grows with its amplitude factor. Each family's own file
+(``tests/test_diagnosis_seenN_forms.py``) holds its tables (``FORM``: the form of each
+effect; ``PLANT``: a plant it reaches the requested size on) and the tests of its forms'
+mechanisms. A family opened later is appended to :data:`FAMILIES`."""
+import importlib
+
+import pytest
+
+from diagnosis.effects import EFFECTS
+from truth_form_checks import assert_builds_and_grows
+
+#: the seen families, in the order they were opened
+FAMILIES = tuple(f"seen{k}" for k in range(2, 14))
+#: each family's test module (its FORM and PLANT tables)
+TABLES = {name: importlib.import_module(f"test_diagnosis_{name}_forms") for name in FAMILIES}
+
+
+@pytest.mark.parametrize("name", FAMILIES)
+def test_the_family_is_in_the_open_grid_in_the_order_opened(name):
+    tables = TABLES[name]
+    module = importlib.import_module(f"diagnosis.benchmark.{name}")
+    assert set(tables.PLANT) == set(tables.FORM) == {n for n, e in EFFECTS.items()
+                                                     if e.truths}
+    if hasattr(module, "FORMS"):
+        assert module.FORMS == tables.FORM
+    later = len(FAMILIES) - FAMILIES.index(name) - 1
+    for effect, form in tables.FORM.items():
+        # the families opened after it follow it; the sealed one is not in the grid
+        assert EFFECTS[effect].forms("all")[-1 - later] == form, effect
+        assert form not in EFFECTS[effect].forms("sealed"), effect
+        truth = EFFECTS[effect].truth(form)
+        assert truth is getattr(module, f"{form}_truth"), effect
+        assert truth.__module__ == module.__name__, effect
+
+
+@pytest.mark.parametrize("name,effect", [(n, e) for n in FAMILIES
+                                         for e in sorted(TABLES[n].PLANT)])
+def test_the_form_builds_a_case_and_grows_with_its_amplitude(name, effect):
+    tables = TABLES[name]
+    assert_builds_and_grows(effect, tables.FORM[effect], tables.PLANT[effect])

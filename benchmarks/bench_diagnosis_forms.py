@@ -22,7 +22,7 @@ grid (:mod:`diagnosis.benchmark.seen`, :mod:`diagnosis.benchmark.seen2`,
 :mod:`diagnosis.benchmark.seen11`: session 16's, run once on e33ce5f, 47.7 % top-1;
 :mod:`diagnosis.benchmark.seen12`: session 17's, run once on f5cb1e9, 29.5 % top-1;
 :mod:`diagnosis.benchmark.seen13`: session 18's, run once on <COMMIT>, <TOP1> top-1, below);
-the present one (one form for each of the ten effects with truths, written in session 18 by
+the present one (one form for each of the ten effects with truths, written in session 19 by
 another hand) is sealed: not run. The open grid's latest figures include seen10 but not
 seen11, seen12 or seen13 (below).
 
@@ -163,7 +163,7 @@ Sealed family of session 18's end (``--sealed`` then, written by another hand wi
 the diagnosis on it, run once on the code of <COMMIT>): <TOP1> top-1;
 RUN FIGURES: TO BE FILLED
 Now :mod:`diagnosis.benchmark.seen13`, in the open grid; a fourteenth family (written in
-session 18 by another hand, never run) is the sealed one.
+session 19 by another hand, never run) is the sealed one.
 
 Sealed family of session 17's end (``--sealed`` then, written by another hand without running
 the diagnosis on it, run once on the code of f5cb1e9): 29.5 % top-1;

@@ -1,10 +1,10 @@
-"""The fourteenth sealed truth family (diagnosis.benchmark.sealed, written in session 18 by
+"""The fourteenth sealed truth family (diagnosis.benchmark.sealed, written in session 19 by
 another hand, sealed: not run): each form builds a finite case of the requested size on every
 plant it applies to, is the base law at s = 0, grows with its amplitude factor and refuses
 the plants it does not apply to. No diagnosis is run on these forms: the family stays unseen
 until the end of a piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS`
 names it as its ``sealed`` form (the thirteenth family, sealed before it, is
-:mod:`diagnosis.benchmark.seen13` since its run at the end of session 18)."""
+:mod:`diagnosis.benchmark.seen13` since its run at the end of session 19)."""
 import dataclasses
 import importlib
 
@@ -62,8 +62,8 @@ def test_the_family_has_one_new_form_per_effect():
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
     assert doc.startswith("The fourteenth sealed truth family")
-    assert "sealed: not run" in doc and "2026-11-29 (session 18)" in doc
-    assert "session 18's, was run once at the end of session 18 and is :mod:`.seen13`" in doc
+    assert "sealed: not run" in doc and "2026-11-29 (session 19)" in doc
+    assert "session 18's, was run once at the end of session 19 and is :mod:`.seen13`" in doc
 
 
 def test_registered_forms_resolve():

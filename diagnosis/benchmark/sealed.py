@@ -1,9 +1,9 @@
 """The fourteenth sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-11-29 (session 18) by another hand, once, without running the diagnosis on it;
+Written 2026-11-29 (session 19) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 18's, was run once at the end of session 18 and is :mod:`.seen13`).
+sealed before it, session 18's, was run once at the end of session 19 and is :mod:`.seen13`).
 Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen13`
 did. Each form is a mechanism of other physics than every form of its effect so far
 (:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen13`,

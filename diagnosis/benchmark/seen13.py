@@ -1,7 +1,7 @@
 """The thirteenth seen truth family: one more mechanism per effect, sealed until run once.
 
 Written 2026-11-29 (session 18) by another hand, once, without running the diagnosis on it;
-run once, sealed, at the end of session 18's work on the code of <COMMIT>:
+run once, sealed, at the end of session 19's work on the code of <COMMIT>:
 RUN FIGURES: TO BE FILLED
 Seen since, it is part of the open grid, as :mod:`.seen` to :mod:`.seen12` before it
 (figures in ``benchmarks/bench_diagnosis_forms.py``). Each form is a

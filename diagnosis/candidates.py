@@ -708,11 +708,12 @@ class Drift(Candidate):
 
     Tried in session 19 and not kept: a change that accelerates, ``k_run (exp((t - t0) /
     tau_run) - 1) / (exp(T / tau_run) - 1)`` (oil that oxidises autocatalytically once its
-    antioxidant is spent), a third form the start's forecast chose among. On 261 of the
-    grid's drift cases, same seeds: 180 -> 174 named (thermal drift 7 -> 9, a humidity
-    cycle 18 -> 12: the accelerating form fitted part of its cycle, and the periodic form
-    no longer beat it by the margin it needs); the antioxidant form stayed 8 of 20, its
-    runaway still within the noise at the end of the fit record.
+    antioxidant is spent), a third form the start's forecast chose among. On the grid's 300
+    drift cases (the eleventh and twelfth families' included), same seeds: 196 -> 189 named
+    (thermal drift 7 -> 9, a humidity cycle 18 -> 12: the accelerating form fitted part of
+    its cycle, and the periodic form no longer beat it by the margin it needs; Archard
+    wear, seal relaxation and a ZDDP tribofilm one fewer each); the antioxidant form stayed
+    8 of 20, its runaway still within the noise at the end of the fit record.
 
     Tried in session 10 and not kept: the same levels inside a classic LuGre's bristle
     dynamics (as :class:`LoadInside`): on the valve and the damping rig 1 drift case

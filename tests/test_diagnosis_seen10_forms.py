@@ -12,8 +12,6 @@ from diagnosis.benchmark import seen10 as family
 from diagnosis.benchmark.runner import MIN_SIZE
 from diagnosis.benchmark.truths import base_force
 from diagnosis.effects import EFFECTS
-from truth_form_checks import (assert_finite_and_grow_on_every_plant,
-                               assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
 FORM = {"acceleration": "oil_slosh", "load": "piezoviscous_film",
@@ -29,20 +27,6 @@ PLANT = {effect: "xml350" for effect in FORM}
 def test_the_family_forms_are_integrated_on_the_fine_grid():
     for effect, form in FORM.items():
         assert getattr(EFFECTS[effect].truth(form), "fine_grid", False), form
-
-
-def test_seen10_forms_are_finite_and_grow_on_every_plant_they_apply_to():
-    # no diagnosis: only the truths, on each plant's quick motion
-    assert_finite_and_grow_on_every_plant(FORM)
-
-
-@pytest.mark.parametrize("plant", ["xml350", "valve"])
-
-
-def test_seen10_forms_at_zero_amplitude_are_the_base(plant):
-    # s scales the effect from nothing: at s = 0 each form is the base law (up to its own
-    # integration on the fine grid: the preloaded nut's stiff coupling)
-    assert_zero_amplitude_is_the_base(FORM, plant)
 
 
 def test_seen10_forms_refuse_plants_they_do_not_apply_to():
@@ -163,8 +147,6 @@ def test_bolt_hole_drag_sits_at_the_far_edge_of_each_hole():
 
 
 @pytest.mark.slow
-
-
 def test_seen10_forms_reach_their_size_on_every_plant():
     # the sizing check: every form reaches 0.95 to 1.05 of the requested size at strengths
     # 0.5 and 1 on every plant it applies to (quick protocols), so the open grid's count of

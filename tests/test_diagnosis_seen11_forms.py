@@ -13,8 +13,6 @@ from diagnosis.benchmark.kinematics import FINE, PlantKinematics
 from diagnosis.benchmark.runner import MIN_SIZE
 from diagnosis.benchmark.truths import base_force
 from diagnosis.effects import EFFECTS
-from truth_form_checks import (assert_finite_and_grow_on_every_plant,
-                               assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
 FORM = {"acceleration": "dilatancy_hardening", "load": "full_contact",
@@ -30,33 +28,6 @@ PLANT = {effect: "xml350" for effect in FORM}
 def test_the_family_forms_are_integrated_on_the_fine_grid():
     for effect, form in FORM.items():
         assert getattr(EFFECTS[effect].truth(form), "fine_grid", False), form
-
-
-def test_seen11_forms_are_finite_and_grow_on_every_plant_they_apply_to():
-    # no diagnosis: only the truths, on each plant's quick motion
-    assert_finite_and_grow_on_every_plant(FORM)
-
-
-@pytest.mark.parametrize("plant", ["xml350", "valve"])
-
-
-def test_seen11_forms_at_zero_amplitude_are_the_base(plant):
-    # s scales the effect from nothing: at s = 0 each form is the base law (up to its own
-    # integration on the fine grid: the harmonic drive's stiff coupling)
-    assert_zero_amplitude_is_the_base(FORM, plant)
-
-
-@pytest.mark.parametrize("plant", ["xml350", "valve"])
-
-
-def test_seen11_forms_reach_their_size_on_two_plants(plant):
-    # the calibration of the grid's cases: 0.95 to 1.05 of the requested size at strengths
-    # 0.5 and 1 (quick protocols; every plant: the slow test below)
-    for effect, form in FORM.items():
-        for strength in (0.5, 1.0):
-            case = make_plant_case(plant, effect, strength, 0.01, form=form, quick=True)
-            share = case.effect_rms / (strength * EFFECT_SIZE)
-            assert 0.95 <= share <= 1.05, (plant, effect, form, strength, share)
 
 
 def test_seen11_forms_refuse_plants_they_do_not_apply_to():
@@ -222,8 +193,6 @@ def test_interlocking_dips_below_the_sliding_level_then_overshoots():
 
 
 @pytest.mark.slow
-
-
 def test_seen11_forms_reach_their_size_on_every_plant():
     # the sizing check: every form reaches 0.95 to 1.05 of the requested size at strengths
     # 0.5 and 1 on every plant it applies to (quick protocols), so the open grid's count of

@@ -7,8 +7,6 @@ import numpy as np
 import pytest
 
 from diagnosis.benchmark import plant_kinematics
-from truth_form_checks import (assert_finite_and_grow_on_every_plant,
-                               assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
 FORM = {"acceleration": "rolling_skid", "load": "junction_creep",
@@ -20,11 +18,6 @@ FORM = {"acceleration": "rolling_skid", "load": "junction_creep",
 PLANT = {"acceleration": "xml350", "load": "xml350", "asymmetry": "xml350",
          "stribeck_shape": "xml350", "position": "xml350", "inertia": "xml350",
          "delay": "xml350", "drift": "xml350", "backlash": "xml350", "gms": "xml350"}
-
-
-def test_seen4_forms_are_finite_and_grow_on_every_plant_they_apply_to():
-    # no diagnosis: only the truths, on each plant's quick motion
-    assert_finite_and_grow_on_every_plant(FORM)
 
 
 def test_seen4_forms_refuse_plants_they_do_not_apply_to():
@@ -44,10 +37,3 @@ def test_seen4_forms_refuse_plants_they_do_not_apply_to():
     with pytest.raises(ValueError, match="revisits"):
         cogging_truth.__wrapped__(one_way, 1.0)
 
-
-@pytest.mark.parametrize("plant", ["xml350", "valve"])
-
-
-def test_seen4_forms_at_zero_amplitude_are_the_base(plant):
-    # s scales the effect from nothing: at s = 0 each form is the base law
-    assert_zero_amplitude_is_the_base(FORM, plant)

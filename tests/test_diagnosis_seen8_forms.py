@@ -11,8 +11,6 @@ from diagnosis.benchmark import EFFECT_SIZE, PLANT_NAMES, make_plant_case, plant
 from diagnosis.benchmark import seen8 as family
 from diagnosis.benchmark.runner import MIN_SIZE
 from diagnosis.benchmark.truths import base_force
-from truth_form_checks import (assert_finite_and_grow_on_every_plant,
-                               assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
 FORM = {"acceleration": "pitch_squeeze", "load": "hydrostatic_overload",
@@ -23,20 +21,6 @@ FORM = {"acceleration": "pitch_squeeze", "load": "hydrostatic_overload",
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
-
-
-def test_seen8_forms_are_finite_and_grow_on_every_plant_they_apply_to():
-    # no diagnosis: only the truths, on each plant's quick motion
-    assert_finite_and_grow_on_every_plant(FORM)
-
-
-@pytest.mark.parametrize("plant", ["xml350", "valve"])
-
-
-def test_seen8_forms_at_zero_amplitude_are_the_base(plant):
-    # s scales the effect from nothing: at s = 0 each form is the base law (up to its own
-    # integration on the fine grid: the chain's taut strands, a stiff coupling)
-    assert_zero_amplitude_is_the_base(FORM, plant)
 
 
 def test_seen8_forms_refuse_plants_they_do_not_apply_to():
@@ -149,8 +133,6 @@ def test_antioxidant_changes_nothing_during_the_induction():
 
 
 @pytest.mark.slow
-
-
 def test_seen8_forms_reach_their_size_on_every_plant():
     # the sizing check: every form reaches 0.96 of the requested size at strengths 0.5 and
     # 1 on every plant it applies to (quick protocols), so the open grid's count of its

@@ -10,13 +10,21 @@ import importlib
 
 import pytest
 
+from diagnosis.benchmark import EFFECT_SIZE, make_plant_case
 from diagnosis.effects import EFFECTS
-from truth_form_checks import assert_builds_and_grows
+from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_on_every_plant,
+                               assert_zero_amplitude_is_the_base)
 
 #: the seen families, in the order they were opened
 FAMILIES = tuple(f"seen{k}" for k in range(2, 14))
 #: each family's test module (its FORM and PLANT tables)
 TABLES = {name: importlib.import_module(f"test_diagnosis_{name}_forms") for name in FAMILIES}
+#: the families whose forms are checked on every plant and at zero amplitude (from the
+#: fourth on; the second and third have checks of their own), and those whose calibration
+#: is checked on two plants in the default run (from the eleventh on; each family's slow
+#: test checks every plant)
+ON_EVERY_PLANT = FAMILIES[FAMILIES.index("seen4"):]
+SIZED_ON_TWO_PLANTS = FAMILIES[FAMILIES.index("seen11"):]
 
 
 @pytest.mark.parametrize("name", FAMILIES)
@@ -42,3 +50,29 @@ def test_the_family_is_in_the_open_grid_in_the_order_opened(name):
 def test_the_form_builds_a_case_and_grows_with_its_amplitude(name, effect):
     tables = TABLES[name]
     assert_builds_and_grows(effect, tables.FORM[effect], tables.PLANT[effect])
+
+
+@pytest.mark.parametrize("name", ON_EVERY_PLANT)
+def test_the_forms_are_finite_and_grow_on_every_plant_they_apply_to(name):
+    # no diagnosis: only the truths, on each plant's quick motion
+    assert_finite_and_grow_on_every_plant(TABLES[name].FORM)
+
+
+@pytest.mark.parametrize("plant", ["xml350", "valve"])
+@pytest.mark.parametrize("name", ON_EVERY_PLANT)
+def test_the_forms_at_zero_amplitude_are_the_base(name, plant):
+    # s scales the effect from nothing: at s = 0 each form is the base law (up to its own
+    # integration on the fine grid: the stiff couplings of the backlash forms)
+    assert_zero_amplitude_is_the_base(TABLES[name].FORM, plant)
+
+
+@pytest.mark.parametrize("plant", ["xml350", "valve"])
+@pytest.mark.parametrize("name", SIZED_ON_TWO_PLANTS)
+def test_the_forms_reach_their_size_on_two_plants(name, plant):
+    # the calibration of the grid's cases: 0.95 to 1.05 of the requested size at strengths
+    # 0.5 and 1 (quick protocols)
+    for effect, form in TABLES[name].FORM.items():
+        for strength in (0.5, 1.0):
+            case = make_plant_case(plant, effect, strength, 0.01, form=form, quick=True)
+            share = case.effect_rms / (strength * EFFECT_SIZE)
+            assert 0.95 <= share <= 1.05, (plant, effect, form, strength, share)

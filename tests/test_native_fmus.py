@@ -362,6 +362,9 @@ def test_effects_block_equals_the_formula(ndir):
     assert s.set("a_s", 0.0) == 3 and "a_s > 0" in s.errors()[-1]
     assert s.set("m_a", -0.5) == 3 and "m_a >= 0" in s.errors()[-1]
     assert s.set("a_e", -0.5) == 3 and "a_e >= 0" in s.errors()[-1]
+    # the odd level part refuses NaN by name and keeps its value
+    assert s.set("f_o", float("nan")) == 3 and "f_o = nan is not finite" in s.errors()[-1]
+    assert s.get("f_o") == pytest.approx(-0.04)
     assert s.set("m_a", 0.0) == 0  # seed 000's weight, exp(-|v| / v_c)
     s.close()
 

@@ -434,43 +434,51 @@ class Acceleration(Candidate):
         # best start without a level part, with the even, the odd and both level parts
         best = {k: (raw, {}) for k in ("", "e", "o", "eo")}
         off = {"f_e": Fixed(0.0), "a_e": Fixed(0.0), "f_o": Fixed(0.0)}
-        for a_s in (0.1 * ctx.sa, 0.3 * ctx.sa, ctx.sa):
-            ta = np.tanh(a / a_s)
-            for v_c in np.geomspace(ex["v_c"].lo, ex["v_c"].hi, 7):
-                for m in (0.0, 1.0, 2.0, self.MAX_M):
-                    b0 = ta * acceleration_weight(v, v_c, m)
-                    for lag in lags:
-                        b = _first_order(b0, fit.dt, lag)[sub]
-                        odd = {"a_s": a_s, "v_c": float(v_c), "m_a": m, "tau_lag": lag}
-                        # (kind, level columns beside the part, their names, onset)
-                        trials = [("", [], (), 0.0)]
-                        if both_ways:
-                            trials.append(("o", [odds[lag]], ("f_o",), 0.0))
-                        for a_e in self.LEVEL_ONSETS:
-                            ev = evens[(a_e, lag)]
-                            trials.append(("e", [ev], ("f_e",), a_e * ctx.sa))
-                            if both_ways:
-                                trials.append(("eo", [ev, odds[lag]], ("f_e", "f_o"),
-                                               a_e * ctx.sa))
-                        for kind, cols, put, a_e in trials:
-                            sse, c = _lsq(_with(np.column_stack([b] + cols), B), rr[sub])
-                            if sse < best[kind][0]:
-                                vals = {**odd, **off, "f_a": c[0]}
-                                vals.update({k: c[j] for j, k in enumerate(put, 1)})
-                                if "f_e" in put:
-                                    vals["a_e"] = a_e
-                                best[kind] = (sse, vals)
+
+        def scan(kinds):
+            # every point of the grid, the level parts of ``kinds`` beside its part
+            for a_s in (0.1 * ctx.sa, 0.3 * ctx.sa, ctx.sa):
+                ta = np.tanh(a / a_s)
+                for v_c in np.geomspace(ex["v_c"].lo, ex["v_c"].hi, 7):
+                    for m in (0.0, 1.0, 2.0, self.MAX_M):
+                        b0 = ta * acceleration_weight(v, v_c, m)
+                        for lag in lags:
+                            b = _first_order(b0, fit.dt, lag)[sub]
+                            odd = {"a_s": a_s, "v_c": float(v_c), "m_a": m, "tau_lag": lag}
+                            # (kind, level columns beside the part, their names, onset)
+                            trials = [("", [], (), 0.0), ("o", [odds[lag]], ("f_o",), 0.0)]
+                            for a_e in self.LEVEL_ONSETS:
+                                ev = evens[(a_e, lag)]
+                                trials += [("e", [ev], ("f_e",), a_e * ctx.sa),
+                                           ("eo", [ev, odds[lag]], ("f_e", "f_o"),
+                                            a_e * ctx.sa)]
+                            for kind, cols, put, a_e in trials:
+                                if kind not in kinds:
+                                    continue
+                                sse, c = _lsq(_with(np.column_stack([b] + cols), B),
+                                              rr[sub])
+                                if sse < best[kind][0]:
+                                    vals = {**odd, **off, "f_a": c[0]}
+                                    vals.update({k: c[j] for j, k in enumerate(put, 1)})
+                                    if "f_e" in put:
+                                        vals["a_e"] = a_e
+                                    best[kind] = (sse, vals)
+        singles = ("e", "o") if both_ways else ("e",)
+        scan(("",) + singles)
         # the level parts only where they change the fit: fitted beside a part that is
         # enough, the even one followed the fit record's noise (the damping rig's short
         # records: 4 of its named memory, aging and flash-temperature truths lost, the level
         # part's start 0.82-0.98 of the odd part's squared residual; the skid and
-        # moment-load truths it reaches on the valve, 0.42-0.45)
+        # moment-load truths it reaches on the valve, 0.42-0.45); both together only
+        # where one is kept (so their grid is scanned only then)
         kind = ""
-        one = min(("e", "o") if both_ways else ("e",), key=lambda k: best[k][0])
+        one = min(singles, key=lambda k: best[k][0])
         if best[one][0] < self.LEVEL_GAIN * best[""][0]:
             kind = one
-            if best["eo"][0] < self.LEVEL_GAIN * best[one][0]:
-                kind = "eo"
+            if both_ways:
+                scan(("eo",))
+                if best["eo"][0] < self.LEVEL_GAIN * best[one][0]:
+                    kind = "eo"
         p = best[kind][1]
         for k in ("f_a", "f_e", "f_o"):
             if k in p and not isinstance(p[k], Fixed):

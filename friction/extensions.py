@@ -15,7 +15,11 @@ applied in the order multiplicative then additive:
                    (two harmonics, ``k_c1 cos(psi) + k_s1 sin(psi) + k_c2 cos(2 psi) +
                    k_s2 sin(2 psi)``, ``psi = 2 pi (t - t0) / P_cyc``; ``P_cyc <= 0``:
                    none): an ambient that cycles under a thermostat or a dehumidifier, an
-                   interval lubrication's shots;
+                   interval lubrication's shots; and a part that builds up and resets
+                   with period ``P_rst``, ``k_r1 u + k_r2 u^2``, ``u = frac((t - t_rst) /
+                   P_rst)`` (``P_rst <= 0``: none): a film that grows until it spalls (an
+                   oxide at its critical thickness), debris that gathers until it is
+                   purged, a lubricant that thins until the next shot;
 * ``position``     levels along the stroke, ``F (1 + m(x))`` with ``m`` a friction map
                    (:func:`position_change`) of three parts: piecewise linear between
                    :data:`POSITION_KNOTS` equally spaced knots from ``x_lo`` to ``x_hi``
@@ -53,7 +57,8 @@ import numpy as np
 from numba import njit
 
 __all__ = ["EXTENSIONS", "EXTENSION_PARAMS", "EXTENSION_INDEX", "POSITION_KNOTS", "POSITION_NAMES",
-           "POSITION_FORM_NAMES", "DRIFT_NAMES", "DRIFT_CYCLE_NAMES", "extension_force", "pack_extensions",
+           "POSITION_FORM_NAMES", "DRIFT_NAMES", "DRIFT_CYCLE_NAMES", "DRIFT_RESET_NAMES",
+           "extension_force", "pack_extensions",
            "acceleration_weight",
            "position_map", "position_change", "drift_change"]
 
@@ -73,7 +78,11 @@ POSITION_FORM_NAMES = ("lambda_x", "p_c1", "p_s1", "p_c2", "p_s2", "d_x", "x_d",
 #: the drift's periodic part (period [s], relative cosine/sine amplitudes of the first two
 #: harmonics [-]); appended last in the packed layout, so earlier FMU value references stay
 DRIFT_CYCLE_NAMES = ("P_cyc", "k_c1", "k_s1", "k_c2", "k_s2")
-DRIFT_NAMES = ("k_drift", "k_sat", "tau_sat", "k_step", "t_step", "w_step") + DRIFT_CYCLE_NAMES
+#: the drift's resetting part (period [s], a time it resets at [s], relative amplitudes of
+#: the phase u and of u^2 [-]); appended last in the packed layout
+DRIFT_RESET_NAMES = ("P_rst", "t_rst", "k_r1", "k_r2")
+DRIFT_NAMES = ("k_drift", "k_sat", "tau_sat", "k_step", "t_step", "w_step") + DRIFT_CYCLE_NAMES \
+    + DRIFT_RESET_NAMES
 
 #: packed layout: (name, default, unit, description)
 EXTENSION_PARAMS = (
@@ -124,6 +133,11 @@ EXTENSION_PARAMS = (
     ("a_e", 0.0, "m/s^2", "|a| from which the acceleration part's level part acts (>= 0)"),
     ("f_o", 0.0, "s^2/m", "relative level change per m/s^2 of the signed acceleration (the "
                           "acceleration part's level part, odd in a)"),
+    ("P_rst", 0.0, "s", "period of the drift's resetting part (<= 0: none)"),
+    ("t_rst", 0.0, "s", "a time at which the drift's resetting part resets"),
+    ("k_r1", 0.0, "1", "relative level change of the resetting part per unit of its phase "
+                       "u = frac((t - t_rst) / P_rst)"),
+    ("k_r2", 0.0, "1", "relative level change of the resetting part per unit of u^2"),
 )
 
 #: index of each name in the packed vector
@@ -139,6 +153,7 @@ _K_SAT, _TAU_SAT, _K_STEP, _T_STEP, _W_STEP = (EXTENSION_INDEX[k] for k in
                                               ("k_sat", "tau_sat", "k_step", "t_step", "w_step"))
 _USE_LOAD, _L0, _K_L = (EXTENSION_INDEX[k] for k in ("use_load", "L0", "k_L"))
 _P_CYC, _K_C1 = (EXTENSION_INDEX[k] for k in ("P_cyc", "k_c1"))
+_P_RST, _T_RST, _K_R1, _K_R2 = (EXTENSION_INDEX[k] for k in ("P_rst", "t_rst", "k_r1", "k_r2"))
 _F_E, _A_E, _F_O = (EXTENSION_INDEX[k] for k in ("f_e", "a_e", "f_o"))
 _NK = POSITION_KNOTS
 _TWO_PI = 2.0 * math.pi
@@ -231,6 +246,10 @@ def _drift_m(t, e):
         psi = _TWO_PI * s / e[_P_CYC]
         d += (e[_K_C1] * math.cos(psi) + e[_K_C1 + 1] * math.sin(psi)
               + e[_K_C1 + 2] * math.cos(2.0 * psi) + e[_K_C1 + 3] * math.sin(2.0 * psi))
+    if e[_P_RST] > 0.0:  # resetting part: builds up over each period from 0
+        u = (t - e[_T_RST]) / e[_P_RST]
+        u -= math.floor(u)
+        d += (e[_K_R1] + e[_K_R2] * u) * u
     return d
 
 

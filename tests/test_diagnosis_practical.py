@@ -182,6 +182,18 @@ def test_stroke_map_and_drift_forms_are_the_documented_formulas():
     assert not np.any(drift_change(t, e))
     with pytest.raises(ValueError, match="k_s2 = .*nan.* is not a finite number"):
         pack_extensions({"drift": {"P_cyc": 0.7, "k_s2": float("nan")}}, t0=0.5, T=2.0)
+    # the resetting part: k_r1 u + k_r2 u^2 of the phase u since the last reset, every
+    # P_rst from t_rst (before it too); back to 0 at each reset; P_rst <= 0 switches it off
+    e = pack_extensions({"drift": {"P_rst": 0.4, "t_rst": 0.3, "k_r1": 0.2, "k_r2": -0.1}},
+                        t0=0.5, T=2.0)
+    ph = ((t - 0.3) / 0.4) % 1.0
+    np.testing.assert_allclose(drift_change(t, e), 0.2 * ph - 0.1 * ph ** 2, atol=1e-13)
+    np.testing.assert_allclose(drift_change(np.array([0.3, 0.7 - 1e-9, 0.7 + 1e-9, 1.3]), e),
+                               [0.0, 0.2 - 0.1, 0.0, 0.5 * 0.2 - 0.25 * 0.1], atol=1e-8)
+    e = pack_extensions({"drift": {"P_rst": 0.0, "k_r1": 0.2}}, t0=0.5, T=2.0)
+    assert not np.any(drift_change(t, e))
+    with pytest.raises(ValueError, match="t_rst = .*nan.* is not a finite number"):
+        pack_extensions({"drift": {"P_rst": 0.4, "t_rst": float("nan")}}, t0=0.5, T=2.0)
 
 
 def test_acceleration_level_part_is_even_in_a_and_starts_at_its_onset():

@@ -155,9 +155,10 @@ def test_drift_start_keeps_its_trend_only_where_the_trend_forecasts():
 
 def test_drift_start_finds_a_level_that_comes_and_goes():
     # an ambient cycling under a thermostat or interval lubrication's shots: the level
-    # repeats with a period of a fraction of the record. The start picks the periodic
-    # form by forecasting the fit record's last fifth, finds the period and leaves the
-    # once-only parts off; a one-off step keeps the periodic part off
+    # repeats with a period of a fraction of the record. The start picks a repeating form
+    # (two harmonics, or a part that builds up and resets: a shot's drop that creeps back
+    # is both), finds the period and leaves the once-only parts off; a one-off step keeps
+    # both repeating parts off
     from diagnosis.candidates import Fixed
     from diagnosis.effects import CANDIDATES, make_context
     data = make_case("clean", 1.0, 0.0, n=6000)
@@ -173,8 +174,8 @@ def test_drift_start_finds_a_level_that_comes_and_goes():
     # the base's level, which a base fitted without the drift has moved to the mean
     level = (Ff / np.linalg.norm(Ff))[:, None]
     p = drift.start(data, Ff, Ff * d + noise, ctx, basis=level)
-    assert p["P_cyc"] == pytest.approx(0.35 * ctx.T, rel=0.04)
-    assert not isinstance(p["P_cyc"], Fixed)
+    period = p["P_cyc"] or p["P_rst"]
+    assert period == pytest.approx(0.35 * ctx.T, rel=0.04)
     for n in ("k_sat", "k_step"):
         assert isinstance(p[n], Fixed)
     # what it forecasts of the last 30 %, beyond the fit record: most of the sawtooth
@@ -184,13 +185,49 @@ def test_drift_start_finds_a_level_that_comes_and_goes():
     ul = (later - ctx.t0) / ctx.T
     truth = -0.3 * np.exp(-((ul - 0.1) % 0.35) / 0.08)
     # (the mean level is the base's; two harmonics hold 72 % of this sawtooth's variance,
-    # so the best forecast misses sqrt(0.28) = 0.53 of it; nothing, 1)
+    # so their best forecast misses sqrt(0.28) = 0.53 of it; the resetting part, taken
+    # here, 0.25; nothing, 1)
     miss = np.std((dl - truth) - np.mean(dl - truth)) / np.std(truth)
-    assert miss < 0.75
-    # a one-off step: the periodic part stays off
+    assert miss < 0.4
+    # a one-off step: the repeating parts stay off
     step = drift.start(data, Ff, Ff * 0.3 * (u > 0.45) + noise, ctx, basis=level)
-    assert step["P_cyc"] == 0.0 and isinstance(step["P_cyc"], Fixed)
+    for n in ("P_cyc", "P_rst"):
+        assert step[n] == 0.0 and isinstance(step[n], Fixed)
     assert step["k_step"] == pytest.approx(0.3, abs=0.05)
+
+
+def test_drift_start_finds_a_film_that_grows_and_spalls():
+    # oxidational wear (Quinn): an oxide film grows parabolically, thickness ~ sqrt(time
+    # since the last spall), lowers the level, and spalls at its critical thickness every
+    # 0.3 T, the metal's level back at once. Another shape than the resetting part's u and
+    # u^2; the start takes that part, finds the period and a reset time, keeps them, and
+    # forecasts the next spall beyond the record, where a step and a trend fitted on the
+    # same record forecast none
+    from diagnosis.candidates import Fixed
+    from diagnosis.effects import CANDIDATES, make_context
+    from friction.extensions import drift_change
+    data = make_case("clean", 1.0, 0.0, n=6000)
+    ctx = make_context(data)
+    drift = CANDIDATES["drift"]
+    Ff = 1.0 + 0.5 * np.sin(2 * np.pi * 7.3 * data.t / ctx.T)
+    rng = np.random.default_rng(11)
+    level = (Ff / np.linalg.norm(Ff))[:, None]
+
+    def film(t):
+        return -0.25 * np.sqrt(((t - ctx.t0) / ctx.T - 0.2) % 0.3 / 0.3)
+    p = drift.start(data, Ff, Ff * film(data.t) + 0.01 * rng.standard_normal(data.t.size),
+                    ctx, basis=level)
+    assert isinstance(p["P_rst"], Fixed) and isinstance(p["t_rst"], Fixed)
+    assert p["P_rst"] == pytest.approx(0.3 * ctx.T, rel=0.03)
+    # a reset found where the film spalls (any of them, to within 2 % of the record)
+    k = (p["t_rst"] - ctx.t0 - 0.2 * ctx.T) / (0.3 * ctx.T)
+    assert abs(k - round(k)) * 0.3 < 0.02
+    assert p["P_cyc"] == 0.0 and p["k_step"] == 0.0
+    later = data.t[-1] + np.linspace(0.0, 0.5 * ctx.T, 500)
+    dl = drift_change(later, drift._packed({k: float(v) for k, v in p.items()}, ctx))
+    truth = film(later)
+    miss = np.std((dl - truth) - np.mean(dl - truth)) / np.std(truth)
+    assert miss < 0.3
 
 
 def test_position_carries_a_force_of_the_position_alone_with_exact_columns():

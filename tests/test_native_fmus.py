@@ -330,8 +330,8 @@ def test_an_impossible_parameter_relation_is_named_at_initialization(ndir):
 def test_effects_block_equals_the_formula(ndir):
     from friction.extensions import EXTENSION_INDEX, extension_force, pack_extensions
     # every part of the stroke map (knots, waviness, local defect) and of the drift (trend,
-    # saturating change, step, periodic part); the acceleration part's weight peaking away
-    # from standstill
+    # saturating change, step, periodic part, resetting part); the acceleration part's
+    # weight peaking away from standstill
     e = pack_extensions({"acceleration": {"f_a": 0.3, "a_s": 2.0, "v_c": 0.01, "m_a": 1.7,
                                           "f_e": 0.05, "a_e": 1.5, "f_o": -0.04},
                          "position": {"c_x3": 0.2, "c_x7": -0.1, "lambda_x": 0.007,
@@ -340,7 +340,8 @@ def test_effects_block_equals_the_formula(ndir):
                          "drift": {"k_drift": 0.05, "k_sat": 0.4, "tau_sat": 0.01,
                                    "k_step": -0.2, "t_step": 0.02, "w_step": 0.002,
                                    "P_cyc": 0.013, "k_c1": 0.1, "k_s1": -0.05, "k_c2": 0.02,
-                                   "k_s2": -0.03},
+                                   "k_s2": -0.03, "P_rst": 0.017, "t_rst": 0.004,
+                                   "k_r1": -0.15, "k_r2": 0.06},
                          "load": {"k_L": 0.8}},
                         x_lo=0.0, x_hi=0.1, t0=0.0, T=2.0, L0=50.0)
     s = LoggedSlave(_path(ndir, "friction_effects"))

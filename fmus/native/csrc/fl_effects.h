@@ -4,8 +4,9 @@
  * FL_E_* indices into fl_model.h from that one Python list): switches use_* (0 or 1), the
  * acceleration part (f_a, a_s, v_c, m_a and its level parts f_e, a_e, f_o), the position map
  * (x_lo, x_hi, c_x1.., the waviness lambda_x, p_c1, p_s1, p_c2, p_s2 and the local defect
- * d_x, x_d, w_d), the drift (k_drift, t0, T, k_sat, tau_sat, k_step, t_step, w_step and
- * the periodic part P_cyc, k_c1, k_s1, k_c2, k_s2) and the load levels (L0, k_L). */
+ * d_x, x_d, w_d), the drift (k_drift, t0, T, k_sat, tau_sat, k_step, t_step, w_step, the
+ * periodic part P_cyc, k_c1, k_s1, k_c2, k_s2 and the resetting part P_rst, t_rst, k_r1,
+ * k_r2) and the load levels (L0, k_L). */
 #ifndef FL_EFFECTS_H
 #define FL_EFFECTS_H
 
@@ -72,6 +73,11 @@ static double fl_drift_m(double t, const double *e)
         double psi = 2.0 * 3.14159265358979323846 * s / e[FL_E_P_CYC];
         d += e[FL_E_K_C1] * cos(psi) + e[FL_E_K_S1] * sin(psi)
              + e[FL_E_K_C2] * cos(2.0 * psi) + e[FL_E_K_S2] * sin(2.0 * psi);
+    }
+    if (e[FL_E_P_RST] > 0.0) {  /* resetting part: builds up over each period from 0 */
+        double u = (t - e[FL_E_T_RST]) / e[FL_E_P_RST];
+        u -= floor(u);
+        d += (e[FL_E_K_R1] + e[FL_E_K_R2] * u) * u;
     }
     return d;
 }

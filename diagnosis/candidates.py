@@ -977,9 +977,8 @@ class Drift(Candidate):
                 if not resets:
                     return np.empty((t.size, 0)), grid
 
-                def sse(pt):
-                    return _lsq(_with(np.column_stack(base + self._reset_columns(t, f, *pt)),
-                                      nuis), rr)[0]
+                sse = _residual_after(base, nuis, rr,
+                                      lambda pt: self._reset_columns(t, f, *pt))
                 P, tr = min(resets, key=sse)
                 # refined twice between the grid's neighbours, each time 4 x finer: the
                 # squared residual drops sharply where the resets line up, and a
@@ -1061,6 +1060,28 @@ def _basis_rows(basis, rows):
     """The rows ``rows`` of a start's ``basis`` (:func:`diagnosis.composite.base_basis`), or
     ``None`` when there is none to fit beside."""
     return None if basis is None or basis.shape[1] == 0 else basis[rows]
+
+
+def _residual_after(fixed, nuis, b, columns):
+    """``sse(p)``: the sum of squared residuals of ``b`` fitted by ``columns(p)`` with the
+    columns ``fixed`` (a list) and ``nuis`` (or None) beside them, as :func:`_lsq` gives it,
+    with what ``fixed`` and ``nuis`` fit of everything taken out once (a grid over ``p``
+    then solves only for the columns that change)."""
+    A = [np.column_stack(fixed)] if fixed else []
+    if nuis is not None:
+        A.append(nuis)
+    Q = None
+    if A:
+        u, sv, _ = np.linalg.svd(np.column_stack(A), full_matrices=False)
+        Q = u[:, sv > 1e-10 * sv[0]]
+    y = b - Q @ (Q.T @ b) if Q is not None else b
+
+    def sse(p):
+        X = np.column_stack(columns(p))
+        if Q is not None:
+            X = X - Q @ (Q.T @ X)
+        return _lsq(X, y)[0]
+    return sse
 
 
 def _with(A, nuis):

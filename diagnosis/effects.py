@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen13`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen14`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -243,8 +243,35 @@ _S10 = "diagnosis.benchmark.seen10:"
 _S11 = "diagnosis.benchmark.seen11:"
 _S12 = "diagnosis.benchmark.seen12:"
 _S13 = "diagnosis.benchmark.seen13:"
+_S14 = "diagnosis.benchmark.seen14:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
+
+
+class _SealedForm(Mapping):
+    """The sealed family's form of one effect as an effect record's ``sealed`` mapping
+    (``{form: ref}``), read from :data:`diagnosis.benchmark.sealed.FORMS` when first asked
+    for: the family is written by another hand and its forms are named only there."""
+
+    def __init__(self, effect: str):
+        self._effect = effect
+
+    def _forms(self) -> dict:
+        form = importlib.import_module("diagnosis.benchmark.sealed").FORMS[self._effect]
+        return {form: _S + f"{form}_truth"}
+
+    def __getitem__(self, form: str) -> Ref:
+        return self._forms()[form]
+
+    def __iter__(self):
+        return iter(self._forms())
+
+    def __len__(self) -> int:
+        return 1
+
+    def __repr__(self) -> str:
+        return f"_SealedForm({self._effect!r})"
+
 
 #: every named effect, in the order the candidates are tried
 EFFECTS: dict[str, Effect] = {e.name: e for e in (
@@ -267,8 +294,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "oil_slosh": _S10 + "oil_slosh_truth",
                    "dilatancy_hardening": _S11 + "dilatancy_hardening_truth",
                    "tilt_wedge": _S12 + "tilt_wedge_truth",
-                   "sprung_gib": _S13 + "sprung_gib_truth"},
-           sealed={"payne_softening": _S + "payne_softening_truth"},
+                   "sprung_gib": _S13 + "sprung_gib_truth",
+                   "payne_softening": _S14 + "payne_softening_truth"},
+           sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
                 "multiplicative"),
@@ -288,8 +316,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "piezoviscous_film": _S10 + "piezoviscous_film_truth",
                    "full_contact": _S11 + "full_contact_truth",
                    "flash_desorption": _S12 + "flash_desorption_truth",
-                   "scuffing_healing": _S13 + "scuffing_healing_truth"},
-           sealed={"normal_stress_memory": _S + "normal_stress_memory_truth"},
+                   "scuffing_healing": _S13 + "scuffing_healing_truth",
+                   "normal_stress_memory": _S14 + "normal_stress_memory_truth"},
+           sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
                      "additive"),
@@ -309,8 +338,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "differential_cylinder": _S10 + "differential_cylinder_truth",
                    "chevron_grooves": _S11 + "chevron_grooves_truth",
                    "helical_buckling": _S12 + "helical_buckling_truth",
-                   "chip_scraper": _S13 + "chip_scraper_truth"},
-           sealed={"hall_commutation": _S + "hall_commutation_truth"},
+                   "chip_scraper": _S13 + "chip_scraper_truth",
+                   "hall_commutation": _S14 + "hall_commutation_truth"},
+           sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
                          "Stribeck curve shape: exponent, Lorentzian, a speed map",
@@ -330,8 +360,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "melt_lubrication": _S10 + "melt_lubrication_truth",
                    "granular_flow": _S11 + "granular_flow_truth",
                    "readsorption": _S12 + "readsorption_truth",
-                   "thermoviscous_film": _S13 + "thermoviscous_film_truth"},
-           sealed={"turbulent_film": _S + "turbulent_film_truth"},
+                   "thermoviscous_film": _S13 + "thermoviscous_film_truth",
+                   "turbulent_film": _S14 + "turbulent_film_truth"},
+           sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
     Effect(Presliding("presliding", "bristle dynamics missing from a static map",
@@ -355,8 +386,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "bolt_holes": _S10 + "bolt_holes_truth",
                    "immersed_plunger": _S11 + "immersed_plunger_truth",
                    "beam_sag": _S12 + "beam_sag_truth",
-                   "festoon_cable": _S13 + "festoon_cable_truth"},
-           sealed={"curved_guide": _S + "curved_guide_truth"},
+                   "festoon_cable": _S13 + "festoon_cable_truth",
+                   "curved_guide": _S14 + "curved_guide_truth"},
+           sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
            plant_entry="mass", fmu=True, families=("|a|", "accel/decel"), evidence=("|a|",),
@@ -375,8 +407,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "eddy_coupling": _S10 + "eddy_coupling_truth",
                    "centrifugal_flyweights": _S11 + "centrifugal_flyweights_truth",
                    "fluid_coupling": _S12 + "fluid_coupling_truth",
-                   "telescopic_stage": _S13 + "telescopic_stage_truth"},
-           sealed={"frame_recoil": _S + "frame_recoil_truth"},
+                   "telescopic_stage": _S13 + "telescopic_stage_truth",
+                   "frame_recoil": _S14 + "frame_recoil_truth"},
+           sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
@@ -396,8 +429,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "spatial_sampling": _S10 + "spatial_sampling_truth",
                    "belt_transit": _S11 + "belt_transit_truth",
                    "aerated_load_cell": _S12 + "aerated_load_cell_truth",
-                   "lossy_telemetry": _S13 + "lossy_telemetry_truth"},
-           sealed={"charge_leakage": _S + "charge_leakage_truth"},
+                   "lossy_telemetry": _S13 + "lossy_telemetry_truth",
+                   "charge_leakage": _S14 + "charge_leakage_truth"},
+           sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
                  "multiplicative"),
@@ -418,8 +452,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "polymer_swelling": _S10 + "polymer_swelling_truth",
                    "zddp_tribofilm": _S11 + "zddp_tribofilm_truth",
                    "particle_ingress": _S12 + "particle_ingress_truth",
-                   "differential_expansion": _S13 + "differential_expansion_truth"},
-           sealed={"shear_degradation": _S + "shear_degradation_truth"},
+                   "differential_expansion": _S13 + "differential_expansion_truth",
+                   "shear_degradation": _S14 + "shear_degradation_truth"},
+           sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
                     "modify_law"),
@@ -438,8 +473,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "preloaded_nut": _S10 + "preloaded_nut_truth",
                    "harmonic_drive": _S11 + "harmonic_drive_truth",
                    "wire_rope": _S12 + "wire_rope_truth",
-                   "jaw_coupling": _S13 + "jaw_coupling_truth"},
-           sealed={"hydraulic_link": _S + "hydraulic_link_truth"},
+                   "jaw_coupling": _S13 + "jaw_coupling_truth",
+                   "hydraulic_link": _S14 + "hydraulic_link_truth"},
+           sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
                         "Maxwell-slip)", "modify_law"),
@@ -458,8 +494,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "kinematic_hardening": _S10 + "kinematic_hardening_truth",
                    "asperity_interlocking": _S11 + "asperity_interlocking_truth",
                    "capillary_bridges": _S12 + "capillary_bridges_truth",
-                   "cyclic_hardening": _S13 + "cyclic_hardening_truth"},
-           sealed={"junction_peeling": _S + "junction_peeling_truth"},
+                   "cyclic_hardening": _S13 + "cyclic_hardening_truth",
+                   "junction_peeling": _S14 + "junction_peeling_truth"},
+           sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}
 

@@ -1,12 +1,12 @@
-"""The fourteenth sealed truth family: one more mechanism per effect, kept out of all tuning.
+"""The fifteenth sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-11-29 (session 19) by another hand, once, without running the diagnosis on it;
+Written 2026-11-29 (session 20) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 18's, was run once at the end of session 19 and is :mod:`.seen13`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen13`
+sealed before it, session 19's, was run once at the end of session 20 and is :mod:`.seen14`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen14`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen13`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen14`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`), taken from the friction literature or from real
 machines, integrated along the plant's continuous motion on the grid :data:`.kinematics.FINE`
@@ -18,70 +18,63 @@ amplitude monotonically from the base law at ``s`` = 0 (its calibration,
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``payne_softening``: the guide's bushings sit in filled-elastomer
-                   O-rings whose squeeze sets their preload; the carriage's inertial
-                   force shears them, and the filled rubber's stiffness falls with the
-                   strain amplitude (the filler network breaks: Payne 1962; Kraus 1984)
-                   and recovers as the network re-forms: the levels fall with the
-                   envelope of |a| (fast attack, slow recovery), not with |a| itself
-load               ``normal_stress_memory``: the friction follows the normal load
-                   (Amontons), but the contact's state responds to a change of the load
-                   only in part at once and renews over a slip distance (Linker and
-                   Dieterich 1992; Prakash 1998): after each change of the load the
-                   levels lag its share alpha / mu, paced by the travel, both ways
-asymmetry          ``hall_commutation``: the force is read from the motor current of a
-                   brushless drive commutated by Hall sensors; their mounting offset, the
-                   latches' hysteresis and their delay shift the commutation angle in
-                   the direction of travel (Krishnan 2010), so the force per ampere
-                   differs with the direction: friction and the inverse dynamics'
-                   inertial force are scaled by cos d0 / cos(d0 + d(v))
-stribeck_shape     ``turbulent_film``: a low-viscosity (water, coolant) film beside the
-                   contact whose Couette flow turns turbulent above a critical Reynolds
-                   number (Taylor 1923; Smith and Fuller 1956): its shear, laminar ~ v
-                   below, grows as Re^0.75 beyond (Constantinescu 1959; Hirs 1973): a
-                   drag whose slope steepens at a speed, v^1.75 at the top
-position           ``curved_guide``: the track has a curved segment (an arc between two
-                   clothoids) where the carriage's centripetal force m v^2 / R presses
-                   its rollers onto the outer rail: the levels rise in the curve with the
-                   curvature and the squared speed, nothing on the straights or at rest
-inertia            ``frame_recoil``: the axis' frame stands on soft mounts and the
-                   encoder reads the carriage against it: the drive's reaction makes the
-                   frame recoil (a mass on its isolators, lightly damped), and the
-                   inverse dynamics misses the carriage's mass times the frame's
-                   acceleration: no error at low frequencies, ringing at the frame's
-                   mode, a negative mass error above it
-delay              ``charge_leakage``: the force read by a piezoelectric sensor through a
-                   charge amplifier whose feedback resistor lets the charge leak (the
-                   time constant R C, Gautschi 2002): a first-order high-pass from the
-                   reset at the record's start: held forces droop and the force leads the
-                   motion (a high-pass's phase, the opposite of a delay), more the slower
-                   the motion
-drift              ``shear_degradation``: the lubricant's polymer viscosity improver is
-                   broken by the contact's shear (mechanical scission, Covitch 1998;
-                   Bartz 2000): the viscosity falls with the shear-weighted travel towards
-                   the base oil's, the film thins, the boundary levels rise and the
-                   viscous term falls: a drift of the travel and the speed, two ways at
-                   once
-backlash           ``hydraulic_link``: drive and contact joined by an oil column (a
-                   master-slave cylinder pair, a hydrostatic transmission): the oil's
-                   compressibility (a damped spring) in series with the leakage past the
-                   pistons (a dashpot, Merritt 1967): after each reversal the force
-                   builds through the oil, and a held force leaks away: the contact
-                   creeps behind the drive and stalls where the drive is slower than the
-                   leak
-gms                ``junction_peeling``: adhesive asperity junctions beside the bristle
-                   whose real contact area shrinks under the shear force (Savkoor and
-                   Briggs 1977; Sahli et al. 2018) and re-adheres only as the force
-                   falls back (adhesion hysteresis, Chaudhury and Whitesides 1991): the
-                   stiffness follows the area: loading softens, unloading is stiff and
-                   linear down to the re-adhesion, not Masing's doubled curve; at ``s``
-                   = 0 the base itself
+acceleration       ``swing_arm_roller``: the guide's rollers are pressed onto the rail
+                   by springs through pivoted, inclined arms (an elevator's roller
+                   guide shoes, a follower arm): the carriage's acceleration rocks each
+                   arm's mass about its pivot against its spring, a lightly damped
+                   oscillator: the rollers' load, and the levels, follow its swing -
+                   the acceleration filtered by a resonance, ringing after each change
+load               ``jkr_adhesion``: a soft, smooth contact (an elastomer pad or roller)
+                   whose friction is a shear strength times the real contact area, that
+                   area held by the surfaces' adhesion as well as the load (Johnson,
+                   Kendall and Roberts 1971): the levels follow the JKR area, nonzero at
+                   no load, steep at light loads and flat at heavy ones
+asymmetry          ``belt_idler``: a belt-driven axis with a tension idler (a guide
+                   roller) on one span only: its bearing's drag grows with that span's
+                   tension, which carries the drive force when it pulls one way and
+                   goes slack when it pulls the other (Palmgren's load-dependent
+                   bearing torque): the levels follow the positive part of the drive
+                   force (friction plus inertial force), not the direction of motion
+stribeck_shape     ``thixotropic_grease``: a grease beside the contact whose structure
+                   the shear breaks down and which rebuilds at rest (thixotropy, Moore
+                   1959; Barnes 1997): its drag, viscous at the structure's viscosity,
+                   thins as it is sheared: a drag rising with the speed and bending
+                   over, fresh after a rest, thinned after fast travel
+position           ``gliding_chain``: a long-travel energy chain whose upper run glides
+                   on its lower run from the fixed point on, and on the trough's glide
+                   bars past it: the gliding lengths change with the position, chain on
+                   chain and chain on bars at their own friction: the levels change
+                   linearly along the stroke with a kink at the chain's fixed point
+inertia            ``force_saturation``: the force is read as the motor current times its
+                   nominal force constant, and the iron saturates at high currents
+                   (the force constant falls, Gieras and Piech 2000): the reading of
+                   friction plus inertial force grows faster than the force, and the
+                   inverse dynamics leaves an error ~ (m a)^3 at the acceleration peaks
+delay              ``load_cell_creep``: the force read by a strain-gauge load cell whose
+                   spring element creeps anelastically (Zener 1948; the creep test of
+                   OIML R60): a share of each change of the force appears at once, the
+                   rest follows with the creep's time constant: a partial lag
+drift              ``magnet_heating``: the force is read as the motor current times the
+                   cold force constant; the copper losses (~ the drive force squared)
+                   warm the magnets and their remanence falls (NdFeB, about -0.1 %/K):
+                   the reading of friction and inertial force alike grows with the
+                   lagged mean square drive force
+backlash           ``bowden_cable``: drive and contact joined by a push-pull cable in a
+                   curved sheath (a Bowden cable, a tendon-sheath drive): the cable's
+                   elasticity and the capstan friction along the sheath (Kaneko et al.
+                   1991): after each reversal the cable's strain must unwind against the
+                   sheath before the contact turns, more the higher the force
+gms                ``unloading_microslip``: the presliding junctions are Hertzian
+                   micro-contacts whose slip limits follow the normal load (Mindlin and
+                   Deresiewicz 1953): a falling load makes them slip where they stand
+                   and lose the force they held, a rising one does not give it back;
+                   at ``s`` = 0 the base itself
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``turbulent_film`` needs a
-Stribeck curve (not the isolator's mre_lugre), ``curved_guide`` a record that revisits its
-positions (not the press), ``normal_stress_memory`` a load that changes,
-``hydraulic_link`` and ``junction_peeling`` a classic LuGre base (valve, damping rig,
+Where a form applies: as its effect's record (``truth_applies``); ``thixotropic_grease``
+needs a Stribeck curve (not the isolator's mre_lugre), ``gliding_chain`` a record that
+revisits its positions (not the press), ``jkr_adhesion`` a load that changes,
+``bowden_cable`` and ``unloading_microslip`` a classic LuGre base (valve, damping rig,
 XML-350); each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
@@ -95,224 +88,67 @@ from friction.shapes import SHAPES
 
 from ..effects_backlash import PLANT_GAP_SHARE
 from .kinematics import PlantKinematics
-from .seen11 import _direction
-from .seen13 import _travel
 from .truths import (_base_parts, _bump_centre, _contact_constants, _lag, _level,
-                     _light_contact_step, _lugre_params, _motion_time, _presliding_path,
-                     _span, _substeps, level_inside, on_fine_grid)
+                     _light_contact_step, _lugre_params, _lugre_run, _motion_time,
+                     _presliding_path, _smooth_max0, _span, _substeps, level_inside,
+                     on_fine_grid)
 
-__all__ = ["FORMS", "payne_softening_truth", "normal_stress_memory_truth",
-           "hall_commutation_truth", "turbulent_film_truth", "curved_guide_truth",
-           "frame_recoil_truth", "charge_leakage_truth", "shear_degradation_truth",
-           "hydraulic_link_truth", "junction_peeling_truth"]
+__all__ = ["FORMS", "swing_arm_roller_truth", "jkr_adhesion_truth", "belt_idler_truth",
+           "thixotropic_grease_truth", "gliding_chain_truth", "force_saturation_truth",
+           "load_cell_creep_truth", "magnet_heating_truth", "bowden_cable_truth",
+           "unloading_microslip_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "payne_softening", "load": "normal_stress_memory",
-         "asymmetry": "hall_commutation", "stribeck_shape": "turbulent_film",
-         "position": "curved_guide", "inertia": "frame_recoil",
-         "delay": "charge_leakage", "drift": "shear_degradation",
-         "backlash": "hydraulic_link", "gms": "junction_peeling"}
+FORMS = {"acceleration": "swing_arm_roller", "load": "jkr_adhesion",
+         "asymmetry": "belt_idler", "stribeck_shape": "thixotropic_grease",
+         "position": "gliding_chain", "inertia": "force_saturation",
+         "delay": "load_cell_creep", "drift": "magnet_heating",
+         "backlash": "bowden_cable", "gms": "unloading_microslip"}
+
+
+def _drive_force(kin: PlantKinematics, F, inertia: float) -> np.ndarray:
+    """The drive's force [N] along ``kin``'s grid: the force ``F`` [N] plus the carriage's
+    inertial force m a, m a99 = ``inertia`` x the friction level."""
+    m = inertia * _level(kin) / max(kin.scales["a99"], 1e-12)
+    return np.asarray(F, float) + m * np.asarray(kin.a, float), m
 
 
 # -- acceleration ---------------------------------------------------------------------------
-#: ``payne_softening``'s critical strain amplitude of the filler network, as a share of the
-#: O-rings' shear at a99 [-]; Kraus's exponent [-]; the network's re-forming time, x the
-#: motion's time scale [-]; the levels' fall with the network fully broken at strength 1
-#: [-]; the lowest relative level [-]
-PAYNE_STRAIN, KRAUS_EXPONENT, PAYNE_RECOVERY, PAYNE_DROP, PAYNE_FLOOR = \
-    0.3, 0.6, 2.0, 0.6, 0.05
+#: ``swing_arm_roller``'s arms' natural angular frequency on their springs, x 1 / the
+#: motion's time scale [-]; their damping ratio [-]; the rollers' load change per unit of
+#: the arms' static swing at a99 at strength 1 [-]; the lowest relative level (the rollers
+#: lift off) [-]
+ARM_FREQUENCY, ARM_DAMPING, ARM_LOAD, ARM_FLOOR = 2.0, 0.12, 0.6, 0.05
 
 
-@njit(cache=True)
-def _strain_envelope(t, u, tau):
-    """The strain amplitude [-] the filler network has seen along the times ``t`` [s] of the
-    relative strains ``u`` [-] (>= 0): it breaks at once up to a new amplitude and re-forms
-    with the time constant ``tau`` [s] (a peak detector with exponential release). Starts
-    at the first strain."""
-    n = u.size
-    out = np.empty(n)
-    e = u[0]
-    out[0] = e
-    for k in range(1, n):
-        e = e * math.exp(-(t[k] - t[k - 1]) / tau)
-        if u[k] > e:
-            e = u[k]
-        out[k] = e
-    return out
-
-
-def _payne_loss(e, critical, m):
-    """The share [-] of the filled rubber's stiffness the filler network has lost at the
-    strain amplitudes ``e`` [-] (Kraus 1984: G = G_inf + (G_0 - G_inf) / (1 + (e / e_c)^2m),
-    the loss of the network's part x / (1 + x), x = (``e`` / ``critical``)^(2 ``m``))."""
-    x = (np.asarray(e, float) / critical) ** (2.0 * m)
-    return x / (1.0 + x)
+def _arm_swing(t, u, wn, zeta):
+    """The arms' swing [-] along the times ``t`` [s] under the relative accelerations ``u``
+    [-]: q'' + 2 ``zeta`` ``wn`` q' + ``wn``^2 q = ``wn``^2 u (a pivoted mass on its
+    spring, rocked by the carriage's acceleration; static gain 1), from rest."""
+    from scipy.signal import lsim
+    _, y, _ = lsim(([wn * wn], [1.0, 2.0 * zeta * wn, wn * wn]), np.asarray(u, float),
+                   np.asarray(t, float))
+    return np.asarray(y, float)
 
 
 @on_fine_grid
-def payne_softening_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The guide's plain bushings are mounted in filled-elastomer O-rings (self-aligning
-    mounts) whose squeeze sets the bushings' preload on their shafts. The carriage's
-    inertial force passes through the O-rings and shears them, with an amplitude ~ |a|:
-    the carbon-black network of the filled rubber breaks at once as the amplitude grows
-    and re-forms over :data:`PAYNE_RECOVERY` x the motion's time scale
-    (:func:`_strain_envelope` of |a| / a99), and the rubber's stiffness falls with that
-    amplitude (the Payne effect, :func:`_payne_loss`, critical amplitude
-    :data:`PAYNE_STRAIN`). The squeeze is fixed, so the preload, and the Coulomb and
-    Stribeck levels, are the base's times 1 - ``s`` :data:`PAYNE_DROP` x the stiffness lost
-    (at least :data:`PAYNE_FLOOR`), inside the bristle dynamics; the viscous term is the
-    base's.
+def swing_arm_roller_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage is guided by rollers, each pressed onto its rail by a spring through a
+    pivoted arm inclined to the rail (roller guide shoes; spring-loaded follower arms).
+    The carriage's acceleration swings each arm's mass about its pivot against its
+    spring: a lightly damped oscillator (natural frequency :data:`ARM_FREQUENCY` / the
+    motion's time scale, damping ratio :data:`ARM_DAMPING`) driven by a / a99
+    (:func:`_arm_swing`). The inclination turns the swing into the rollers' pressing
+    force: the Coulomb and Stribeck levels are the base's times 1 + ``s``
+    :data:`ARM_LOAD` x the swing (at least :data:`ARM_FLOOR`: the rollers lift off),
+    inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the filler network's share of the O-rings' stiffness
-        (their preload lost when it is broken), / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    The strain-amplitude dependence of filled rubber (Payne 1962, The dynamic properties
-    of carbon black-loaded natural rubber vulcanizates, J. Appl. Polym. Sci. 6; Kraus 1984,
-    Mechanical losses in carbon-black-filled rubbers, J. Appl. Polym. Sci. Appl. Polym.
-    Symp. 39); elastomer O-ring mounts of self-aligning linear bushings. The candidate adds
-    a force odd in a fading with the speed and raises the levels with |a|, lagged; the
-    open forms lag the velocity, a film or a contact state, heat the contact, skid rolling
-    elements, move load between rows or supports, press seals, pull with the thrust,
-    squeeze films, starve the contact, dilate it, lift it on a wedge or shift a gib. Here
-    the levels follow the largest acceleration of the recent past: down at once with a
-    new peak, back slowly, the same at a's zero crossings as at its peaks.
-    """
-    t = np.ascontiguousarray(kin.t, dtype=float)
-    u = np.ascontiguousarray(np.abs(np.asarray(kin.a, float)) /
-                             max(kin.scales["a99"], 1e-12))
-    e = _strain_envelope(t, u, PAYNE_RECOVERY * max(_motion_time(kin), 1e-12))
-    lev = 1.0 - max(float(s), 0.0) * PAYNE_DROP * _payne_loss(e, PAYNE_STRAIN,
-                                                              KRAUS_EXPONENT)
-    return level_inside(kin, np.clip(lev, PAYNE_FLOOR, None), np.ones_like(lev))
-
-
-# -- load -------------------------------------------------------------------------------------
-#: ``normal_stress_memory``'s share alpha / mu of a change of the (log) load the contact's
-#: state does not follow at once [-]; the slip distance over which it renews, x the
-#: record's travel [-]; the least load the state's logarithm reads, x the mean load [-];
-#: the lowest relative level [-]
-STATE_SHARE, RENEWAL_PATH, LOAD_FLOOR, STRESS_FLOOR = 0.4, 0.03, 0.05, 0.05
-
-
-@njit(cache=True)
-def _renewal(path, lnL, dc):
-    """The contact state's deviation psi [-] (b ln(theta / theta_ss) / alpha) along the
-    sliding ``path`` [m] and log loads ``lnL`` [-]: a change of ``lnL`` moves it by as
-    much at once, against its sign, and it relaxes to 0 over the slip distance ``dc`` [m]
-    (Linker and Dieterich's normal-stress term in the aging law, linearised at steady
-    sliding), psi = - (``lnL`` high-passed in the slip). Starts at 0."""
-    n = lnL.size
-    out = np.empty(n)
-    psi = 0.0
-    out[0] = 0.0
-    for k in range(1, n):
-        psi = psi - (lnL[k] - lnL[k - 1])
-        psi = psi * math.exp(-(path[k] - path[k - 1]) / dc)
-        out[k] = psi
-    return out
-
-
-@on_fine_grid
-def normal_stress_memory_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Friction proportional to the normal load (Amontons: tau = mu sigma) whose coefficient
-    carries the contact's state: a change of the load changes the state at once by
-    - alpha / b x its log change, and the state then renews over the slip distance D_c
-    (Linker and Dieterich 1992; :func:`_renewal`). The friction follows L / L0 x (1 +
-    :data:`STATE_SHARE` psi), L0 the mean load, psi the state's deviation (the log load
-    high-passed in the slip, :data:`RENEWAL_PATH` x the record's travel; the log reads at
-    least :data:`LOAD_FLOOR` x L0): at once by 1 - :data:`STATE_SHARE` of a change, the rest
-    over D_c. The Coulomb and Stribeck levels are the base's times 1 + ``s`` (L / L0 (1 +
-    :data:`STATE_SHARE` psi) - 1) (at least :data:`STRESS_FLOOR`), inside the bristle
-    dynamics; the viscous term is the base's. ValueError if the load does not change.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (t [s], v [m/s], load [N]) and its base law.
-    s : float
-        Amplitude factor [-]: the load-proportional share of the friction, / its value at
-        strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Rate-and-state friction under variable normal stress (Linker and Dieterich 1992,
-    Effects of variable normal stress on rock friction, J. Geophys. Res. 97; Prakash 1998,
-    Frictional response of sliding interfaces subjected to time varying normal pressures,
-    J. Tribol. 120; Richardson and Marone 1999). The candidate's levels are affine in the
-    load; the open forms are powers, one direction, square-root and exponential viscous
-    terms, the Stribeck velocity, a logistic step, a creep in time, the load's rate, a
-    play, a ratchet with the travel, a hinge, a lag while it rises, a saturating area, a
-    flash temperature and a relay. Here the load acts at once in part and the rest over a
-    slip distance, rising and falling alike, paced by the travel, not the clock.
-    """
-    L = np.asarray(kin.load, float)
-    L0 = float(np.mean(np.abs(L)))
-    # a change below 1e-6 of the mean load over the record is round-off, not a change
-    if L0 <= 0.0 or float(np.ptp(L)) <= 1e-6 * L0:
-        raise ValueError(f"load (normal_stress_memory): the {kin.plant} record's load does "
-                         f"not change")
-    path = _travel(kin)
-    rel = np.maximum(L, 0.0) / L0
-    lnL = np.log(np.maximum(rel, LOAD_FLOOR))
-    psi = _renewal(path, np.ascontiguousarray(lnL),
-                   RENEWAL_PATH * max(float(path[-1]), 1e-300))
-    lev = 1.0 + max(float(s), 0.0) * (rel * (1.0 + STATE_SHARE * psi) - 1.0)
-    return level_inside(kin, np.clip(lev, STRESS_FLOOR, None), np.ones_like(lev))
-
-
-# -- asymmetry -------------------------------------------------------------------------------
-#: ``hall_commutation``'s Hall board mounting offset [rad, electrical]; the latches'
-#: hysteresis and delay at low speed, and the delay's extra lag at v99, at strength 1 [rad,
-#: electrical]; the moving mass's inertial force at a99, x the friction level [-]; the
-#: largest commutation angle [rad]
-HALL_OFFSET, HALL_HYSTERESIS, HALL_LAG, HALL_INERTIA, HALL_LIMIT = \
-    math.radians(20.0), math.radians(11.0), math.radians(8.0), 1.0, math.radians(80.0)
-
-
-def _force_per_ampere(angle, offset):
-    """The drive's force per ampere [-] at the commutation angles ``angle`` [rad], over its
-    value at the mounting offset ``offset`` [rad] (where it was calibrated): cos(angle) /
-    cos(offset), the torque of block currents against a sinusoidal back-EMF whose
-    commutation is off by ``angle``."""
-    return np.cos(np.asarray(angle, float)) / math.cos(offset)
-
-
-@on_fine_grid
-def hall_commutation_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force is read as the motor current of a brushless drive times its calibrated
-    force constant, and the inverse dynamics subtracts the known inertial force m a. The
-    motor is commutated by Hall sensors: mounted :data:`HALL_OFFSET` off, their latches
-    switch late in the direction of travel (their magnetic hysteresis and delay, ``s``
-    :data:`HALL_HYSTERESIS` either way, the direction rounded over 2 % of v99) and later
-    still with the speed (the delay's angle, ``s`` :data:`HALL_LAG` at v99), within
-    +-:data:`HALL_LIMIT`. The force per ampere is c = cos of that angle over its calibrated
-    value (:func:`_force_per_ampere`), so the current of the true drive force F + m a reads
-    as (F + m a) / c: the record's force is (F + m a) / c - m a, with m a99 =
-    :data:`HALL_INERTIA` x the friction level.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
-    s : float
-        Amplitude factor [-]: the Hall latches' angle errors (hysteresis and delay), / their
+        Amplitude factor [-]: the arms' mass moment over their springs' preload, / its
         value at strength 1.
 
     Returns
@@ -322,62 +158,116 @@ def hall_commutation_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Hall-sensor commutation of brushless motors and its angle errors (Krishnan 2010,
-    Permanent Magnet Synchronous and Brushless DC Motor Drives; the Hall latches' operate
-    and release points); force estimated from the motor current in identification (the EMPS
-    benchmark's force, its motor current times a gain). The candidate shifts a direction's
-    levels and viscous slope (and an offset); the open forms keep a direction's share, its
-    Stribeck velocity, viscous slope or tail, roll a lip, follow a thrust, a film laid by
-    the outstroke, a texture, a return spring, a wedge film, a strut, a throttle, a
-    cylinder's areas, pumping grooves, a buckling cable or a scraper's pile. Here the
-    measurement's scale differs with the direction: the friction and the inertial force
-    alike, more with the speed one way, less the other.
+    Spring-loaded roller guide shoes of elevator cars and their dynamics (Strakosch 1998,
+    The Vertical Transportation Handbook; Janovsky 1999, Elevator Mechanical Design);
+    follower arms held by springs (Norton 2002, Cam Design and Manufacturing Handbook, on
+    follower jump). The candidate raises the levels with |a|, lagged, tilts them with a,
+    and adds a force odd in a; the open forms lag the velocity, a film or a contact state,
+    heat the contact, skid rolling elements, move load between rows or supports, press
+    seals, pull with the thrust, squeeze films, starve the contact, dilate it, lift it on
+    a wedge, shift a gib or soften an elastomer mount. Here the levels follow a resonant
+    response of the acceleration: in phase at slow changes, ringing at the arms' own
+    frequency after each jerk, whatever the acceleration does then.
     """
-    F, _ = _base_parts(kin)
     if s <= 0.0:
-        return F
-    v99 = max(kin.scales["v99"], 1e-12)
-    m = HALL_INERTIA * _level(kin) / max(kin.scales["a99"], 1e-12)
-    angle = HALL_OFFSET + float(s) * (HALL_HYSTERESIS * _direction(kin)
-                                      + HALL_LAG * np.asarray(kin.v, float) / v99)
-    c = _force_per_ampere(np.clip(angle, -HALL_LIMIT, HALL_LIMIT), HALL_OFFSET)
-    ma = m * np.asarray(kin.a, float)
-    return (F + ma) / c - ma
+        return _base_parts(kin)[0]
+    T = max(_motion_time(kin), 1e-12)
+    u = np.asarray(kin.a, float) / max(kin.scales["a99"], 1e-12)
+    q = _arm_swing(kin.t, u, ARM_FREQUENCY / T, ARM_DAMPING)
+    lev = np.clip(1.0 + float(s) * ARM_LOAD * q, ARM_FLOOR, None)
+    return level_inside(kin, lev, np.ones_like(lev))
 
 
-# -- stribeck_shape --------------------------------------------------------------------------
-#: ``turbulent_film``'s laminar drag at v99 at strength 1, x the friction level [-]; the
-#: speed where the film turns turbulent (its critical Reynolds number), x v99 [-]; the
-#: turbulent shear's exponent of the Reynolds number [-]; the sharpness of the transition
-#: [-]
-TURB_DRAG, TURB_ONSET, TURB_EXPONENT, TURB_SHARPNESS = 0.3, 0.3, 0.75, 4.0
+# -- load ------------------------------------------------------------------------------------
+#: ``jkr_adhesion``'s pull-off force of the contact, x the record's mean load [-]; the levels'
+#: change per unit of the relative contact area's change at strength 1 [-]; the lowest
+#: relative level [-]
+PULL_OFF, AREA_GAIN, ADHESION_FLOOR = 0.4, 1.0, 0.05
 
 
-def _turbulent_shear(u, onset, exponent, sharpness):
-    """The film's Couette shear [-] at the relative speeds ``u`` [-] (over v99), over its
-    laminar shear at v99: laminar u below the critical speed ``onset`` [-], u (|u| /
-    ``onset``)^``exponent`` beyond (the turbulent shear factor ~ Re^``exponent``), joined
-    by a p-norm of sharpness ``sharpness``; odd in ``u``."""
-    u = np.asarray(u, float)
-    r = np.abs(u) / onset
-    return u * (1.0 + r ** (exponent * sharpness)) ** (1.0 / sharpness)
+def _jkr_area(r, c):
+    """The contact area [-] of an adhesive elastic contact at the relative loads ``r`` [-],
+    over its value at r = 1 (Johnson, Kendall and Roberts 1971: a^3 ~ P + 2 P_c + 2 sqrt(P_c
+    P + P_c^2), P_c = ``c`` the pull-off force [-]; the area ~ a^2)."""
+    r = np.maximum(np.asarray(r, float), 0.0)
+
+    def area(p):
+        return (p + 2.0 * c + 2.0 * np.sqrt(c * p + c * c)) ** (2.0 / 3.0)
+    return area(r) / area(1.0)
 
 
 @on_fine_grid
-def turbulent_film_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A film of a low-viscosity lubricant (water, a coolant) between the carriage and a
-    second surface beside its contact (a water-lubricated slideway pad): its Couette shear
-    is laminar, ~ v, up to the critical Reynolds number, at :data:`TURB_ONSET` x v99, and
-    turbulent beyond, the shear factor growing as Re^:data:`TURB_EXPONENT`
-    (:func:`_turbulent_shear`). The film's drag is added to the base's force, ``s``
-    :data:`TURB_DRAG` x the friction level at v99 were it laminar there.
+def jkr_adhesion_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A soft, smooth contact (an elastomer pad or roller on a clean, smooth counterface)
+    whose friction is an interfacial shear strength times the real contact area (Bowden and
+    Tabor), that area set by the load *and* the surfaces' adhesion: the contact of
+    Johnson, Kendall and Roberts (:func:`_jkr_area`), whose pull-off force is
+    :data:`PULL_OFF` x the record's mean load. The Coulomb and Stribeck levels are the
+    base's times 1 + ``s`` :data:`AREA_GAIN` x (A / A(mean load) - 1) (at least
+    :data:`ADHESION_FLOOR`), inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law (a Stribeck curve).
+        The motion on the fine grid (load [N]) and its base law.
     s : float
-        Amplitude factor [-]: the film's wetted area (its laminar drag), / its value at
+        Amplitude factor [-]: the share of the friction the adhesive area carries, / its
+        value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Surface energy and the contact of elastic solids (Johnson, Kendall and Roberts 1971,
+    Proc. R. Soc. A 324); friction proportional to the adhesive contact area (Carpick,
+    Agrait, Ogletree and Salmeron 1996, J. Vac. Sci. Technol. B 14; Homola et al. 1990 for
+    mica). The candidate's levels are affine in the load (two regimes); the open forms
+    scale them with a power of the load (Hertz), in one direction, with the Stribeck
+    velocity, a film that breaks, creeps, squeezes, desorbs, scuffs, cavitates, a lever's
+    play, a plastic area, a pressure-viscous film, an erf area, a load's rate or its
+    renewal over the slip. Here the friction does not vanish with the load: the adhesion
+    holds an area at no load, and the levels rise steeply at light loads and slowly at
+    heavy ones.
+    """
+    L = np.asarray(kin.load, float)
+    if not np.ptp(L) > 1e-9 * max(float(np.mean(np.abs(L))), 1e-300):
+        raise ValueError(f"load (jkr_adhesion): the {kin.plant} record's load does not "
+                         f"change")
+    if s <= 0.0:
+        return _base_parts(kin)[0]
+    r = L / max(float(np.mean(L)), 1e-300)
+    lev = np.clip(1.0 + float(s) * AREA_GAIN * (_jkr_area(r, PULL_OFF) - 1.0),
+                  ADHESION_FLOOR, None)
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- asymmetry -------------------------------------------------------------------------------
+#: ``belt_idler``'s idler bearing drag per unit of its span's tension, at strength 1 [-];
+#: the carriage's inertial force at a99, x the friction level [-]; the span's tension
+#: rounded over this share of the friction level (it never goes slack at once) [-]
+IDLER_DRAG, IDLER_INERTIA, IDLER_ROUNDING = 0.4, 1.0, 0.05
+
+
+@on_fine_grid
+def belt_idler_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A belt-driven axis whose belt runs over a tension idler (a guide roller) on one
+    span only. The drive's force F_d = friction + m a (m a99 = :data:`IDLER_INERTIA` x the
+    friction level, :func:`_drive_force`) is carried by the span that pulls: the idler's
+    span when F_d > 0, the other when F_d < 0, the idler's span then slack. The idler's
+    bearing drag grows with its load, the span's tension: the Coulomb and Stribeck levels
+    are the base's times 1 + ``s`` :data:`IDLER_DRAG` x max(F_d, 0) / the friction level
+    (rounded over :data:`IDLER_ROUNDING` of it), inside the bristle dynamics; the viscous
+    term is the base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
+    s : float
+        Amplitude factor [-]: the idler bearing's drag per unit of its load, / its value at
         strength 1.
 
     Returns
@@ -387,178 +277,253 @@ def turbulent_film_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The onset of Taylor vortices and turbulence in a sheared film (Taylor 1923, Stability
-    of a viscous liquid contained between two rotating cylinders, Phil. Trans. R. Soc. A
-    223; Smith and Fuller 1956, Journal-bearing operation at superlaminar speeds, Trans.
-    ASME 78); turbulent lubrication (Constantinescu 1959, On turbulent lubrication, Proc.
-    Inst. Mech. Eng. 173; Hirs 1973, A bulk-flow theory for turbulence in lubricant
-    films, J. Lubr. Technol. 95). The candidate bends the base's drop (an exponent, the
-    Lorentzian, a log-speed map); the open forms add tails, drops, a spike, a lift-off, a
-    second drop, logarithmic weakening, Eyring strengthening, a rise at the top speed, a
-    hump, a notch, a dither, a melt, a granular rise, re-adsorption and thermal thinning.
-    Here a viscous drag whose slope steepens at a speed: a change of the flow's regime,
-    not of the contact's.
-    """
-    if kin.base.name == "mre_lugre":
-        raise ValueError("stribeck_shape (turbulent_film): the mre_lugre base has no "
-                         "Stribeck curve")
-    F, _ = _base_parts(kin)
-    u = np.asarray(kin.v, float) / max(kin.scales["v99"], 1e-12)
-    drag = _turbulent_shear(u, TURB_ONSET, TURB_EXPONENT, TURB_SHARPNESS)
-    return F + max(float(s), 0.0) * TURB_DRAG * _level(kin) * drag
-
-
-# -- position --------------------------------------------------------------------------------
-#: ``curved_guide``'s arc of constant curvature and each clothoid leading into it, x the
-#: stroke the record visits [-]; the normal load the centripetal force adds at v99 on the
-#: arc at strength 1, x the load on the straights [-]
-ARC_SHARE, CLOTHOID_SHARE, CURVE_LOAD = 0.2, 0.1, 1.0
-
-
-def _curvature(x, centre, arc, clothoid):
-    """The track's curvature [-] at the positions ``x`` [m], over the arc's: 1 on the arc of
-    length ``arc`` [m] around ``centre`` [m], rising linearly with the length along each
-    clothoid of ``clothoid`` [m] before and after it (a clothoid's curvature is linear in
-    its length), 0 on the straights."""
-    d = np.abs(np.asarray(x, float) - centre) - 0.5 * arc
-    return np.clip(1.0 - d / clothoid, 0.0, 1.0)
-
-
-@on_fine_grid
-def curved_guide_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage runs on a track with a curved segment (a transport system's track, a
-    curved profile rail): an arc of :data:`ARC_SHARE` x the stroke the record visits,
-    centred where fit and held-out parts both pass (:func:`.truths._bump_centre`), between
-    clothoids of :data:`CLOTHOID_SHARE` x the stroke each (:func:`_curvature`). Along the
-    curve the carriage's centripetal force m v^2 / R presses its rollers onto the outer
-    rail: their normal load, and with it the Coulomb and Stribeck levels, are the base's
-    times 1 + ``s`` :data:`CURVE_LOAD` x the relative curvature x (v / v99)^2, inside the
-    bristle dynamics; the viscous term is the base's. Nothing on the straights, nothing
-    at rest.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law.
-    s : float
-        Amplitude factor [-]: the carriage's mass over the arc's radius (its centripetal
-        load at v99), / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Centripetal loads of vehicles on curved tracks and their transition curves (the
-    clothoid, Euler's spiral, of railway alignment); curved profile-rail guides, ring slides
-    and the track systems of linear transport, whose rollers carry the centripetal force.
-    The candidate scales the friction along the stroke and adds a periodic and a smooth
-    force of x; the open forms are level maps, a periodic detent force, a cushion's drag, a
-    cover's staircase, a gas spring, bolt holes, a plunger's drag, a sagging beam's pull and
-    a festoon's tension. Here the levels depend on the position and the squared speed
-    together: a bump along the stroke that is there only in fast passes.
-    """
-    xc = _bump_centre(kin)
-    if xc is None:
-        raise ValueError(f"position (curved_guide): the held-out part of the {kin.plant} "
-                         f"record never revisits the positions of its fit part")
-    span = _span(kin)
-    kappa = _curvature(kin.x, xc, ARC_SHARE * span, CLOTHOID_SHARE * span)
-    u = np.asarray(kin.v, float) / max(kin.scales["v99"], 1e-12)
-    lev = 1.0 + max(float(s), 0.0) * CURVE_LOAD * kappa * u * u
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- inertia ---------------------------------------------------------------------------------
-#: ``frame_recoil``'s carriage mass at strength 1, x the friction level / a99 [kg per N
-#: s^2/m]; the carriage's share of the mass the frame's isolators carry, m / (M + m) [-];
-#: the frame's natural angular frequency on its isolators, x 1 / the motion's time scale
-#: [-]; its damping ratio [-]
-FRAME_CARRIAGE, FRAME_SHARE, FRAME_FREQUENCY, FRAME_DAMPING = 3.0, 0.4, 3.0, 0.05
-
-
-def _frame_acceleration(t, a, share, wn, zeta):
-    """The frame's acceleration [m/s^2] along the times ``t`` [s] when the carriage's
-    relative accelerations ``a`` [m/s^2] drive it through the reaction: x_f'' + 2 ``zeta``
-    ``wn`` x_f' + ``wn``^2 x_f = -``share`` a (the frame and the carriage on the
-    isolators, the drive's force between them); linear in ``a``, from rest."""
-    from scipy.signal import lsim
-    _, y, _ = lsim(([-share, 0.0, 0.0], [1.0, 2.0 * zeta * wn, wn * wn]),
-                   np.asarray(a, float), np.asarray(t, float))
-    return np.asarray(y, float)
-
-
-@on_fine_grid
-def frame_recoil_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The axis' frame (its base with the stator and the encoder's scale) stands on soft
-    isolators, and the motion is read relative to it. The drive's force acts between the
-    carriage (mass m) and the frame: the frame recoils, a mass on its isolators (natural
-    frequency :data:`FRAME_FREQUENCY` / the motion's time scale, damping ratio
-    :data:`FRAME_DAMPING`), driven by the reaction with the carriage's share m / (M + m)
-    = :data:`FRAME_SHARE` (:func:`_frame_acceleration`). The carriage's absolute
-    acceleration is the measured one plus the frame's, so the inverse dynamics, which
-    takes m times the measured, misses m x_f'': added to the base's force, m = ``s``
-    :data:`FRAME_CARRIAGE` x the friction level / a99.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (t [s], a [m/s^2]) and its base law.
-    s : float
-        Amplitude factor [-]: the carriage's mass (the frame's in proportion), / its value
-        at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Reaction forces of high-acceleration stages on their machine frames and their
-    isolation (Butler 2011, Position control in lithographic equipment, IEEE Control
-    Syst. Mag. 31; Rivin 2003, Passive Vibration Isolation); relative position
-    measurement against a moving base. The candidate's mass is constant, varies in time,
-    along the stroke or with the squared speed, or holds a coupled part that slips; the
-    open forms filter, flex behind the sensor, gear, lose, add fluid mass, dispense, slide
-    a payload, rattle a part, freewheel, carry a payload between zones, couple through
-    eddies, flyweights or a fluid, or pick up a stage. Here the missed force comes from
-    the motion of what the measurement stands on: nothing at low frequencies, the frame's
-    ringing, and a *negative* mass above its mode.
+    The load-dependent friction torque of rolling bearings (Palmgren 1959, Ball and Roller
+    Bearing Engineering: M1 = f1 P dm; Harris and Kotzalas 2007, Rolling Bearing
+    Analysis); tight and slack spans of belt drives (Childs 2004, Mechanical Design, ch.
+    10). The candidate shifts a direction's levels and viscous slope (and an offset); the
+    open forms keep a direction's share, its Stribeck velocity, viscous slope or tail,
+    roll a lip, follow a thrust, a film laid by the outstroke, a texture, a return spring,
+    a wedge film, a strut, a throttle, a cylinder's areas, pumping grooves, a buckling
+    cable, a scraper's pile or a commutation angle. Here the asymmetry follows the sign of
+    the drive's force, not of the velocity: a braking stroke the one way looks like the
+    other way.
     """
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    T = max(_motion_time(kin), 1e-12)
-    m = float(s) * FRAME_CARRIAGE * _level(kin) / max(kin.scales["a99"], 1e-12)
-    af = _frame_acceleration(kin.t, kin.a, FRAME_SHARE, FRAME_FREQUENCY / T, FRAME_DAMPING)
-    return F + m * af
+    Fd, _ = _drive_force(kin, F, IDLER_INERTIA)
+    Fl = _level(kin)
+    tight = _smooth_max0(Fd / Fl, IDLER_ROUNDING)
+    lev = 1.0 + float(s) * IDLER_DRAG * tight
+    return level_inside(kin, lev, np.ones_like(lev))
 
 
-# -- delay -----------------------------------------------------------------------------------
-#: ``charge_leakage``'s charge amplifier time constant at strength 1, x the record's length
-#: [-]
-LEAK_TIME = 0.4
+# -- stribeck_shape --------------------------------------------------------------------------
+#: ``thixotropic_grease``'s drag at v99 with its structure intact, at strength 1, x the
+#: friction level [-]; the broken structure's viscosity over the intact one's [-]; the
+#: structure's rebuilding time, x the record's length [-]; its breakdown at v99 over its
+#: rebuilding (the steady structure at v99 is 1 / (1 + this)) [-]
+GREASE_DRAG, GREASE_FLOOR, REBUILD_SHARE, BREAKDOWN = 0.5, 0.15, 0.05, 8.0
+
+
+@njit(cache=True)
+def _structure(t, u, tau, k):
+    """The grease's structure parameter [-] (1 intact, 0 broken down) along the times ``t``
+    [s] and relative shear rates ``u`` [-] (>= 0): d lambda / dt = (1 - lambda) / ``tau``
+    - ``k`` u lambda / ``tau`` (Moore's kinetics), exact for the step's midpoint rate.
+    Starts intact (the grease has rested)."""
+    n = t.size
+    out = np.empty(n)
+    lam = 1.0
+    out[0] = lam
+    for j in range(1, n):
+        um = 0.5 * (u[j] + u[j - 1])
+        rate = (1.0 + k * um) / tau
+        eq = 1.0 / (1.0 + k * um)
+        lam = eq + (lam - eq) * math.exp(-(t[j] - t[j - 1]) * rate)
+        out[j] = lam
+    return out
 
 
 @on_fine_grid
-def charge_leakage_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force read by a piezoelectric force sensor through a charge amplifier: its
-    feedback resistor lets the charge leak with the time constant tau = R C, a first-order
-    high-pass of the force's change since the amplifier was reset, at the record's start
-    (the reading referred to the force there): F(t0) + (F - F(t0)) - its first-order lag
-    (:func:`.truths._lag`). tau = :data:`LEAK_TIME` x the record's length / ``s`` (an
-    amplifier in its long mode, its time constant a fraction of the record): at ``s`` = 0
-    the force itself.
+def thixotropic_grease_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A grease (a thixotropic gel) fills a gap beside the contact (a greased labyrinth,
+    the space between a carriage's seals and its rail): its shear breaks its structure
+    down and it rebuilds at rest (Moore's kinetics, :func:`_structure`: rebuilding time
+    :data:`REBUILD_SHARE` x the record, breakdown at v99 :data:`BREAKDOWN` x the
+    rebuilding). Its viscosity is the broken-down one plus the structure's share,
+    eta / eta_0 = :data:`GREASE_FLOOR` + (1 - :data:`GREASE_FLOOR`) lambda, and its drag,
+    ``s`` :data:`GREASE_DRAG` x the friction level x |v| / v99 x eta / eta_0, adds to the
+    Stribeck curve inside the bristle dynamics: a rising, bending drag in steady sliding
+    (its steady structure falls with the speed), higher after a rest, lower after fast
+    travel.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s], v [m/s]) and its base law (a Stribeck curve).
+    s : float
+        Amplitude factor [-]: the grease's wetted area (its drag), / its value at strength
+        1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Thixotropy and its structural kinetics (Moore 1959, The rheology of ceramic slips and
+    bodies, Trans. Br. Ceram. Soc. 58; Barnes 1997, Thixotropy - a review, J.
+    Non-Newtonian Fluid Mech. 70); the shear degradation and recovery of lubricating
+    greases (Delgado et al. 2005, Tribol. Lett. 18). The candidate bends the base's drop
+    (an exponent, the Lorentzian, a log-speed map); the open forms add tails, drops, a
+    spike, a lift-off, a second drop, logarithmic weakening, Eyring strengthening, a rise
+    at the top speed, a hump, a notch, a dither, a melt, a granular rise, re-adsorption,
+    thermal thinning and a turbulent film. Here the speed dependence has a memory of the
+    shearing: the same speed drags more after a rest than after a fast stroke.
+    """
+    if kin.base.name == "mre_lugre":
+        raise ValueError("stribeck_shape (thixotropic_grease): the mre_lugre base has no "
+                         "Stribeck curve")
+    if s <= 0.0:
+        return _base_parts(kin)[0]
+    p = kin.base.params
+    t = np.asarray(kin.t, float)
+    v = np.asarray(kin.v, float)
+    u = np.abs(v) / max(kin.scales["v99"], 1e-12)
+    tau = REBUILD_SHARE * max(float(t[-1] - t[0]), 1e-12)
+    lam = _structure(t, np.ascontiguousarray(u), tau, BREAKDOWN)
+    drag = float(s) * GREASE_DRAG * _level(kin) * u * (GREASE_FLOOR +
+                                                       (1.0 - GREASE_FLOOR) * lam)
+    vm = 0.5 * (v[1:] + v[:-1])
+    g = kin.base.g(v) + drag
+    g_mid = kin.base.g(vm) + 0.5 * (drag[1:] + drag[:-1])
+    return _lugre_run(t, v, g, g_mid, float(p.sigma0), float(p.sigma1),
+                      float(p.sigma2) * v)
+
+
+# -- position --------------------------------------------------------------------------------
+#: ``gliding_chain``'s chain-on-chain and chain-on-bars friction, per unit of the gliding
+#: length over the stroke the record visits, at strength 1, x the friction level [-]; the
+#: chain's bend radius (the kink's rounding), x the stroke [-]
+CHAIN_ON_CHAIN, CHAIN_ON_BARS, CHAIN_BEND = 1.2, 0.5, 0.03
+
+
+def _gliding(x, fixed, bend, on_chain, on_bars):
+    """The chain's gliding friction [-] at the positions ``x`` [m] less its value at the
+    fixed point ``fixed`` [m]: its upper run glides on its lower run over l - |d| / 2 (d
+    = x - ``fixed``, l half the chain) at ``on_chain`` per unit length and, behind the fixed
+    point, on the trough's glide bars over -d at ``on_bars``; |d| and max(-d, 0) rounded
+    over the bend ``bend`` [m]."""
+    d = np.asarray(x, float) - fixed
+    ad = np.sqrt(d * d + bend * bend) - bend
+    return -0.5 * on_chain * ad + on_bars * _smooth_max0(-d, bend)
+
+
+@on_fine_grid
+def gliding_chain_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage drags a long-travel energy chain (a cable carrier) whose fixed end is at
+    mid-travel, where fit and held-out parts both pass (:func:`.truths._bump_centre`): the
+    chain runs from there along the trough, turns and comes back on top to the carriage.
+    Its upper run glides on its lower run over l - |d| / 2 (d the carriage's distance from
+    the fixed point, l half the chain's length) and, on the side where the carriage is
+    behind the fixed point, on the trough's glide bars over |d| (:func:`_gliding`), each
+    at its own friction (:data:`CHAIN_ON_CHAIN`, :data:`CHAIN_ON_BARS` per unit of the
+    gliding length over the stroke, x the friction level, the base's levels holding the
+    chain's drag at the fixed point). The Coulomb and Stribeck levels are the base's
+    times 1 + ``s`` x that change, inside the bristle dynamics; the viscous term is the
+    base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (x [m]) and its base law.
+    s : float
+        Amplitude factor [-]: the chain's weight per unit length (its gliding friction), /
+        its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Gliding applications of long-travel energy chains, the upper run sliding on the lower
+    run in a guide trough with glide bars (igus 2020, e-chain systems, gliding
+    applications; Tsubaki Kabelschlepp, cable carriers for long travel lengths). The
+    candidate scales the friction along the stroke and adds a periodic and a smooth force
+    of x; the open forms are level maps, a periodic detent force, a cushion's drag, a
+    cover's staircase, a gas spring, bolt holes, a plunger's drag, a sagging beam's pull,
+    a festoon's tension and a curve's centripetal load. Here the levels fall linearly away
+    from one point of the stroke on one side and change at another slope on the other: a
+    kinked ramp whose kink is the chain's fixed end.
+    """
+    xc = _bump_centre(kin)
+    if xc is None:
+        raise ValueError(f"position (gliding_chain): the held-out part of the {kin.plant} "
+                         f"record never revisits the positions of its fit part")
+    if s <= 0.0:
+        return _base_parts(kin)[0]
+    span = _span(kin)
+    g = _gliding(np.asarray(kin.x, float) / span, xc / span, CHAIN_BEND, CHAIN_ON_CHAIN,
+                 CHAIN_ON_BARS)
+    lev = np.clip(1.0 + float(s) * g, 0.05, None)
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- inertia ---------------------------------------------------------------------------------
+#: ``force_saturation``'s carriage mass, its inertial force at a99 x the friction level
+#: [-]; the saturation's force scale at strength 1, x that inertial force [-]
+SATURATION_INERTIA, SATURATION_FORCE = 3.0, 1.0
+
+
+@on_fine_grid
+def force_saturation_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force is read as the motor current times the motor's nominal force constant,
+    and the inverse dynamics subtracts the known inertial force m a (m a99 =
+    :data:`SATURATION_INERTIA` x the friction level). At high currents the motor's iron
+    saturates and its force constant falls: the current for the drive force F_d = F + m a
+    reads as F_d sqrt(1 + ``s`` (F_d / F_sat)^2), F_sat = :data:`SATURATION_FORCE` x m a99.
+    The record's force is that reading less m a.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (a [m/s^2]) and its base law.
+    s : float
+        Amplitude factor [-]: the saturation's strength (the squared ratio of m a99 to the
+        saturating force), / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Magnetic saturation of linear and rotary permanent-magnet motors and the fall of their
+    force (torque) constant at high currents (Gieras and Piech 2000, Linear Synchronous
+    Motors, ch. 5; Hendershot and Miller 2010, Design of Brushless Permanent-Magnet
+    Machines); force estimated from the motor current in identification. The candidate's
+    mass is constant, varies in time, along the stroke or with the squared speed, or holds
+    a coupled part that slips; the open forms filter, flex behind the sensor, gear, lose,
+    add fluid mass, dispense, slide a payload, rattle a part, freewheel, carry a payload
+    between zones, couple through eddies, flyweights or a fluid, pick up a stage or stand
+    on a recoiling frame. Here the missed force grows with the cube of the drive force:
+    no error at gentle accelerations, a large one at the peaks.
+    """
+    F, _ = _base_parts(kin)
+    if s <= 0.0:
+        return F
+    Fd, m = _drive_force(kin, F, SATURATION_INERTIA)
+    Fsat = SATURATION_FORCE * m * max(kin.scales["a99"], 1e-12)
+    return F + Fd * (np.sqrt(1.0 + float(s) * (Fd / Fsat) ** 2) - 1.0)
+
+
+# -- delay -----------------------------------------------------------------------------------
+#: ``load_cell_creep``'s creep (the reading's change under a held force, over its share at
+#: once) at strength 1 [-]; its time constant, x the motion's time scale [-]
+CREEP, CREEP_TIME = 0.5, 1.0
+
+
+@on_fine_grid
+def load_cell_creep_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force read by a strain-gauge load cell whose spring element creeps
+    anelastically (a standard anelastic solid): under a held force its reading rises by
+    ``s`` :data:`CREEP` x what appeared at once, with the time constant tau =
+    :data:`CREEP_TIME` x the motion's time scale; the cell is calibrated statically (after
+    the creep). The reading is (F + c lag(F)) / (1 + c), c = ``s`` :data:`CREEP`
+    (:func:`.truths._lag`): a share 1 / (1 + c) of each change of the force at once, the
+    rest lagged.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the leak's rate (1 / (R C)), / its value at strength 1.
+        Amplitude factor [-]: the creep, / its value at strength 1.
 
     Returns
     -------
@@ -567,55 +532,58 @@ def charge_leakage_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Piezoelectric force measurement and the charge amplifier's time constant, which limits
-    quasi-static measurement (Gautschi 2002, Piezoelectric Sensorics; the charge amplifiers'
-    short and long time-constant modes). The open forms delay by one amount, filter by a
-    low-pass, linearly or by rank, hold at a fieldbus's clock, let the delay drift, wander
-    or follow the force's rate, level or slowness, the motion's speed or the position, hold
-    stale values over lost telegrams, or shift the motion: every one of them lags. Here the
-    force leads the motion (a high-pass's phase), and what it holds, it loses.
+    Anelasticity of metals (Zener 1948, Elasticity and Anelasticity of Metals); the creep
+    of load cells and its test (OIML R60, Metrological regulation for load cells, creep
+    and minimum dead load output return; Stefanescu 2011, Handbook of Force Transducers,
+    ch. 2). The open forms delay by one amount, filter by a low-pass, linearly or by
+    rank, hold at a fieldbus's clock, let the delay drift, wander or follow the force's
+    rate, level or slowness, the motion's speed or the position, hold stale values over
+    lost telegrams, lead through a leaking charge or shift the motion. Here the force
+    arrives in two parts: a share at once, the rest late, so that its edges are sharp and
+    its levels late.
     """
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    t = np.asarray(kin.t, float)
-    tau = LEAK_TIME * max(float(t[-1] - t[0]), 1e-12) / float(s)
-    return F - _lag(t, F - F[0], tau)
+    c = float(s) * CREEP
+    tau = CREEP_TIME * max(_motion_time(kin), 1e-12)
+    return (F + c * _lag(np.asarray(kin.t, float), F, tau)) / (1.0 + c)
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: ``shear_degradation``'s shear-weighted travel over which the polymer is broken, x the
-#: record's [-]; the log viscosity lost when it is broken at strength 1 [-]; the boundary
-#: levels' exponent of the viscosity lost (the film's ~ eta^0.7) [-]
-SHEAR_LIFE, SHEAR_LOSS, FILM_EXPONENT = 0.35, 0.5, 0.7
+#: ``magnet_heating``'s carriage mass, its inertial force at a99 x the friction level [-];
+#: the magnets' thermal time constant, x the record's length [-]; the reading's rise at
+#: the record's mean square drive force, warmed through, at strength 1 [-]
+HEAT_INERTIA, HEAT_TIME, HEAT_GAIN = 2.0, 0.4, 0.3
 
 
-def _sheared(t, v, v99):
-    """The shear-weighted travel [m] along the times ``t`` [s] and velocities ``v`` [m/s]:
-    the passes through the contact (|v| dt) weighted by the shear rate (|v| / ``v99``),
-    from 0."""
-    w = np.asarray(v, float) ** 2 / v99
-    return np.concatenate(([0.0], np.cumsum(0.5 * (w[1:] + w[:-1]) * np.diff(t))))
+def _warming(t, P, tau):
+    """The magnets' temperature rise [-] along the times ``t`` [s] under the losses ``P``
+    [-]: tau dT/dt + T = P, from cold (0)."""
+    from scipy.signal import lfilter
+    e = math.exp(-float(t[1] - t[0]) / tau)
+    return lfilter([1.0 - e], [1.0, -e], np.asarray(P, float))
 
 
 @on_fine_grid
-def shear_degradation_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A lubricant thickened by a polymer viscosity improver whose chains the contact's
-    shear breaks: the polymer's degradation D = 1 - exp(-W / W_c), W the shear-weighted
-    travel (:func:`_sheared`), W_c = :data:`SHEAR_LIFE` x its value over the record. The
-    viscosity falls as eta / eta_0 = exp(-``s`` :data:`SHEAR_LOSS` D) towards the base
-    oil's; the film thins with it (~ eta^:data:`FILM_EXPONENT`) and the asperities carry
-    more: the Coulomb and Stribeck levels are the base's times (eta_0 /
-    eta)^:data:`FILM_EXPONENT`, the viscous term the base's times eta / eta_0, inside the
-    bristle dynamics.
+def magnet_heating_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force is read as the motor current times the motor's force constant measured
+    cold, and the inverse dynamics subtracts the known inertial force m a (m a99 =
+    :data:`HEAT_INERTIA` x the friction level). The copper losses, ~ the drive force
+    squared, F_d = F + m a (:func:`_drive_force`), warm the motor and its magnets (a first
+    order lag of :data:`HEAT_TIME` x the record, from cold, :func:`_warming`); the magnets'
+    remanence, and the force constant, fall with their temperature, so the current reads
+    the drive force as F_d (1 + ``s`` :data:`HEAT_GAIN` x the temperature over its value
+    for the record's mean square drive force). The record's force is that reading less
+    m a: the friction and the inertial force alike drift up.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s], v [m/s]) and its base law.
+        The motion on the fine grid (t [s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the polymer's share of the viscosity (its log, lost when
-        broken), / its value at strength 1.
+        Amplitude factor [-]: the magnets' temperature coefficient times the motor's
+        thermal resistance, / its value at strength 1.
 
     Returns
     -------
@@ -624,73 +592,91 @@ def shear_degradation_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Permanent viscosity loss of polymer-thickened oils by mechanical scission (Covitch
-    1998, How polymer architecture affects permanent viscosity loss of multigrade
-    lubricants, SAE 982638; Bartz 2000, Influence of viscosity index improver, molecular
-    weight, and base oil on thickening, shear stability, and evaporation losses of
-    multigrade oils, Lubr. Sci. 12; the KRL shear test, CEC L-45). The candidate is a
-    trend, a saturating change, a step and a cycle in time; the open forms warm up, wear
-    in, step, cycle, rise and fall with debris, drop with grease shots, relax, oxidise,
-    wear through, swell, grow a tribofilm, take in particles or expand. Here the levels
-    rise and the viscous term falls together, as the fast travel, not the clock, breaks
-    the oil.
+    The reversible temperature coefficient of NdFeB remanence (about -0.1 %/K; Campbell
+    1994, Permanent Magnet Materials and their Application) and the thermal models of
+    motors (Gieras and Piech 2000, Linear Synchronous Motors; a first-order thermal
+    network). The candidate is a trend, a saturating change, a step, a cycle, an
+    accelerating part and a part that builds up and resets, in time; the open forms warm
+    up, wear in, step, cycle, rise and fall with debris, drop with grease shots, relax,
+    oxidise, wear through, swell, grow a tribofilm, take in particles, expand or shear
+    the oil. Here the measurement drifts, not the friction: paced by the drive's own
+    losses, and scaling the inertial force as much as the friction.
     """
+    F, _ = _base_parts(kin)
+    if s <= 0.0:
+        return F
+    Fd, _ = _drive_force(kin, F, HEAT_INERTIA)
+    P = Fd * Fd
     t = np.asarray(kin.t, float)
-    W = _sheared(t, kin.v, max(kin.scales["v99"], 1e-12))
-    D = 1.0 - np.exp(-W / (SHEAR_LIFE * max(float(W[-1]), 1e-300)))
-    loss = max(float(s), 0.0) * SHEAR_LOSS * D
-    return level_inside(kin, np.exp(FILM_EXPONENT * loss), np.exp(-loss))
+    theta = _warming(t, P, HEAT_TIME * max(float(t[-1] - t[0]), 1e-12))
+    return F + float(s) * HEAT_GAIN * theta / max(float(np.mean(P)), 1e-300) * Fd
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: the oil column's compression between the Coulomb levels either way in ``hydraulic_link``
-#: at strength 1, as a share of the stroke [-] (a fifth of the open backlash forms' play);
-#: the pistons' leakage speed at the Coulomb level at strength 1, x v99 [-]; the column's
-#: stiffness at ``s`` = 0, x the stiff coupling's of the other forms [-]
-COMPRESSION_SHARE, LEAK_SPEED, LINK_STIFF = 0.2 * PLANT_GAP_SHARE, 0.1, 10.0
+#: ``bowden_cable``'s cable stretch between the Coulomb levels either way at strength 1, as
+#: a share of the stroke [-] (a fifth of the open backlash forms' play); the friction of the
+#: sheath over its whole wrap, mu Theta [-]; the cable's nodes [-]; its stiffness at
+#: ``s`` = 0, x the stiff coupling's of the other forms [-]
+CABLE_SHARE, CABLE_WRAP, CABLE_NODES, CABLE_STIFF = 0.2 * PLANT_GAP_SHARE, 1.2, 12, 10.0
 
 
 @njit(cache=True)
-def _oil_link(h, xd, k, c, cl, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
+def _bowden(h, xd, ks, c, mu, n_nodes, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
     """LuGre friction [N] of a contact of mass ``m`` [kg] driven by the drive positions
-    ``xd`` [m] (step ``h`` [s]) through an oil column: its compression d (a spring ``k``
-    [N/m] damped by ``c`` [N s/m]) in series with the leakage past the pistons (a dashpot
-    ``cl`` [N s/m]): the force F = (k d + c (vd - v)) / (1 + c / ``cl``), d' = vd - v - F /
-    ``cl``; tension and compression alike (a double-acting pair). Semi-implicit Euler of
-    the mass (:func:`.truths._light_contact_step`). Starts at rest, unloaded."""
+    ``xd`` [m] (step ``h`` [s]) through a cable of ``n_nodes`` massless nodes in a sheath:
+    ``n_nodes`` + 1 springs ``ks`` [N/m] (the last damped by ``c`` [N s/m]), each node held
+    by the sheath's capstan friction, ``mu`` / ``n_nodes`` x its tension (push or pull),
+    quasi-static: a node moves only as far as its springs' imbalance exceeds its friction
+    (a play operator, one Gauss-Seidel sweep per step from the drive on). Semi-implicit
+    Euler of the mass (:func:`.truths._light_contact_step`). Starts at rest, unloaded."""
     n = xd.size
     F = np.empty(n)
+    y = np.zeros(n_nodes + 2)
+    y[:] = xd[0]
     v = 0.0
     z = 0.0
-    d = 0.0
+    xc = xd[0]
+    y_end = xd[0]
+    share = mu / n_nodes
     for j in range(n):
-        vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
-        fc = (k * d + c * (vd - v)) / (1.0 + c / cl)
-        d = d + h * (vd - v - fc / cl)
+        y[0] = xd[j]
+        y[n_nodes + 1] = xc
+        for i in range(1, n_nodes + 1):
+            mid = 0.5 * (y[i - 1] + y[i + 1])
+            tol = 0.5 * share * abs(0.5 * (y[i - 1] - y[i + 1]))
+            if y[i] > mid + tol:
+                y[i] = mid + tol
+            elif y[i] < mid - tol:
+                y[i] = mid - tol
+        fc = ks * (y[n_nodes] - xc) + c * ((y[n_nodes] - y_end) / h - v)
+        y_end = y[n_nodes]
         F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha, shape)
+        xc = xc + h * v
     return F
 
 
 @on_fine_grid
-def hydraulic_link_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact joined by an oil column (a master-slave cylinder pair, a
-    hydrostatic transmission; :func:`_oil_link`): the oil's compressibility is a spring,
-    damped at the ratio 0.5, in series with the leakage past the pistons, a dashpot: the
-    contact creeps behind the drive at the leakage speed F / c_l, ``s``^2
-    :data:`LEAK_SPEED` x v99 at the Coulomb level, and stalls where the drive is slower
-    than that. The compression between the Coulomb levels either way is ``s``^2
-    :data:`COMPRESSION_SHARE` x the stroke (plus Fc / (:data:`LINK_STIFF` kh), kh the stiff
-    coupling of the other forms, :func:`.truths._contact_constants`). The contact is light,
-    with the base's LuGre friction; the measured force is its friction. At ``s`` = 0 the
-    base itself.
+def bowden_cable_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact joined by a push-pull cable in a curved sheath (a Bowden cable, a
+    tendon-sheath drive; :func:`_bowden`): the cable is elastic and the sheath holds it by
+    capstan friction, mu Theta = :data:`CABLE_WRAP` over the whole wrap, spread over
+    :data:`CABLE_NODES` nodes, each node's friction its share of mu Theta times its
+    tension. Pulling (or pushing), the tension falls along the sheath towards the contact;
+    after a reversal the cable's strain must unwind against the sheath's friction before
+    the contact's end turns: a lost motion that grows with the force the cable held. The
+    cable's stretch between the Coulomb levels either way is ``s``^2
+    :data:`CABLE_SHARE` x the stroke (plus Fc / (:data:`CABLE_STIFF` kh), kh the stiff
+    coupling of the other forms, :func:`.truths._contact_constants`). The contact is
+    light, with the base's LuGre friction; the measured force is its friction. At ``s`` =
+    0 the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], x [m]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the square root of the oil's compression relative to
-        :data:`COMPRESSION_SHARE` x the stroke (as the open plays'), and of the leakage.
+        Amplitude factor [-]: the square root of the cable's stretch relative to
+        :data:`CABLE_SHARE` x the stroke (as the open plays').
 
     Returns
     -------
@@ -699,90 +685,94 @@ def hydraulic_link_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The hydraulic spring of an oil column and the leakage of a cylinder or a hydrostatic
-    transmission (Merritt 1967, Hydraulic Control Systems); master-slave cylinders of remote
-    actuation. The candidate holds or frees the force across a play, with a bias, a spring
-    or a drag across it; the open forms couple rigidly, compliantly (a linear
-    spring-damper), by impacts, springs, oil in the play, an idler, a bias, chains, magnets,
-    a preload, a hardening gear, a slipping rope or a rubber spider, with a play varying
-    with the position or the travel. Here no play, but a coupling that cannot hold a force:
-    the lost motion at a reversal grows with the time the force takes to turn, and the
-    contact stands while a slow drive's flow leaks away.
+    Tendon-sheath (Bowden cable) transmission and its friction hysteresis and backlash
+    (Kaneko, Yamashita and Tanie 1991, Basic considerations on transmission
+    characteristics for tendon drive robots, ICAR; Agrawal et al. 2010, Modeling of
+    transmission characteristics across a cable-conduit system, IEEE Trans. Robot. 26);
+    the capstan equation (Euler 1762; Eytelwein). The candidate holds or frees the force
+    across a play, with a bias, a spring or a drag across it; the open forms couple
+    rigidly, compliantly, by impacts, springs, oil in the play, an idler, a bias, chains,
+    magnets, a preload, a hardening gear, a slipping rope, a rubber spider or an oil
+    column, with a play varying with the position or the travel. Here the lost motion is
+    made by friction spread along the link: the drive's end turns at once, the contact's
+    only once the whole cable has unwound, and the dead travel scales with the force.
     """
-    p = _lugre_params(kin, "backlash (hydraulic_link)")
+    p = _lugre_params(kin, "backlash (bowden_cable)")
     if s <= 0.0:
         return _base_parts(kin)[0]
     m, kh, _ = _contact_constants(kin, p)
     Fc = float(p.Fc)
-    lost = float(s) ** 2 * COMPRESSION_SHARE * float(np.ptp(kin.x))
-    k = Fc / (0.5 * lost + Fc / (LINK_STIFF * kh))
-    c = 2.0 * 0.5 * math.sqrt(k * m)
-    cl = Fc / (float(s) ** 2 * LEAK_SPEED * max(kin.scales["v99"], 1e-12))
-    h, xd, n_sub = _substeps(kin, max(math.sqrt((k + float(p.sigma0)) / m),
+    lost = float(s) ** 2 * CABLE_SHARE * float(np.ptp(kin.x))
+    k = Fc / (0.5 * lost + Fc / (CABLE_STIFF * kh))       # the whole cable's stiffness
+    ks = (CABLE_NODES + 1) * k
+    c = 2.0 * 0.5 * math.sqrt(ks * m)
+    h, xd, n_sub = _substeps(kin, max(math.sqrt((ks + float(p.sigma0)) / m),
                                       (float(p.sigma1) + float(p.sigma2) + c) / m))
-    F = _oil_link(h, xd, k, c, cl, m, float(p.sigma0), float(p.sigma1), float(p.sigma2), Fc,
-                  float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
+    F = _bowden(h, xd, ks, c, CABLE_WRAP, CABLE_NODES, m, float(p.sigma0), float(p.sigma1),
+                float(p.sigma2), Fc, float(p.Fs), float(p.vs), float(p.alpha),
+                SHAPES[p.shape])
     return F[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: the junctions' elastic travel at full contact at strength 1, beyond the base bristle's
-#: path, as a share of the stroke / 3 [-]; their share of the friction at strength 1 [-];
-#: the real contact area's loss at the sliding force, A / A0 = 1 - beta f^2 [-]; the
-#: re-adhesion's force over the peeling's at a given area (adhesion hysteresis) [-]
-PRESLIDING_SHARE, JUNCTION_SHARE, PEEL_AREA, READHESION = 0.05, 0.7, 0.5, 0.4
+#: the micro-contacts' elastic travel to full slip at the mean load at strength 1, beyond
+#: the base bristle's path, as a share of the stroke / 3 [-]; their share of the friction
+#: at strength 1 [-]; the micro-contacts (Iwan elements) [-]
+MICROSLIP_SHARE, CONTACT_SHARE, MICRO_CONTACTS = 0.1, 0.7, 12
 
 
 @njit(cache=True)
-def _peeling_junctions(x, ud, beta, rho):
-    """The junctions' force f [-] (over the sliding level) along the positions ``x`` [m]:
-    an elastic layer whose stiffness is its contact size c (the radius, ~ sqrt of the
-    area; travel ``ud`` [m] to the sliding force at c = 1), df = c dx / ``ud``, |f| <= 1
-    (sliding). The area peels as the force grows, c <= sqrt(1 - ``beta`` f^2) (receding),
-    and re-adheres only once the force has fallen, c >= sqrt(1 - ``beta`` (f /
-    ``rho``)^2) (advancing, ``rho`` < 1). Starts in full contact, unloaded."""
+def _microslip(x, r, ud, n_el):
+    """The micro-contacts' force f [-] (over their sliding level at the mean load) along the
+    positions ``x`` [m] and relative normal loads ``r`` [-] (>= 0): ``n_el`` elements,
+    element j (1 to ``n_el``) slipping at the force r / ``n_el`` after the travel ``ud`` j
+    / ``n_el`` at r = 1 [m]; their tangential stiffness ~ r^(1/3) (Hertz-Mindlin); each
+    element's force changes with the stiffness times the travel and is clipped to its
+    present slip limit, so a falling load makes it slip where it stands. Starts
+    unloaded."""
     n = x.size
+    q = np.zeros(n_el)
     out = np.empty(n)
-    f = 0.0
-    c = 1.0
     out[0] = 0.0
     for k in range(1, n):
-        f = f + c * (x[k] - x[k - 1]) / ud
-        if f > 1.0:
-            f = 1.0
-        elif f < -1.0:
-            f = -1.0
-        cr = math.sqrt(max(1.0 - beta * f * f, 0.0))
-        ca = math.sqrt(max(1.0 - beta * (f / rho) ** 2, 0.0))
-        if c > cr:
-            c = cr
-        if c < ca:
-            c = ca
-        out[k] = f
+        rk = max(r[k], 0.0)
+        cap = rk / n_el
+        stiff = rk ** (1.0 / 3.0) * (x[k] - x[k - 1])
+        tot = 0.0
+        for j in range(n_el):
+            qj = q[j] + stiff / (ud * (j + 1.0))
+            if qj > cap:
+                qj = cap
+            elif qj < -cap:
+                qj = -cap
+            q[j] = qj
+            tot += qj
+        out[k] = tot
     return out
 
 
 @on_fine_grid
-def junction_peeling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Adhesive asperity junctions beside the bristle whose real contact area shrinks
-    under the shear force: the interfacial crack (mode II) advances from the edges, A / A0
-    = 1 - :data:`PEEL_AREA` f^2 at the force f (over the sliding level), and closes again
-    only at a lower force (adhesion hysteresis: re-adhering at :data:`READHESION` x the
-    force that peels the same area). Their tangential stiffness follows the contact's
-    size (Mindlin's ~ radius): loading, the junctions soften as they peel; unloading, they
-    stay at their smallest area, stiff and linear, until they re-adhere near zero force
-    (:func:`_peeling_junctions`). The elastic travel at full contact is the base bristle's
-    path Fs / sigma0 plus ``s`` :data:`PRESLIDING_SHARE` x the stroke / 3; a share w =
-    :data:`JUNCTION_SHARE` min(``s``, 1) of the friction is the junctions' (their sliding
-    force at the Stribeck level, the viscous term the base's): F = (1 - w) F_lugre + w
-    (g(v) f + sigma2 v). At ``s`` = 0 the base itself.
+def unloading_microslip_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The presliding junctions beside the bristle are Hertzian micro-contacts in partial
+    slip whose slip limits follow the normal load: a discrete Iwan set of
+    :data:`MICRO_CONTACTS` elements (:func:`_microslip`) whose slip forces are the relative
+    load r = L / mean(L) times their share and whose stiffness is ~ r^(1/3). When the load
+    falls at a standing position the elements at their limit slip and lose the force
+    they held; when it rises again they do not get it back until the travel reloads them
+    (Mindlin and Deresiewicz's dependence on the loading path). The elastic travel to
+    full slip at the mean load is the base bristle's path Fs / sigma0 plus ``s``
+    :data:`MICROSLIP_SHARE` x the stroke / 3; a share w = :data:`CONTACT_SHARE` min(``s``,
+    1) of the friction is theirs (their sliding force the Stribeck level times r, the
+    viscous term the base's): F = (1 - w) F_lugre + w (g(v) f + sigma2 v). At ``s`` = 0 the
+    base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
+        The motion on the fine grid (x [m], v [m/s], load [N]) and its base law (a classic
+        LuGre).
     s : float
-        Amplitude factor [-]: the junctions' share (up to ``s`` = 1) and their elastic
+        Amplitude factor [-]: the micro-contacts' share (up to ``s`` = 1) and their elastic
         travel (as the open presliding forms' path).
 
     Returns
@@ -792,24 +782,24 @@ def junction_peeling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The reduction of the contact area of an adhesive contact by a tangential force
-    (Savkoor and Briggs 1977, The effect of tangential force on the contact of elastic
-    solids in adhesion, Proc. R. Soc. A 356; Waters and Guduru 2010, Proc. R. Soc. A 466;
-    Sahli et al. 2018, Evolution of real contact area under shear and the value of static
-    friction of soft materials, PNAS 115) and adhesion hysteresis (Chaudhury and
-    Whitesides 1991, Langmuir 7). Maxwell-slip (the candidate) and the open forms follow
+    Elastic spheres in contact under varying oblique forces (Mindlin and Deresiewicz 1953,
+    J. Appl. Mech. 20; Johnson 1985, Contact Mechanics, ch. 7); microslip of joints under
+    varying clamping (Iwan 1966, A distributed-element model for hysteresis, J. Appl.
+    Mech. 33; Segalman 2005). Maxwell-slip (the candidate) and the open forms follow
     Masing's rule, path laws, an elastic range, rate-dependent creep, multistable tips,
-    bonds, a fabric, a back-stress, a climb out of a nest, capillary bridges or a
-    hardening yield; here the stiffness depends on how hard the junctions have been
-    sheared since they last re-adhered: soft loading, stiff unloading, non-Masing loops.
+    bonds, a fabric, a back-stress, a climb out of a nest, capillary bridges, a hardening
+    yield or peeling junctions, all at a fixed normal load; here the presliding state is
+    erased by the normal load's falls, not only by the travel.
     """
-    p = _lugre_params(kin, "gms (junction_peeling)")
+    p = _lugre_params(kin, "gms (unloading_microslip)")
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    e0, extra = _presliding_path(kin, s, PRESLIDING_SHARE)
-    w = JUNCTION_SHARE * min(float(s), 1.0)
+    e0, extra = _presliding_path(kin, s, MICROSLIP_SHARE)
+    w = CONTACT_SHARE * min(float(s), 1.0)
     v = np.asarray(kin.v, float)
-    f = _peeling_junctions(np.ascontiguousarray(kin.x, dtype=float), e0 + extra, PEEL_AREA,
-                           READHESION)
+    L = np.asarray(kin.load, float)
+    r = L / max(float(np.mean(L)), 1e-300)
+    f = _microslip(np.ascontiguousarray(kin.x, dtype=float), np.ascontiguousarray(r),
+                   e0 + extra, MICRO_CONTACTS)
     return (1.0 - w) * F + w * (kin.base.g(v) * f + float(p.sigma2) * v)

@@ -1,5 +1,5 @@
 """The fourteenth seen truth family (diagnosis.benchmark.seen14, sealed in session 19, run
-once at the end of session 20 on <COMMIT>, <TOP1> top-1, now open): each form builds a finite
+once at the end of session 20 on 0487306, 36.4 % top-1, now open): each form builds a finite
 case of the requested size on every plant it applies to, is the base law at s = 0, grows with
 its amplitude factor and refuses the plants it does not apply to."""
 import dataclasses

@@ -1,8 +1,17 @@
 """The fourteenth seen truth family: one more mechanism per effect, sealed until run once.
 
 Written 2026-11-29 (session 19) by another hand, once, without running the diagnosis on it;
-run once, sealed, at the end of session 20's work on the code of <COMMIT>:
-RUN FIGURES: TO BE FILLED
+run once, sealed, at the end of session 20's work on the code of 0487306:
+176 cases, 0 skipped, 758 s wall on 1 worker (beside a 2-worker grid run). Top-1 36.4 % (64;
+40.5 % of the 158 detectable; 14 delay cases below a sample); mean |shrink error| 0.341;
+wrong names on 31 (17.6 %): delay -> inertia 7, delay -> position 4, acceleration ->
+asymmetry 4, drift -> load 3, acceleration -> position 3, asymmetry -> acceleration 2,
+gms -> acceleration 2. By form: load/normal_stress_memory 20/20,
+asymmetry/hall_commutation 12/20, drift/shear_degradation 12/20,
+stribeck_shape/turbulent_film 7/16, inertia/frame_recoil 7/20,
+acceleration/payne_softening 4/20, gms/junction_peeling 2/12, position/curved_guide 0/16,
+delay/charge_leakage 0/20, backlash/hydraulic_link 0/12. By plant: XML-350 45.0 %, press
+42.9 %, isolator 39.3 %, valve 32.5 %, damping rig 25.0 %.
 Seen since, it is part of the open grid, as :mod:`.seen` to :mod:`.seen13` before it
 (figures in ``benchmarks/bench_diagnosis_forms.py``). Each form is a
 mechanism of other physics than every open form of its effect before it (:mod:`.truths`,

@@ -36,6 +36,18 @@ can tell it from the base fit), clean and out-of-library cases, the mean |shrink
 (reported gap closed against the truth's), per plant, per effect and per truth form; seconds
 per case against one base identification of the plant timed in the same worker.
 
+Session 20 (2026-11-29, code of 0487306: ``drift`` with a part that builds up and resets;
+every case of session 17's 2300 run once, same seeds, in two runs on 2 workers, the drift
+cases with seen11 and seen12's (300) and the rest (2040), 1 + 2 workers at times): top-1
+**55.3 %** (1272; **58.6 %** of the 2167 detectable), mean |shrink error| 0.288, wrong names
+on 250 of 2260 effect cases (11.1 %: gms -> acceleration 26, acceleration -> position 22,
+drift -> load 21, inertia -> acceleration 19, acceleration -> asymmetry 12, backlash -> gms
+11). By plant: valve 60.8 %, press 59.8 %, isolator 55.9 %, XML-350 55.0 %, damping rig
+46.5 %. Against session 19's code (the same cases, assembled from its subset runs: 1259, 54.7
+%; 58.0 % of the detectable): the 2040 cases of the other effects all keep their verdicts;
+drift 196 -> 209 of its 300 (the oxide film 0 -> 12 of 20, interval lubrication 13 -> 14,
+none lost, wrong names 25 -> 25). seen11 to seen14 are not in the figure.
+
 Session 18 (2026-11-29; parts of the grid, paired by key with session 17's full run below,
 same seeds; the full grid was not run on this code): ``backlash`` with forces across the play
 144 cases 31 -> 43 named, wrong names 31 -> 24; ``inertia`` with masses along the stroke and

@@ -366,6 +366,11 @@ def test_effects_block_equals_the_formula(ndir):
     # the odd level part refuses NaN by name and keeps its value
     assert s.set("f_o", float("nan")) == 3 and "f_o = nan is not finite" in s.errors()[-1]
     assert s.get("f_o") == pytest.approx(-0.04)
+    # so do the drift's resetting part's period and reset time
+    for name, kept in (("P_rst", 0.017), ("t_rst", 0.004)):
+        assert s.set(name, float("nan")) == 3
+        assert f"{name} = nan is not finite" in s.errors()[-1]
+        assert s.get(name) == pytest.approx(kept)
     assert s.set("m_a", 0.0) == 0  # seed 000's weight, exp(-|v| / v_c)
     s.close()
 

@@ -11,7 +11,6 @@ from diagnosis.benchmark import EFFECT_SIZE, PLANT_NAMES, make_plant_case, plant
 from diagnosis.benchmark import seen9 as family
 from diagnosis.benchmark.runner import MIN_SIZE
 from diagnosis.benchmark.truths import base_force
-from diagnosis.effects import EFFECTS
 
 #: the family's form of each effect
 FORM = {"acceleration": "weight_transfer", "load": "squeeze_cavitation",
@@ -22,11 +21,6 @@ FORM = {"acceleration": "weight_transfer", "load": "squeeze_cavitation",
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
-
-
-def test_the_family_forms_are_integrated_on_the_fine_grid():
-    for effect, form in FORM.items():
-        assert getattr(EFFECTS[effect].truth(form), "fine_grid", False), form
 
 
 def test_seen9_forms_refuse_plants_they_do_not_apply_to():

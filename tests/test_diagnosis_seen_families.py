@@ -1,8 +1,8 @@
 """The seen truth families (diagnosis.benchmark.seen2 to seen14: each written once by
 another hand, sealed, run once at the end of a session's work, then opened) checked in one
 place: each sits in the effect records' truths in the order the families were opened, after
-the forms before them and outside the sealed one, and each form builds a case on a plant's
-motion that grows with its amplitude factor. Each family's own file
+the forms before them and outside the sealed one, each form is integrated on the fine grid
+and builds a case on a plant's motion that grows with its amplitude factor. Each family's own file
 (``tests/test_diagnosis_seenN_forms.py``) holds its tables (``FORM``: the form of each
 effect; ``PLANT``: a plant it reaches the requested size on) and the tests of its forms'
 mechanisms. A family opened later is appended to :data:`FAMILIES`."""
@@ -43,6 +43,12 @@ def test_the_family_is_in_the_open_grid_in_the_order_opened(name):
         truth = EFFECTS[effect].truth(form)
         assert truth is getattr(module, f"{form}_truth"), effect
         assert truth.__module__ == module.__name__, effect
+
+
+@pytest.mark.parametrize("name", FAMILIES)
+def test_the_family_forms_are_integrated_on_the_fine_grid(name):
+    for effect, form in TABLES[name].FORM.items():
+        assert getattr(EFFECTS[effect].truth(form), "fine_grid", False), form
 
 
 @pytest.mark.parametrize("name,effect", [(n, e) for n in FAMILIES

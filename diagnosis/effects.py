@@ -411,7 +411,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "frame_recoil": _S14 + "frame_recoil_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
-    Effect(Delay("delay", "time shift between force and motion channels", "shift"),
+    Effect(Delay("delay", "time shift between force and motion channels, or the force "
+                       "sensor's charge leaking (a high-pass)", "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
            evidence=("dF/dt", "|a|"),
            truths={"acquisition": _T + "delay_truth",

@@ -53,3 +53,21 @@ def test_truth_shift_refuses_bad_records_by_name():
         truth_shift(t, F, bad)
     with pytest.raises(ValueError, match="increase"):
         truth_shift(t[::-1], F, F)
+
+
+def test_the_rule_speaks_only_of_truths_a_shift_draws():
+    from scipy.signal import lfilter
+    t, F = _record()
+    dt = t[1] - t[0]
+    # a transport delay of half a sample: the shift leaves (almost) nothing of it
+    d, left = truth_shift(t, F, np.interp(t - 0.5 * dt, t, F), left=True)
+    assert d == pytest.approx(0.5, abs=0.05) and left < 0.01
+    # a charge amplifier's leak (time constant 10 s, 5 x the record): the force leads by
+    # less than a sample, and its reading droops, which no shift draws; so its small best
+    # shift is no verdict's rule
+    e = np.exp(-dt / 10.0)
+    hp = F - lfilter([1.0 - e], [1.0, -e], F - F[0])
+    d, left = truth_shift(t, F, hp, left=True)
+    assert -Delay.MIN_SAMPLES < d < 0.0 and left > 0.8
+    assert practical_size("delay", {"truth_shift": d, "shift_left": left}) == ""
+    assert practical_size("delay", {"truth_shift": 0.5, "shift_left": 0.01}) != ""

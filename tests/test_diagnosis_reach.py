@@ -508,3 +508,46 @@ def test_acceleration_level_odd_in_a_draws_a_pitching_carriage():
     for k in range(0, t.size, 97):
         assert extension_force(Ff[k], v[k], a[k], x[k], 1.0, t[k], e) == \
             pytest.approx(direct[k], rel=1e-12, abs=1e-12)
+
+
+def test_delay_reads_a_charge_amplifiers_leak():
+    from diagnosis.candidates import Delay, leaked, unleaked
+    from diagnosis.effects import make_context
+    F = 50.0 * np.sin(np.linspace(0.0, 20.0, 3000)) + 30.0
+    # the reading's inverse is exact; no leak is the force itself
+    np.testing.assert_allclose(unleaked(leaked(F, 1e-3, 0.7), 1e-3, 0.7), F, atol=1e-9)
+    assert np.array_equal(leaked(F, 1e-3, 0.0), F)
+    # a held force droops with the time constant, from the reset at the first sample
+    held = leaked(np.r_[0.0, np.full(2000, 10.0)], 1e-3, 2.0)
+    assert held[1] == pytest.approx(10.0 * np.exp(-2e-3), rel=1e-9)
+    assert held[-1] == pytest.approx(10.0 * np.exp(-2.0 * 2.0), rel=1e-6)
+    for bad in (-1.0, float("nan")):
+        with pytest.raises(ValueError, match="leak"):
+            leaked(F, 1e-3, bad)
+        with pytest.raises(ValueError, match="leak"):
+            unleaked(F, 1e-3, bad)
+    # the practical size: a shift below a sample with no leak is none; a leak that lets a
+    # held force droop by a tenth over the fit record is one
+    data = make_case("clean", 1.0, 0.0, n=3000)
+    ctx = make_context(data)
+    d = Delay("delay", "", "shift")
+    assert d.practical({"delay": 0.3 * ctx.dt - ctx.v_lag * ctx.dt, "leak": 0.0}, ctx)
+    assert d.practical({"delay": 0.0, "leak": 0.1 / ctx.T}, ctx) == ""
+
+
+def test_charge_amplifier_leak_is_named_delay():
+    # the fourteenth family's piezo sensor read through a leaking charge amplifier (time
+    # constant 0.4 x the record): the force leads the motion and held forces droop; the
+    # shift alone closed <= 0.13 of the excess, and the verdicts named inertia or position
+    from diagnosis import diagnose
+    from diagnosis.benchmark.cases import make_plant_case
+    from diagnosis.benchmark.runner import MEASURED
+    from diagnosis.benchmark.seen14 import LEAK_TIME
+    case = make_plant_case("valve", "delay", 1.0, 0.01, seed=73413, quick=True,
+                           form="charge_leakage", measured=MEASURED[4])
+    rep = diagnose(case.data, case.base, seed=0, candidates=["delay", "inertia", "position"])
+    assert rep["verdict"]["cause"] == "delay"
+    assert rep["verdict"]["excess_closed"] > 0.8
+    t = case.data.t
+    truth = 1.0 / (LEAK_TIME * (t[-1] - t[0]))
+    assert rep["effect_details"]["delay"]["extras"]["leak"] == pytest.approx(truth, rel=0.25)

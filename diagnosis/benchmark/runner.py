@@ -71,8 +71,9 @@ def _run_one(job):
     if plant is not None and eff == "delay":
         # the rule: a shift below a sample is no delay, so a truth that small is
         # no case any verdict may name (counted apart from the detectable ones)
-        case.info["truth_shift"] = truth_shift(data.t, case.info["base_force"], case.truth)
-        row["truth_shift"] = case.info["truth_shift"]
+        case.info["truth_shift"], case.info["shift_left"] = truth_shift(
+            data.t, case.info["base_force"], case.truth, left=True)
+        row["truth_shift"], row["shift_left"] = case.info["truth_shift"], case.info["shift_left"]
         reason = practical_size(eff, case.info)
         if reason:
             row["detectable"], row["below_practical"] = False, reason

@@ -130,7 +130,7 @@ def truth_shrink(data: Dataset, truth: np.ndarray, report, base_truth=None) -> d
 
 
 def truth_shift(t: np.ndarray, Fb: np.ndarray, F: np.ndarray,
-                most: float = 25.0) -> float:
+                most: float = 25.0, left: bool = False):
     """The force channel's shift [samples] that best aligns the base force ``Fb`` [N] with
     the noise-free truth ``F`` [N] at the instants ``t`` [s] (> 0: the force lags; < 0: it
     leads, as when the motion channels are late): the oracle's size of a ``delay`` truth,
@@ -139,7 +139,9 @@ def truth_shift(t: np.ndarray, Fb: np.ndarray, F: np.ndarray,
     (:attr:`diagnosis.candidates.Delay.MIN_SAMPLES`).
 
     Least squares over shifts of -``most`` to ``most`` samples of the cubic spline through
-    ``Fb``: a grid of tenths of a sample, refined by a bounded scalar search.
+    ``Fb``: a grid of tenths of a sample, refined by a bounded scalar search. With ``left``,
+    returns ``(shift, share)``: ``share`` [-] the part of the truth's squared departure from
+    the base that the shift leaves (0: the truth is that shift; near 1: no shift draws it).
     """
     from scipy.interpolate import CubicSpline
     from scipy.optimize import minimize_scalar
@@ -161,10 +163,21 @@ def truth_shift(t: np.ndarray, Fb: np.ndarray, F: np.ndarray,
     grid = np.linspace(-most, most, int(round(20 * most)) + 1)
     k = int(np.argmin([sse(d) for d in grid]))
     lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, grid.size - 1)]
-    if hi <= lo:
-        return float(grid[k])
-    return float(minimize_scalar(sse, bounds=(lo, hi), method="bounded",
-                                 options={"xatol": 1e-3}).x)
+    shift = float(grid[k]) if hi <= lo else float(minimize_scalar(
+        sse, bounds=(lo, hi), method="bounded", options={"xatol": 1e-3}).x)
+    if not left:
+        return shift
+    d = F - Fb
+    dd = float(d @ d)
+    return shift, (min(sse(shift) / dd, 1.0) if dd > 0 else 0.0)
+
+
+#: largest share of a delay truth's squared departure from the base that its best shift may
+#: leave for the truth to count as that shift [-]: the delay truths that are shifts (a
+#: transport delay, a filter's group delay, a hold, a latency) leave 0-0.5 on the grid's
+#: plants, those that are no shift (a charge amplifier's leak, a deadband's reports, lost
+#: telegrams) 0.6-1.0
+SHIFT_EXPLAINS = 0.5
 
 
 def practical_size(case_effect: str, info: dict) -> str:
@@ -172,11 +185,16 @@ def practical_size(case_effect: str, info: dict) -> str:
     rule forbids naming it ('' when it is not): a ``delay`` truth whose shift
     (:func:`truth_shift`, ``info["truth_shift"]``) is below the candidate's
     :attr:`~diagnosis.candidates.Delay.MIN_SAMPLES` ("a shift smaller than a sample is not
-    a delay"). Such a case is not counted among the detectable ones: no verdict may name it.
+    a delay"), where that shift draws the truth (it leaves at most :data:`SHIFT_EXPLAINS`
+    of its departure from the base, ``info["shift_left"]``; a truth no shift draws, a
+    sensor's leak, is judged by its size alone). Such a case is not counted among the
+    detectable ones: no verdict may name it.
     """
     from ..candidates import Delay
     shift = info.get("truth_shift")
-    if case_effect == "delay" and shift is not None and abs(shift) < Delay.MIN_SAMPLES:
+    left = info.get("shift_left", 0.0)
+    if case_effect == "delay" and shift is not None and abs(shift) < Delay.MIN_SAMPLES \
+            and left <= SHIFT_EXPLAINS:
         return (f"the truth shifts the force by {abs(shift):.2f} samples, below the "
                 f"{Delay.MIN_SAMPLES:g} a delay needs")
     return ""

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen14`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen15`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -244,6 +244,7 @@ _S11 = "diagnosis.benchmark.seen11:"
 _S12 = "diagnosis.benchmark.seen12:"
 _S13 = "diagnosis.benchmark.seen13:"
 _S14 = "diagnosis.benchmark.seen14:"
+_S15 = "diagnosis.benchmark.seen15:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -295,7 +296,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "dilatancy_hardening": _S11 + "dilatancy_hardening_truth",
                    "tilt_wedge": _S12 + "tilt_wedge_truth",
                    "sprung_gib": _S13 + "sprung_gib_truth",
-                   "payne_softening": _S14 + "payne_softening_truth"},
+                   "payne_softening": _S14 + "payne_softening_truth",
+                   "swing_arm_roller": _S15 + "swing_arm_roller_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -317,7 +319,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "full_contact": _S11 + "full_contact_truth",
                    "flash_desorption": _S12 + "flash_desorption_truth",
                    "scuffing_healing": _S13 + "scuffing_healing_truth",
-                   "normal_stress_memory": _S14 + "normal_stress_memory_truth"},
+                   "normal_stress_memory": _S14 + "normal_stress_memory_truth",
+                   "jkr_adhesion": _S15 + "jkr_adhesion_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -339,7 +342,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "chevron_grooves": _S11 + "chevron_grooves_truth",
                    "helical_buckling": _S12 + "helical_buckling_truth",
                    "chip_scraper": _S13 + "chip_scraper_truth",
-                   "hall_commutation": _S14 + "hall_commutation_truth"},
+                   "hall_commutation": _S14 + "hall_commutation_truth",
+                   "belt_idler": _S15 + "belt_idler_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -361,7 +365,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "granular_flow": _S11 + "granular_flow_truth",
                    "readsorption": _S12 + "readsorption_truth",
                    "thermoviscous_film": _S13 + "thermoviscous_film_truth",
-                   "turbulent_film": _S14 + "turbulent_film_truth"},
+                   "turbulent_film": _S14 + "turbulent_film_truth",
+                   "thixotropic_grease": _S15 + "thixotropic_grease_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -387,7 +392,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "immersed_plunger": _S11 + "immersed_plunger_truth",
                    "beam_sag": _S12 + "beam_sag_truth",
                    "festoon_cable": _S13 + "festoon_cable_truth",
-                   "curved_guide": _S14 + "curved_guide_truth"},
+                   "curved_guide": _S14 + "curved_guide_truth",
+                   "gliding_chain": _S15 + "gliding_chain_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -408,7 +414,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "centrifugal_flyweights": _S11 + "centrifugal_flyweights_truth",
                    "fluid_coupling": _S12 + "fluid_coupling_truth",
                    "telescopic_stage": _S13 + "telescopic_stage_truth",
-                   "frame_recoil": _S14 + "frame_recoil_truth"},
+                   "frame_recoil": _S14 + "frame_recoil_truth",
+                   "force_saturation": _S15 + "force_saturation_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -431,7 +438,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "belt_transit": _S11 + "belt_transit_truth",
                    "aerated_load_cell": _S12 + "aerated_load_cell_truth",
                    "lossy_telemetry": _S13 + "lossy_telemetry_truth",
-                   "charge_leakage": _S14 + "charge_leakage_truth"},
+                   "charge_leakage": _S14 + "charge_leakage_truth",
+                   "load_cell_creep": _S15 + "load_cell_creep_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -454,7 +462,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "zddp_tribofilm": _S11 + "zddp_tribofilm_truth",
                    "particle_ingress": _S12 + "particle_ingress_truth",
                    "differential_expansion": _S13 + "differential_expansion_truth",
-                   "shear_degradation": _S14 + "shear_degradation_truth"},
+                   "shear_degradation": _S14 + "shear_degradation_truth",
+                   "magnet_heating": _S15 + "magnet_heating_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -475,7 +484,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "harmonic_drive": _S11 + "harmonic_drive_truth",
                    "wire_rope": _S12 + "wire_rope_truth",
                    "jaw_coupling": _S13 + "jaw_coupling_truth",
-                   "hydraulic_link": _S14 + "hydraulic_link_truth"},
+                   "hydraulic_link": _S14 + "hydraulic_link_truth",
+                   "bowden_cable": _S15 + "bowden_cable_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -496,7 +506,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "asperity_interlocking": _S11 + "asperity_interlocking_truth",
                    "capillary_bridges": _S12 + "capillary_bridges_truth",
                    "cyclic_hardening": _S13 + "cyclic_hardening_truth",
-                   "junction_peeling": _S14 + "junction_peeling_truth"},
+                   "junction_peeling": _S14 + "junction_peeling_truth",
+                   "unloading_microslip": _S15 + "unloading_microslip_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

@@ -23,7 +23,7 @@ grid (:mod:`diagnosis.benchmark.seen`, :mod:`diagnosis.benchmark.seen2`,
 :mod:`diagnosis.benchmark.seen12`: session 17's, run once on f5cb1e9, 29.5 % top-1;
 :mod:`diagnosis.benchmark.seen13`: session 18's, run once on 18bfa60, 17.0 % top-1;
 :mod:`diagnosis.benchmark.seen14`: session 19's, run once on 0487306, 36.4 % top-1;
-:mod:`diagnosis.benchmark.seen15`: session 20's, run once on <COMMIT>, <TOP1> top-1, below);
+:mod:`diagnosis.benchmark.seen15`: session 20's, run once on ca024ab, 35.8 % top-1, below);
 the present one (one form for each of the ten effects with truths, written in session 21 by
 another hand) is sealed: not run. The open grid's latest figures include seen10 but not
 seen11, seen12, seen13, seen14 or seen15 (below).
@@ -174,8 +174,18 @@ seen10 in the grid): 261/522 (50.0 %; 53.8 % of the detectable, 36 delays below 
 wrong names 38 (gms -> acceleration 17); on session 15's forms 230/442 against its 217/442.
 
 Sealed family of session 20's end (``--sealed`` then, written by another hand without running
-the diagnosis on it, run once on the code of <COMMIT>): <TOP1> top-1;
-RUN FIGURES: TO BE FILLED
+the diagnosis on it, run once on the code of ca024ab): 35.8 % top-1;
+176 cases, 0 skipped, 1306 s wall on 1 worker (beside a 2-worker grid run, a 1-worker
+clean run and a helper). Top-1 35.8 % (63; 35.6 % of the 174 detectable); mean |shrink
+error| 0.318; wrong names on 48 (27.3 %): inertia -> acceleration 8, acceleration ->
+asymmetry 8, delay -> acceleration 7, gms -> acceleration 5, drift -> inertia 5, gms -> load
+4, stribeck_shape -> acceleration 2, delay -> gms 2, backlash -> delay 2, asymmetry ->
+inertia 2. By form: load/jkr_adhesion 19/20, position/gliding_chain 16/16,
+asymmetry/belt_idler 10/20, acceleration/swing_arm_roller 7/20,
+backlash/bowden_cable 4/12, drift/magnet_heating 4/20, inertia/force_saturation 2/20,
+stribeck_shape/thixotropic_grease 1/16, delay/load_cell_creep 0/20,
+gms/unloading_microslip 0/12. By plant: valve 45.0 %, damping rig 42.5 %, isolator 39.3 %,
+XML-350 35.0 %, press 10.7 %.
 Now :mod:`diagnosis.benchmark.seen15`, in the open grid; a sixteenth family (written in
 session 21 by another hand, never run) is the sealed one.
 

@@ -1,5 +1,5 @@
 """The fifteenth seen truth family (diagnosis.benchmark.seen15, sealed in session 20, run
-once at the end of session 21 on <COMMIT>, <TOP1> top-1, now open): each form builds a finite
+once at the end of session 21 on ca024ab, 35.8 % top-1, now open): each form builds a finite
 case of the requested size on every plant it applies to, is the base law at s = 0, grows with
 its amplitude factor and refuses the plants it does not apply to."""
 import dataclasses

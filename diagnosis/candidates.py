@@ -39,7 +39,7 @@ from friction.extensions import (DRIFT_CYCLE_NAMES, DRIFT_NAMES, DRIFT_RESET_NAM
 
 __all__ = ["Candidate", "LawCandidate", "Context", "Extra", "make_context", "velocity_lag",
            "Fixed", "Acceleration", "Load", "Drift", "Asymmetry", "AsymmetryTwins", "Position",
-           "Inertia", "coupled_part", "Delay", "leaked", "unleaked", "StribeckShape", "Presliding", "MAX_FILTER_SAMPLES",
+           "Inertia", "coupled_part", "Delay", "sensed", "unsensed", "StribeckShape", "Presliding", "MAX_FILTER_SAMPLES",
            "missing_columns"]
 
 
@@ -1525,17 +1525,27 @@ class Inertia(Candidate):
 
 class Delay(Candidate):
     """The force channel's dynamics against the motion channels: a time shift ``delay``
-    [s] (> 0: the force lags), and at the force level a leak ``leak`` [1/s] of the force
-    sensor's charge, a first-order high-pass from the record's start
-    (:func:`leaked`): ``F(t0) + (F - F(t0)) - lag(F - F(t0))``, time constant 1 / ``leak``.
+    [s] (> 0: the force lags), and at the force level the force sensor's own first-order
+    dynamics from the record's start (:func:`sensed`): the reading ``F + g lag(F - F(t0))``
+    with the gain ``sensor_gain`` = g [-] and the rate ``sensor_rate`` [1/s] (1 / the time
+    constant).
 
-    A piezoelectric force sensor read through a charge amplifier loses its charge through
-    the amplifier's feedback resistor (time constant R C, Gautschi 2002): a held force
-    droops, and the force leads the motion, the more the slower the motion. The shift
-    alone draws the opposite phase (a lag): on the grid's charge-amplifier truth the shift
-    closed -0.1-0.13 of the excess and the verdict named `inertia` or `position` in 11 of
-    20 cases. The trajectory level and the FMU blocks keep the shift (a sensor's filter
-    acts on the reading, not on the plant).
+    Two sensors' physics in one formula:
+
+    - g = -1: a piezoelectric sensor read through a charge amplifier whose feedback
+      resistor lets the charge leak (time constant R C, Gautschi 2002): a first-order
+      high-pass; a held force droops, and the force leads the motion, the more the slower
+      the motion;
+    - g > 0: a strain-gauge load cell whose spring element creeps anelastically (Zener's
+      standard anelastic solid; OIML R60's creep test): a share of each change of the force
+      at once, the rest late (a cell calibrated statically reads ``(F + g lag(F)) / (1 +
+      g)``; the scale 1 / (1 + g) is the base's levels').
+
+    The shift alone draws neither (a lag of the whole force): on the fourteenth family's
+    charge-amplifier truth it closed -0.1-0.13 of the excess and the verdict named
+    `inertia` or `position` in 11 of 20 cases; on the fifteenth's creeping load cell, 0 of
+    20 named. The trajectory level and the FMU blocks keep the shift (a sensor's dynamics
+    act on the reading, not on the plant).
     """
     MAX_SAMPLES = 25
     #: shortest shift of the force channel named ``delay`` [samples] (issue 15: "a shift
@@ -1549,86 +1559,116 @@ class Delay(Candidate):
     #: 0.62 where the rest of the verdict would name them; 1.5 (sessions 8-9) refused 14
     #: real delays of 1.0-1.4 samples on the grid
     MIN_SAMPLES = 1.0
-    #: fastest leak, x 1 / the fit record's duration [-] (a time constant of a twentieth of
-    #: the record: faster, a charge amplifier's short mode reads only the force's changes)
-    MAX_LEAK = 20.0
-    #: smallest leak named on its own, x 1 / the fit record's duration [-]: a held force
-    #: droops by 5 % over the record; slower, the leak is a slow offset any drift draws
-    MIN_LEAK = 0.05
+    #: fastest sensor rate, x 1 / the fit record's duration [-], and at most this share of
+    #: the sample rate [-]: faster, the sensor's lag is a shift of a few samples
+    MAX_RATE, MAX_RATE_SAMPLES = 300.0, 0.25
+    #: smallest part of a held force the sensor's dynamics move over the fit record for
+    #: them to be named on their own [-] (|g| (1 - exp(-rate T))): a charge leak that lets
+    #: a held force droop by 5 %, a load cell that creeps by 5 %; smaller, a slow offset any
+    #: drift draws, or the base's own levels
+    MIN_SENSOR = 0.05
 
     def extras(self, ctx):
         d = self.MAX_SAMPLES * ctx.dt
         return [Extra("delay", 0.0, -d, d, "s", grid=51)]
 
-    def force_extras(self, ctx):
-        # the leak starts on the data (:meth:`start`): at 0 the residual is flat in it
-        return self.extras(ctx) + [Extra("leak", 0.0, 0.0, self.MAX_LEAK / max(ctx.T, 1e-12),
-                                         "1/s")]
+    def _max_rate(self, ctx):
+        return min(self.MAX_RATE / max(ctx.T, 1e-12), self.MAX_RATE_SAMPLES / ctx.dt)
 
-    #: leaks the start tries besides none, x 1 / the fit record's duration [-]; share of the
-    #: squared residual without a leak below which the best of them is kept [-] (else the
-    #: leak stays off, :class:`Fixed`): on the grid's charge-amplifier truths the leak's
-    #: start left 0.07-0.27 of it; on a clean record of the isolator whose reference truth
-    #: the base cannot draw, 0.98, and the joint fit, started there, spent the leak on the
-    #: fit record's misfit (held-out excess closed 0.91 -> 0.12)
-    LEAK_GRID = tuple(np.geomspace(MIN_LEAK, MAX_LEAK, 19))
-    LEAK_GAIN = 0.7
+    def force_extras(self, ctx):
+        # the sensor's dynamics start on the data (:meth:`start`): at a zero gain the
+        # residual is flat in the rate
+        return self.extras(ctx) + [Extra("sensor_rate", 0.0, 0.0, self._max_rate(ctx), "1/s"),
+                                   Extra("sensor_gain", 0.0, -1.0, 1.0, "1")]
+
+    def apply(self, F, p, data, ctx):
+        # the force channel lags (delay > 0) the motion channels; the sensor's own dynamics
+        out = np.interp(data.t - p["delay"], data.t, F)
+        return sensed(out, data.dt, p.get("sensor_rate", 0.0), p.get("sensor_gain", 0.0))
+
+    #: rates the start tries, x 1 / the fit record's duration [-] (those above the
+    #: largest rate dropped); share of the squared residual without the sensor's dynamics
+    #: below which the best of them is kept [-] (else they stay off, :class:`Fixed`): on
+    #: the grid's charge-amplifier truths the start left 0.07-0.27 of it; on a clean record
+    #: of the isolator whose reference truth the base cannot draw, 0.98, and the joint fit,
+    #: started there, spent the leak on the fit record's misfit (held-out excess closed
+    #: 0.91 -> 0.12)
+    RATE_GRID = tuple(np.geomspace(MIN_SENSOR, MAX_RATE, 31))
+    SENSOR_GAIN = 0.7
 
     def start(self, fit, Ff, r, ctx, basis=None) -> dict:
-        """The leak's start from the base's fit residual ``r`` [N]: the base's force
-        ``fit.F - r`` read through each leak of :attr:`LEAK_GRID` (and none), the changes
-        the base's own parameters can make (``basis``, :func:`diagnosis.composite.
-        base_basis`) fitted beside; the leak leaving the least squared residual starts the
-        fit. A base identified on a leaking record has absorbed most of the leak (on the
-        grid's valve truth, the leak added to the fitted base alone raised the squared
-        residual at every rate); it is kept only where it leaves less than
-        :attr:`LEAK_GAIN` of the squared residual without it, else pinned off
+        """The sensor's start from the base's fit residual ``r`` [N]: for each rate of
+        :attr:`RATE_GRID`, the gain that best draws ``r`` with the lag of the base's force
+        ``fit.F - r`` (least squares, clipped to [-1, 1]), the changes the base's own
+        parameters can make (``basis``, :func:`diagnosis.composite.base_basis`) fitted
+        beside: a base identified on a sensor's reading has absorbed much of it (on the
+        grid's valve truth, the charge leak added to the fitted base alone raised the
+        squared residual at every rate). The best pair is kept only where it leaves less
+        than :attr:`SENSOR_GAIN` of the squared residual without it, else pinned off
         (:class:`Fixed`). The shift is then gridded (:attr:`Extra.grid`)."""
         sub = _subsample(fit.t.size)
         B = _basis_rows(basis, sub)
         Fm = np.asarray(fit.F, float) - r
-        sse = []
-        for k in (0.0,) + self.LEAK_GRID:
-            rk = (r - (leaked(Fm, fit.dt, k / max(ctx.T, 1e-12)) - Fm))[sub]
-            sse.append(_lsq(B, rk)[0] if B is not None else float(rk @ rk))
-        j = int(np.argmin(sse))
-        if j == 0 or not sse[j] < self.LEAK_GAIN * sse[0]:
-            return {"leak": Fixed(0.0)}
-        return {"leak": self.LEAK_GRID[j - 1] / max(ctx.T, 1e-12)}
-
-    def apply(self, F, p, data, ctx):
-        # the force channel lags (delay > 0) the motion channels; the sensor's charge leaks
-        out = np.interp(data.t - p["delay"], data.t, F)
-        return leaked(out, data.dt, p.get("leak", 0.0))
+        rr = r[sub]
+        sse0 = _lsq(B, rr)[0] if B is not None else float(rr @ rr)
+        best = (sse0, 0.0, 0.0)
+        top = self._max_rate(ctx)
+        for k in self.RATE_GRID:
+            rate = k / max(ctx.T, 1e-12)
+            if rate > top:
+                break
+            col = sensed(Fm, fit.dt, rate, 1.0)[sub] - Fm[sub]
+            sse, c = _lsq(_with(col[:, None], B), rr)
+            g = float(c[0])
+            if abs(g) > 1.0:
+                g = float(np.clip(g, -1.0, 1.0))
+                rg = rr - g * col
+                sse = _lsq(B, rg)[0] if B is not None else float(rg @ rg)
+            if sse < best[0]:
+                best = (sse, rate, g)
+        if not best[0] < self.SENSOR_GAIN * sse0:
+            return {"sensor_rate": Fixed(0.0), "sensor_gain": Fixed(0.0)}
+        return {"sensor_rate": best[1], "sensor_gain": best[2]}
 
     def practical(self, p, ctx) -> str:
-        """Why the fitted shift and leak are too small to name ('' when either is large
-        enough)."""
+        """Why the fitted shift and sensor dynamics are too small to name ('' when either
+        is large enough)."""
         fitted = p["delay"] / ctx.dt
         n = abs(fitted + ctx.v_lag)
-        if n >= self.MIN_SAMPLES or p.get("leak", 0.0) * ctx.T >= self.MIN_LEAK:
+        moved = abs(p.get("sensor_gain", 0.0)) * (1.0 - np.exp(-p.get("sensor_rate", 0.0)
+                                                                * ctx.T))
+        if n >= self.MIN_SAMPLES or moved >= self.MIN_SENSOR:
             return ""
         lag = (f" ({fitted:.2f} against the velocity, which lags the position by "
                f"{ctx.v_lag:.2f})" if abs(ctx.v_lag) >= 0.05 else "")
-        leak = (f", and its leak (time constant {1.0 / p['leak']:.3g} s) lets a held force "
-                f"droop by less than {100 * self.MIN_LEAK:g} % over the fit record"
-                if p.get("leak", 0.0) > 0 else "")
+        sensor = (f", and the sensor's dynamics move a held force by {100 * moved:.1f} % "
+                  f"over the fit record (< {100 * self.MIN_SENSOR:g} %)" if moved > 0 else "")
         return (f"its shift of {n:.2f} samples{lag} is below {self.MIN_SAMPLES:g} "
-                f"samples, what sampling and differentiation alone make{leak}")
+                f"samples, what sampling and differentiation alone make{sensor}")
 
     def undo(self, data, p, ctx):
-        """``data`` with its force channel's leak undone and shifted back by
+        """``data`` with its force channel's sensor dynamics undone and shifted back by
         ``p["delay"]`` (for a re-identification of the base law without them)."""
-        F = unleaked(data.F, data.dt, p.get("leak", 0.0))
+        F = unsensed(data.F, data.dt, p.get("sensor_rate", 0.0), p.get("sensor_gain", 0.0))
         F = np.interp(data.t + p["delay"], data.t, F)
         return Dataset(t=data.t, x=data.x, v=data.v, a=data.a, F=F, load=data.load,
                        name=data.name)
 
 
-def leaked(F, dt, leak):
-    """The force ``F`` [N] read through a first-order high-pass from its first sample
-    (a charge amplifier reset there, whose charge leaks at the rate ``leak`` [1/s]):
-    ``F - y``, ``y`` the step-invariant lag of ``F - F[0]`` from 0.
+def _sensor_check(rate, gain):
+    if not (np.isfinite(rate) and rate >= 0.0):
+        raise ValueError(f"sensor_rate = {rate!r} is out of bounds: the force sensor's rate "
+                         f"must be >= 0 [1/s]")
+    if not (np.isfinite(gain) and -1.0 <= gain <= 1.0):
+        raise ValueError(f"sensor_gain = {gain!r} is out of bounds: the force sensor's gain "
+                         f"must be in [-1, 1] [-]")
+
+
+def sensed(F, dt, rate, gain):
+    """The force ``F`` [N] read by a sensor with first-order dynamics from its first
+    sample: ``F + gain y``, ``y`` the step-invariant lag (time constant 1 / ``rate``) of
+    ``F - F[0]`` from 0. ``gain`` = -1: a charge amplifier's leak (a high-pass);
+    ``gain`` > 0: a load cell's creep.
 
     Parameters
     ----------
@@ -1636,35 +1676,35 @@ def leaked(F, dt, leak):
         The force [N], at the sample interval ``dt`` [s].
     dt : float
         Sample interval [s].
-    leak : float
+    rate : float
         1 / the time constant [1/s] (>= 0; 0: ``F`` itself).
+    gain : float
+        The lagged part's gain [-], in [-1, 1].
 
     Returns
     -------
     ndarray
         The reading [N].
     """
-    if not (np.isfinite(leak) and leak >= 0.0):
-        raise ValueError(f"leak = {leak!r} is out of bounds: the sensor's leak rate must be "
-                         f">= 0 [1/s]")
+    _sensor_check(rate, gain)
     F = np.asarray(F, float)
-    if leak == 0.0 or F.size == 0:
+    if rate == 0.0 or gain == 0.0 or F.size == 0:
         return F
-    e = np.exp(-dt * leak)
-    return F - lfilter([1.0 - e], [1.0, -e], F - F[0])
+    e = np.exp(-dt * rate)
+    return F + gain * lfilter([1.0 - e], [1.0, -e], F - F[0])
 
 
-def unleaked(R, dt, leak):
-    """The force whose reading through :func:`leaked` is ``R`` [N] (its exact inverse: the
-    lag's state grows by ``(1 - e) / e`` x the reading's change since the start)."""
-    if not (np.isfinite(leak) and leak >= 0.0):
-        raise ValueError(f"leak = {leak!r} is out of bounds: the sensor's leak rate must be "
-                         f">= 0 [1/s]")
+def unsensed(R, dt, rate, gain):
+    """The force whose reading through :func:`sensed` is ``R`` [N] (its exact inverse: the
+    lag's state from the reading alone, ``y_n = (e y_(n-1) + (1 - e) (R_n - R_0)) / (1 +
+    (1 - e) gain)``). Parameters as :func:`sensed`."""
+    _sensor_check(rate, gain)
     R = np.asarray(R, float)
-    if leak == 0.0 or R.size == 0:
+    if rate == 0.0 or gain == 0.0 or R.size == 0:
         return R
-    e = np.exp(-dt * leak)
-    return R + (1.0 - e) / e * np.cumsum(R - R[0])
+    e = np.exp(-dt * rate)
+    d = 1.0 + (1.0 - e) * gain
+    return R - gain * lfilter([(1.0 - e) / d], [1.0, -e / d], R - R[0])
 
 
 class StribeckShape(Candidate):

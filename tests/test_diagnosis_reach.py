@@ -510,29 +510,40 @@ def test_acceleration_level_odd_in_a_draws_a_pitching_carriage():
             pytest.approx(direct[k], rel=1e-12, abs=1e-12)
 
 
-def test_delay_reads_a_charge_amplifiers_leak():
-    from diagnosis.candidates import Delay, leaked, unleaked
+def test_delay_reads_a_force_sensors_own_dynamics():
+    from diagnosis.candidates import Delay, sensed, unsensed
     from diagnosis.effects import make_context
     F = 50.0 * np.sin(np.linspace(0.0, 20.0, 3000)) + 30.0
-    # the reading's inverse is exact; no leak is the force itself
-    np.testing.assert_allclose(unleaked(leaked(F, 1e-3, 0.7), 1e-3, 0.7), F, atol=1e-9)
-    assert np.array_equal(leaked(F, 1e-3, 0.0), F)
-    # a held force droops with the time constant, from the reset at the first sample
-    held = leaked(np.r_[0.0, np.full(2000, 10.0)], 1e-3, 2.0)
+    # the reading's inverse is exact, for a leak (-1), a partial leak and a creep (> 0)
+    for g in (-1.0, -0.4, 0.5, 1.0):
+        np.testing.assert_allclose(unsensed(sensed(F, 1e-3, 0.7, g), 1e-3, 0.7, g), F,
+                                   atol=1e-9)
+    assert np.array_equal(sensed(F, 1e-3, 0.0, -1.0), F)
+    assert np.array_equal(sensed(F, 1e-3, 5.0, 0.0), F)
+    # a charge leak: a held force droops with the time constant, from the reset at the
+    # first sample; a creeping cell: the reading rises by the gain with it
+    step = np.r_[0.0, np.full(2000, 10.0)]
+    held = sensed(step, 1e-3, 2.0, -1.0)
     assert held[1] == pytest.approx(10.0 * np.exp(-2e-3), rel=1e-9)
     assert held[-1] == pytest.approx(10.0 * np.exp(-2.0 * 2.0), rel=1e-6)
-    for bad in (-1.0, float("nan")):
-        with pytest.raises(ValueError, match="leak"):
-            leaked(F, 1e-3, bad)
-        with pytest.raises(ValueError, match="leak"):
-            unleaked(F, 1e-3, bad)
-    # the practical size: a shift below a sample with no leak is none; a leak that lets a
-    # held force droop by a tenth over the fit record is one
+    crept = sensed(step, 1e-3, 2.0, 0.5)
+    assert crept[1] == pytest.approx(10.0 * (1.0 + 0.5 * (1.0 - np.exp(-2e-3))), rel=1e-9)
+    assert crept[-1] == pytest.approx(10.0 * (1.0 + 0.5 * (1.0 - np.exp(-4.0))), rel=1e-6)
+    for rate, gain, name in ((-1.0, -1.0, "sensor_rate"), (float("nan"), 0.5, "sensor_rate"),
+                             (1.0, 1.5, "sensor_gain"), (1.0, float("nan"), "sensor_gain")):
+        with pytest.raises(ValueError, match=name):
+            sensed(F, 1e-3, rate, gain)
+        with pytest.raises(ValueError, match=name):
+            unsensed(F, 1e-3, rate, gain)
+    # the practical size: a shift below a sample with no sensor dynamics is none; a leak
+    # that lets a held force droop by a tenth over the fit record is one, a 1 % creep not
     data = make_case("clean", 1.0, 0.0, n=3000)
     ctx = make_context(data)
     d = Delay("delay", "", "shift")
-    assert d.practical({"delay": 0.3 * ctx.dt - ctx.v_lag * ctx.dt, "leak": 0.0}, ctx)
-    assert d.practical({"delay": 0.0, "leak": 0.1 / ctx.T}, ctx) == ""
+    small = {"delay": 0.3 * ctx.dt - ctx.v_lag * ctx.dt}
+    assert d.practical({**small, "sensor_rate": 0.0, "sensor_gain": 0.0}, ctx)
+    assert d.practical({**small, "sensor_rate": 0.1 / ctx.T, "sensor_gain": -1.0}, ctx) == ""
+    assert d.practical({**small, "sensor_rate": 50.0 / ctx.T, "sensor_gain": 0.01}, ctx)
 
 
 def test_charge_amplifier_leak_is_named_delay():
@@ -549,5 +560,7 @@ def test_charge_amplifier_leak_is_named_delay():
     assert rep["verdict"]["cause"] == "delay"
     assert rep["verdict"]["excess_closed"] > 0.8
     t = case.data.t
-    truth = 1.0 / (LEAK_TIME * (t[-1] - t[0]))
-    assert rep["effect_details"]["delay"]["extras"]["leak"] == pytest.approx(truth, rel=0.25)
+    fitted = rep["effect_details"]["delay"]["extras"]
+    assert fitted["sensor_rate"] == pytest.approx(1.0 / (LEAK_TIME * (t[-1] - t[0])),
+                                                  rel=0.25)
+    assert fitted["sensor_gain"] == pytest.approx(-1.0, abs=0.15)

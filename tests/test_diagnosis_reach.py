@@ -564,3 +564,20 @@ def test_charge_amplifier_leak_is_named_delay():
     assert fitted["sensor_rate"] == pytest.approx(1.0 / (LEAK_TIME * (t[-1] - t[0])),
                                                   rel=0.25)
     assert fitted["sensor_gain"] == pytest.approx(-1.0, abs=0.15)
+
+
+def test_creeping_load_cell_is_named_delay():
+    # the fifteenth family's strain-gauge load cell whose spring element creeps (a share of
+    # each change of the force at once, the rest late): the shift and the charge leak
+    # alone (ca024ab) named 0 of its 20 sealed cases (acceleration, inertia, gms took 10);
+    # the sensor's gain is a creep's (> 0)
+    from diagnosis import diagnose
+    from diagnosis.benchmark.cases import make_plant_case
+    from diagnosis.benchmark.runner import MEASURED
+    case = make_plant_case("valve", "delay", 0.5, 0.01, seed=475681, quick=True,
+                           form="load_cell_creep", measured=MEASURED[0])
+    rep = diagnose(case.data, case.base, seed=0,
+                   candidates=["delay", "acceleration", "inertia"])
+    assert rep["verdict"]["cause"] == "delay"
+    assert rep["verdict"]["excess_closed"] > 0.8
+    assert rep["effect_details"]["delay"]["extras"]["sensor_gain"] > 0.05

@@ -39,8 +39,8 @@ from friction.extensions import (DRIFT_CYCLE_NAMES, DRIFT_NAMES, DRIFT_RESET_NAM
 
 __all__ = ["Candidate", "LawCandidate", "Context", "Extra", "make_context", "velocity_lag",
            "Fixed", "Acceleration", "Load", "Drift", "Asymmetry", "AsymmetryTwins", "Position",
-           "Inertia", "coupled_part", "Delay", "sensed", "unsensed", "StribeckShape", "Presliding", "MAX_FILTER_SAMPLES",
-           "missing_columns"]
+           "Inertia", "coupled_part", "Delay", "sensed", "unsensed", "StribeckShape",
+           "Presliding", "MAX_FILTER_SAMPLES", "missing_columns"]
 
 
 
@@ -1543,8 +1543,8 @@ class Delay(Candidate):
 
     The shift alone draws neither (a lag of the whole force): on the fourteenth family's
     charge-amplifier truth it closed -0.1-0.13 of the excess and the verdict named
-    `inertia` or `position` in 11 of 20 cases; on the fifteenth's creeping load cell, 0 of
-    20 named. The trajectory level and the FMU blocks keep the shift (a sensor's dynamics
+    `inertia` or `position` in 11 of 20 cases; with the leak alone (g = -1), none of the
+    fifteenth family's 20 creeping-load-cell cases was named. The trajectory level and the FMU blocks keep the shift (a sensor's dynamics
     act on the reading, not on the plant).
     """
     MAX_SAMPLES = 25

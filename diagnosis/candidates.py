@@ -889,7 +889,7 @@ class Drift(Candidate):
             if len(chosen) > 2 and chosen[2][0] < self.CYCLE_GAIN * alt[0]:
                 alt = chosen[2]
             # what the base's own changes leave, the forms' common reference
-            sse0 = _lsq(B, rr)[0] if B is not None else float(rr @ rr)
+            sse0 = _sse_beside(B, rr)
             if alt[0] < self.CYCLE_GAIN * sse or (
                     alt[2] == self.RESET_FORM and sse0 - sse >= self.REPEAT_EXPLAINS * sse0
                     and sse0 - alt[0] >= self.REPEAT_SHARE * (sse0 - sse)):
@@ -1054,6 +1054,12 @@ def _lsq(A, b):
     c, *_ = np.linalg.lstsq(A, b, rcond=1e-10)
     res = b - A @ c
     return float(res @ res), c
+
+
+def _sse_beside(B, b):
+    """Sum of squared residuals [N^2] of ``b`` once the columns ``B`` (the base's basis rows,
+    or ``None``) have taken what they can of it."""
+    return _lsq(B, b)[0] if B is not None else float(b @ b)
 
 
 def _basis_rows(basis, rows):
@@ -1610,7 +1616,7 @@ class Delay(Candidate):
         B = _basis_rows(basis, sub)
         Fm = np.asarray(fit.F, float) - r
         rr = r[sub]
-        sse0 = _lsq(B, rr)[0] if B is not None else float(rr @ rr)
+        sse0 = _sse_beside(B, rr)
         best = (sse0, 0.0, 0.0)
         top = self._max_rate(ctx)
         for k in self.RATE_GRID:
@@ -1623,7 +1629,7 @@ class Delay(Candidate):
             if abs(g) > 1.0:
                 g = float(np.clip(g, -1.0, 1.0))
                 rg = rr - g * col
-                sse = _lsq(B, rg)[0] if B is not None else float(rg @ rg)
+                sse = _sse_beside(B, rg)
             if sse < best[0]:
                 best = (sse, rate, g)
         if not best[0] < self.SENSOR_GAIN * sse0:

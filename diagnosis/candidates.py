@@ -1573,6 +1573,13 @@ class Delay(Candidate):
     #: a held force droop by 5 %, a load cell that creeps by 5 %; smaller, a slow offset any
     #: drift draws, or the base's own levels
     MIN_SENSOR = 0.05
+    #: fastest leak (a negative gain), x 1 / the fit record's duration [-]. Faster than a
+    #: few times 1 / the record, a partial leak reads ``(1 + g) F - g / rate dF/dt``: a
+    #: scale the base's levels take and a lead, the shift's work; what it draws beyond is
+    #: presliding hysteresis. On session 21's grid the wrong `delay` names with a leak had
+    #: 13-220 / T and g of -0.1 to -0.5; the charge-amplifier truths 0.07-15 / T (a
+    #: quasi-static amplifier's time constant is seconds to hours)
+    MAX_LEAK_RATE = 20.0
 
     def extras(self, ctx):
         d = self.MAX_SAMPLES * ctx.dt
@@ -1605,7 +1612,8 @@ class Delay(Candidate):
     def start(self, fit, Ff, r, ctx, basis=None) -> dict:
         """The sensor's start from the base's fit residual ``r`` [N]: for each rate of
         :attr:`RATE_GRID`, the gain that best draws ``r`` with the lag of the base's force
-        ``fit.F - r`` (least squares, clipped to [-1, 1]), the changes the base's own
+        ``fit.F - r`` (least squares, clipped to [-1, 1]; to [0, 1] at rates above
+        :attr:`MAX_LEAK_RATE`), the changes the base's own
         parameters can make (``basis``, :func:`diagnosis.composite.base_basis`) fitted
         beside: a base identified on a sensor's reading has absorbed much of it (on the
         grid's valve truth, the charge leak added to the fitted base alone raised the
@@ -1626,8 +1634,9 @@ class Delay(Candidate):
             col = sensed(Fm, fit.dt, rate, 1.0)[sub] - Fm[sub]
             sse, c = _lsq(_with(col[:, None], B), rr)
             g = float(c[0])
-            if abs(g) > 1.0:
-                g = float(np.clip(g, -1.0, 1.0))
+            lo = -1.0 if rate * ctx.T <= self.MAX_LEAK_RATE else 0.0
+            if not lo <= g <= 1.0:
+                g = float(np.clip(g, lo, 1.0))
                 rg = rr - g * col
                 sse = _sse_beside(B, rg)
             if sse < best[0]:
@@ -1641,8 +1650,10 @@ class Delay(Candidate):
         is large enough)."""
         fitted = p["delay"] / ctx.dt
         n = abs(fitted + ctx.v_lag)
-        moved = abs(p.get("sensor_gain", 0.0)) * (1.0 - np.exp(-p.get("sensor_rate", 0.0)
-                                                                * ctx.T))
+        rate, g = p.get("sensor_rate", 0.0), p.get("sensor_gain", 0.0)
+        # a fast leak is a lead and a scale (:attr:`MAX_LEAK_RATE`): not a sensor's own size
+        moved = (0.0 if g < 0.0 and rate * ctx.T > self.MAX_LEAK_RATE
+                 else abs(g) * (1.0 - np.exp(-rate * ctx.T)))
         if n >= self.MIN_SAMPLES or moved >= self.MIN_SENSOR:
             return ""
         lag = (f" ({fitted:.2f} against the velocity, which lags the position by "

@@ -546,6 +546,26 @@ def test_delay_reads_a_force_sensors_own_dynamics():
     assert d.practical({**small, "sensor_rate": 50.0 / ctx.T, "sensor_gain": 0.01}, ctx)
 
 
+def test_delay_start_leaves_a_lead_to_the_shift():
+    # a force that leads the motion by two samples: a fast partial leak reads (1 + g) F -
+    # g / rate dF/dt, a scale and a lead, and took such residuals on session 21's grid
+    # (wrong `delay` names at 13-220 / T, g -0.1 to -0.5); the start keeps no leak faster
+    # than Delay.MAX_LEAK_RATE / T, and a fast one has no practical size of its own
+    from diagnosis.effects import make_context
+    from diagnosis.candidates import Delay, Fixed
+    data = make_case("clean", 1.0, 0.0, n=6000)
+    ctx = make_context(data)
+    d = Delay("delay", "", "shift")
+    F = np.asarray(data.F, float)
+    r = np.interp(data.t + 2.0 * ctx.dt, data.t, F) - F
+    # beside a basis that can scale the force (the base's levels), as in a diagnosis
+    p = d.start(data, None, r, ctx, basis=np.column_stack([F, np.ones_like(F)]))
+    assert isinstance(p["sensor_gain"], Fixed) and p["sensor_gain"] == 0.0
+    small = {"delay": 0.3 * ctx.dt - ctx.v_lag * ctx.dt}
+    assert d.practical({**small, "sensor_rate": 50.0 / ctx.T, "sensor_gain": -0.4}, ctx)
+    assert d.practical({**small, "sensor_rate": 50.0 / ctx.T, "sensor_gain": 0.4}, ctx) == ""
+
+
 def test_charge_amplifier_leak_is_named_delay():
     # the fourteenth family's piezo sensor read through a leaking charge amplifier (time
     # constant 0.4 x the record): the force leads the motion and held forces droop; the

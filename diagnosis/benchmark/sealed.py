@@ -1,12 +1,12 @@
-"""The sixteenth sealed truth family: one more mechanism per effect, kept out of all tuning.
+"""The seventeenth sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-11-29 (session 21) by another hand, once, without running the diagnosis on it;
+Written 2026-11-29 (session 22) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 20's, was run once at the end of session 21 and is :mod:`.seen15`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen15`
+sealed before it, session 21's, was run once at the end of session 22 and is :mod:`.seen16`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen16`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen15`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen16`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`), taken from the friction literature or from real
 machines, integrated along the plant's continuous motion on the grid :data:`.kinematics.FINE`
@@ -18,71 +18,76 @@ amplitude monotonically from the base law at ``s`` = 0 (its calibration,
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``jerk_unloading``: each change of the acceleration (the jerk) knocks
-                   the carriage into vibration normal to its guides, which decays with
-                   the contacts' damping; while the carriage vibrates, the mean
-                   friction falls (dynamic unloading: Tolstoi 1967; Hess and Soom
-                   1991): the levels fall with the decaying envelope of |jerk|, not
-                   with the acceleration itself
-load               ``overhung_load``: the load acts at a fixed point of the frame on a
-                   carriage with two supports of different friction (a sliding pad and
-                   a rolling block) that moves under it: the lever arms, and the
-                   reactions' shares, change with the position (statics of a beam on
-                   two supports): the load's effect on the levels is stronger at one
-                   end of the stroke than at the other
-asymmetry          ``freewheel_roller``: a pressure roller runs on a one-way (sprag)
-                   clutch bearing: it rolls freely one way; the other way the clutch
-                   locks, after a short engagement travel, and the roller slides with
-                   its own friction (Orthwein 1986; anti-rollback rollers): extra
-                   friction in one direction only, building up over a travel after
-                   each reversal into it
-stribeck_shape     ``churning_drag``: the recirculating rolling elements' lubricant
-                   churning (Palmgren's load-independent bearing torque, M0 ~ (nu n)^(2/3)
-                   above a speed, constant below; Palmgren 1959; Harris and Kotzalas
-                   2007): a drag flat at low speeds rising as |v|^(2/3) above a knee
-position           ``cam_plunger``: a spring plunger on the carriage runs over a cam bar
-                   (a lobe: a ramp up, a dwell, a ramp down) fixed where fit and
-                   held-out parts both pass: the compressed spring presses the plunger
-                   harder (the levels rise over the lobe) and the ramps push back on the
-                   way up and forward on the way down (a force of the position whose
-                   sign changes between the two ramps)
-inertia            ``chordal_action``: the carriage is pulled by a roller chain from a
-                   sprocket whose shaft carries the encoder: the chain's speed pulses
-                   with the sprocket's polygon (chordal action, Binder 1956; ISO 10823),
-                   so the carriage's acceleration differs from the measured one by a
-                   share of a and a term in v^2 periodic in the position, which the
-                   inverse dynamics misses times the carriage's mass
-delay              ``mains_notch``: the force amplifier carries a second-order notch
-                   filter against the mains hum (at a twentieth of the data rate, the
-                   50 Hz of a 1 kHz logger): below the notch its phase lags as
-                   1 / (Q omega0), above it it leads; a wider notch (a lower Q), a
-                   larger lag
-drift              ``tribocharging``: the sliding charges the insulating surfaces
-                   (contact electrification, Harper 1967; Lowell and Rose-Innes 1980),
-                   the charge leaking away through the surfaces' resistance: the
-                   electrostatic attraction ~ charge^2 presses the contact and the
-                   levels rise as the charge builds up with the travel, more after fast
-                   strokes, less after dwells
-backlash           ``reversing_clutch``: drive and contact coupled through the
-                   electromagnetic clutch of a reversing drive (one clutch per
-                   direction): at each reversal the other clutch's torque builds up over
-                   its engagement time (the coil's current rise, Warner Electric;
-                   Schuler 1998): the contact follows only once the clutch transmits
-                   its friction: a lost motion of time, not of travel
-gms                ``power_law_joint``: presliding in a bolted lap joint (Segalman's
-                   four-parameter Iwan model, 2005): a power-law density of the
-                   junctions' slip strengths plus a share that slips at once (the
-                   macro-slip), so the tangential stiffness softens as a power of the
-                   travel and the loops' dissipation grows as a power of their
-                   amplitude other than Masing's and Mindlin's; at ``s`` = 0 the base
-                   itself
+acceleration       ``aerostatic_tilt``: the carriage floats on externally pressurised
+                   (aerostatic or hydrostatic) pads; the acceleration's pitching moment
+                   tilts them on their films' stiffness, and the film's shear drag,
+                   ~ the mean of 1 / h over the tilted pad (Petroff's drag with a
+                   linear gap), grows as atanh(d) / d of the tilt d (Powell 1970; Rowe
+                   1983): a viscous drag that rises with a^2, felt only while the
+                   carriage both moves and accelerates
+load               ``preload_relief``: a preloaded rolling guide with opposed Hertzian
+                   rows (Q ~ deflection^1.5): the load adds to the lower rows and relieves
+                   the upper ones until they lift off (the preloaded pair of Harris and
+                   Kotzalas 2007): the rows' summed load, and the levels, are nearly flat
+                   in the load about the preload and follow it one for one past the
+                   upper rows' lift-off
+asymmetry          ``felt_lubricator``: an oil-soaked felt lubricator on one end of the
+                   carriage (a linear guide's lubrication unit): leading, it lays a fresh
+                   film just ahead of the contact; trailing, the contact runs on the film
+                   it laid on the last pass the other way, which has drained off the
+                   track since (a thin-film drainage in time): the levels fall in one
+                   direction at once and in the other by the age of the film at each
+                   position
+stribeck_shape     ``core_loss_drag``: the drive's iron core losses per unit of travel
+                   (the loss separation of Bertotti 1988: hysteresis ~ f, eddy ~ f^2,
+                   excess ~ f^1.5 of the magnetic frequency f ~ v): a drag constant in
+                   the speed (hysteresis) plus one rising as sqrt(|v|) (the excess,
+                   domain-wall, loss) beside the friction's curve
+position           ``heated_zone``: a heat source (a motor, a spindle, a hydraulic unit)
+                   beside the rail where fit and held-out parts both pass warms it; the
+                   rail's temperature falls off along it as a cooled fin's
+                   (exp(-|x - x_h| / l), Incropera and DeWitt 2002), and the oil's
+                   viscosity falls exponentially with the temperature (Reynolds 1886):
+                   the film's drag falls and the boundary levels rise in a zone of the
+                   stroke
+inertia            ``screw_stiffness``: the carriage is driven by a ball screw fixed at one
+                   end, whose axial stiffness ~ 1 / the screw's length between the fixed
+                   bearing and the nut (Altintas 2012; Okwudire and Altintas 2009): the
+                   carriage on that spring follows the drive's acceleration through a
+                   lightly damped mode whose frequency falls along the stroke, and the
+                   inverse dynamics misses the carriage's mass times the difference
+delay              ``alpha_beta_tracker``: the logger smooths the force with an
+                   alpha-beta (steady-state constant-velocity Kalman) tracking filter
+                   (Benedict and Bordner 1962; Kalata 1984): a type-2 loop that follows
+                   a steadily changing force without lag but lags the force's changes
+                   of slope and overshoots them, more the lower its bandwidth
+drift              ``cage_creep``: the rollers of a caged (non-recirculating) guide are
+                   held in a cage that should move at half the carriage's speed but
+                   creeps a little each stroke, more one way (cage creep; the makers'
+                   anti-creep cages): once it reaches the carriage's end rollers leave
+                   the loaded length (the others carry more), later the cage hits its stop
+                   and the rollers skid: the levels rise along the net travel, then step
+backlash           ``mesh_stiffness``: drive and contact joined by a gear (a rack and
+                   pinion) with play whose mesh stiffness alternates between single- and
+                   double-tooth contact along each tooth pitch (contact ratio 1.6;
+                   Kahraman and Singh 1990; ISO 6336-1): after each reversal the play is
+                   crossed and the force built through a compliance that depends on
+                   where in the mesh the flank lands, and while sliding the mesh's
+                   stiffness changes kick the contact
+gms                ``junction_growth``: the presliding junctions beside the bristle grow
+                   under the tangential force (Tabor's junction growth, 1959; McFarlane
+                   and Tabor 1950): their contact radii, and their tangential stiffness
+                   (Mindlin's 8 G a), rise with the force they carry, so each loads
+                   *stiffening* up to its slip and unloads soft through zero: an S-shaped
+                   loop, not the softening (Masing) loops of every other form; at ``s``
+                   = 0 the base itself
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``churning_drag`` needs a
-Stribeck curve (not the isolator's mre_lugre), ``cam_plunger`` a record that revisits its
-positions (not the press), ``overhung_load`` a load that changes,
-``reversing_clutch`` and ``power_law_joint`` a classic LuGre base (valve, damping rig,
-XML-350); each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
+Where a form applies: as its effect's record (``truth_applies``); ``core_loss_drag`` needs
+a Stribeck curve (not the isolator's mre_lugre), ``heated_zone`` a record that revisits its
+positions (not the press), ``preload_relief`` a load that changes, ``mesh_stiffness`` and
+``junction_growth`` a classic LuGre base (valve, damping rig, XML-350); each raises a
+``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
 
@@ -95,206 +100,60 @@ from friction.shapes import SHAPES
 
 from .kinematics import PlantKinematics
 from .truths import (_base_parts, _bump_centre, _contact_constants, _level,
-                     _light_contact_step, _lugre_params, _lugre_run, _motion_time,
-                     _presliding_path, _span, _substeps, level_inside, on_fine_grid)
+                     _light_contact_step, _lugre_params, _motion_time, _presliding_path,
+                     _span, _substeps, has_stribeck_curve, level_inside, lugre_with_curve,
+                     on_fine_grid)
 
-__all__ = ["FORMS", "jerk_unloading_truth", "overhung_load_truth", "freewheel_roller_truth",
-           "churning_drag_truth", "cam_plunger_truth", "chordal_action_truth",
-           "mains_notch_truth", "tribocharging_truth", "reversing_clutch_truth",
-           "power_law_joint_truth"]
+__all__ = ["FORMS", "aerostatic_tilt_truth", "preload_relief_truth", "felt_lubricator_truth",
+           "core_loss_drag_truth", "heated_zone_truth", "screw_stiffness_truth",
+           "alpha_beta_tracker_truth", "cage_creep_truth", "mesh_stiffness_truth",
+           "junction_growth_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "jerk_unloading", "load": "overhung_load",
-         "asymmetry": "freewheel_roller", "stribeck_shape": "churning_drag",
-         "position": "cam_plunger", "inertia": "chordal_action",
-         "delay": "mains_notch", "drift": "tribocharging",
-         "backlash": "reversing_clutch", "gms": "power_law_joint"}
-
-
-def _from_cold(t, u, tau):
-    """First-order lag tau dy/dt + y = ``u`` along the times ``t`` [s] (uniform), starting
-    from y = 0 (not from the first input, as :func:`.truths._lag`)."""
-    from scipy.signal import lfilter
-    e = math.exp(-float(t[1] - t[0]) / tau)
-    return lfilter([1.0 - e], [1.0, -e], np.asarray(u, float))
+FORMS = {"acceleration": "aerostatic_tilt", "load": "preload_relief",
+         "asymmetry": "felt_lubricator", "stribeck_shape": "core_loss_drag",
+         "position": "heated_zone", "inertia": "screw_stiffness",
+         "delay": "alpha_beta_tracker", "drift": "cage_creep",
+         "backlash": "mesh_stiffness", "gms": "junction_growth"}
 
 
 # -- acceleration ----------------------------------------------------------------------------
-#: ``jerk_unloading``'s decay time of the carriage's normal vibration, x the motion's time
-#: scale [-]; the levels' largest fall (the vibration's envelope E, |jerk| / its 99th
-#: percentile, lagged, acting as E / (1 + E)) at strength 1 [-]; the lowest relative
-#: level [-]
-JERK_DECAY, JERK_DROP, JERK_FLOOR = 0.5, 0.5, 0.05
+#: ``aerostatic_tilt``'s acceleration at which the tilted pads would touch down, x the top
+#: acceleration a99 [-]; the largest tilt reached, as a share of the film's mean gap (the
+#: pads' restrictors stiffen the film as it closes) [-]; the pads' film drag at the top
+#: speed, x the friction level, at strength 1 [-]
+TILT_TOUCH, TILT_MAX, FILM_DRAG = 1.0, 0.9, 4.5
 
 
-def _vibration_envelope(t, a, tau):
-    """The envelope [-] of the normal vibration the jerk excites along the times ``t`` [s]
-    of the accelerations ``a`` [m/s^2]: |da/dt| over its 99th percentile, through a
-    first-order decay of time constant ``tau`` [s] (the contacts' damping), from rest."""
-    j = np.abs(np.gradient(np.asarray(a, float), np.asarray(t, float)))
-    j99 = float(np.percentile(j, 99.0))
-    return _from_cold(t, j / max(j99, 1e-300), tau)
-
-
-@on_fine_grid
-def jerk_unloading_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Each change of the carriage's acceleration (its jerk) is an impulse of the drive's
-    force that knocks the carriage into vibration normal to its guides (on the contacts'
-    stiffness); the vibration decays with the contacts' damping (its envelope,
-    :func:`_vibration_envelope`, with the decay time :data:`JERK_DECAY` x the motion's
-    time scale). While the contact vibrates normally the mean friction falls (the contact
-    is partly unloaded over each cycle). The Coulomb and Stribeck levels are the base's
-    times 1 - ``s`` :data:`JERK_DROP` x E / (1 + E), E the envelope (the unloading
-    saturates as the contact begins to lose touch; at least :data:`JERK_FLOOR`), inside
-    the bristle dynamics; the viscous term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (t [s], a [m/s^2]) and its base law.
-    s : float
-        Amplitude factor [-]: the friction's sensitivity to the vibration (the contacts'
-        compliance), / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Normal vibrations and the fall of the mean friction (Tolstoi 1967, Significance of the
-    normal degree of freedom and natural normal vibrations in contact friction, Wear 10;
-    Hess and Soom 1991, Normal vibrations and friction under harmonic loads, J. Tribol.
-    113). The candidate raises the levels with |a|,
-    lagged, tilts them with a and adds a force odd in a; the open forms lag the velocity,
-    a film or a contact state, heat the contact, skid rolling elements, move load between
-    rows or supports, press seals, pull with the thrust, squeeze or starve films, dilate,
-    lift on a wedge, shift a gib, soften an elastomer or swing a roller arm. Here the
-    levels follow the rate of change of the acceleration, through a decaying memory:
-    they fall after each jerk, whatever the acceleration is then.
-    """
-    if s <= 0.0:
-        return _base_parts(kin)[0]
-    T = max(_motion_time(kin), 1e-12)
-    env = _vibration_envelope(kin.t, kin.a, JERK_DECAY * T)
-    lev = np.clip(1.0 - float(s) * JERK_DROP * env / (1.0 + env), JERK_FLOOR, None)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- load ------------------------------------------------------------------------------------
-#: ``overhung_load``'s supports' friction coefficients, the sliding pad's over the rolling
-#: block's, less 1 [-]; the carriage's wheelbase over the stroke the record visits [-]; the
-#: supports' share of the friction (the rest, the seals' and wipers', does not follow the
-#: load) at strength 1 [-]; the lowest relative level [-]
-PAD_EXCESS, WHEELBASE, SUPPORT_SHARE, OVERHUNG_FLOOR = 1.5, 1.5, 0.5, 0.05
-
-
-def _pad_share(x, centre, span, base):
-    """The share [-] of a load acting at ``centre`` [m] that the front support (the sliding
-    pad) of a carriage at the positions ``x`` [m] carries: the supports sit ``base`` x
-    ``span`` [m] apart, centred on the carriage (a beam on two supports: the share is the
-    load's lever arm to the rear support over the wheelbase, in [0, 1])."""
-    arm = 0.5 + (centre - np.asarray(x, float)) / (base * span)
-    return np.clip(arm, 0.0, 1.0)
-
-
-@on_fine_grid
-def overhung_load_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The normal load acts at a fixed point of the frame (the mean position of the
-    record) on a carriage with two supports :data:`WHEELBASE` x the stroke apart: a
-    sliding pad in front and a rolling block behind, the pad's friction coefficient
-    1 + :data:`PAD_EXCESS` times the block's. As the carriage moves under the load the
-    reactions' shares change (:func:`_pad_share`), so the supports' friction is
-    mu_b L (1 + :data:`PAD_EXCESS` share(x)), relative to its value at the record's mean
-    load with the carriage centred under it: S(x, L). The supports carry a share ``s``
-    :data:`SUPPORT_SHARE` of the friction (the rest, seals and wipers, does not follow the
-    load): the Coulomb and Stribeck levels are the base's times 1 + ``s``
-    :data:`SUPPORT_SHARE` (S - 1) (at least :data:`OVERHUNG_FLOOR`), inside the bristle
-    dynamics; the viscous term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (x [m], load [N]) and its base law.
-    s : float
-        Amplitude factor [-]: the supports' share of the friction, / its value at strength
-        1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    The statics of a beam on two supports and the load sharing of hybrid guideways (a
-    sliding and a rolling support: Slocum 1992, Precision Machine Design; Weck and
-    Brecher 2006, Werkzeugmaschinen 2). The candidate's levels are affine in the
-    load (two regimes); the open forms scale them with a power of the load, in one
-    direction, through the Stribeck velocity, a film, a step, a creep, a rate, a lever's
-    play, a plastic area, a hinge, a cavitating film, a pressure-viscous film, an erf
-    area, a flash temperature, a relay, a renewal over the slip or an adhesive area,
-    each the same all along the stroke. Here the load's effect on the levels depends on
-    where the carriage is: the same load change counts more at one end of the stroke.
-    """
-    L = np.asarray(kin.load, float)
-    if not np.ptp(L) > 1e-9 * max(float(np.mean(np.abs(L))), 1e-300):
-        raise ValueError(f"load (overhung_load): the {kin.plant} record's load does not "
-                         f"change")
-    if s <= 0.0:
-        return _base_parts(kin)[0]
-    x = np.asarray(kin.x, float)
-    centre = float(np.mean(x))
-    share = _pad_share(x, centre, _span(kin), WHEELBASE)
-    r = L / max(float(np.mean(L)), 1e-300)
-    supports = r * (1.0 + PAD_EXCESS * share) / (1.0 + 0.5 * PAD_EXCESS)
-    lev = np.clip(1.0 + float(s) * SUPPORT_SHARE * (supports - 1.0), OVERHUNG_FLOOR, None)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- asymmetry -------------------------------------------------------------------------------
-#: ``freewheel_roller``'s sliding roller's friction, x the base's friction levels, at
-#: strength 1 [-]; the clutch's engagement travel, x the stroke the record visits [-]
-ROLLER_FRICTION, ENGAGE_SHARE = 0.4, 0.02
-
-
-@njit(cache=True)
-def _engagement(x, travel):
-    """The sprag clutch's engagement [-] (0 free, 1 locked) along the positions ``x`` [m]:
-    moving in the positive direction it overruns (0 at once), moving in the negative one
-    it engages linearly over the travel ``travel`` [m]. Starts free."""
-    n = x.size
-    out = np.empty(n)
-    e = 0.0
-    out[0] = e
-    for k in range(1, n):
-        dx = x[k] - x[k - 1]
-        if dx > 0.0:
-            e = 0.0
-        elif dx < 0.0:
-            e = min(e - dx / travel, 1.0)
-        out[k] = e
+def _tilted_gap_drag(a, a_touch, d_max):
+    """The shear drag of a pad tilted by the acceleration ``a`` [m/s^2] over its untilted
+    drag [-]: the mean of h0 / h over a pad whose gap varies linearly by +-d h0 along it,
+    atanh(d) / d, d = min(|a| / ``a_touch``, ``d_max``) (1 at d = 0)."""
+    d = np.minimum(np.abs(np.asarray(a, float)) / a_touch, d_max)
+    out = np.ones_like(d)
+    big = d > 1e-4
+    out[big] = np.arctanh(d[big]) / d[big]
+    out[~big] = 1.0 + d[~big] ** 2 / 3.0          # the series of atanh(d) / d
     return out
 
 
 @on_fine_grid
-def freewheel_roller_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A pressure (hold-down) roller bears on the carriage through a one-way clutch
-    bearing (a sprag freewheel in its hub): in the positive direction the clutch
-    overruns and the roller rolls freely; in the negative one its sprags wedge after an
-    engagement travel (:data:`ENGAGE_SHARE` x the stroke, :func:`_engagement`) and the
-    locked roller slides on the carriage with its own friction, ``s``
-    :data:`ROLLER_FRICTION` x the base's levels. The Coulomb and Stribeck levels are the
-    base's times 1 + ``s`` :data:`ROLLER_FRICTION` x the engagement, inside the bristle
-    dynamics; the viscous term is the base's.
+def aerostatic_tilt_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage floats on externally pressurised pads (aerostatic or hydrostatic) at
+    both ends; the acceleration's pitching moment tilts it on the films' stiffness, in
+    proportion to a (the films held by their restrictors), so each pad's gap varies
+    linearly along it by +- d of its mean, d = |a| / (:data:`TILT_TOUCH` a99) (at most
+    :data:`TILT_MAX`). The film's shear drag, eta v times the integral of 1 / h over the
+    pad, grows as atanh(d) / d (:func:`_tilted_gap_drag`): the truth adds ``s``
+    :data:`FILM_DRAG` F_level (v / v99) (atanh(d) / d - 1) to the base (the untilted
+    film's drag is in the base's viscous term). The levels are the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m]) and its base law.
+        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the roller's pressing force (its sliding friction), / its
+        Amplitude factor [-]: the films' drag (their viscosity over their gap), / its
         value at strength 1.
 
     Returns
@@ -304,54 +163,211 @@ def freewheel_roller_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Sprag and roller one-way clutches and their engagement (Orthwein 1986, Clutches and
-    Brakes: Design and Selection); one-way (anti-rollback) rollers in conveyors and sheet
-    feeders. The candidate shifts a direction's levels and
-    viscous slope (and an offset); the open forms keep a direction's share, its Stribeck
-    velocity, viscous slope or tail, roll a lip, follow a thrust, a film laid by the
-    outstroke, a texture, a return spring, a wedge film, a strut, a throttle, a
-    cylinder's areas, pumping grooves, a buckling cable, a scraper's pile, a commutation
-    angle or an idler's tight span. Here one direction's extra friction is not there at
-    once after a reversal into it: it builds up over a short travel, as the sprags
-    wedge.
+    Externally pressurised bearings and their tilt stiffness (Powell 1970, Design of
+    Aerostatic Bearings; Rowe 1983, Hydrostatic and Hybrid Bearing Design; Slocum 1992,
+    Precision Machine Design); the shear (Couette) drag of a film of varying gap (Petroff
+    1883; Hamrock, Schmid and Jacobson 2004). The candidate raises the levels with |a|,
+    lagged, tilts them with a and adds a force odd in a; the open forms lag the velocity,
+    a film or a contact state, heat the contact, skid rolling elements, move load between
+    rows or supports, press seals, pull with the thrust, squeeze or starve films, dilate,
+    lift on a wedge, shift a gib, soften an elastomer, swing a roller arm or unload by
+    the jerk's vibration. Here nothing touches: the acceleration closes one end of each
+    film and the viscous drag, not the levels, grows with a^2, and only while the
+    carriage moves.
+    """
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    sc = kin.scales
+    g = _tilted_gap_drag(kin.a, TILT_TOUCH * max(sc["a99"], 1e-12), TILT_MAX)
+    c = float(s) * FILM_DRAG * _level(kin) / max(sc["v99"], 1e-12)
+    return F + c * np.asarray(kin.v, float) * (g - 1.0)
+
+
+# -- load ------------------------------------------------------------------------------------
+#: ``preload_relief``'s rows' preload, x the record's mean load [-] (the upper rows lift off
+#: at 2^1.5 x the preload, inside the records' load ranges); the rows' share of the friction
+#: at strength 1 (the rest, seals and wipers, does not follow the load) [-]; the lowest
+#: relative level [-]
+ROW_PRELOAD, ROW_SHARE, ROW_FLOOR = 0.35, 1.0, 0.05
+
+
+def _row_sum(load_over_preload):
+    """The summed load [-] (over the preload) of two opposed Hertzian rows (Q ~ delta^1.5)
+    preloaded against each other, under the external loads ``load_over_preload`` [-]
+    (>= 0) pressing one of them: (1 + u)^1.5 - (1 - u)^1.5 = L / P solved for the
+    deflection u (over the preload's), the sum (1 + u)^1.5 + (1 - u)^1.5; past the other
+    row's lift-off (u >= 1, L / P >= 2^1.5) the loaded row carries L alone."""
+    r = np.abs(np.asarray(load_over_preload, float))
+    u = np.linspace(0.0, 1.0, 2001)
+    diff = (1.0 + u) ** 1.5 - (1.0 - u) ** 1.5         # rises monotonically to 2^1.5
+    tot = (1.0 + u) ** 1.5 + (1.0 - u) ** 1.5
+    return np.where(r < diff[-1], np.interp(r, diff, tot), r)
+
+
+@on_fine_grid
+def preload_relief_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The contact is a preloaded rolling guide with opposed rows (upper and lower ball
+    rows, preloaded against each other by :data:`ROW_PRELOAD` x the record's mean load):
+    the normal load adds to the lower rows' load and relieves the upper ones (Hertz: each
+    row's load ~ its deflection^1.5), until the upper rows lift off (:func:`_row_sum`).
+    The rows' rolling friction follows their summed load S(L), which hardly changes while
+    both rows carry and follows the load one for one once the upper ones are free. The
+    Coulomb and Stribeck levels are the base's times 1 + ``s`` :data:`ROW_SHARE`
+    (S(L) / S(mean L) - 1) (at least :data:`ROW_FLOOR`), inside the bristle dynamics; the
+    viscous term is the base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (load [N]) and its base law.
+    s : float
+        Amplitude factor [-]: the rows' share of the friction, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Preloaded pairs of rolling bearings and guides and their lift-off (Harris and Kotzalas
+    2007, Rolling Bearing Analysis, the preloaded duplex pair; Palmgren 1959, rolling
+    friction ~ load; the makers' preload classes, e.g. THK's and Schaeffler's linear guide
+    catalogues). The candidate's levels are affine in the load (two regimes); the open
+    forms scale them with a power of the load, in one direction, through the Stribeck
+    velocity, a film, a step, a creep, a rate, a lever's play, a plastic area, a hinge, a
+    cavitating film, a pressure-viscous film, an erf area, a flash temperature, a relay,
+    a renewal over the slip, an adhesive area or the position of the load. Here the load
+    is shared with a preload: little of a light load's change reaches the friction, all
+    of a heavy one's does, with the kink at the lift-off.
+    """
+    L = np.asarray(kin.load, float)
+    if not np.ptp(L) > 1e-9 * max(float(np.mean(np.abs(L))), 1e-300):
+        raise ValueError(f"load (preload_relief): the {kin.plant} record's load does not "
+                         f"change")
+    if s <= 0.0:
+        return _base_parts(kin)[0]
+    P = ROW_PRELOAD * max(float(np.mean(np.abs(L))), 1e-300)
+    rows = _row_sum(L / P) / float(_row_sum(np.array([float(np.mean(np.abs(L))) / P]))[0])
+    lev = np.clip(1.0 + float(s) * ROW_SHARE * (rows - 1.0), ROW_FLOOR, None)
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- asymmetry -------------------------------------------------------------------------------
+#: ``felt_lubricator``'s fall of the levels on a fresh film at strength 1 [-]; the film's
+#: drainage time, x the record's length [-]; the track's cells, per the stroke the record
+#: visits [-]; the lowest relative level [-]
+FELT_DROP, FELT_DRAIN, FELT_CELLS, FELT_FLOOR = 0.4, 0.15, 400, 0.05
+
+
+@njit(cache=True)
+def _film_share(t, x, v, x_lo, cell, n_cells, tau):
+    """The share [-] of a fresh film under the contact along the times ``t`` [s], positions
+    ``x`` [m] and velocities ``v`` [m/s]: 1 while moving in the positive direction (the
+    felt leads and oils the track just ahead); moving the other way, exp(-age / ``tau``)
+    of the film the felt laid at that position (the track cut in ``n_cells`` cells of
+    ``cell`` [m] from ``x_lo`` [m]) on its last positive pass, 0 where it never passed."""
+    n = t.size
+    laid = np.full(n_cells, -1e300)
+    out = np.empty(n)
+    for k in range(n):
+        j = int((x[k] - x_lo) / cell)
+        j = min(max(j, 0), n_cells - 1)
+        if v[k] > 0.0:
+            laid[j] = t[k]
+            out[k] = 1.0
+        elif laid[j] > -1e299:
+            out[k] = math.exp(-(t[k] - laid[j]) / tau)
+        else:
+            out[k] = 0.0
+    return out
+
+
+@on_fine_grid
+def felt_lubricator_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """An oil-soaked felt lubricator is fitted at the carriage's positive end (a linear
+    guide's lubrication unit). Moving in the positive direction it leads and lays a fresh
+    film just ahead of the contact; moving back it trails, and the contact runs on the
+    film the felt laid at each position on its last positive pass, which has drained off
+    the track since with the time constant :data:`FELT_DRAIN` x the record
+    (:func:`_film_share`; none where the felt never passed). The Coulomb and Stribeck
+    levels are the base's times 1 - ``s`` :data:`FELT_DROP` x the fresh film's share (at
+    least :data:`FELT_FLOOR`), inside the bristle dynamics; the viscous term is the
+    base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s], x [m], v [m/s]) and its base law.
+    s : float
+        Amplitude factor [-]: the film's lubricity (the levels' fall on it), / its value
+        at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Lubrication units of linear guides (felt or fibre-net applicators on the carriage's
+    end caps, e.g. THK's QZ and Bosch Rexroth's front lube units); the drainage and
+    spreading of a thin oil film on a surface (Reynolds' thin-film flow; Oron, Davis and
+    Bankoff 1997, Long-scale evolution of thin liquid films, Rev. Mod. Phys. 69). The
+    candidate's twins and offset are the same everywhere and always; the open forms
+    change with the direction through twin levels, curves or a viscous slope, roll a
+    lip, load a thrust bearing, wipe a rod's film, climb a texture, compress a spring,
+    wedge a pad or a sprag, throttle an exhaust, meter a cylinder, pump through grooves,
+    buckle a cable, bulldoze chips, commutate late, tension an idler or lock a roller's
+    clutch. Here the direction decides which film the contact meets: a fresh one, or
+    one that has aged since the last pass, so the negative direction's levels depend on
+    the time and place of the last positive pass.
     """
     if s <= 0.0:
         return _base_parts(kin)[0]
-    travel = max(ENGAGE_SHARE * _span(kin), 1e-12)
-    e = _engagement(np.ascontiguousarray(kin.x, dtype=float), travel)
-    lev = 1.0 + float(s) * ROLLER_FRICTION * e
+    t = np.asarray(kin.t, float)
+    x = np.ascontiguousarray(kin.x, dtype=float)
+    x_lo = float(np.min(x))
+    cell = max(float(np.ptp(x)), 1e-12) / FELT_CELLS
+    tau = FELT_DRAIN * max(float(t[-1] - t[0]), 1e-12)
+    share = _film_share(t, x, np.ascontiguousarray(kin.v, dtype=float), x_lo, cell,
+                        FELT_CELLS + 1, tau)
+    lev = np.clip(1.0 - float(s) * FELT_DROP * share, FELT_FLOOR, None)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- stribeck_shape --------------------------------------------------------------------------
-#: ``churning_drag``'s drag at the knee at strength 1, x the friction level [-]; the knee's
-#: speed (nu n = 2000 in Palmgren's rule), x v99 [-]
-CHURN_DRAG, CHURN_KNEE = 0.15, 0.1
+#: ``core_loss_drag``'s excess-loss drag at the top speed, x the Coulomb level, at strength
+#: 1 [-]; the hysteresis-loss drag, x the excess loss's at the top speed [-]
+EXCESS_DRAG, HYSTERESIS_SHARE = 0.4, 0.25
 
 
-def _churning(u, knee):
-    """Palmgren's churning law [-] at the relative speeds ``u`` [-] (>= 0): 1 below the knee
-    ``knee`` [-] and (u / knee)^(2/3) above it, joined smoothly, (1 + (u / knee)^3)^(2/9)."""
-    return (1.0 + (np.asarray(u, float) / knee) ** 3) ** (2.0 / 9.0)
+def _core_loss(u, hysteresis):
+    """The iron core's loss drag [-] (over the excess loss's at ``u`` = 1) at the relative
+    speeds ``u`` = |v| / v99 [-]: ``hysteresis`` (the hysteresis loss ~ f: a constant
+    drag) plus sqrt(u) (the excess loss ~ f^1.5: a drag ~ f^0.5); the classical eddy loss
+    (~ f^2: a drag ~ v) is a viscous term, the base's."""
+    return hysteresis + np.sqrt(np.abs(np.asarray(u, float)))
 
 
 @on_fine_grid
-def churning_drag_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage's recirculating rolling elements run in grease or oil, which they
-    churn: Palmgren's load-independent friction torque of rolling bearings, constant
-    below a speed and growing as (nu n)^(2/3) above it (:func:`_churning`, the knee at
-    :data:`CHURN_KNEE` x v99). That drag, ``s`` :data:`CHURN_DRAG` x the friction level x
-    the law, adds to the Stribeck curve inside the bristle dynamics: a rise of the
-    steady-state curve that bends the other way than a viscous term (sub-linear) and
-    levels off at low speeds.
+def core_loss_drag_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The drive's iron core (a linear motor's back iron, a rotary motor's stator) is
+    magnetised at a frequency proportional to the speed; its losses per unit of travel
+    are a drag on the axis (:func:`_core_loss`): the hysteresis loss, constant per cycle,
+    a constant drag; the excess (domain-wall) loss, ~ f^1.5, a drag ~ sqrt(|v|). It acts
+    as a curve beside the friction's (carried through the bristle at rest): the Stribeck
+    curve is the base's plus ``s`` :data:`EXCESS_DRAG` Fc (:data:`HYSTERESIS_SHARE` +
+    sqrt(|v| / v99)); the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law (a Stribeck curve).
+        The motion on the fine grid (v [m/s]) and its base law (with a Stribeck curve).
     s : float
-        Amplitude factor [-]: the lubricant's quantity and viscosity (Palmgren's f0), /
-        its value at strength 1.
+        Amplitude factor [-]: the core's losses (its induction squared), / their value at
+        strength 1.
 
     Returns
     -------
@@ -360,74 +376,61 @@ def churning_drag_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The load-independent friction torque of rolling bearings, M0 = 1e-7 f0 (nu n)^(2/3)
-    dm^3 for nu n >= 2000, 160e-7 f0 dm^3 below (Palmgren 1959, Ball and Roller Bearing
-    Engineering; Harris and Kotzalas 2007, Rolling Bearing Analysis, ch. 9); the same
-    law applied to the recirculating balls of linear guides (their makers' catalogues
-    on the seal and lubricant drag). The candidate bends the base's drop (an exponent, the
-    Lorentzian, a log-speed map); the open forms add tails, drops, a spike, a lift-off,
-    a second drop, logarithmic weakening, Eyring strengthening, a rise at the top speed,
-    a hump, a notch, a dither, a melt, a granular rise, re-adsorption, thermal thinning,
-    a turbulent film and a thixotropic drag. Here the added drag is a two-thirds power of
-    the speed above a knee and flat below it.
+    The separation of iron losses into hysteresis, classical eddy-current and excess
+    losses (Bertotti 1988, General properties of power losses in soft ferromagnetic
+    materials, IEEE Trans. Magn. 24; Steinmetz 1892) and the drag they put on motors
+    (Gieras and Piech 2000, Linear Synchronous Motors). The open forms take other tails,
+    lift-offs, peaks, roughness, rate-and-state, Eyring films, starvation, rubber
+    hysteresis, resonances, dither, melt films, granular flow, readsorption, thermal,
+    turbulent, thixotropic films or churning, each a property of the contact or its
+    lubricant. Here the curve's new part comes from the drive's magnetics: a drag with
+    a step at rest and a square-root rise, however the contact is lubricated.
     """
-    if kin.base.name == "mre_lugre":
-        raise ValueError("stribeck_shape (churning_drag): the mre_lugre base has no "
+    law = kin.base
+    if not has_stribeck_curve(kin):
+        raise ValueError("stribeck_shape (core_loss_drag): the mre_lugre base has no "
                          "Stribeck curve")
     if s <= 0.0:
         return _base_parts(kin)[0]
-    p = kin.base.params
-    t = np.asarray(kin.t, float)
-    v = np.asarray(kin.v, float)
+    drag = float(s) * EXCESS_DRAG * float(law.params.Fc)
     v99 = max(kin.scales["v99"], 1e-12)
-    c = float(s) * CHURN_DRAG * _level(kin)
-    vm = 0.5 * (v[1:] + v[:-1])
-    g = kin.base.g(v) + c * _churning(np.abs(v) / v99, CHURN_KNEE)
-    g_mid = kin.base.g(vm) + c * _churning(np.abs(vm) / v99, CHURN_KNEE)
-    return _lugre_run(t, v, g, g_mid, float(p.sigma0), float(p.sigma1),
-                      float(p.sigma2) * v)
+    return lugre_with_curve(kin, lambda vv: law.g(vv) + drag * _core_loss(vv / v99,
+                                                                          HYSTERESIS_SHARE))
 
 
 # -- position --------------------------------------------------------------------------------
-#: ``cam_plunger``'s lobe: its dwell's half-length and its ramps' length, x the stroke the
-#: record visits [-]; the plunger's friction added on the dwell at strength 1, x the
-#: friction level [-]; the ramps' force at their steepest at strength 1, x the friction
-#: level [-]; the spring's preload, x its extra force on the dwell [-]
-LOBE_HALF, LOBE_RAMP, CAM_FRICTION, CAM_FORCE, CAM_PRELOAD = 0.12, 0.06, 0.6, 0.6, 1.0
+#: ``heated_zone``'s fin length of the rail's temperature, x the stroke [-]; the fall of the
+#: log viscosity at the heat source at strength 1 (Reynolds' beta x the temperature rise)
+#: [-]; the rise of the boundary levels as the film's viscosity falls to nothing [-]; the
+#: film's drag at the top speed, x the friction level [-]
+ZONE_LENGTH, ZONE_HEAT, ZONE_MIXED, ZONE_DRAG = 0.2, 0.8, 1.5, 1.5
 
 
-def _lobe(x, centre, half, ramp):
-    """The cam's rise [-] (0 off the lobe, 1 on its dwell) at the positions ``x`` [m], and
-    its slope [1/m]: a dwell of half-length ``half`` [m] around ``centre`` [m] between two
-    ramps of length scale ``ramp`` [m] (tanh flanks)."""
-    x = np.asarray(x, float)
-    up = np.tanh((x - (centre - half)) / ramp)
-    down = np.tanh((x - (centre + half)) / ramp)
-    h = 0.5 * (up - down)
-    dh = 0.5 * ((1.0 - up * up) - (1.0 - down * down)) / ramp
-    return h, dh
+def _fin_profile(x, centre, length):
+    """The rail's temperature rise [-] (1 at the heat source at ``centre`` [m]) along the
+    positions ``x`` [m]: a long cooled fin's exp(-|x - centre| / ``length``)."""
+    return np.exp(-np.abs(np.asarray(x, float) - centre) / length)
 
 
 @on_fine_grid
-def cam_plunger_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A spring plunger (a ball or roller plunger, an indexing or limit-switch follower) on
-    the carriage runs over a cam bar fixed on the frame where fit and held-out parts both
-    pass (:func:`.truths._bump_centre`): a ramp up, a dwell :data:`LOBE_HALF` x the stroke
-    either side, a ramp down (:func:`_lobe`). Over the lobe the plunger's spring is
-    compressed: its normal force, and its sliding friction, rise (the levels are the
-    base's times 1 + ``s`` :data:`CAM_FRICTION` h, inside the bristle dynamics, the
-    viscous term the base's); on the ramps the cam's slope turns the spring's force into a
-    force along the axis, ``s`` :data:`CAM_FORCE` x the friction level x (preload + h) x
-    the ramp's slope (against the motion onto the lobe, with it off the lobe, whatever
-    the direction).
+def heated_zone_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A heat source beside the rail (a motor, a spindle housing, a hydraulic unit) sits
+    where fit and held-out parts both pass; the rail conducts its heat and loses it to the
+    air, so its temperature rise falls off along it as a cooled fin's
+    (:func:`_fin_profile`, length :data:`ZONE_LENGTH` x the stroke). The oil on the rail
+    thins as exp(-``s`` :data:`ZONE_HEAT` theta(x)) of the temperature rise theta
+    (Reynolds' law): its film's drag, ZONE_DRAG F_level v / v99 at the cold viscosity,
+    falls with it, and the thinner film lets the asperities carry more: the Coulomb and
+    Stribeck levels are the base's times 1 + :data:`ZONE_MIXED` (1 - eta / eta0), inside
+    the bristle dynamics. At ``s`` = 0 the base.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m]) and its base law.
+        The motion on the fine grid (x [m], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the plunger spring's rate times the lobe's height, / its
-        value at strength 1.
+        Amplitude factor [-]: the source's temperature rise at the rail, / its value at
+        strength 1.
 
     Returns
     -------
@@ -436,70 +439,79 @@ def cam_plunger_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Cam-follower forces and the pressure angle (Norton 2009, Cam Design and Manufacturing
-    Handbook); spring and indexing plungers (their makers' catalogues). The candidate scales the friction along the stroke and adds
-    a periodic and a smooth force of x; the open forms are level maps, a periodic
-    detent force, a cushion's drag, a cover's staircase, a gas spring, bolt holes, a
-    plunger's drag in oil, a sagging beam's pull, a festoon's tension, a curve's
-    centripetal load and a chain's gliding. Here one stretch of the stroke has both: a
-    plateau of raised levels and, on its flanks, a conservative force that pushes back
-    on the rise and forward on the fall.
+    Heat conduction along a cooled fin (Incropera and DeWitt 2002, Fundamentals of Heat
+    and Mass Transfer, ch. 3); thermal errors and hot spots of machine tools (Bryan 1990,
+    International status of thermal error research, CIRP Ann. 39); the viscosity's
+    exponential fall with the temperature (Reynolds 1886). The open forms raise the
+    levels by a bump, a wave, a worn stretch, a runout, a bent rail, a transfer film, a
+    cogging force, a taper, an oil port's wake, a cushion, a cover, an air spring, bolt
+    holes, an immersed plunger, a sagging beam, a festoon, a curved track, a gliding
+    chain or a cam. Here the stroke's property is a temperature: the viscous drag falls
+    and the boundary levels rise together, over a zone whose width the rail's conduction
+    sets, both ways.
     """
     xc = _bump_centre(kin)
     if xc is None:
-        raise ValueError(f"position (cam_plunger): the held-out part of the {kin.plant} "
+        raise ValueError(f"position (heated_zone): the held-out part of the {kin.plant} "
                          f"record never revisits the positions of its fit part")
-    F, _ = _base_parts(kin)
+    F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    span = _span(kin)
-    ramp = LOBE_RAMP * span
-    h, dh = _lobe(kin.x, xc, LOBE_HALF * span, ramp)
-    lev = 1.0 + float(s) * CAM_FRICTION * h
-    Fl = _level(kin)
-    # the cam's slope (ramp x dh / dx, at most 1/2) turns the spring's force along the axis
-    along = float(s) * CAM_FORCE * Fl * (CAM_PRELOAD + h) * ramp * dh
-    return level_inside(kin, lev, np.ones_like(lev)) + along
+    theta = _fin_profile(kin.x, xc, ZONE_LENGTH * _span(kin))
+    thin = np.exp(-float(s) * ZONE_HEAT * theta)         # eta / eta0
+    lev = 1.0 + ZONE_MIXED * (1.0 - thin)
+    c = ZONE_DRAG * _level(kin) / max(kin.scales["v99"], 1e-12)
+    return level_inside(kin, lev, np.ones_like(lev)) + c * np.asarray(kin.v, float) * (thin
+                                                                                     - 1.0)
 
 
 # -- inertia ---------------------------------------------------------------------------------
-#: ``chordal_action``'s carriage mass, its inertial force at a99 x the friction level, at
-#: strength 1 [-]; the sprocket's teeth [-]; the chain's pitch, x the stroke the record
-#: visits [-]
-CHAIN_MASS, SPROCKET_TEETH, CHAIN_PITCH = 1.0, 8, 0.2
+#: ``screw_stiffness``'s carriage mass at strength 1, x the friction level / a99 [-]; the
+#: axial mode's angular frequency with the nut at the stroke's far end, x 1 / the motion's
+#: time scale [-]; the screw's length from its fixed bearing to the stroke's near end, x
+#: the stroke [-]; the mode's damping ratio [-]
+SCREW_MASS, SCREW_FREQUENCY, SCREW_LEAD_IN, SCREW_DAMPING = 1.0, 4.0, 0.3, 0.08
 
 
-def _chordal(x, pitch, teeth):
-    """The chain's speed ratio kappa [-] (its mean 1) and its derivative along the
-    sprocket's travel d kappa / dx [1/m] at the sprocket positions ``x`` [m]: the chain
-    leaves a polygon of ``teeth`` sides, kappa ~ cos theta, theta running from -pi /
-    ``teeth`` to pi / ``teeth`` over each ``pitch`` [m] and jumping back as the next tooth
-    engages."""
-    x = np.asarray(x, float)
-    half = math.pi / teeth
-    frac = np.mod(x / pitch, 1.0)
-    theta = half * (2.0 * frac - 1.0)
-    mean_cos = math.sin(half) / half
-    kappa = np.cos(theta) / mean_cos
-    dkappa = -np.sin(theta) / mean_cos * (2.0 * half / pitch)
-    return kappa, dkappa
+@njit(cache=True)
+def _screw_mode(t, a, omega, zeta):
+    """The carriage's lag e [m] behind the drive along the times ``t`` [s] (uniform): e'' +
+    2 ``zeta`` w e' + w^2 e = ``a`` (the drive's acceleration [m/s^2]) with the angular
+    frequencies ``omega`` [1/s] at each instant (the screw's stiffness at the nut's
+    position); semi-implicit Euler from rest. Returns (e, e'') [m, m/s^2]."""
+    n = t.size
+    e = np.empty(n)
+    edd = np.empty(n)
+    y = 0.0
+    yd = 0.0
+    for k in range(n):
+        w = omega[k]
+        acc = a[k] - 2.0 * zeta * w * yd - w * w * y
+        e[k] = y
+        edd[k] = acc
+        if k + 1 < n:
+            h = t[k + 1] - t[k]
+            yd = yd + h * acc
+            y = y + h * yd
+    return e, edd
 
 
 @on_fine_grid
-def chordal_action_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage is pulled by a roller chain from a sprocket of
-    :data:`SPROCKET_TEETH` teeth whose shaft carries the encoder (the record's motion is
-    the sprocket's, scaled by its mean radius). The chain leaves the sprocket as from a
-    polygon, so its speed is the sprocket's times kappa(x) ~ cos theta, pulsing once per
-    pitch (:data:`CHAIN_PITCH` x the stroke, :func:`_chordal`): the carriage's acceleration
-    is a kappa + v^2 d kappa / dx, not the measured a. The inverse dynamics subtracts
-    m a; the record keeps m (a (kappa - 1) + v^2 d kappa / dx), m a99 = ``s``
-    :data:`CHAIN_MASS` x the friction level.
+def screw_stiffness_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage is driven by a ball screw fixed at one end (the stroke's lower end)
+    and free at the other; its axial stiffness, EA / the screw's length between the fixed
+    bearing and the nut, falls along the stroke, so the carriage on that spring is a mode
+    whose angular frequency is :data:`SCREW_FREQUENCY` / the motion's time scale with the
+    nut at the far end, higher nearer the bearing (~ 1 / sqrt(length), the length from
+    :data:`SCREW_LEAD_IN` x the stroke), damping ratio :data:`SCREW_DAMPING`
+    (:func:`_screw_mode`). The encoder is on the motor: the carriage's acceleration is
+    a - e'', and the inverse dynamics misses m e'', m a99 = ``s`` :data:`SCREW_MASS` x the
+    friction level: the measured force is the base's minus m e''.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s], a [m/s^2]) and its base law.
+        The motion on the fine grid (t [s], x [m], a [m/s^2]) and its base law.
     s : float
         Amplitude factor [-]: the carriage's mass, / its value at strength 1.
 
@@ -510,58 +522,70 @@ def chordal_action_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The polygonal (chordal) action of roller chain drives and its speed fluctuation
-    1 - cos(pi / z) (Binder 1956, Mechanics of the Roller Chain Drive; ISO 10823:2004,
-    Guidance on the selection of roller chain drives). The candidate's mass is constant, varies in time, along the stroke or with
-    the squared speed, or holds a coupled part that slips; the open forms filter, flex
-    behind the sensor, gear, lose, add fluid mass, dispense, slide a payload, rattle a
-    part, freewheel, carry a payload between zones, couple through eddies, flyweights or
-    a fluid, pick up a stage, stand on a recoiling frame or saturate the motor. Here the
-    missed force is the carriage's mass times an acceleration the encoder never sees: a
-    sawtooth of the position in v^2 plus a ripple of a.
+    The axial stiffness of ball-screw feed drives and its dependence on the nut's position
+    (Altintas 2012, Manufacturing Automation, ch. 6; Okwudire and Altintas 2009, Hybrid
+    modeling of ball screw drives with coupled axial, torsional, and lateral dynamics,
+    J. Mech. Des. 131; Varanasi and Nayfeh 2004). The candidate misses a constant mass;
+    the open forms filter it, reflect it through gearing, a chain's polygon or a
+    pinion, hang it on a spring, a cable, a fluid, a clutch, a coupling or a flyweight,
+    pick it up, drop it, empty it, rattle it, recoil the frame or saturate the motor.
+    Here the missed part is the carriage's own motion on the drive's compliance, whose
+    mode's frequency changes with where the carriage is.
     """
-    F, _ = _base_parts(kin)
+    F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    m = float(s) * CHAIN_MASS * _level(kin) / max(kin.scales["a99"], 1e-12)
-    kappa, dkappa = _chordal(kin.x, CHAIN_PITCH * _span(kin), SPROCKET_TEETH)
-    v = np.asarray(kin.v, float)
-    return F + m * (np.asarray(kin.a, float) * (kappa - 1.0) + v * v * dkappa)
+    T = max(_motion_time(kin), 1e-12)
+    span = _span(kin)
+    x = np.asarray(kin.x, float)
+    length = SCREW_LEAD_IN * span + np.clip(x - float(np.min(x)), 0.0, None)
+    far = SCREW_LEAD_IN * span + float(np.ptp(x))
+    omega = (SCREW_FREQUENCY / T) * np.sqrt(far / length)
+    _, edd = _screw_mode(np.asarray(kin.t, float), np.ascontiguousarray(kin.a, dtype=float),
+                         np.ascontiguousarray(omega), SCREW_DAMPING)
+    m = float(s) * SCREW_MASS * _level(kin) / max(kin.scales["a99"], 1e-12)
+    return F - m * edd
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: ``mains_notch``'s notch frequency, x the data's sample rate [-]; the notch's width (1 /
-#: its quality factor Q) at strength 1 [-]
-NOTCH_SHARE, NOTCH_WIDTH = 0.05, 1.0
+#: ``alpha_beta_tracker``'s time constant 1 / omega of its loop at strength 1, in data
+#: samples [-]; its damping ratio (the alpha-beta gains of Kalata's tracking index near the
+#: critically damped pair) [-]
+TRACK_SAMPLES, TRACK_DAMPING = 3.5, 0.7
 
 
-def _notch(t, F, f0, width):
-    """``F`` [N] along the times ``t`` [s] (uniform) through the analogue notch
-    (s^2 + w0^2) / (s^2 + ``width`` w0 s + w0^2), w0 = 2 pi ``f0`` [Hz], discretised by the
-    bilinear transform (unit gain at zero frequency), from steady state at the first
-    value."""
+def _tracker(t, F, omega, zeta):
+    """``F`` [N] along the times ``t`` [s] (uniform) through the type-2 tracking loop
+    y' = w + 2 ``zeta`` ``omega`` (F - y), w' = ``omega``^2 (F - y) (the steady-state
+    alpha-beta filter in continuous time: (2 zeta omega s + omega^2) / (s^2 + 2 zeta
+    omega s + omega^2)), discretised by the bilinear transform, from steady state at the
+    first value (no rate)."""
     from scipy.signal import bilinear, lfilter, lfilter_zi
-    w0 = 2.0 * math.pi * f0
     fs = 1.0 / float(t[1] - t[0])
-    b, a = bilinear([1.0, 0.0, w0 * w0], [1.0, width * w0, w0 * w0], fs)
+    b, a = bilinear([2.0 * zeta * omega, omega * omega],
+                    [1.0, 2.0 * zeta * omega, omega * omega], fs)
     F = np.asarray(F, float)
     return lfilter(b, a, F, zi=lfilter_zi(b, a) * F[0])[0]
 
 
 @on_fine_grid
-def mains_notch_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force amplifier carries a second-order notch filter against the mains hum
-    (:func:`_notch`), tuned to :data:`NOTCH_SHARE` x the data's sample rate (the 50 Hz of a
-    1 kHz logger), its width 1 / Q = ``s`` :data:`NOTCH_WIDTH`: well below the notch the
-    force passes with a phase lag of about omega / (Q omega0) (a delay of 1 / (Q omega0)),
-    near it it is removed, above it it leads.
+def alpha_beta_tracker_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The logger smooths the force with an alpha-beta tracking filter (the steady-state
+    Kalman filter of a constant-rate model) of bandwidth omega = 1 / (``s``
+    :data:`TRACK_SAMPLES` data samples) and damping :data:`TRACK_DAMPING`
+    (:func:`_tracker`; no cap at :data:`.truths.MAX_DELAY_SAMPLES`: on a smooth force a
+    slow tracker is all but exact, so the plants whose force turns gently need a long
+    one to reach the requested size): it estimates the
+    force's level and its rate, so a force that changes at a steady rate is followed
+    without lag; a change of the rate (a reversal's turn, a plateau's start) is followed
+    late and overshot.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the notch's width (1 / Q), / its value at strength 1.
+        Amplitude factor [-]: the tracker's time constant, / its value at strength 1.
 
     Returns
     -------
@@ -570,48 +594,63 @@ def mains_notch_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Notch filters against power-line interference in strain-gauge and load-cell signal
-    conditioning (Hoffmann 1989, An Introduction to Measurements using Strain Gages;
-    Pallas-Areny and Webster 2001, Sensors and Signal Conditioning; the second-order
-    notch, Oppenheim and Schafer 1989, Discrete-Time Signal Processing). The open forms delay by one amount,
-    filter by a low-pass, linearly or by rank, hold at a fieldbus's clock, let the delay
-    drift, wander or follow the force's rate, level or slowness, the motion's speed or
-    the position, hold stale values over lost telegrams, lead through a leaking charge,
-    creep, or shift the motion. Here the filter passes the steady force and the fast
-    edges and takes out a band between them: a lag at the motion's frequencies that
-    turns into a lead above the notch.
+    The alpha-beta tracker (Sklansky 1957; Benedict and Bordner 1962, Synthesis of an
+    optimal set of radar track-while-scan smoothing equations, IRE Trans. Autom. Control
+    7; Kalata 1984, The tracking index, IEEE Trans. Aerosp. Electron. Syst. 20), used to
+    smooth noisy sensor channels in loggers and drives. The open forms delay by one
+    amount, filter by a low-pass, linearly or by rank, hold at a fieldbus's clock, let
+    the delay drift, wander or follow the force's rate, level or slowness, the motion's
+    speed or the position, hold stale values over lost telegrams, lead through a leaking
+    charge, creep, or take out the mains' band. Here a filter with a rate state: no lag
+    on ramps, a lag and an overshoot where the force's slope changes.
     """
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    f0 = NOTCH_SHARE / float(kin.sample_dt)
-    return _notch(np.asarray(kin.t, float), F, f0, float(s) * NOTCH_WIDTH)
+    tau = float(s) * TRACK_SAMPLES * float(kin.sample_dt)
+    return _tracker(np.asarray(kin.t, float), F, 1.0 / tau, TRACK_DAMPING)
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: ``tribocharging``'s charge's leakage time, x the record's length [-]; the levels' rise
-#: at the charge of steady sliding at the record's mean speed, at strength 1 [-]
-LEAK_TIME, CHARGE_RISE = 0.3, 0.4
+#: ``cage_creep``'s creep the other way, as a share of the creep in the positive direction
+#: per unit travel [-]; the net creep (over the record's) at which rollers begin to leave the
+#: loaded length, and at which the cage reaches its stop [-]; the levels' rise as the rollers
+#: leave, and their step when they skid, at strength 1 [-]; the skid's onset, as a share
+#: of the net creep [-]
+CREEP_BACK, CREEP_LEAVE, CREEP_STOP, CREEP_RISE, CREEP_SKID, CREEP_ONSET = (
+    0.6, 0.3, 0.75, 0.25, 0.35, 0.03)
+
+
+def _cage_offset(t, v, back):
+    """The cage's creep [-] (over its largest value in the record) along the times ``t``
+    [s] and velocities ``v`` [m/s]: the travel integrated with weight 1 in the positive
+    direction and -``back`` in the other (a net creep one way)."""
+    u = np.asarray(v, float)
+    rate = np.where(u > 0.0, u, back * u)
+    c = np.concatenate(([0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(t))))
+    return c / max(float(np.max(np.abs(c))), 1e-300)
 
 
 @on_fine_grid
-def tribocharging_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The sliding electrifies the insulating surfaces (a polymer liner, an anodised or
-    coated rail): charge is separated at a rate ~ the sliding speed and leaks away
-    through the surfaces' resistance with the time constant :data:`LEAK_TIME` x the
-    record (from uncharged at its start, :func:`_from_cold`). The charges attract the
-    surfaces with a pressure ~ the charge density squared (sigma^2 / (2 epsilon0)), an
-    extra normal load: the Coulomb and Stribeck levels are the base's times 1 + ``s``
-    :data:`CHARGE_RISE` (q / q_mean)^2, q_mean the charge of steady sliding at the
-    record's mean speed, inside the bristle dynamics; the viscous term is the base's.
+def cage_creep_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The contact's rollers run in a cage (a crossed-roller or caged ball slide, not
+    recirculating) that should move at half the carriage's speed but slips a little on
+    every stroke, more in the positive direction (an inclined axis, an offset load), so
+    it creeps (:func:`_cage_offset`, the net creep over the record's largest). From
+    :data:`CREEP_LEAVE` of it the cage's end passes the carriage's: rollers leave the
+    loaded length one after the other and the rest carry more (the levels rise linearly
+    by ``s`` :data:`CREEP_RISE` up to :data:`CREEP_STOP`); there the cage hits its stop,
+    is dragged and the rollers skid (a step of ``s`` :data:`CREEP_SKID`, rounded over
+    :data:`CREEP_ONSET` of the creep). Inside the bristle dynamics; the viscous term is
+    the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the surfaces' charging (their triboelectric difference over
-        their separation), / its value at strength 1.
+        Amplitude factor [-]: the friction's rise (the rollers' overload and skid), / its
+        value at strength 1.
 
     Returns
     -------
@@ -620,93 +659,97 @@ def tribocharging_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Contact and frictional electrification (Harper 1967, Contact and Frictional
-    Electrification; Lowell and Rose-Innes 1980, Contact electrification, Adv. Phys. 29)
-    and the electrostatic attraction it adds to the normal load (Johnsen and Rahbek 1923;
-    Budakian and Putterman 2000, Correlation between charge transfer and stick-slip
-    friction at a metal-insulator interface, Phys. Rev. Lett. 85). The candidate is a
-    trend, a saturating change, a step, a cycle, an accelerating part and a part that
-    builds up and resets, in time; the open forms warm up, wear in, step, cycle, rise and
-    fall with debris, drop with grease shots, relax, oxidise, wear through, swell, grow a
-    tribofilm, take in particles, expand, shear the oil or heat the magnets. Here the
-    level follows the square of a quantity that builds with the sliding and leaks in
-    time: up in busy stretches, down over dwells.
+    Cage creep (cage slippage, retainer migration) in non-recirculating linear rolling
+    guides and its remedies (rack-and-pinion anti-creep cages: IKO's and Schneeberger's
+    catalogues; Harris and Kotzalas 2007 on cage slip); skidding of unloaded rollers
+    (Harris 1966). The candidate is a trend, a saturating change, a step, a cycle, an
+    accelerating part and a part that builds up and resets, in time; the open forms warm
+    up, wear in, step, cycle, rise and fall with debris, drop with grease shots, relax,
+    oxidise, wear through, swell, grow a tribofilm, take in particles, expand, shear the
+    oil, heat the magnets or charge the surfaces. Here the drift follows the net travel
+    one way, not the clock or the total travel: a ramp once the creep passes a margin,
+    then a step at the stop.
     """
     if s <= 0.0:
         return _base_parts(kin)[0]
-    t = np.asarray(kin.t, float)
-    u = np.abs(np.asarray(kin.v, float))
-    u = u / max(float(np.mean(u)), 1e-300)
-    q = _from_cold(t, u, LEAK_TIME * max(float(t[-1] - t[0]), 1e-12))
-    lev = 1.0 + float(s) * CHARGE_RISE * q * q
+    c = _cage_offset(np.asarray(kin.t, float), kin.v, CREEP_BACK)
+    leave = np.clip((c - CREEP_LEAVE) / (CREEP_STOP - CREEP_LEAVE), 0.0, 1.0)
+    skid = 0.5 * (1.0 + np.tanh((c - CREEP_STOP) / CREEP_ONSET))
+    lev = 1.0 + float(s) * (CREEP_RISE * leave + CREEP_SKID * skid)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: ``reversing_clutch``'s engagement time constant at strength 1, x the motion's time scale
-#: [-]; the engaged clutch's capacity, x the largest force of the base [-]
-CLUTCH_TIME, CLUTCH_CAPACITY = 1.0, 3.0
+#: ``mesh_stiffness``'s play at strength 1, as a share of the stroke [-]; the single-tooth
+#: mesh's deflection at the Coulomb level at strength 1, as a share of the stroke [-]; the
+#: double-tooth mesh's stiffness over the single's [-]; the contact ratio [-]; the tooth
+#: pitch, as a share of the stroke [-]
+MESH_PLAY, MESH_COMPLIANCE, MESH_DOUBLE, MESH_RATIO, MESH_PITCH = 0.007, 0.003, 1.8, 1.6, 0.07
+
+
+def _mesh_factor(x, pitch, ratio, double):
+    """The mesh's stiffness [-] over the single-tooth one along the drive positions ``x``
+    [m]: ``double`` over the share ``ratio`` - 1 of each ``pitch`` [m] where two tooth
+    pairs mesh, 1 over the rest, the changes rounded over 2 % of the pitch."""
+    ph = np.mod(np.asarray(x, float) / pitch, 1.0)
+    w = 0.02
+    on = 0.5 * (np.tanh(ph / w) - np.tanh((ph - (ratio - 1.0)) / w)) \
+        + 0.5 * (1.0 + np.tanh((ph - 1.0) / w))
+    return 1.0 + (double - 1.0) * np.clip(on, 0.0, 1.0)
 
 
 @njit(cache=True)
-def _reversing_clutch(h, xd, tau, cap_max, kh, ch, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
+def _meshed_contact(h, xd, kfac, half, k1, c1, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
     """LuGre friction [N] of a contact of mass ``m`` [kg] driven by the drive positions
-    ``xd`` [m] (step ``h`` [s]) through a stiff coupling ``kh`` [N/m], ``ch`` [N s/m] and a
-    clutch: after each reversal of the drive its capacity builds up as ``cap_max`` (1 -
-    exp(-t / ``tau``)) [N]; while the coupling's spring force exceeds it the clutch slips
-    (the spring's anchor follows, its force the capacity), otherwise it holds. Semi-implicit
-    Euler of the mass (:func:`.truths._light_contact_step`). Starts at rest, engaged."""
+    ``xd`` [m] (step ``h`` [s]) across a play of half-width ``half`` [m], the flank a
+    mesh of stiffness ``k1`` ``kfac`` [N/m] (``kfac`` [-] at each drive position) and
+    damping ``c1`` [N s/m], compressive only. Semi-implicit Euler of the mass
+    (:func:`.truths._light_contact_step`). Starts at rest, centred in the play."""
     n = xd.size
     F = np.empty(n)
     v = 0.0
     z = 0.0
-    xc = xd[0]
-    off = 0.0
-    d_last = 0.0
-    since = 1e300
+    x = xd[0]
     for j in range(n):
         vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
-        if vd != 0.0:
-            d = 1.0 if vd > 0.0 else -1.0
-            if d_last != 0.0 and d != d_last:
-                since = 0.0
-            d_last = d
-        cap = cap_max * (1.0 - math.exp(-since / tau))
-        fs_ = kh * (xd[j] - xc - off)
-        if fs_ >= cap:
-            off = xd[j] - xc - cap / kh
-            fc = cap
-        elif fs_ <= -cap:
-            off = xd[j] - xc + cap / kh
-            fc = -cap
-        else:
-            fc = fs_ + ch * (vd - v)
+        e = xd[j] - x
+        ed = vd - v
+        k = k1 * kfac[j]
+        fc = 0.0
+        if e > half:
+            f2 = k * (e - half) + c1 * ed
+            if f2 > 0.0:
+                fc = f2
+        elif e < -half:
+            f2 = k * (e + half) + c1 * ed
+            if f2 < 0.0:
+                fc = f2
         F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha, shape)
-        xc = xc + h * v
-        since += h
+        x = x + h * v
     return F
 
 
 @on_fine_grid
-def reversing_clutch_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact coupled through the electromagnetic clutches of a reversing drive
-    (one clutch per direction, :func:`_reversing_clutch`): at each reversal of the drive
-    the released clutch lets go and the other's torque builds up with its coil's current,
-    capacity :data:`CLUTCH_CAPACITY` x the base's largest force x (1 - exp(-t / tau)),
-    tau = ``s``^3 :data:`CLUTCH_TIME` x the motion's time scale; until it transmits the contact's
-    friction the clutch slips and the contact stands: a lost motion set by a time, so
-    longer the faster the drive leaves the reversal. Engaged, the coupling is the stiff
-    one of the other forms (:func:`.truths._contact_constants`). The contact is light,
-    with the base's LuGre friction; the measured force is its friction. At ``s`` = 0 the
-    base itself.
+def mesh_stiffness_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact joined by a gear mesh (a rack and pinion) with play, half-width
+    ``s``^2 :data:`MESH_PLAY` / 2 x the stroke, whose flank stiffness alternates along
+    each tooth pitch (:data:`MESH_PITCH` x the stroke) between the single-tooth mesh's and
+    :data:`MESH_DOUBLE` times it where two pairs mesh (the share :data:`MESH_RATIO` - 1 of
+    the pitch; :func:`_mesh_factor`); the single-tooth mesh deflects by ``s``^2
+    :data:`MESH_COMPLIANCE` x the stroke at the Coulomb level (:func:`_meshed_contact`).
+    After each reversal the play is crossed and the force built through the mesh's
+    compliance, which depends on where in the pitch the flank lands; while sliding, each
+    change of the mesh's stiffness moves the contact against the held force and kicks
+    it. The contact is light (:func:`.truths._contact_constants`), with the base's LuGre
+    friction; the measured force is its friction. At ``s`` = 0 the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], x [m]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the cube root of the clutch's engagement time, / its value
-        at strength 1 (the lost motion's share of the record grows slowly with it).
+        Amplitude factor [-]: the square root of the play and the mesh's compliance, /
+        their values at strength 1 (as the open plays').
 
     Returns
     -------
@@ -715,99 +758,106 @@ def reversing_clutch_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Electromagnetic clutches' torque build-up after switching (the coil's L / R and the
-    armature's pull-in; Orthwein 1986, Clutches and Brakes; the engagement times of
-    makers' catalogues, e.g. Warner Electric's); reversing clutch drives of presses and
-    machine tools (Schuler 1998, Metal Forming Handbook). The candidate holds
-    or frees the force across a play, with a bias, a spring or a drag across it; the open
-    forms couple rigidly, compliantly, by impacts, springs, oil in the play, an idler, a
-    bias, chains, magnets, a preload, a hardening gear, a slipping rope, a rubber spider,
-    an oil column or a cable in a sheath, with a play varying with the position or the
-    travel. Here the lost motion is not a distance: the drive runs free for a time after
-    each reversal and the contact follows once the clutch holds.
+    Gear pairs with backlash and a time-varying mesh stiffness (Kahraman and Singh 1990,
+    Non-linear dynamics of a spur gear pair, J. Sound Vib. 142; ISO 6336-1, the mesh
+    stiffness c_gamma and the transverse contact ratio; Ozguven and Houser 1988). The
+    candidate holds or frees the force across a play, with a bias, a spring or a drag
+    across it; the open forms couple rigidly, compliantly, by impacts, springs, oil in
+    the play, an idler, a bias, chains, magnets, a preload, a hardening gear, a slipping
+    rope, a rubber spider, an oil column, a cable in a sheath or a clutch, with a play
+    varying with the position or the travel. Here the coupling's stiffness changes with
+    the tooth in mesh: the force's build-up after a reversal differs from one reversal to
+    the next, and the sliding force ripples at the tooth pitch.
     """
-    p = _lugre_params(kin, "backlash (reversing_clutch)")
+    p = _lugre_params(kin, "backlash (mesh_stiffness)")
     if s <= 0.0:
         return _base_parts(kin)[0]
-    m, kh, ch = _contact_constants(kin, p)
-    tau = float(s) ** 3 * CLUTCH_TIME * max(_motion_time(kin), 1e-12)
-    # the engaged clutch holds the largest force the base's contact asks for
-    cap_max = CLUTCH_CAPACITY * float(np.max(np.abs(_base_parts(kin)[0])))
-    h, xd, n_sub = _substeps(kin, max(math.sqrt((kh + float(p.sigma0)) / m),
-                                      (float(p.sigma1) + float(p.sigma2) + ch) / m))
-    F = _reversing_clutch(h, xd, tau, cap_max, kh, ch, m,
-                          float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
-                          float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
+    m, kh, _ = _contact_constants(kin, p)
+    stroke = float(np.ptp(kin.x))
+    Fc = float(p.Fc)
+    half = 0.5 * float(s) ** 2 * MESH_PLAY * stroke
+    k1 = Fc / max(float(s) ** 2 * MESH_COMPLIANCE * stroke, 1e-300)
+    k1 = min(k1, kh)                      # never stiffer than the other forms' flanks
+    c1 = 2.0 * 0.5 * math.sqrt(k1 * m)
+    kmax = MESH_DOUBLE * k1
+    h, xd, n_sub = _substeps(kin, max(math.sqrt((kmax + float(p.sigma0)) / m),
+                                      (float(p.sigma1) + float(p.sigma2) + c1) / m))
+    kfac = _mesh_factor(xd, MESH_PITCH * _span(kin), MESH_RATIO, MESH_DOUBLE)
+    F = _meshed_contact(h, xd, kfac, half, k1, c1, m, float(p.sigma0), float(p.sigma1),
+                        float(p.sigma2), Fc, float(p.Fs), float(p.vs), float(p.alpha),
+                        SHAPES[p.shape])
     return F[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: the joint's travel to macro-slip at strength 1, beyond the base bristle's path, as a
-#: share of the stroke / 3 [-]; its share of the friction at strength 1 [-]; Segalman's
-#: exponent chi of the slip-strength density [-]; the share of the joint slipping at once
-#: at macro-slip [-]; the Iwan elements of the density's power-law part [-]
-JOINT_SLIP, JOINT_SHARE, JOINT_CHI, MACRO_SHARE, JOINT_ELEMENTS = 0.1, 0.7, -0.5, 0.3, 24
+#: the junctions' travel to slip at strength 1, beyond the base bristle's path, as a share
+#: of the stroke / 3 [-]; their share of the friction at strength 1 [-]; Tabor's growth
+#: coefficient (alpha mu^2 of (A / A0)^2 = 1 + alpha (F / W)^2, with the force over its slip
+#: value) [-]; the junctions (Iwan elements, slip strengths from 0.55 to 1 of the largest)
+#: [-]
+GROWTH_SLIP, GROWTH_SHARE, GROWTH_ALPHA, GROWTH_JUNCTIONS = 0.1, 0.7, 15.0, 8
 
 
-def _slip_strengths(chi, macro, n_el):
-    """The slip strengths [-] (over the macro-slip one) of an Iwan joint and their weights
-    [-] (summing to 1): Segalman's density R phi^chi on (0, 1] at ``n_el`` mid-quantiles,
-    weight 1 - ``macro``, and the macro-slip strength 1 with weight ``macro``."""
-    u = (np.arange(n_el) + 0.5) / n_el
-    phi = np.append(u ** (1.0 / (chi + 1.0)), 1.0)
-    w = np.append(np.full(n_el, (1.0 - macro) / n_el), macro)
-    return phi, w
+def _growth_integral(alpha):
+    """The travel to slip [-] of a junction of unit initial stiffness over unit slip force:
+    the integral of (1 + ``alpha`` r^2)^-1/4 over r in [0, 1]."""
+    r = np.linspace(0.0, 1.0, 4001)
+    y = (1.0 + alpha * r * r) ** -0.25
+    return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(r)))
 
 
 @njit(cache=True)
-def _iwan(x, phi, w, ud):
-    """The Iwan joint's force f [-] (1 at macro-slip) along the positions ``x`` [m]: element
-    j of weight ``w``[j] has stiffness ``w``[j] / ``ud`` and slips at the force ``w``[j]
-    ``phi``[j] (at the travel ``phi``[j] ``ud`` [m]); all elements slip at the travel
-    ``ud``. Starts unloaded."""
+def _growing_junctions(x, caps, kappa, alpha):
+    """The junctions' force f [-] (1 when all slip) along the positions ``x`` [m]: junction
+    j carries r_j ``caps``[j] with r_j in [-1, 1] (slipping at +-1), dr_j = ``kappa``[j]
+    (1 + ``alpha`` r_j^2)^(1/4) dx (its stiffness ~ its contact radius, which grows with
+    the force it carries). Starts unloaded."""
     n = x.size
-    m = phi.size
-    q = np.zeros(m)
+    m = caps.size
+    r = np.zeros(m)
     out = np.empty(n)
     out[0] = 0.0
-    full = max(np.sum(w * phi), 1e-300)
+    full = np.sum(caps)
     for k in range(1, n):
         dx = x[k] - x[k - 1]
         tot = 0.0
         for j in range(m):
-            cap = w[j] * phi[j]
-            qj = q[j] + w[j] * dx / ud
-            if qj > cap:
-                qj = cap
-            elif qj < -cap:
-                qj = -cap
-            q[j] = qj
-            tot += qj
+            rj = r[j]
+            # the midpoint's stiffness (the step is small against the travel to slip)
+            half = rj + 0.5 * kappa[j] * (1.0 + alpha * rj * rj) ** 0.25 * dx
+            rj = rj + kappa[j] * (1.0 + alpha * half * half) ** 0.25 * dx
+            if rj > 1.0:
+                rj = 1.0
+            elif rj < -1.0:
+                rj = -1.0
+            r[j] = rj
+            tot += rj * caps[j]
         out[k] = tot / full
     return out
 
 
 @on_fine_grid
-def power_law_joint_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The presliding junctions beside the bristle behave as a bolted lap joint:
-    Segalman's four-parameter Iwan model, a density of slip strengths R phi^chi (chi =
-    :data:`JOINT_CHI`) up to the macro-slip strength plus a share :data:`MACRO_SHARE` that
-    slips only there (:func:`_slip_strengths`, discretised in :data:`JOINT_ELEMENTS`
-    elements, :func:`_iwan`). Loaded from a reversal its stiffness softens as the travel
-    to the power chi + 1 and its loops dissipate as their amplitude to the power 3 + chi
-    (Masing's rule of the parallel elements). The travel to macro-slip is the base
-    bristle's path Fs / sigma0 plus ``s`` :data:`JOINT_SLIP` x the stroke / 3; a share w
-    = :data:`JOINT_SHARE` min(``s``, 1) of the friction is the joint's (its sliding force
-    the Stribeck level, the viscous term the base's): F = (1 - w) F_lugre + w (g(v) f +
-    sigma2 v). At ``s`` = 0 the base itself.
+def junction_growth_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The presliding junctions beside the bristle grow under the tangential force
+    (Tabor's junction growth: (A / A0)^2 = 1 + alpha (F / W)^2): each junction's contact
+    radius, and with it its tangential stiffness (Mindlin's 8 G* a), rises as (1 +
+    :data:`GROWTH_ALPHA` r^2)^(1/4) of its force over its slip force r
+    (:func:`_growing_junctions`; :data:`GROWTH_JUNCTIONS` Iwan elements of slip strengths
+    0.55 to 1, travel to slip in proportion). Loaded from rest a junction stiffens up to
+    its slip; unloaded from slip it is stiff at first, soft through zero force and stiff
+    again towards the other slip: the loops are S-shaped. The largest travel to slip is
+    the base bristle's path Fs / sigma0 plus ``s`` :data:`GROWTH_SLIP` x the stroke / 3;
+    a share w = :data:`GROWTH_SHARE` min(``s``, 1) of the friction is the junctions'
+    (their sliding force the Stribeck level, the viscous term the base's): F = (1 - w)
+    F_lugre + w (g(v) f + sigma2 v). At ``s`` = 0 the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the joint's share (up to ``s`` = 1) and its travel to
-        macro-slip (as the open presliding forms' path).
+        Amplitude factor [-]: the junctions' share (up to ``s`` = 1) and their travel to
+        slip (as the open presliding forms' path).
 
     Returns
     -------
@@ -816,24 +866,27 @@ def power_law_joint_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Segalman 2005, A four-parameter Iwan model for lap-type joints, J. Appl. Mech. 72;
-    Iwan 1966, A distributed-element model for hysteresis, J. Appl. Mech. 33; the power
-    law of the dissipation in bolted joints (Smallwood, Gregory and Coleman 2000, Damping
-    investigations of a simplified frictional shear joint; Ungar 1973). Maxwell-slip (the
-    candidate) and the open forms use equal or geometric strengths, path laws, an
-    elastic range, rate-dependent creep, Mindlin's 3/2 law, multistable tips, bonds, a
+    Junction growth under combined normal and tangential loading (McFarlane and Tabor
+    1950, Relation between friction and adhesion, Proc. R. Soc. A 202; Tabor 1959,
+    Junction growth in metallic friction, Proc. R. Soc. A 251; Johnson 1985, Contact
+    Mechanics, ch. 7, for the stiffness ~ the contact radius). Maxwell-slip (the
+    candidate) and the open forms use equal, geometric or power-law strengths, path laws,
+    an elastic range, rate-dependent creep, Mindlin's 3/2 law, multistable tips, bonds, a
     fabric, a back-stress, a climb out of a nest, capillary bridges, a hardening yield,
-    peeling junctions or load-dependent microslip; here the strengths follow a singular
-    power-law density with a lump at macro-slip: the loop's tip is softer at once, its
-    dissipation grows as the amplitude to the 2.5, and it ends in a kink.
+    peeling junctions or load-dependent microslip, each softening as it loads. Here each
+    junction stiffens as it loads: the virgin curve is convex up to the slips and the
+    loops are pinched, the reverse of Masing's.
     """
-    p = _lugre_params(kin, "gms (power_law_joint)")
+    p = _lugre_params(kin, "gms (junction_growth)")
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    e0, extra = _presliding_path(kin, s, JOINT_SLIP)
-    w = JOINT_SHARE * min(float(s), 1.0)
+    e0, extra = _presliding_path(kin, s, GROWTH_SLIP)
+    w = GROWTH_SHARE * min(float(s), 1.0)
     v = np.asarray(kin.v, float)
-    phi, wt = _slip_strengths(JOINT_CHI, MACRO_SHARE, JOINT_ELEMENTS)
-    f = _iwan(np.ascontiguousarray(kin.x, dtype=float), phi, wt, e0 + extra)
+    caps = np.linspace(0.55, 1.0, GROWTH_JUNCTIONS)
+    # travel to slip in proportion to the strength (equal initial stiffness per strength)
+    kappa = _growth_integral(GROWTH_ALPHA) / ((e0 + extra) * caps)
+    f = _growing_junctions(np.ascontiguousarray(kin.x, dtype=float), caps, kappa,
+                           GROWTH_ALPHA)
     return (1.0 - w) * F + w * (kin.base.g(v) * f + float(p.sigma2) * v)

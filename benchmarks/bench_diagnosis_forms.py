@@ -24,7 +24,7 @@ grid (:mod:`diagnosis.benchmark.seen`, :mod:`diagnosis.benchmark.seen2`,
 :mod:`diagnosis.benchmark.seen13`: session 18's, run once on 18bfa60, 17.0 % top-1;
 :mod:`diagnosis.benchmark.seen14`: session 19's, run once on 0487306, 36.4 % top-1;
 :mod:`diagnosis.benchmark.seen15`: session 20's, run once on ca024ab, 35.8 % top-1;
-:mod:`diagnosis.benchmark.seen16`: session 21's, run once on <COMMIT>, <TOP1> top-1, below);
+:mod:`diagnosis.benchmark.seen16`: session 21's, run once on 93064fe, 31.8 % top-1, below);
 the present one (one form for each of the ten effects with truths, written in session 22 by
 another hand) is sealed: not run. The open grid's latest figures include seen10 but not
 seen11, seen12, seen13, seen14, seen15 or seen16 (below).
@@ -175,8 +175,16 @@ seen10 in the grid): 261/522 (50.0 %; 53.8 % of the detectable, 36 delays below 
 wrong names 38 (gms -> acceleration 17); on session 15's forms 230/442 against its 217/442.
 
 Sealed family of session 21's end (``--sealed`` then, written by another hand without running
-the diagnosis on it, run once on the code of <COMMIT>): <TOP1> top-1;
-RUN FIGURES: TO BE FILLED
+the diagnosis on it, run once on the code of 93064fe): 31.8 % top-1;
+176 cases, 0 skipped, 518 s wall on 2 workers (beside a 1-process helper). Top-1 31.8 %
+(56; 32.2 % of the 174 detectable); mean |shrink error| 0.380; wrong names on 26 (14.8 %):
+acceleration -> delay 4, acceleration -> asymmetry 4, load -> asymmetry 4, drift -> load 3,
+load -> position 2, gms -> acceleration 2, and six single ones. By form:
+position/cam_plunger 15/16, asymmetry/freewheel_roller 11/20, delay/mains_notch 9/20,
+load/overhung_load 8/20, gms/power_law_joint 5/12, stribeck_shape/churning_drag 4/16,
+drift/tribocharging 3/20, acceleration/jerk_unloading 1/20, inertia/chordal_action 0/20,
+backlash/reversing_clutch 0/12. By plant: isolator 50.0 %, press 39.3 %, valve 30.0 %,
+XML-350 25.0 %, damping rig 22.5 %.
 Now :mod:`diagnosis.benchmark.seen16`, in the open grid; a seventeenth family (written in
 session 22 by another hand, never run) is the sealed one.
 

@@ -1,5 +1,5 @@
 """The sixteenth seen truth family (diagnosis.benchmark.seen16, sealed in session 21, run
-once at the end of session 22 on <COMMIT>, <TOP1> top-1, now open): each form builds a finite
+once at the end of session 22 on 93064fe, 31.8 % top-1, now open): each form builds a finite
 case of the requested size on every plant it applies to, is the base law at s = 0, grows with
 its amplitude factor and refuses the plants it does not apply to."""
 import dataclasses

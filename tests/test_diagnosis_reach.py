@@ -601,3 +601,53 @@ def test_creeping_load_cell_is_named_delay():
     assert rep["verdict"]["cause"] == "delay"
     assert rep["verdict"]["excess_closed"] > 0.8
     assert rep["effect_details"]["delay"]["extras"]["sensor_gain"] > 0.05
+
+
+def test_friction_heat_is_a_lag_of_the_friction_power_that_carries_on():
+    # constant power from a cold start: the step-invariant lag's closed form; the
+    # held-out part of a split record starts from the fit part's final state (as the whole
+    # record computed at once), a record after a pause from it cooled over the pause
+    from diagnosis.candidates import friction_heat
+    from diagnosis.effects import make_context
+    from friction.dataset import Dataset
+    dt, n = 1e-3, 4000
+    t = dt * np.arange(n)
+    v = 0.02 * np.sin(2 * np.pi * t / 0.8) + 0.03
+    F = 10.0 + 2.0 * np.sin(2 * np.pi * t / 0.3)
+    whole = Dataset.from_arrays(t=t, x=np.cumsum(v) * dt, v=v, F=F)
+    fit, held = whole.split(0.7)
+    ctx = make_context(fit)
+    tau = 0.5
+    h = friction_heat(whole, tau, ctx)
+    u = np.abs(F * v) / np.mean(np.abs(fit.F * fit.v))
+    e = np.exp(-dt / tau)
+    ref = np.zeros(n)
+    acc = 0.0
+    for k in range(n):
+        acc = e * acc + (1.0 - e) * u[k]
+        ref[k] = acc
+    np.testing.assert_allclose(h, ref, rtol=1e-10, atol=1e-12)
+    np.testing.assert_allclose(friction_heat(held, tau, ctx), h[fit.t.size:], rtol=1e-10)
+    later = Dataset.from_arrays(t=t[-1] + 1.0 + t, x=np.cumsum(v) * dt, v=v, F=F)
+    h_later = friction_heat(later, tau, ctx)
+    h_end = friction_heat(fit, tau, ctx)[-1]
+    assert h_later[0] == pytest.approx(e * h_end * np.exp(-(later.t[0] - fit.t[-1] - dt) / tau)
+                                       + (1.0 - e) * u[0], rel=1e-9)
+    for bad in (0.0, -1.0, float("nan")):
+        with pytest.raises(ValueError, match="tau_heat"):
+            friction_heat(whole, bad, ctx)
+
+
+def test_drift_heated_by_the_friction_power_is_named_drift():
+    # levels thinning as the contact warms with its friction power (the open family's
+    # thermal truth, time constant a third of the record) on the isolator: the time-only
+    # forms closed -0.10 of the excess; the heating part forecasts it
+    from diagnosis import diagnose
+    from diagnosis.benchmark.cases import make_plant_case
+    from diagnosis.benchmark.runner import MEASURED
+    case = make_plant_case("mre_isolator", "drift", 1.0, 0.01, seed=163764, quick=True,
+                           form="thermal", measured=MEASURED[2])
+    rep = diagnose(case.data, case.base, seed=0, candidates=["drift", "load"])
+    assert rep["verdict"]["cause"] == "drift"
+    assert rep["verdict"]["excess_closed"] > 0.8
+    assert rep["effect_details"]["drift"]["extras"]["k_heat"] < 0.0

@@ -84,10 +84,11 @@ def make_context(fit) -> Context:
 def friction_heat(data, tau, ctx) -> np.ndarray:
     """The heating of the contact by its friction power [-]: the first-order lag (time
     constant ``tau`` [s], step-invariant at the sample interval) of the measured |F v| over
-    its mean on the fit record (``ctx.power``). From 0 (cold) at the fit record's start; a
-    record that starts later (the held-out part of a split record, a record made after)
-    starts from the fit record's final state, cooled over any pause between them; one that
-    starts earlier (its own clock) from that final state.
+    its mean on the fit record (``ctx.power``). From 0 (cold) for a record that starts
+    where the fit record starts (the fit record itself, or one on a clock reset likewise);
+    a record that starts later (the held-out part of a split record, a record made after)
+    from the fit record's final state, cooled over any pause between them; one that starts
+    earlier (its own clock) from that final state.
 
     Parameters
     ----------

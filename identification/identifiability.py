@@ -64,6 +64,11 @@ NULL_LOADING = 0.05
 PROFILE_BUDGET = 20000
 #: a positive parameter whose interval spans more than this factor is not identified
 SPAN_UNIDENTIFIED = 1e3
+#: a parameter on a search-box edge whose interval is open toward that edge and covers
+#: at least this share of the box (search coordinates: log for positive parameters) is not
+#: identified [-]: the data bound it on one side only, and the estimate is the box's edge
+#: (sigma0 of LuGre sampled once a second: from 3.8e4 N/m to the edge, 62 % of the box)
+BOX_SHARE_UNIDENTIFIED = 0.5
 #: Gauss-Newton is trusted where the cost at its interval's ends rises by this range of
 #: multiples of what the quadratic model predicts
 TRUST = (0.5, 2.0)
@@ -230,6 +235,14 @@ def _refit_normal(fit, base, free, x0, max_nfev):
     except (ValueError, np.linalg.LinAlgError):
         return base, float(fit.cost2_of(base[None, :])[0])
     return full(res.x), float(2.0 * res.cost)
+
+
+def _box_share(space, j, x, low, high) -> float:
+    """Share of parameter ``j``'s search box [-] (in its search coordinates) that the
+    interval ``[low, high]`` covers; ``x`` the estimate (the other parameters' values)."""
+    at = np.arange(len(x)) == j
+    ends = [float(space.to_unit(np.where(at, v, x))[j]) for v in (low, high)]
+    return abs(ends[1] - ends[0])
 
 
 def _profile_side(fit, j, sgn, thresh2, step0, budget_left):
@@ -859,7 +872,10 @@ def assess_identifiability(objective, space, u, cost, *, model, data, jac=None,
         open_away = [s for s in e["open"] if s != own]
         wide = (logc[j] and own != "lower" and e["low"] > 0
                 and e["high"] / e["low"] > SPAN_UNIDENTIFIED)
-        if open_away or wide or (not np.isfinite(sd[j]) and "profile" not in e["method"]):
+        one_sided = (own in e["open"] and not at_side[j][1]
+                     and _box_share(space, j, x, e["low"], e["high"]) >= BOX_SHARE_UNIDENTIFIED)
+        if open_away or wide or one_sided or (not np.isfinite(sd[j])
+                                              and "profile" not in e["method"]):
             unident.append(n)
             why = reasons.get(n)
             if why is None:
@@ -870,6 +886,11 @@ def assess_identifiability(objective, space, u, cost, *, model, data, jac=None,
                 elif wide:
                     why = (f"the {int(round(level * 100))} % interval spans a factor "
                            f"{e['high'] / e['low']:.3g}")
+                elif one_sided:
+                    why = (f"the cost stays within the {int(round(level * 100))} % threshold "
+                           f"from {e['low'] if own == 'upper' else e['high']:.4g} to the "
+                           f"search box's {own} edge, where the estimate sits: the data "
+                           f"bound it on one side only")
                 else:
                     why = "the residual does not depend on it (flat direction of the Jacobian)"
             report["reasons"][n] = why

@@ -70,3 +70,12 @@ def test_demo_diagnosis_stage_names_the_real_machines(tmp_path):
     assert d["emps"]["verdict"]["cause"] in ("asymmetry", "unexplained")
     assert d["pneumatic_o_ring"]["verdict"]["cause"] == "load"
     assert (tmp_path / "diagnosis_emps_time_split.html").exists()
+
+
+def test_python_dash_m_frictionlab_is_the_command(tmp_path):
+    # a venv used without activating it has no ``frictionlab`` on PATH: the package runs
+    r = subprocess.run([sys.executable, "-m", "frictionlab", "identify",
+                        str(tmp_path / "missing.csv"), "--model", "lugre"],
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 2
+    assert r.stderr.startswith("frictionlab identify: error:") and "missing.csv" in r.stderr

@@ -1,7 +1,13 @@
 import os
 import pathlib
 
-import numpy as np
+# one BLAS thread per test process: the suite runs in two processes on two cores, and
+# OpenBLAS threads spinning beside the other process's slow both (set before numpy loads;
+# a value the user exports wins)
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+
+import numpy as np  # noqa: E402
 import pytest
 
 REPO = pathlib.Path(__file__).resolve().parents[1]

@@ -1,12 +1,12 @@
-"""The seventeenth sealed truth family: one more mechanism per effect, kept out of all tuning.
+"""The eighteenth sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-11-29 (session 22) by another hand, once, without running the diagnosis on it;
+Written 2026-11-30 (session 23) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 21's, was run once at the end of session 22 and is :mod:`.seen16`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen16`
+sealed before it, session 22's, was run once at the end of session 23 and is :mod:`.seen17`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen17`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen16`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen17`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`), taken from the friction literature or from real
 machines, integrated along the plant's continuous motion on the grid :data:`.kinematics.FINE`
@@ -18,76 +18,73 @@ amplitude monotonically from the base law at ``s`` = 0 (its calibration,
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``aerostatic_tilt``: the carriage floats on externally pressurised
-                   (aerostatic or hydrostatic) pads; the acceleration's pitching moment
-                   tilts them on their films' stiffness, and the film's shear drag,
-                   ~ the mean of 1 / h over the tilted pad (Petroff's drag with a
-                   linear gap), grows as atanh(d) / d of the tilt d (Powell 1970; Rowe
-                   1983): a viscous drag that rises with a^2, felt only while the
-                   carriage both moves and accelerates
-load               ``preload_relief``: a preloaded rolling guide with opposed Hertzian
-                   rows (Q ~ deflection^1.5): the load adds to the lower rows and relieves
-                   the upper ones until they lift off (the preloaded pair of Harris and
-                   Kotzalas 2007): the rows' summed load, and the levels, are nearly flat
-                   in the load about the preload and follow it one for one past the
-                   upper rows' lift-off
-asymmetry          ``felt_lubricator``: an oil-soaked felt lubricator on one end of the
-                   carriage (a linear guide's lubrication unit): leading, it lays a fresh
-                   film just ahead of the contact; trailing, the contact runs on the film
-                   it laid on the last pass the other way, which has drained off the
-                   track since (a thin-film drainage in time): the levels fall in one
-                   direction at once and in the other by the age of the film at each
-                   position
-stribeck_shape     ``core_loss_drag``: the drive's iron core losses per unit of travel
-                   (the loss separation of Bertotti 1988: hysteresis ~ f, eddy ~ f^2,
-                   excess ~ f^1.5 of the magnetic frequency f ~ v): a drag constant in
-                   the speed (hysteresis) plus one rising as sqrt(|v|) (the excess,
-                   domain-wall, loss) beside the friction's curve
-position           ``heated_zone``: a heat source (a motor, a spindle, a hydraulic unit)
-                   beside the rail where fit and held-out parts both pass warms it; the
-                   rail's temperature falls off along it as a cooled fin's
-                   (exp(-|x - x_h| / l), Incropera and DeWitt 2002), and the oil's
-                   viscosity falls exponentially with the temperature (Reynolds 1886):
-                   the film's drag falls and the boundary levels rise in a zone of the
-                   stroke
-inertia            ``screw_stiffness``: the carriage is driven by a ball screw fixed at one
-                   end, whose axial stiffness ~ 1 / the screw's length between the fixed
-                   bearing and the nut (Altintas 2012; Okwudire and Altintas 2009): the
-                   carriage on that spring follows the drive's acceleration through a
-                   lightly damped mode whose frequency falls along the stroke, and the
-                   inverse dynamics misses the carriage's mass times the difference
-delay              ``alpha_beta_tracker``: the logger smooths the force with an
-                   alpha-beta (steady-state constant-velocity Kalman) tracking filter
-                   (Benedict and Bordner 1962; Kalata 1984): a type-2 loop that follows
-                   a steadily changing force without lag but lags the force's changes
-                   of slope and overshoots them, more the lower its bandwidth
-drift              ``cage_creep``: the rollers of a caged (non-recirculating) guide are
-                   held in a cage that should move at half the carriage's speed but
-                   creeps a little each stroke, more one way (cage creep; the makers'
-                   anti-creep cages): once it reaches the carriage's end rollers leave
-                   the loaded length (the others carry more), later the cage hits its stop
-                   and the rollers skid: the levels rise along the net travel, then step
-backlash           ``mesh_stiffness``: drive and contact joined by a gear (a rack and
-                   pinion) with play whose mesh stiffness alternates between single- and
-                   double-tooth contact along each tooth pitch (contact ratio 1.6;
-                   Kahraman and Singh 1990; ISO 6336-1): after each reversal the play is
-                   crossed and the force built through a compliance that depends on
-                   where in the mesh the flank lands, and while sliding the mesh's
-                   stiffness changes kick the contact
-gms                ``junction_growth``: the presliding junctions beside the bristle grow
-                   under the tangential force (Tabor's junction growth, 1959; McFarlane
-                   and Tabor 1950): their contact radii, and their tangential stiffness
-                   (Mindlin's 8 G a), rise with the force they carry, so each loads
-                   *stiffening* up to its slip and unloads soft through zero: an S-shaped
-                   loop, not the softening (Masing) loops of every other form; at ``s``
-                   = 0 the base itself
+acceleration       ``ball_train``: the balls of a recirculating guide's return channel
+                   (or a ball nut's) are pushed as a train through the end cap's
+                   turnaround by the balls leaving the loaded zone; speeding the carriage
+                   up compresses the train, whose ball-to-ball and wall contacts slide
+                   (Ohta and Tanaka 2010; the makers' ball spacers and retainers):
+                   a drag with the speeding-up acceleration only; slowing down, the
+                   train runs on by itself and opens
+load               ``ploughing_onset``: beside the adhesive friction, the harder
+                   surface's asperities (or embedded hard particles) plough grooves in
+                   the softer one once the load passes the yield onset (Bowden and
+                   Tabor 1950; Goddard and Wilman 1962; Suh and Sin 1981): a ploughing
+                   force ~ (load - onset)^1.5 (a groove's section, ~ its width cubed)
+                   above the onset, nothing below
+asymmetry          ``running_belt``: a skid shoe of the carriage rests on a conveyor
+                   belt running at a fixed speed in the positive direction (a shuttle
+                   beside a running transfer belt): its friction follows the *relative*
+                   velocity v - u_belt: the belt pulls the carriage forward at rest and
+                   in the negative direction, and drags it only above the belt's speed
+stribeck_shape     ``bellows_breathing``: the way's accordion bellows cover is
+                   compressed and stretched by the carriage and breathes through its
+                   vents: the orifice law (Delta p ~ rho (Q / A)^2) makes a drag ~ v^2,
+                   which turns linear in v once the vents' flow chokes (the sonic
+                   limit of compressible orifice flow, Saint-Venant and Wantzel 1839)
+position           ``false_brinelling``: the carriage was parked where fit and held-out
+                   parts both pass while the machine vibrated (transport, a nearby
+                   press): its balls wore dents in the raceway at their pitch (false
+                   brinelling, Almen 1937; Tallian 1992): rolling over them, the balls
+                   drop into and climb out of the dents, most where all balls meet
+                   dents at once: a pattern at the ball pitch whose envelope falls
+                   linearly over the carriage's loaded length either side
+inertia            ``feedforward_lead``: the force is read from the drive's force
+                   command, which carries an acceleration feedforward of the *commanded*
+                   trajectory with a mass setting off the true one (Tomizuka 1987;
+                   Altintas 2012): the command leads the measured motion by the servo's
+                   tracking lag, so the missed mass multiplies the acceleration of a
+                   moment *later*
+delay              ``transducer_resonance``: the force transducer with the mass mounted
+                   on it is a lightly damped spring-mass system (the dynamic
+                   calibration of force transducers, Kumme 1996; ISO 4965): its
+                   reading follows the force through a second-order low-pass of low
+                   damping: a lag on ramps and a ringing after each fast change
+drift              ``screw_loosening``: the gib's (or the preloaded nut's) clamping
+                   screw works loose by the transverse slip each reversal puts through
+                   its joint (self-loosening, Junker 1969; DIN 65151): the preload, and
+                   the levels, fall step by step at the reversals, a share of what is
+                   left at each: a drift that follows the count of reversals, not the
+                   clock or the travel
+backlash           ``polymer_gear``: drive and contact joined by a plastic gear (POM,
+                   PA) with play: the mesh's friction power warms the teeth, which swell
+                   (the play closes) and soften (the flanks' compliance grows) with
+                   their temperature (VDI 2736; the makers' backlash allowances for
+                   plastic gears): the lost motion at the reversals shrinks over the
+                   record while the force's build-up after them grows softer
+gms                ``slip_avalanches``: the presliding junctions beside the bristle are
+                   coupled to their neighbours through the elastic body between them
+                   (the Burridge-Knopoff chain, 1967; Olami, Feder and Christensen
+                   1992; Rubinstein, Cohen and Fineberg 2007's precursors): a junction
+                   that slips loads its neighbours and may set off a slip avalanche, so
+                   the presliding curve climbs in bursts of all sizes, not element by
+                   element; at ``s`` = 0 the base itself
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``core_loss_drag`` needs
-a Stribeck curve (not the isolator's mre_lugre), ``heated_zone`` a record that revisits its
-positions (not the press), ``preload_relief`` a load that changes, ``mesh_stiffness`` and
-``junction_growth`` a classic LuGre base (valve, damping rig, XML-350); each raises a
-``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
+Where a form applies: as its effect's record (``truth_applies``); ``bellows_breathing``
+needs a Stribeck curve (not the isolator's mre_lugre), ``false_brinelling`` a record that
+revisits its positions (not the press), ``ploughing_onset`` a load that changes,
+``polymer_gear`` and ``slip_avalanches`` a classic LuGre base (valve, damping rig,
+XML-350); each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
 
@@ -101,207 +98,56 @@ from friction.shapes import SHAPES
 from .kinematics import PlantKinematics
 from .truths import (_base_parts, _bump_centre, _contact_constants, _level,
                      _light_contact_step, _lugre_params, _motion_time, _presliding_path,
-                     _span, _substeps, has_stribeck_curve, level_inside, lugre_with_curve,
+                     _smooth_max0, _span, _substeps, has_stribeck_curve, level_inside,
                      on_fine_grid)
 
-__all__ = ["FORMS", "aerostatic_tilt_truth", "preload_relief_truth", "felt_lubricator_truth",
-           "core_loss_drag_truth", "heated_zone_truth", "screw_stiffness_truth",
-           "alpha_beta_tracker_truth", "cage_creep_truth", "mesh_stiffness_truth",
-           "junction_growth_truth"]
+__all__ = ["FORMS", "ball_train_truth", "ploughing_onset_truth", "running_belt_truth",
+           "bellows_breathing_truth", "false_brinelling_truth", "feedforward_lead_truth",
+           "transducer_resonance_truth", "screw_loosening_truth", "polymer_gear_truth",
+           "slip_avalanches_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "aerostatic_tilt", "load": "preload_relief",
-         "asymmetry": "felt_lubricator", "stribeck_shape": "core_loss_drag",
-         "position": "heated_zone", "inertia": "screw_stiffness",
-         "delay": "alpha_beta_tracker", "drift": "cage_creep",
-         "backlash": "mesh_stiffness", "gms": "junction_growth"}
+FORMS = {"acceleration": "ball_train", "load": "ploughing_onset",
+         "asymmetry": "running_belt", "stribeck_shape": "bellows_breathing",
+         "position": "false_brinelling", "inertia": "feedforward_lead",
+         "delay": "transducer_resonance", "drift": "screw_loosening",
+         "backlash": "polymer_gear", "gms": "slip_avalanches"}
 
 
 # -- acceleration ----------------------------------------------------------------------------
-#: ``aerostatic_tilt``'s acceleration at which the tilted pads would touch down, x the top
-#: acceleration a99 [-]; the largest tilt reached, as a share of the film's mean gap (the
-#: pads' restrictors stiffen the film as it closes) [-]; the pads' film drag at the top
-#: speed, x the friction level, at strength 1 [-]
-TILT_TOUCH, TILT_MAX, FILM_DRAG = 1.0, 0.9, 4.5
+#: ``ball_train``'s drag at the top acceleration, x the friction level, at strength 1 [-];
+#: the speed the train's motion is rounded over, x the top speed [-]
+TRAIN_DRAG, TRAIN_ROUND = 0.5, 0.02
 
 
-def _tilted_gap_drag(a, a_touch, d_max):
-    """The shear drag of a pad tilted by the acceleration ``a`` [m/s^2] over its untilted
-    drag [-]: the mean of h0 / h over a pad whose gap varies linearly by +-d h0 along it,
-    atanh(d) / d, d = min(|a| / ``a_touch``, ``d_max``) (1 at d = 0)."""
-    d = np.minimum(np.abs(np.asarray(a, float)) / a_touch, d_max)
-    out = np.ones_like(d)
-    big = d > 1e-4
-    out[big] = np.arctanh(d[big]) / d[big]
-    out[~big] = 1.0 + d[~big] ** 2 / 3.0          # the series of atanh(d) / d
-    return out
+def _train_push(v, a, v_round):
+    """The ball train's compression [-] (over the one at ``a`` = 1) along the velocities
+    ``v`` [m/s] and accelerations ``a`` [m/s^2] and the direction of travel tanh(v /
+    ``v_round``) it is pushed in: the speeding-up acceleration max(a sgn(v), 0);
+    slowing down, nothing pushes the train (it runs on and opens). Returns
+    (compression, direction)."""
+    sgn = np.tanh(np.asarray(v, float) / v_round)
+    return np.maximum(np.asarray(a, float) * sgn, 0.0), sgn
 
 
 @on_fine_grid
-def aerostatic_tilt_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage floats on externally pressurised pads (aerostatic or hydrostatic) at
-    both ends; the acceleration's pitching moment tilts it on the films' stiffness, in
-    proportion to a (the films held by their restrictors), so each pad's gap varies
-    linearly along it by +- d of its mean, d = |a| / (:data:`TILT_TOUCH` a99) (at most
-    :data:`TILT_MAX`). The film's shear drag, eta v times the integral of 1 / h over the
-    pad, grows as atanh(d) / d (:func:`_tilted_gap_drag`): the truth adds ``s``
-    :data:`FILM_DRAG` F_level (v / v99) (atanh(d) / d - 1) to the base (the untilted
-    film's drag is in the base's viscous term). The levels are the base's.
+def ball_train_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The contact is a recirculating ball guide (or a ball nut) without spacers: the
+    balls leaving the loaded zone push the balls of the return channel as a train through
+    the end cap's curved turnaround. Speeding the carriage up, the train must be
+    accelerated too and is compressed from behind; its balls turn the same way, so their
+    contacts with each other slide at twice their surface speed, and the turnaround's
+    wall takes the compression round the bend: both drag in proportion to the
+    compression (:func:`_train_push`). Slowing down, nothing pushes: the train runs on by
+    its own momentum and opens. The truth adds ``s`` :data:`TRAIN_DRAG` F_level max(a
+    sgn(v), 0) / a99 in the direction of travel to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the films' drag (their viscosity over their gap), / its
-        value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Externally pressurised bearings and their tilt stiffness (Powell 1970, Design of
-    Aerostatic Bearings; Rowe 1983, Hydrostatic and Hybrid Bearing Design; Slocum 1992,
-    Precision Machine Design); the shear (Couette) drag of a film of varying gap (Petroff
-    1883; Hamrock, Schmid and Jacobson 2004). The candidate raises the levels with |a|,
-    lagged, tilts them with a and adds a force odd in a; the open forms lag the velocity,
-    a film or a contact state, heat the contact, skid rolling elements, move load between
-    rows or supports, press seals, pull with the thrust, squeeze or starve films, dilate,
-    lift on a wedge, shift a gib, soften an elastomer, swing a roller arm or unload by
-    the jerk's vibration. Here nothing touches: the acceleration closes one end of each
-    film and the viscous drag, not the levels, grows with a^2, and only while the
-    carriage moves.
-    """
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    sc = kin.scales
-    g = _tilted_gap_drag(kin.a, TILT_TOUCH * max(sc["a99"], 1e-12), TILT_MAX)
-    c = float(s) * FILM_DRAG * _level(kin) / max(sc["v99"], 1e-12)
-    return F + c * np.asarray(kin.v, float) * (g - 1.0)
-
-
-# -- load ------------------------------------------------------------------------------------
-#: ``preload_relief``'s rows' preload, x the record's mean load [-] (the upper rows lift off
-#: at 2^1.5 x the preload, inside the records' load ranges); the rows' share of the friction
-#: at strength 1 (the rest, seals and wipers, does not follow the load) [-]; the lowest
-#: relative level [-]
-ROW_PRELOAD, ROW_SHARE, ROW_FLOOR = 0.35, 1.0, 0.05
-
-
-def _row_sum(load_over_preload):
-    """The summed load [-] (over the preload) of two opposed Hertzian rows (Q ~ delta^1.5)
-    preloaded against each other, under the external loads ``load_over_preload`` [-]
-    (>= 0) pressing one of them: (1 + u)^1.5 - (1 - u)^1.5 = L / P solved for the
-    deflection u (over the preload's), the sum (1 + u)^1.5 + (1 - u)^1.5; past the other
-    row's lift-off (u >= 1, L / P >= 2^1.5) the loaded row carries L alone."""
-    r = np.abs(np.asarray(load_over_preload, float))
-    u = np.linspace(0.0, 1.0, 2001)
-    diff = (1.0 + u) ** 1.5 - (1.0 - u) ** 1.5         # rises monotonically to 2^1.5
-    tot = (1.0 + u) ** 1.5 + (1.0 - u) ** 1.5
-    return np.where(r < diff[-1], np.interp(r, diff, tot), r)
-
-
-@on_fine_grid
-def preload_relief_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The contact is a preloaded rolling guide with opposed rows (upper and lower ball
-    rows, preloaded against each other by :data:`ROW_PRELOAD` x the record's mean load):
-    the normal load adds to the lower rows' load and relieves the upper ones (Hertz: each
-    row's load ~ its deflection^1.5), until the upper rows lift off (:func:`_row_sum`).
-    The rows' rolling friction follows their summed load S(L), which hardly changes while
-    both rows carry and follows the load one for one once the upper ones are free. The
-    Coulomb and Stribeck levels are the base's times 1 + ``s`` :data:`ROW_SHARE`
-    (S(L) / S(mean L) - 1) (at least :data:`ROW_FLOOR`), inside the bristle dynamics; the
-    viscous term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (load [N]) and its base law.
-    s : float
-        Amplitude factor [-]: the rows' share of the friction, / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Preloaded pairs of rolling bearings and guides and their lift-off (Harris and Kotzalas
-    2007, Rolling Bearing Analysis, the preloaded duplex pair; Palmgren 1959, rolling
-    friction ~ load; the makers' preload classes, e.g. THK's and Schaeffler's linear guide
-    catalogues). The candidate's levels are affine in the load (two regimes); the open
-    forms scale them with a power of the load, in one direction, through the Stribeck
-    velocity, a film, a step, a creep, a rate, a lever's play, a plastic area, a hinge, a
-    cavitating film, a pressure-viscous film, an erf area, a flash temperature, a relay,
-    a renewal over the slip, an adhesive area or the position of the load. Here the load
-    is shared with a preload: little of a light load's change reaches the friction, all
-    of a heavy one's does, with the kink at the lift-off.
-    """
-    L = np.asarray(kin.load, float)
-    if not np.ptp(L) > 1e-9 * max(float(np.mean(np.abs(L))), 1e-300):
-        raise ValueError(f"load (preload_relief): the {kin.plant} record's load does not "
-                         f"change")
-    if s <= 0.0:
-        return _base_parts(kin)[0]
-    P = ROW_PRELOAD * max(float(np.mean(np.abs(L))), 1e-300)
-    rows = _row_sum(L / P) / float(_row_sum(np.array([float(np.mean(np.abs(L))) / P]))[0])
-    lev = np.clip(1.0 + float(s) * ROW_SHARE * (rows - 1.0), ROW_FLOOR, None)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- asymmetry -------------------------------------------------------------------------------
-#: ``felt_lubricator``'s fall of the levels on a fresh film at strength 1 [-]; the film's
-#: drainage time, x the record's length [-]; the track's cells, per the stroke the record
-#: visits [-]; the lowest relative level [-]
-FELT_DROP, FELT_DRAIN, FELT_CELLS, FELT_FLOOR = 0.4, 0.15, 400, 0.05
-
-
-@njit(cache=True)
-def _film_share(t, x, v, x_lo, cell, n_cells, tau):
-    """The share [-] of a fresh film under the contact along the times ``t`` [s], positions
-    ``x`` [m] and velocities ``v`` [m/s]: 1 while moving in the positive direction (the
-    felt leads and oils the track just ahead); moving the other way, exp(-age / ``tau``)
-    of the film the felt laid at that position (the track cut in ``n_cells`` cells of
-    ``cell`` [m] from ``x_lo`` [m]) on its last positive pass, 0 where it never passed."""
-    n = t.size
-    laid = np.full(n_cells, -1e300)
-    out = np.empty(n)
-    for k in range(n):
-        j = int((x[k] - x_lo) / cell)
-        j = min(max(j, 0), n_cells - 1)
-        if v[k] > 0.0:
-            laid[j] = t[k]
-            out[k] = 1.0
-        elif laid[j] > -1e299:
-            out[k] = math.exp(-(t[k] - laid[j]) / tau)
-        else:
-            out[k] = 0.0
-    return out
-
-
-@on_fine_grid
-def felt_lubricator_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """An oil-soaked felt lubricator is fitted at the carriage's positive end (a linear
-    guide's lubrication unit). Moving in the positive direction it leads and lays a fresh
-    film just ahead of the contact; moving back it trails, and the contact runs on the
-    film the felt laid at each position on its last positive pass, which has drained off
-    the track since with the time constant :data:`FELT_DRAIN` x the record
-    (:func:`_film_share`; none where the felt never passed). The Coulomb and Stribeck
-    levels are the base's times 1 - ``s`` :data:`FELT_DROP` x the fresh film's share (at
-    least :data:`FELT_FLOOR`), inside the bristle dynamics; the viscous term is the
-    base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (t [s], x [m], v [m/s]) and its base law.
-    s : float
-        Amplitude factor [-]: the film's lubricity (the levels' fall on it), / its value
+        Amplitude factor [-]: the train's mass times its contacts' friction, / its value
         at strength 1.
 
     Returns
@@ -311,63 +157,185 @@ def felt_lubricator_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Lubrication units of linear guides (felt or fibre-net applicators on the carriage's
-    end caps, e.g. THK's QZ and Bosch Rexroth's front lube units); the drainage and
-    spreading of a thin oil film on a surface (Reynolds' thin-film flow; Oron, Davis and
-    Bankoff 1997, Long-scale evolution of thin liquid films, Rev. Mod. Phys. 69). The
-    candidate's twins and offset are the same everywhere and always; the open forms
-    change with the direction through twin levels, curves or a viscous slope, roll a
-    lip, load a thrust bearing, wipe a rod's film, climb a texture, compress a spring,
-    wedge a pad or a sprag, throttle an exhaust, meter a cylinder, pump through grooves,
-    buckle a cable, bulldoze chips, commutate late, tension an idler or lock a roller's
-    clutch. Here the direction decides which film the contact meets: a fresh one, or
-    one that has aged since the last pass, so the negative direction's levels depend on
-    the time and place of the last positive pass.
+    Ball-to-ball contact and ball circulation resistance in linear ball guides and ball
+    screws (Ohta and Tanaka 2010, Effect of ball-to-ball contact on friction of linear
+    ball guides, Tribol. Trans.; THK's caged-ball technology and the makers' ball
+    spacers that prevent it). The candidate raises the levels with |a|, lagged, tilts them
+    with a and adds a force odd in a; the open forms lag the velocity, a film or a
+    contact state, heat the contact, skid rolling elements, move load between rows or
+    supports, press seals, pull with the thrust, squeeze or starve films, dilate, lift on
+    a wedge, shift a gib, soften an elastomer, swing a roller arm, unload by the jerk or
+    tilt a pressurised film. Here the drag depends on whether the carriage speeds up or
+    slows down: the product a v, not |a|, with nothing at all while it slows.
     """
+    F = _base_parts(kin)[0]
     if s <= 0.0:
-        return _base_parts(kin)[0]
-    t = np.asarray(kin.t, float)
-    x = np.ascontiguousarray(kin.x, dtype=float)
-    x_lo = float(np.min(x))
-    cell = max(float(np.ptp(x)), 1e-12) / FELT_CELLS
-    tau = FELT_DRAIN * max(float(t[-1] - t[0]), 1e-12)
-    share = _film_share(t, x, np.ascontiguousarray(kin.v, dtype=float), x_lo, cell,
-                        FELT_CELLS + 1, tau)
-    lev = np.clip(1.0 - float(s) * FELT_DROP * share, FELT_FLOOR, None)
-    return level_inside(kin, lev, np.ones_like(lev))
+        return F
+    sc = kin.scales
+    a99 = max(sc["a99"], 1e-12)
+    push, sgn = _train_push(kin.v, kin.a, TRAIN_ROUND * max(sc["v99"], 1e-12))
+    return F + float(s) * TRAIN_DRAG * _level(kin) * (push / a99) * sgn
 
 
-# -- stribeck_shape --------------------------------------------------------------------------
-#: ``core_loss_drag``'s excess-loss drag at the top speed, x the Coulomb level, at strength
-#: 1 [-]; the hysteresis-loss drag, x the excess loss's at the top speed [-]
-EXCESS_DRAG, HYSTERESIS_SHARE = 0.4, 0.25
+# -- load ------------------------------------------------------------------------------------
+#: ``ploughing_onset``'s onset of the ploughing, as a percentile of the record's load [%];
+#: the ploughing force at the record's top load (its 99th percentile), x the friction
+#: level, at strength 1 [-]; the load the onset is rounded over, x the mean load [-]
+PLOUGH_ONSET, PLOUGH_SHARE, PLOUGH_ROUND = 40.0, 0.8, 0.01
 
 
-def _core_loss(u, hysteresis):
-    """The iron core's loss drag [-] (over the excess loss's at ``u`` = 1) at the relative
-    speeds ``u`` = |v| / v99 [-]: ``hysteresis`` (the hysteresis loss ~ f: a constant
-    drag) plus sqrt(u) (the excess loss ~ f^1.5: a drag ~ f^0.5); the classical eddy loss
-    (~ f^2: a drag ~ v) is a viscous term, the base's."""
-    return hysteresis + np.sqrt(np.abs(np.asarray(u, float)))
+def _ploughing(load, onset, top, eps):
+    """The ploughing force [-] (1 at the load ``top``) along the loads ``load`` [N]: the
+    groove's section of a spherical asperity pressed past the yield onset ``onset`` [N],
+    ~ (L - onset)^1.5 (its width ~ sqrt(L - onset) cubed over its radius), nothing below
+    the onset (the excess rounded over ``eps`` [N])."""
+    e = _smooth_max0(np.asarray(load, float) - onset, eps)
+    ref = max(top - onset, eps)
+    return (e / ref) ** 1.5
 
 
 @on_fine_grid
-def core_loss_drag_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The drive's iron core (a linear motor's back iron, a rotary motor's stator) is
-    magnetised at a frequency proportional to the speed; its losses per unit of travel
-    are a drag on the axis (:func:`_core_loss`): the hysteresis loss, constant per cycle,
-    a constant drag; the excess (domain-wall) loss, ~ f^1.5, a drag ~ sqrt(|v|). It acts
-    as a curve beside the friction's (carried through the bristle at rest): the Stribeck
-    curve is the base's plus ``s`` :data:`EXCESS_DRAG` Fc (:data:`HYSTERESIS_SHARE` +
-    sqrt(|v| / v99)); the viscous term is the base's.
+def ploughing_onset_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Beside the adhesive friction (the base's, following its own law), the harder
+    surface's asperities plough grooves in the softer surface once the load passes the
+    yield onset (:data:`PLOUGH_ONSET` percentile of the record's load): a spherical
+    asperity pressed in plastically makes a groove whose width grows as the square root
+    of the excess load and whose section, which the ploughing force pushes aside, as its
+    cube over the asperity's radius (:func:`_ploughing`). The Coulomb and Stribeck
+    levels are the base's times 1 + ``s`` :data:`PLOUGH_SHARE` (L - L_onset)_+^1.5 /
+    (L99 - L_onset)^1.5, inside the bristle dynamics; the viscous term is the base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (load [N]) and its base law.
+    s : float
+        Amplitude factor [-]: the ploughing asperities' share (their number over their
+        radius), / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    The ploughing term of friction (Bowden and Tabor 1950, The Friction and Lubrication
+    of Solids, ch. 5; Goddard and Wilman 1962, A theory of friction and wear during the
+    abrasion of metals, Wear 5; Suh and Sin 1981, The genesis of friction, Wear 69);
+    the onset of yield under a sphere (Johnson 1985, Contact Mechanics, ch. 6). The
+    candidate's levels are affine in the load (two regimes); the open forms scale them
+    with a power of the load from zero, in one direction, through the Stribeck velocity,
+    a film, a step, a creep, a rate, a lever's play, a plastic area, a hinge, a cavitating
+    film, a pressure-viscous film, an erf area, a flash temperature, a relay, a renewal
+    over the slip, an adhesive area, the position of the load or a preload's relief.
+    Here a second term of other physics starts at a threshold and grows faster than the
+    load above it: nothing below the onset, convex above.
+    """
+    L = np.asarray(kin.load, float)
+    Lm = max(float(np.mean(np.abs(L))), 1e-300)
+    if not np.ptp(L) > 1e-9 * Lm:
+        raise ValueError(f"load (ploughing_onset): the {kin.plant} record's load does not "
+                         f"change")
+    if s <= 0.0:
+        return _base_parts(kin)[0]
+    onset = float(np.percentile(L, PLOUGH_ONSET))
+    top = float(np.percentile(L, 99.0))
+    lev = 1.0 + float(s) * PLOUGH_SHARE * _ploughing(L, onset, top, PLOUGH_ROUND * Lm)
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- asymmetry -------------------------------------------------------------------------------
+#: ``running_belt``'s belt speed, x the top speed [-]; the shoe's friction, x the friction
+#: level, at strength 1 [-]; the relative speed the shoe's friction is rounded over, x the
+#: top speed [-]
+BELT_SPEED, BELT_SHOE, BELT_ROUND = 0.4, 0.4, 0.02
+
+
+def _shoe_friction(v, u_belt, v_round):
+    """The skid shoe's friction [-] (over its Coulomb force) at the carriage's velocities
+    ``v`` [m/s] on a belt running at ``u_belt`` [m/s]: tanh((v - u_belt) / ``v_round``),
+    the sign of the slip against the belt, rounded."""
+    return np.tanh((np.asarray(v, float) - u_belt) / v_round)
+
+
+@on_fine_grid
+def running_belt_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A skid shoe of the carriage (a pusher's, a shuttle's) rests on a conveyor belt that
+    runs beside the axis at the fixed speed u = :data:`BELT_SPEED` v99 in the positive
+    direction. The shoe's friction follows the slip against the belt, v - u
+    (:func:`_shoe_friction`): at rest and moving in the negative direction the belt
+    pulls the carriage forward with the shoe's whole friction; moving in the positive
+    direction it still pulls while the carriage is slower than the belt and drags once
+    it is faster. The truth adds ``s`` :data:`BELT_SHOE` F_level tanh((v - u) / (
+    :data:`BELT_ROUND` v99)) to the base.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (v [m/s]) and its base law.
+    s : float
+        Amplitude factor [-]: the shoe's friction (its spring's force), / its value at
+        strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Sliding on a moving counter-surface, the friction along the relative velocity
+    (Coulomb's law in the frame of the belt; belt conveyors' skid plates and pushers,
+    CEMA 2014, Belt Conveyors for Bulk Materials; pallets and accumulation on a running
+    belt). The candidate's twins and offset are the same at every speed; the open forms
+    change with the direction through twin levels, curves or a viscous slope, roll a lip,
+    load a thrust bearing, wipe a rod's film, climb a texture, compress a spring, wedge a
+    pad or a sprag, throttle an exhaust, meter a cylinder, pump through grooves, buckle a
+    cable, bulldoze chips, commutate late, tension an idler, lock a roller's clutch or
+    lay an oil film ahead. Here the counter-surface itself moves: the direction that
+    matters is the one of the slip against the belt, so the positive direction's force
+    changes sign at the belt's speed.
+    """
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    v99 = max(kin.scales["v99"], 1e-12)
+    shoe = _shoe_friction(kin.v, BELT_SPEED * v99, BELT_ROUND * v99)
+    return F + float(s) * BELT_SHOE * _level(kin) * shoe
+
+
+# -- stribeck_shape --------------------------------------------------------------------------
+#: ``bellows_breathing``'s drag at the top speed, x the Coulomb level, at strength 1 [-]; the
+#: speed at which the vents' flow chokes, x the top speed [-]
+BELLOWS_DRAG, BELLOWS_CHOKE = 0.5, 0.45
+
+
+def _vent_drag(u, choke):
+    """The bellows' pressure drag [-] at the relative speeds ``u`` = v / v99 [-]: the
+    orifice law's u |u| at low flows, linear in u once the flow chokes at ``choke``
+    [-]: u |u| / sqrt(1 + (u / choke)^2) (over its value at ``u`` = 1 times the same)."""
+    u = np.asarray(u, float)
+    return u * np.abs(u) / np.sqrt(1.0 + (u / choke) ** 2)
+
+
+@on_fine_grid
+def bellows_breathing_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The way is covered by an accordion bellows that the carriage compresses on one
+    side and stretches on the other; the air it displaces (its section times v) breathes
+    through the bellows' vents. Through an orifice the pressure difference grows with the
+    square of the flow, so the drag on the carriage grows as v |v|; once the vents' flow
+    chokes (the sonic limit of compressible orifice flow) the pressure ahead grows only in
+    proportion to the flow, so the drag turns linear in v (:func:`_vent_drag`). The truth
+    adds ``s`` :data:`BELLOWS_DRAG` Fc q(v / v99) / q(1) to the base, q the vent drag.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s]) and its base law (with a Stribeck curve).
     s : float
-        Amplitude factor [-]: the core's losses (its induction squared), / their value at
-        strength 1.
+        Amplitude factor [-]: the bellows' section over its vents' (squared), / its value
+        at strength 1.
 
     Returns
     -------
@@ -376,61 +344,66 @@ def core_loss_drag_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The separation of iron losses into hysteresis, classical eddy-current and excess
-    losses (Bertotti 1988, General properties of power losses in soft ferromagnetic
-    materials, IEEE Trans. Magn. 24; Steinmetz 1892) and the drag they put on motors
-    (Gieras and Piech 2000, Linear Synchronous Motors). The open forms take other tails,
-    lift-offs, peaks, roughness, rate-and-state, Eyring films, starvation, rubber
-    hysteresis, resonances, dither, melt films, granular flow, readsorption, thermal,
-    turbulent, thixotropic films or churning, each a property of the contact or its
-    lubricant. Here the curve's new part comes from the drive's magnetics: a drag with
-    a step at rest and a square-root rise, however the contact is lubricated.
+    Orifice flow and its choking (Saint-Venant and Wantzel 1839; ISO 6358 for pneumatic
+    components' sonic conductance); way covers and bellows of machine tools (Weck and
+    Brecher 2006, Werkzeugmaschinen 2). The open forms take other tails, lift-offs,
+    peaks, roughness, rate-and-state, Eyring films, starvation, rubber hysteresis,
+    resonances, dither, melt films, granular flow, readsorption, thermal, turbulent,
+    thixotropic films, churning or the drive's core losses, each a property of the contact,
+    its lubricant or the drive. Here the curve's new part is the air the cover pumps: a
+    drag that starts quadratic from zero and straightens at the choke, with no level at
+    rest.
     """
     law = kin.base
     if not has_stribeck_curve(kin):
-        raise ValueError("stribeck_shape (core_loss_drag): the mre_lugre base has no "
+        raise ValueError("stribeck_shape (bellows_breathing): the mre_lugre base has no "
                          "Stribeck curve")
+    F = _base_parts(kin)[0]
     if s <= 0.0:
-        return _base_parts(kin)[0]
-    drag = float(s) * EXCESS_DRAG * float(law.params.Fc)
+        return F
     v99 = max(kin.scales["v99"], 1e-12)
-    return lugre_with_curve(kin, lambda vv: law.g(vv) + drag * _core_loss(vv / v99,
-                                                                          HYSTERESIS_SHARE))
+    q1 = float(_vent_drag(np.array([1.0]), BELLOWS_CHOKE)[0])
+    drag = float(s) * BELLOWS_DRAG * float(law.params.Fc) / q1
+    return F + drag * _vent_drag(np.asarray(kin.v, float) / v99, BELLOWS_CHOKE)
 
 
 # -- position --------------------------------------------------------------------------------
-#: ``heated_zone``'s fin length of the rail's temperature, x the stroke [-]; the fall of the
-#: log viscosity at the heat source at strength 1 (Reynolds' beta x the temperature rise)
-#: [-]; the rise of the boundary levels as the film's viscosity falls to nothing [-]; the
-#: film's drag at the top speed, x the friction level [-]
-ZONE_LENGTH, ZONE_HEAT, ZONE_MIXED, ZONE_DRAG = 0.2, 0.8, 1.5, 1.5
+#: ``false_brinelling``'s ball pitch, x the stroke [-]; the balls in a loaded row [-]; the
+#: dents' width (their standard deviation), x the pitch [-]; the levels' rise with every
+#: ball in a dent, at strength 1 [-]
+DENT_PITCH, DENT_BALLS, DENT_WIDTH, DENT_RISE = 0.04, 8, 0.15, 0.8
 
 
-def _fin_profile(x, centre, length):
-    """The rail's temperature rise [-] (1 at the heat source at ``centre`` [m]) along the
-    positions ``x`` [m]: a long cooled fin's exp(-|x - centre| / ``length``)."""
-    return np.exp(-np.abs(np.asarray(x, float) - centre) / length)
+def _dent_pattern(x, centre, pitch, balls, width):
+    """The share [-] of a row's balls in a dent along the positions ``x`` [m] of a carriage
+    parked at ``centre`` [m]: the dents sit at the parked balls' places, a ``pitch`` [m]
+    apart; moved by k pitches, ``balls`` - |k| of the balls meet a dent at once (a
+    triangle of half-width ``balls`` pitches), and each dent's depth profile is a
+    Gaussian of ``width`` pitches."""
+    d = (np.asarray(x, float) - centre) / pitch
+    frac = d - np.round(d)
+    dent = np.exp(-0.5 * (frac / width) ** 2)
+    return np.clip(1.0 - np.abs(d) / balls, 0.0, None) * dent
 
 
 @on_fine_grid
-def heated_zone_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A heat source beside the rail (a motor, a spindle housing, a hydraulic unit) sits
-    where fit and held-out parts both pass; the rail conducts its heat and loses it to the
-    air, so its temperature rise falls off along it as a cooled fin's
-    (:func:`_fin_profile`, length :data:`ZONE_LENGTH` x the stroke). The oil on the rail
-    thins as exp(-``s`` :data:`ZONE_HEAT` theta(x)) of the temperature rise theta
-    (Reynolds' law): its film's drag, ZONE_DRAG F_level v / v99 at the cold viscosity,
-    falls with it, and the thinner film lets the asperities carry more: the Coulomb and
-    Stribeck levels are the base's times 1 + :data:`ZONE_MIXED` (1 - eta / eta0), inside
-    the bristle dynamics. At ``s`` = 0 the base.
+def false_brinelling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage stood parked, while the machine vibrated, where fit and held-out parts
+    both pass (:func:`.truths._bump_centre`): the balls of its loaded row
+    (:data:`DENT_BALLS`, a pitch :data:`DENT_PITCH` x the stroke apart) wore shallow
+    dents in the raceway where they stood. Rolling over them, a ball drops into a dent
+    and climbs out of it: the rolling resistance rises while balls sit in dents, most
+    where all of them meet their dents at once (the parked position, and every pitch
+    from it with one ball fewer: :func:`_dent_pattern`). The Coulomb and Stribeck levels
+    are the base's times 1 + ``s`` :data:`DENT_RISE` x the share of balls in a dent,
+    inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law.
+        The motion on the fine grid (x [m]) and its base law.
     s : float
-        Amplitude factor [-]: the source's temperature rise at the rail, / its value at
-        strength 1.
+        Amplitude factor [-]: the dents' depth, / its value at strength 1.
 
     Returns
     -------
@@ -439,81 +412,56 @@ def heated_zone_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Heat conduction along a cooled fin (Incropera and DeWitt 2002, Fundamentals of Heat
-    and Mass Transfer, ch. 3); thermal errors and hot spots of machine tools (Bryan 1990,
-    International status of thermal error research, CIRP Ann. 39); the viscosity's
-    exponential fall with the temperature (Reynolds 1886). The open forms raise the
-    levels by a bump, a wave, a worn stretch, a runout, a bent rail, a transfer film, a
-    cogging force, a taper, an oil port's wake, a cushion, a cover, an air spring, bolt
-    holes, an immersed plunger, a sagging beam, a festoon, a curved track, a gliding
-    chain or a cam. Here the stroke's property is a temperature: the viscous drag falls
-    and the boundary levels rise together, over a zone whose width the rail's conduction
-    sets, both ways.
+    False brinelling (fretting wear of a standing rolling contact under vibration: Almen
+    1937, Lubricants and false brinelling of ball and roller bearings, Mech. Eng. 59;
+    Tallian 1992, Failure Atlas for Hertz Contact Machine Elements; the makers' transport
+    locks for linear guides). The open forms raise the levels by a bump, a wave, a worn
+    stretch, a runout, a bent rail, a transfer film, a cogging force, a taper, an oil
+    port's wake, a cushion, a cover, an air spring, bolt holes, an immersed plunger, a
+    sagging beam, a festoon, a curved track, a gliding chain, a cam or a heated zone.
+    Here a short wave at the ball pitch, only around one place, with an envelope that
+    falls linearly over the carriage's length: the mark of where the carriage once stood.
     """
     xc = _bump_centre(kin)
     if xc is None:
-        raise ValueError(f"position (heated_zone): the held-out part of the {kin.plant} "
-                         f"record never revisits the positions of its fit part")
-    F = _base_parts(kin)[0]
+        raise ValueError(f"position (false_brinelling): the held-out part of the "
+                         f"{kin.plant} record never revisits the positions of its fit part")
     if s <= 0.0:
-        return F
-    theta = _fin_profile(kin.x, xc, ZONE_LENGTH * _span(kin))
-    thin = np.exp(-float(s) * ZONE_HEAT * theta)         # eta / eta0
-    lev = 1.0 + ZONE_MIXED * (1.0 - thin)
-    c = ZONE_DRAG * _level(kin) / max(kin.scales["v99"], 1e-12)
-    return level_inside(kin, lev, np.ones_like(lev)) + c * np.asarray(kin.v, float) * (thin
-                                                                                     - 1.0)
+        return _base_parts(kin)[0]
+    share = _dent_pattern(kin.x, xc, DENT_PITCH * _span(kin), DENT_BALLS, DENT_WIDTH)
+    lev = 1.0 + float(s) * DENT_RISE * share
+    return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- inertia ---------------------------------------------------------------------------------
-#: ``screw_stiffness``'s carriage mass at strength 1, x the friction level / a99 [-]; the
-#: axial mode's angular frequency with the nut at the stroke's far end, x 1 / the motion's
-#: time scale [-]; the screw's length from its fixed bearing to the stroke's near end, x
-#: the stroke [-]; the mode's damping ratio [-]
-SCREW_MASS, SCREW_FREQUENCY, SCREW_LEAD_IN, SCREW_DAMPING = 1.0, 4.0, 0.3, 0.08
+#: ``feedforward_lead``'s mass error of the feedforward at strength 1, x the friction level /
+#: a99 [-]; the servo's tracking lag, x the motion's time scale v99 / a99 [-]
+FF_MASS, FF_LEAD = 0.6, 0.15
 
 
-@njit(cache=True)
-def _screw_mode(t, a, omega, zeta):
-    """The carriage's lag e [m] behind the drive along the times ``t`` [s] (uniform): e'' +
-    2 ``zeta`` w e' + w^2 e = ``a`` (the drive's acceleration [m/s^2]) with the angular
-    frequencies ``omega`` [1/s] at each instant (the screw's stiffness at the nut's
-    position); semi-implicit Euler from rest. Returns (e, e'') [m, m/s^2]."""
-    n = t.size
-    e = np.empty(n)
-    edd = np.empty(n)
-    y = 0.0
-    yd = 0.0
-    for k in range(n):
-        w = omega[k]
-        acc = a[k] - 2.0 * zeta * w * yd - w * w * y
-        e[k] = y
-        edd[k] = acc
-        if k + 1 < n:
-            h = t[k + 1] - t[k]
-            yd = yd + h * acc
-            y = y + h * yd
-    return e, edd
+def _commanded(t, a, lead):
+    """The commanded acceleration [m/s^2] along the times ``t`` [s]: the measured
+    accelerations ``a`` [m/s^2] read ``lead`` [s] later (the command leads the motion by
+    the servo's tracking lag; past the record's end its last value)."""
+    return np.interp(np.asarray(t, float) + lead, t, a)
 
 
 @on_fine_grid
-def screw_stiffness_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage is driven by a ball screw fixed at one end (the stroke's lower end)
-    and free at the other; its axial stiffness, EA / the screw's length between the fixed
-    bearing and the nut, falls along the stroke, so the carriage on that spring is a mode
-    whose angular frequency is :data:`SCREW_FREQUENCY` / the motion's time scale with the
-    nut at the far end, higher nearer the bearing (~ 1 / sqrt(length), the length from
-    :data:`SCREW_LEAD_IN` x the stroke), damping ratio :data:`SCREW_DAMPING`
-    (:func:`_screw_mode`). The encoder is on the motor: the carriage's acceleration is
-    a - e'', and the inverse dynamics misses m e'', m a99 = ``s`` :data:`SCREW_MASS` x the
-    friction level: the measured force is the base's minus m e''.
+def feedforward_lead_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force is read from the drive's force command (its current set point), which is
+    the position controller's output plus an acceleration feedforward of the commanded
+    trajectory with a mass setting m off the carriage's. The measured motion follows the
+    command with the servo's tracking lag (:data:`FF_LEAD` x the motion's time scale), so
+    the commanded acceleration is the measured one read that much later
+    (:func:`_commanded`): the truth adds m a(t + lag) to the base, m a99 = ``s``
+    :data:`FF_MASS` x the friction level.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s], x [m], a [m/s^2]) and its base law.
+        The motion on the fine grid (t [s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the carriage's mass, / its value at strength 1.
+        Amplitude factor [-]: the feedforward's mass error, / its value at strength 1.
 
     Returns
     -------
@@ -522,70 +470,58 @@ def screw_stiffness_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The axial stiffness of ball-screw feed drives and its dependence on the nut's position
-    (Altintas 2012, Manufacturing Automation, ch. 6; Okwudire and Altintas 2009, Hybrid
-    modeling of ball screw drives with coupled axial, torsional, and lateral dynamics,
-    J. Mech. Des. 131; Varanasi and Nayfeh 2004). The candidate misses a constant mass;
-    the open forms filter it, reflect it through gearing, a chain's polygon or a
-    pinion, hang it on a spring, a cable, a fluid, a clutch, a coupling or a flyweight,
-    pick it up, drop it, empty it, rattle it, recoil the frame or saturate the motor.
-    Here the missed part is the carriage's own motion on the drive's compliance, whose
-    mode's frequency changes with where the carriage is.
+    Acceleration feedforward and tracking lag of feed drives (Tomizuka 1987, Zero phase
+    error tracking algorithm for digital control, J. Dyn. Syst. Meas. Control 109;
+    Altintas 2012, Manufacturing Automation, ch. 6). The candidate misses a constant
+    mass; the open forms filter it, reflect it through gearing, a chain's polygon or a
+    pinion, hang it on a spring, a cable, a fluid, a clutch, a coupling, a flyweight or a
+    screw, pick it up, drop it, empty it, rattle it, recoil the frame or saturate the
+    motor, each missing the acceleration now or in the past. Here the missed mass
+    multiplies the acceleration a moment ahead: a lead, not a lag.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    T = max(_motion_time(kin), 1e-12)
-    span = _span(kin)
-    x = np.asarray(kin.x, float)
-    length = SCREW_LEAD_IN * span + np.clip(x - float(np.min(x)), 0.0, None)
-    far = SCREW_LEAD_IN * span + float(np.ptp(x))
-    omega = (SCREW_FREQUENCY / T) * np.sqrt(far / length)
-    _, edd = _screw_mode(np.asarray(kin.t, float), np.ascontiguousarray(kin.a, dtype=float),
-                         np.ascontiguousarray(omega), SCREW_DAMPING)
-    m = float(s) * SCREW_MASS * _level(kin) / max(kin.scales["a99"], 1e-12)
-    return F - m * edd
+    sc = kin.scales
+    lead = FF_LEAD * max(_motion_time(kin), 1e-12)
+    m = float(s) * FF_MASS * _level(kin) / max(sc["a99"], 1e-12)
+    return F + m * _commanded(kin.t, np.asarray(kin.a, float), lead)
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: ``alpha_beta_tracker``'s time constant 1 / omega of its loop at strength 1, in data
-#: samples [-]; its damping ratio (the alpha-beta gains of Kalata's tracking index near the
-#: critically damped pair) [-]
-TRACK_SAMPLES, TRACK_DAMPING = 3.5, 0.7
+#: ``transducer_resonance``'s period of the transducer's resonance at strength 1, in data
+#: samples / 2 pi (1 / omega_n) [-]; its damping ratio [-]
+RES_SAMPLES, RES_DAMPING = 3.0, 0.12
 
 
-def _tracker(t, F, omega, zeta):
-    """``F`` [N] along the times ``t`` [s] (uniform) through the type-2 tracking loop
-    y' = w + 2 ``zeta`` ``omega`` (F - y), w' = ``omega``^2 (F - y) (the steady-state
-    alpha-beta filter in continuous time: (2 zeta omega s + omega^2) / (s^2 + 2 zeta
-    omega s + omega^2)), discretised by the bilinear transform, from steady state at the
-    first value (no rate)."""
+def _resonance(t, F, omega, zeta):
+    """``F`` [N] along the times ``t`` [s] (uniform) through the spring-mass transducer
+    omega^2 / (s^2 + 2 ``zeta`` ``omega`` s + ``omega``^2) (its reading the spring's
+    deflection), discretised by the bilinear transform, from rest at the first value."""
     from scipy.signal import bilinear, lfilter, lfilter_zi
     fs = 1.0 / float(t[1] - t[0])
-    b, a = bilinear([2.0 * zeta * omega, omega * omega],
-                    [1.0, 2.0 * zeta * omega, omega * omega], fs)
+    b, a = bilinear([omega * omega], [1.0, 2.0 * zeta * omega, omega * omega], fs)
     F = np.asarray(F, float)
     return lfilter(b, a, F, zi=lfilter_zi(b, a) * F[0])[0]
 
 
 @on_fine_grid
-def alpha_beta_tracker_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The logger smooths the force with an alpha-beta tracking filter (the steady-state
-    Kalman filter of a constant-rate model) of bandwidth omega = 1 / (``s``
-    :data:`TRACK_SAMPLES` data samples) and damping :data:`TRACK_DAMPING`
-    (:func:`_tracker`; no cap at :data:`.truths.MAX_DELAY_SAMPLES`: on a smooth force a
-    slow tracker is all but exact, so the plants whose force turns gently need a long
-    one to reach the requested size): it estimates the
-    force's level and its rate, so a force that changes at a steady rate is followed
-    without lag; a change of the rate (a reversal's turn, a plateau's start) is followed
-    late and overshot.
+def transducer_resonance_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force transducer carries the mass mounted on it (the contact's holder): with
+    the transducer's spring it is a lightly damped spring-mass system of angular
+    frequency omega_n = 1 / (``s`` :data:`RES_SAMPLES` data samples) and damping ratio
+    :data:`RES_DAMPING`, and the reading is the spring's deflection
+    (:func:`_resonance`): it follows a ramp late by 2 zeta / omega_n and rings at
+    omega_n after each fast change of the force (a reversal, a breakaway). No cap at
+    :data:`.truths.MAX_DELAY_SAMPLES`: the plants whose force turns gently need a slow
+    resonance to reach the requested size.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the tracker's time constant, / its value at strength 1.
+        Amplitude factor [-]: the resonance's period, / its value at strength 1.
 
     Returns
     -------
@@ -594,63 +530,81 @@ def alpha_beta_tracker_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The alpha-beta tracker (Sklansky 1957; Benedict and Bordner 1962, Synthesis of an
-    optimal set of radar track-while-scan smoothing equations, IRE Trans. Autom. Control
-    7; Kalata 1984, The tracking index, IEEE Trans. Aerosp. Electron. Syst. 20), used to
-    smooth noisy sensor channels in loggers and drives. The open forms delay by one
-    amount, filter by a low-pass, linearly or by rank, hold at a fieldbus's clock, let
-    the delay drift, wander or follow the force's rate, level or slowness, the motion's
-    speed or the position, hold stale values over lost telegrams, lead through a leaking
-    charge, creep, or take out the mains' band. Here a filter with a rate state: no lag
-    on ramps, a lag and an overshoot where the force's slope changes.
+    The dynamic behaviour of force transducers and their mounted mass (Kumme 1996, Dynamic
+    force measurement in practical applications, IMEKO; ISO 4965-1 for the dynamic
+    calibration of testing machines; Link, Glockner and Kobusch 2010). The open forms delay
+    by one amount, filter by a low-pass, linearly or by rank, hold at a fieldbus's clock,
+    let the delay drift, wander or follow the force's rate, level or slowness, the
+    motion's speed or the position, hold stale values over lost telegrams, lead through a
+    leaking charge, creep, take out the mains' band or track with a rate state. Here a
+    mechanical resonance of the sensor itself: little damping, so each fast change of the
+    force rings on in the reading.
     """
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    tau = float(s) * TRACK_SAMPLES * float(kin.sample_dt)
-    return _tracker(np.asarray(kin.t, float), F, 1.0 / tau, TRACK_DAMPING)
+    tau = float(s) * RES_SAMPLES * float(kin.sample_dt)
+    return _resonance(np.asarray(kin.t, float), F, 1.0 / tau, RES_DAMPING)
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: ``cage_creep``'s creep the other way, as a share of the creep in the positive direction
-#: per unit travel [-]; the net creep (over the record's) at which rollers begin to leave the
-#: loaded length, and at which the cage reaches its stop [-]; the levels' rise as the rollers
-#: leave, and their step when they skid, at strength 1 [-]; the skid's onset, as a share
-#: of the net creep [-]
-CREEP_BACK, CREEP_LEAVE, CREEP_STOP, CREEP_RISE, CREEP_SKID, CREEP_ONSET = (
-    0.6, 0.3, 0.75, 0.25, 0.35, 0.03)
+#: ``screw_loosening``'s share of the remaining preload lost at each reversal [-]; the
+#: levels' fall with the whole preload lost, at strength 1 [-]; the time each loosening
+#: step is rounded over, x the record's length [-]; the speed the direction of travel is
+#: told by (a hysteresis), x the top speed [-]; the lowest relative level [-]
+LOOSEN_STEP, LOOSEN_DROP, LOOSEN_ROUND, LOOSEN_SPEED, LOOSEN_FLOOR = (
+    0.06, 0.6, 0.004, 0.02, 0.05)
 
 
-def _cage_offset(t, v, back):
-    """The cage's creep [-] (over its largest value in the record) along the times ``t``
-    [s] and velocities ``v`` [m/s]: the travel integrated with weight 1 in the positive
-    direction and -``back`` in the other (a net creep one way)."""
-    u = np.asarray(v, float)
-    rate = np.where(u > 0.0, u, back * u)
-    c = np.concatenate(([0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(t))))
-    return c / max(float(np.max(np.abs(c))), 1e-300)
+def _reversal_times(t, v, v_min):
+    """The times [s] along ``t`` [s] at which the direction of travel changes (the
+    velocities ``v`` [m/s] pass -``v_min`` and ``v_min`` [m/s] the other way, a
+    hysteresis against the standstills' crawl), at the zero crossing before it."""
+    v = np.asarray(v, float)
+    out = []
+    state = 0
+    last_zero = 0
+    for k in np.flatnonzero(np.abs(v) > v_min):
+        d = 1 if v[k] > 0.0 else -1
+        if state != 0 and d != state:
+            # the last sign change before this sample
+            seg = np.flatnonzero(np.sign(v[last_zero:k + 1]) != d)
+            j = last_zero + (seg[-1] if seg.size else 0)
+            out.append(float(t[j]))
+        if d != state:
+            state = d
+        last_zero = k
+    return np.asarray(out)
+
+
+def _loosened(t, reversals, step, width):
+    """The preload lost [-] (1 - the remaining share) along the times ``t`` [s] after the
+    ``reversals`` [s]: each loses ``step`` of what is left, 1 - (1 - step)^n(t), the
+    count n(t) of reversals rounded over ``width`` [s]."""
+    t = np.asarray(t, float)
+    n = np.zeros_like(t)
+    for tr in reversals:
+        n += 0.5 * (1.0 + np.tanh((t - tr) / width))
+    return 1.0 - (1.0 - step) ** n
 
 
 @on_fine_grid
-def cage_creep_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The contact's rollers run in a cage (a crossed-roller or caged ball slide, not
-    recirculating) that should move at half the carriage's speed but slips a little on
-    every stroke, more in the positive direction (an inclined axis, an offset load), so
-    it creeps (:func:`_cage_offset`, the net creep over the record's largest). From
-    :data:`CREEP_LEAVE` of it the cage's end passes the carriage's: rollers leave the
-    loaded length one after the other and the rest carry more (the levels rise linearly
-    by ``s`` :data:`CREEP_RISE` up to :data:`CREEP_STOP`); there the cage hits its stop,
-    is dragged and the rollers skid (a step of ``s`` :data:`CREEP_SKID`, rounded over
-    :data:`CREEP_ONSET` of the creep). Inside the bristle dynamics; the viscous term is
-    the base's.
+def screw_loosening_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The contact's preload is set by a clamping screw (a gib's adjusting screw, a
+    preloaded nut's lock) whose joint slips a little transversely at each reversal of the
+    friction force: each slip turns the screw back a little (self-loosening), so at each
+    reversal (:func:`_reversal_times`) the preload loses :data:`LOOSEN_STEP` of what is
+    left (:func:`_loosened`). The Coulomb and Stribeck levels are the base's times 1 -
+    ``s`` :data:`LOOSEN_DROP` x the preload lost (at least :data:`LOOSEN_FLOOR`), inside
+    the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the friction's rise (the rollers' overload and skid), / its
-        value at strength 1.
+        Amplitude factor [-]: the preload's share of the friction, / its value at
+        strength 1.
 
     Returns
     -------
@@ -659,51 +613,51 @@ def cage_creep_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Cage creep (cage slippage, retainer migration) in non-recirculating linear rolling
-    guides and its remedies (rack-and-pinion anti-creep cages: IKO's and Schneeberger's
-    catalogues; Harris and Kotzalas 2007 on cage slip); skidding of unloaded rollers
-    (Harris 1966). The candidate is a trend, a saturating change, a step, a cycle, an
-    accelerating part and a part that builds up and resets, in time; the open forms warm
-    up, wear in, step, cycle, rise and fall with debris, drop with grease shots, relax,
-    oxidise, wear through, swell, grow a tribofilm, take in particles, expand, shear the
-    oil, heat the magnets or charge the surfaces. Here the drift follows the net travel
-    one way, not the clock or the total travel: a ramp once the creep passes a margin,
-    then a step at the stop.
+    Self-loosening of threaded fasteners under transverse slip (Junker 1969, New criteria
+    for self-loosening of fasteners under vibration, SAE Trans. 78; DIN 65151, the
+    Junker test; Yokoyama et al. 2012). The candidate is a trend, a saturating change, a
+    step, a cycle, an accelerating part, a part that builds up and resets and a part that
+    follows the friction's heating; the open forms warm up, wear in, step, cycle, rise
+    and fall with debris, drop with grease shots, relax, oxidise, wear through, swell,
+    grow a tribofilm, take in particles, expand, shear the oil, heat the magnets, charge
+    the surfaces or creep a cage. Here the drift is counted in reversals: steps at each
+    one, each a share of what is left, whatever the time or the distance between them.
     """
     if s <= 0.0:
         return _base_parts(kin)[0]
-    c = _cage_offset(np.asarray(kin.t, float), kin.v, CREEP_BACK)
-    leave = np.clip((c - CREEP_LEAVE) / (CREEP_STOP - CREEP_LEAVE), 0.0, 1.0)
-    skid = 0.5 * (1.0 + np.tanh((c - CREEP_STOP) / CREEP_ONSET))
-    lev = 1.0 + float(s) * (CREEP_RISE * leave + CREEP_SKID * skid)
+    t = np.asarray(kin.t, float)
+    rev = _reversal_times(t, kin.v, LOOSEN_SPEED * max(kin.scales["v99"], 1e-12))
+    lost = _loosened(t, rev, LOOSEN_STEP, LOOSEN_ROUND * max(float(t[-1] - t[0]), 1e-12))
+    lev = np.clip(1.0 - float(s) * LOOSEN_DROP * lost, LOOSEN_FLOOR, None)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: ``mesh_stiffness``'s play at strength 1, as a share of the stroke [-]; the single-tooth
-#: mesh's deflection at the Coulomb level at strength 1, as a share of the stroke [-]; the
-#: double-tooth mesh's stiffness over the single's [-]; the contact ratio [-]; the tooth
-#: pitch, as a share of the stroke [-]
-MESH_PLAY, MESH_COMPLIANCE, MESH_DOUBLE, MESH_RATIO, MESH_PITCH = 0.007, 0.003, 1.8, 1.6, 0.07
+#: ``polymer_gear``'s play at strength 1 when cold, as a share of the stroke [-]; the flank's
+#: deflection at the Coulomb level when cold, at strength 1, as a share of the stroke [-];
+#: the share of the play the warm teeth's swelling closes, and the share of the flanks'
+#: stiffness their warming takes, at the record's warmest [-]; the teeth's thermal time
+#: constant, x the record's length [-]
+GEAR_PLAY, GEAR_COMPLIANCE, GEAR_CLOSE, GEAR_SOFT, GEAR_HEAT = 0.008, 0.003, 0.7, 0.5, 0.3
 
 
-def _mesh_factor(x, pitch, ratio, double):
-    """The mesh's stiffness [-] over the single-tooth one along the drive positions ``x``
-    [m]: ``double`` over the share ``ratio`` - 1 of each ``pitch`` [m] where two tooth
-    pairs mesh, 1 over the rest, the changes rounded over 2 % of the pitch."""
-    ph = np.mod(np.asarray(x, float) / pitch, 1.0)
-    w = 0.02
-    on = 0.5 * (np.tanh(ph / w) - np.tanh((ph - (ratio - 1.0)) / w)) \
-        + 0.5 * (1.0 + np.tanh((ph - 1.0) / w))
-    return 1.0 + (double - 1.0) * np.clip(on, 0.0, 1.0)
+def _tooth_warming(t, F, v, tau):
+    """The teeth's temperature rise [-] (1 at the record's warmest) along the times ``t``
+    [s]: the first-order lag (``tau`` [s]) of the mesh's friction power |F v| [W] (the
+    forces ``F`` [N] at the velocities ``v`` [m/s]), from cold."""
+    from scipy.signal import lfilter
+    p = np.abs(np.asarray(F, float) * np.asarray(v, float))
+    e = math.exp(-float(t[1] - t[0]) / tau)
+    th = lfilter([1.0 - e], [1.0, -e], p)              # from cold (zero initial state)
+    return th / max(float(np.max(th)), 1e-300)
 
 
 @njit(cache=True)
-def _meshed_contact(h, xd, kfac, half, k1, c1, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
+def _warm_mesh(h, xd, half, kflank, c1, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
     """LuGre friction [N] of a contact of mass ``m`` [kg] driven by the drive positions
-    ``xd`` [m] (step ``h`` [s]) across a play of half-width ``half`` [m], the flank a
-    mesh of stiffness ``k1`` ``kfac`` [N/m] (``kfac`` [-] at each drive position) and
-    damping ``c1`` [N s/m], compressive only. Semi-implicit Euler of the mass
+    ``xd`` [m] (step ``h`` [s]) across a play of half-width ``half`` [m] (at each step),
+    the flank a spring ``kflank`` [N/m] (at each step) and a damper ``c1`` [N s/m],
+    compressive only. Semi-implicit Euler of the mass
     (:func:`.truths._light_contact_step`). Starts at rest, centred in the play."""
     n = xd.size
     F = np.empty(n)
@@ -714,14 +668,15 @@ def _meshed_contact(h, xd, kfac, half, k1, c1, m, s0, s1, s2, Fc, Fs, vs, alpha,
         vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
         e = xd[j] - x
         ed = vd - v
-        k = k1 * kfac[j]
+        k = kflank[j]
+        hw = half[j]
         fc = 0.0
-        if e > half:
-            f2 = k * (e - half) + c1 * ed
+        if e > hw:
+            f2 = k * (e - hw) + c1 * ed
             if f2 > 0.0:
                 fc = f2
-        elif e < -half:
-            f2 = k * (e + half) + c1 * ed
+        elif e < -hw:
+            f2 = k * (e + hw) + c1 * ed
             if f2 < 0.0:
                 fc = f2
         F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha, shape)
@@ -730,25 +685,27 @@ def _meshed_contact(h, xd, kfac, half, k1, c1, m, s0, s1, s2, Fc, Fs, vs, alpha,
 
 
 @on_fine_grid
-def mesh_stiffness_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact joined by a gear mesh (a rack and pinion) with play, half-width
-    ``s``^2 :data:`MESH_PLAY` / 2 x the stroke, whose flank stiffness alternates along
-    each tooth pitch (:data:`MESH_PITCH` x the stroke) between the single-tooth mesh's and
-    :data:`MESH_DOUBLE` times it where two pairs mesh (the share :data:`MESH_RATIO` - 1 of
-    the pitch; :func:`_mesh_factor`); the single-tooth mesh deflects by ``s``^2
-    :data:`MESH_COMPLIANCE` x the stroke at the Coulomb level (:func:`_meshed_contact`).
-    After each reversal the play is crossed and the force built through the mesh's
-    compliance, which depends on where in the pitch the flank lands; while sliding, each
-    change of the mesh's stiffness moves the contact against the held force and kicks
-    it. The contact is light (:func:`.truths._contact_constants`), with the base's LuGre
-    friction; the measured force is its friction. At ``s`` = 0 the base itself.
+def polymer_gear_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact joined by a plastic gear (POM, PA) with play, half-width ``s``^2
+    :data:`GEAR_PLAY` / 2 x the stroke when cold, whose flank deflects by ``s``^2
+    :data:`GEAR_COMPLIANCE` x the stroke at the Coulomb level when cold. The mesh's
+    friction power (the base's |F v|) warms the teeth with the time constant
+    :data:`GEAR_HEAT` x the record (:func:`_tooth_warming`); warm, they swell, closing up
+    to :data:`GEAR_CLOSE` of the play, and soften, losing up to :data:`GEAR_SOFT` of the
+    flanks' stiffness (:func:`_warm_mesh`). After each reversal the play is crossed and
+    the force built through the flank (the teeth's compliance in series with the stiff
+    flank of the other forms): a shorter crossing and a softer build-up as the record goes
+    on. The contact is light (:func:`.truths._contact_constants`), with the
+    base's LuGre friction; the measured force is its friction. At ``s`` = 0 the base
+    itself.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s], x [m]) and its base law (a classic LuGre).
+        The motion on the fine grid (t [s], x [m], v [m/s]) and its base law (a classic
+        LuGre).
     s : float
-        Amplitude factor [-]: the square root of the play and the mesh's compliance, /
+        Amplitude factor [-]: the square root of the play and the flanks' compliance, /
         their values at strength 1 (as the open plays').
 
     Returns
@@ -758,106 +715,117 @@ def mesh_stiffness_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Gear pairs with backlash and a time-varying mesh stiffness (Kahraman and Singh 1990,
-    Non-linear dynamics of a spur gear pair, J. Sound Vib. 142; ISO 6336-1, the mesh
-    stiffness c_gamma and the transverse contact ratio; Ozguven and Houser 1988). The
-    candidate holds or frees the force across a play, with a bias, a spring or a drag
-    across it; the open forms couple rigidly, compliantly, by impacts, springs, oil in
-    the play, an idler, a bias, chains, magnets, a preload, a hardening gear, a slipping
-    rope, a rubber spider, an oil column, a cable in a sheath or a clutch, with a play
-    varying with the position or the travel. Here the coupling's stiffness changes with
-    the tooth in mesh: the force's build-up after a reversal differs from one reversal to
-    the next, and the sliding force ripples at the tooth pitch.
+    Plastic gears' backlash allowance for thermal and moisture expansion and their
+    temperature-dependent tooth stiffness (VDI 2736 Blatt 2, 2014, Thermoplastic gear
+    wheels; Hooton 1969; Mao 2007, A new approach for polymer composite gear design,
+    Wear 262). The candidate holds or frees the force across a play, with a bias, a
+    spring or a drag across it; the open forms couple rigidly, compliantly, by impacts,
+    springs, oil in the play, an idler, a bias, chains, magnets, a preload, a hardening
+    gear, a slipping rope, a rubber spider, an oil column, a cable in a sheath, a clutch
+    or a mesh of varying stiffness, with a play varying with the position or the travel.
+    Here the play and the flank's stiffness follow the coupling's own heating: both
+    change over the record with the power the motion has put through the mesh.
     """
-    p = _lugre_params(kin, "backlash (mesh_stiffness)")
+    p = _lugre_params(kin, "backlash (polymer_gear)")
     if s <= 0.0:
         return _base_parts(kin)[0]
     m, kh, _ = _contact_constants(kin, p)
     stroke = float(np.ptp(kin.x))
     Fc = float(p.Fc)
-    half = 0.5 * float(s) ** 2 * MESH_PLAY * stroke
-    k1 = Fc / max(float(s) ** 2 * MESH_COMPLIANCE * stroke, 1e-300)
-    k1 = min(k1, kh)                      # never stiffer than the other forms' flanks
+    half0 = 0.5 * float(s) ** 2 * GEAR_PLAY * stroke
+    # the teeth's compliance (cold) in series with the other forms' stiff flank
+    comp = float(s) ** 2 * GEAR_COMPLIANCE * stroke / Fc
+    k1 = 1.0 / (1.0 / kh + comp)
     c1 = 2.0 * 0.5 * math.sqrt(k1 * m)
-    kmax = MESH_DOUBLE * k1
-    h, xd, n_sub = _substeps(kin, max(math.sqrt((kmax + float(p.sigma0)) / m),
+    t = np.asarray(kin.t, float)
+    F0 = _base_parts(kin)[0]
+    th = _tooth_warming(t, F0, kin.v, GEAR_HEAT * max(float(t[-1] - t[0]), 1e-12))
+    h, xd, n_sub = _substeps(kin, max(math.sqrt((k1 + float(p.sigma0)) / m),
                                       (float(p.sigma1) + float(p.sigma2) + c1) / m))
-    kfac = _mesh_factor(xd, MESH_PITCH * _span(kin), MESH_RATIO, MESH_DOUBLE)
-    F = _meshed_contact(h, xd, kfac, half, k1, c1, m, float(p.sigma0), float(p.sigma1),
-                        float(p.sigma2), Fc, float(p.Fs), float(p.vs), float(p.alpha),
-                        SHAPES[p.shape])
+    th_sub = np.interp(t[0] + h * np.arange(xd.size), t, th)
+    half = half0 * (1.0 - GEAR_CLOSE * th_sub)
+    kflank = 1.0 / (1.0 / kh + comp / (1.0 - GEAR_SOFT * th_sub))
+    F = _warm_mesh(h, xd, half, kflank, c1, m, float(p.sigma0), float(p.sigma1),
+                   float(p.sigma2), Fc, float(p.Fs), float(p.vs), float(p.alpha),
+                   SHAPES[p.shape])
     return F[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: the junctions' travel to slip at strength 1, beyond the base bristle's path, as a share
-#: of the stroke / 3 [-]; their share of the friction at strength 1 [-]; Tabor's growth
-#: coefficient (alpha mu^2 of (A / A0)^2 = 1 + alpha (F / W)^2, with the force over its slip
-#: value) [-]; the junctions (Iwan elements, slip strengths from 0.55 to 1 of the largest)
-#: [-]
-GROWTH_SLIP, GROWTH_SHARE, GROWTH_ALPHA, GROWTH_JUNCTIONS = 0.1, 0.7, 15.0, 8
+#: the junctions' travel to slip at strength 1, beyond the base bristle's path, as a share of
+#: the stroke / 3 [-]; their share of the friction at strength 1 [-]; the junctions in the
+#: chain [-]; the coupling between neighbours, x a junction's own stiffness [-]; the force a
+#: junction keeps after it slips, x its strength (the static-to-dynamic drop) [-]
+AVAL_SLIP, AVAL_SHARE, AVAL_BLOCKS, AVAL_COUPLING, AVAL_DROP = 0.1, 0.7, 24, 3.0, 0.8
 
 
-def _growth_integral(alpha):
-    """The travel to slip [-] of a junction of unit initial stiffness over unit slip force:
-    the integral of (1 + ``alpha`` r^2)^-1/4 over r in [0, 1]."""
-    r = np.linspace(0.0, 1.0, 4001)
-    y = (1.0 + alpha * r * r) ** -0.25
-    return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(r)))
+def _strengths(n):
+    """The chain's junction strengths [-]: 0.6 to 1, spread along the chain by the golden
+    ratio's sequence (no two neighbours alike, the same every time)."""
+    g = (math.sqrt(5.0) - 1.0) / 2.0
+    return 0.6 + 0.4 * np.mod(np.arange(n) * g, 1.0)
 
 
 @njit(cache=True)
-def _growing_junctions(x, caps, kappa, alpha):
-    """The junctions' force f [-] (1 when all slip) along the positions ``x`` [m]: junction
-    j carries r_j ``caps``[j] with r_j in [-1, 1] (slipping at +-1), dr_j = ``kappa``[j]
-    (1 + ``alpha`` r_j^2)^(1/4) dx (its stiffness ~ its contact radius, which grows with
-    the force it carries). Starts unloaded."""
+def _avalanche_chain(x, caps, kp, kc, drop):
+    """The chain's force f [-] (over its summed strengths x (1 + ``drop``) / 2, about 1
+    while it slides) along the positions ``x`` [m]: junction i sits at u_i [m], pulled by
+    the moving body with ``kp`` (x - u_i) and by its neighbours with ``kc`` (u_(i-1) +
+    u_(i+1) - 2 u_i) [-]; where that force passes its strength ``caps``[i] it slips until
+    ``drop`` x its strength is left, which loads its neighbours; repeated until every
+    junction holds (an avalanche). Starts unloaded."""
     n = x.size
     m = caps.size
-    r = np.zeros(m)
+    u = np.full(m, x[0])
     out = np.empty(n)
     out[0] = 0.0
-    full = np.sum(caps)
+    norm = np.sum(caps) * 0.5 * (1.0 + drop)
     for k in range(1, n):
-        dx = x[k] - x[k - 1]
+        xk = x[k]
+        for _ in range(50 * m):
+            moved = False
+            for i in range(m):
+                f = kp * (xk - u[i])
+                nb = 0.0
+                if i > 0:
+                    f += kc * (u[i - 1] - u[i])
+                    nb += kc
+                if i < m - 1:
+                    f += kc * (u[i + 1] - u[i])
+                    nb += kc
+                if abs(f) > caps[i]:
+                    target = drop * caps[i] if f > 0.0 else -drop * caps[i]
+                    u[i] += (f - target) / (kp + nb)
+                    moved = True
+            if not moved:
+                break
         tot = 0.0
-        for j in range(m):
-            rj = r[j]
-            # the midpoint's stiffness (the step is small against the travel to slip)
-            half = rj + 0.5 * kappa[j] * (1.0 + alpha * rj * rj) ** 0.25 * dx
-            rj = rj + kappa[j] * (1.0 + alpha * half * half) ** 0.25 * dx
-            if rj > 1.0:
-                rj = 1.0
-            elif rj < -1.0:
-                rj = -1.0
-            r[j] = rj
-            tot += rj * caps[j]
-        out[k] = tot / full
+        for i in range(m):
+            tot += kp * (xk - u[i])
+        out[k] = tot / norm
     return out
 
 
 @on_fine_grid
-def junction_growth_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The presliding junctions beside the bristle grow under the tangential force
-    (Tabor's junction growth: (A / A0)^2 = 1 + alpha (F / W)^2): each junction's contact
-    radius, and with it its tangential stiffness (Mindlin's 8 G* a), rises as (1 +
-    :data:`GROWTH_ALPHA` r^2)^(1/4) of its force over its slip force r
-    (:func:`_growing_junctions`; :data:`GROWTH_JUNCTIONS` Iwan elements of slip strengths
-    0.55 to 1, travel to slip in proportion). Loaded from rest a junction stiffens up to
-    its slip; unloaded from slip it is stiff at first, soft through zero force and stiff
-    again towards the other slip: the loops are S-shaped. The largest travel to slip is
-    the base bristle's path Fs / sigma0 plus ``s`` :data:`GROWTH_SLIP` x the stroke / 3;
-    a share w = :data:`GROWTH_SHARE` min(``s``, 1) of the friction is the junctions'
-    (their sliding force the Stribeck level, the viscous term the base's): F = (1 - w)
-    F_lugre + w (g(v) f + sigma2 v). At ``s`` = 0 the base itself.
+def slip_avalanches_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The presliding junctions beside the bristle (:data:`AVAL_BLOCKS` of them, strengths
+    0.6 to 1: :func:`_strengths`) are held to the moving body each by its own stiffness
+    and to its neighbours by the elastic body between them (:data:`AVAL_COUPLING` x as
+    stiff): a junction slips where its force passes its strength, keeps
+    :data:`AVAL_DROP` of it and passes the rest on to its neighbours, which may slip in
+    turn (:func:`_avalanche_chain`). The largest junction's travel to slip on its own is
+    the base bristle's path Fs / sigma0 plus ``s`` :data:`AVAL_SLIP` x the stroke / 3; a
+    share w = :data:`AVAL_SHARE` min(``s``, 1) of the friction is the chain's (its
+    sliding force the Stribeck level, the viscous term the base's): F = (1 - w) F_lugre +
+    w (g(v) f + sigma2 v). At ``s`` = 0 the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the junctions' share (up to ``s`` = 1) and their travel to
-        slip (as the open presliding forms' path).
+        Amplitude factor [-]: the chain's share (up to ``s`` = 1) and its travel to slip
+        (as the open presliding forms' path).
 
     Returns
     -------
@@ -866,27 +834,26 @@ def junction_growth_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Junction growth under combined normal and tangential loading (McFarlane and Tabor
-    1950, Relation between friction and adhesion, Proc. R. Soc. A 202; Tabor 1959,
-    Junction growth in metallic friction, Proc. R. Soc. A 251; Johnson 1985, Contact
-    Mechanics, ch. 7, for the stiffness ~ the contact radius). Maxwell-slip (the
-    candidate) and the open forms use equal, geometric or power-law strengths, path laws,
-    an elastic range, rate-dependent creep, Mindlin's 3/2 law, multistable tips, bonds, a
-    fabric, a back-stress, a climb out of a nest, capillary bridges, a hardening yield,
-    peeling junctions or load-dependent microslip, each softening as it loads. Here each
-    junction stiffens as it loads: the virgin curve is convex up to the slips and the
-    loops are pinched, the reverse of Masing's.
+    The spring-block (Burridge and Knopoff 1967, Model and theoretical seismicity, Bull.
+    Seismol. Soc. Am. 57) and Olami-Feder-Christensen (1992, Phys. Rev. Lett. 68) models;
+    precursors of sliding as detachment fronts (Rubinstein, Cohen and Fineberg 2007,
+    Phys. Rev. Lett. 98; Braun, Barel and Urbakh 2009). Maxwell-slip (the candidate) and
+    the open forms use equal, geometric or power-law strengths, path laws, an elastic
+    range, rate-dependent creep, Mindlin's 3/2 law, multistable tips, bonds, a fabric, a
+    back-stress, a climb out of a nest, capillary bridges, a hardening yield, peeling,
+    load-dependent microslip or growing junctions, each element on its own. Here the
+    elements are coupled: one slip sets off others, so the presliding curve climbs in
+    bursts and its steps, and the sliding force's flicker, come in avalanches.
     """
-    p = _lugre_params(kin, "gms (junction_growth)")
+    p = _lugre_params(kin, "gms (slip_avalanches)")
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    e0, extra = _presliding_path(kin, s, GROWTH_SLIP)
-    w = GROWTH_SHARE * min(float(s), 1.0)
+    e0, extra = _presliding_path(kin, s, AVAL_SLIP)
+    w = AVAL_SHARE * min(float(s), 1.0)
     v = np.asarray(kin.v, float)
-    caps = np.linspace(0.55, 1.0, GROWTH_JUNCTIONS)
-    # travel to slip in proportion to the strength (equal initial stiffness per strength)
-    kappa = _growth_integral(GROWTH_ALPHA) / ((e0 + extra) * caps)
-    f = _growing_junctions(np.ascontiguousarray(kin.x, dtype=float), caps, kappa,
-                           GROWTH_ALPHA)
+    caps = _strengths(AVAL_BLOCKS)
+    kp = 1.0 / (e0 + extra)          # the strongest junction slips alone after e0 + extra
+    f = _avalanche_chain(np.ascontiguousarray(kin.x, dtype=float), caps, kp,
+                         AVAL_COUPLING * kp, AVAL_DROP)
     return (1.0 - w) * F + w * (kin.base.g(v) * f + float(p.sigma2) * v)

@@ -1,5 +1,5 @@
 """The seventeenth seen truth family (diagnosis.benchmark.seen17, sealed in session 22, run
-once at the end of session 23 on <COMMIT>, <TOP1> top-1, now open): each form builds a finite
+once at the end of session 23 on 5f0e273, 47.2 % top-1, now open): each form builds a finite
 case of the requested size on every plant it applies to, is the base law at s = 0, grows with
 its amplitude factor and refuses the plants it does not apply to."""
 import dataclasses

@@ -95,9 +95,10 @@ def test_confounded_covariates_are_reported_beside_the_name():
     v = np.sin(2 * np.pi * 2 * t)
     load = np.where(v > 0, 8e5, 2e5) + 3e4 * rng.standard_normal(t.size)
     rec = Dataset.from_arrays(t=t, x=np.cumsum(v) * 1e-3, v=v, F=np.ones(t.size), load=load)
-    pairs = confounding([rec])
-    assert [p["covariates"] for p in pairs] == [["direction", "load"]]
-    assert pairs[0]["corr"] > 0.9
+    pairs = {tuple(p["covariates"]): p["corr"] for p in confounding([rec])}
+    # (one frequency: the acceleration is -omega^2 x as well)
+    assert set(pairs) == {("direction", "load"), ("a", "x")}
+    assert pairs[("direction", "load")] > 0.9 and pairs[("a", "x")] < -0.99
     verdict = {"cause": "asymmetry", "gap_closed": 0.7}
     _note_confounding(verdict, [{"name": "asymmetry", "gap_closed": 0.7},
                                 {"name": "load", "gap_closed": 0.13}], [rec])
@@ -107,9 +108,39 @@ def test_confounded_covariates_are_reported_beside_the_name():
     # a load that varies within each direction is not confounded with it
     free = Dataset.from_arrays(t=t, x=np.cumsum(v) * 1e-3, v=v, F=np.ones(t.size),
                                load=5e5 + 3e5 * rng.standard_normal(t.size))
-    assert confounding([free]) == []
+    assert [p["covariates"] for p in confounding([free])] == [["a", "x"]]
     verdict = {"cause": "asymmetry", "gap_closed": 0.7}
     _note_confounding(verdict, [{"name": "load", "gap_closed": 0.13}], [free])
+    assert "confounded" not in verdict
+
+
+def test_position_on_a_stroke_at_one_frequency_is_reported_confounded_with_acceleration():
+    # a = -omega^2 x on a sine stroke: a position map draws an acceleration effect, and a
+    # named position says so; two frequencies apart, position and acceleration separate
+    from diagnosis.core import _note_confounding, confounding
+    from friction.dataset import Dataset
+    t = np.arange(4000) * 1e-3
+    x = 0.01 * np.sin(2 * np.pi * 2 * t)
+    v = np.gradient(x, t)
+    sine = Dataset.from_arrays(t=t, x=x, v=v, F=np.ones(t.size))
+    verdict = {"cause": "position", "gap_closed": 0.6}
+    effects = [{"name": "position", "gap_closed": 0.6},
+               {"name": "acceleration", "gap_closed": 0.55}, {"name": "drift", "gap_closed": 0.0}]
+    _note_confounding(verdict, effects, [sine])
+    assert verdict["cause"] == "position"
+    assert [f["effect"] for f in verdict["confounded"]] == ["acceleration"]
+    assert verdict["confounded"][0]["covariates"] == ["a", "x"]
+    assert "a and x move together (correlation -1.00)" in verdict["reason"]
+    # the same named acceleration is reported confounded with position
+    verdict = {"cause": "acceleration", "gap_closed": 0.55}
+    _note_confounding(verdict, effects, [sine])
+    assert [f["effect"] for f in verdict["confounded"]] == ["position"]
+    # two frequencies of unrelated amplitudes: a no longer follows x
+    x2 = 0.01 * np.sin(2 * np.pi * 2 * t) + 0.002 * np.sin(2 * np.pi * 11 * t)
+    two = Dataset.from_arrays(t=t, x=x2, v=np.gradient(x2, t), F=np.ones(t.size))
+    assert not [p for p in confounding([two]) if p["covariates"] == ["a", "x"]]
+    verdict = {"cause": "position", "gap_closed": 0.6}
+    _note_confounding(verdict, effects, [two])
     assert "confounded" not in verdict
 
 

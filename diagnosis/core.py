@@ -225,8 +225,8 @@ CONFOUND_CORR = 0.7
 #: the effects told apart by the acceleration covariate ``a`` in :func:`confounding`: on a
 #: stroke at one frequency a = -omega^2 x, and a position map draws what they draw (the
 #: benchmark's isolator: a against x, R^2 0.84 on its fit part and 1.000 on its held-out
-#: part; session 23's sealed family there: acceleration and drift truths named position in
-#: 8 of 16 cases)
+#: part; the seventeenth sealed family, run at the end of session 23, named all 8 of its
+#: acceleration and drift cases there position, and 1 of its 4 inertia cases)
 ACCELERATION_EFFECTS = ("acceleration", "inertia")
 
 

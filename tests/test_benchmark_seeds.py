@@ -1,5 +1,7 @@
 """The generalisation grid's cases keep their noise seeds and measurement protocols when a
 family is added (diagnosis.benchmark.runner.grid_jobs): paired comparisons across sessions."""
+import pytest
+
 from diagnosis.benchmark.runner import MEASURED, grid_jobs
 from diagnosis.effects import EFFECTS
 
@@ -12,6 +14,7 @@ def _grid(effects, forms="all"):
                      True, True, 0)
 
 
+@pytest.mark.slow  # 10 s (every form's reach on two plants); protocols and seeds below
 def test_a_case_is_the_same_job_whatever_else_is_in_the_grid():
     full = {(j[0], j[1], j[7], j[2], j[3]): j for j in _grid(EFFECTS_WITH_TRUTHS)}
     alone = _grid(["drift"])

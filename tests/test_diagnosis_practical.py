@@ -289,6 +289,7 @@ def test_a_deferring_candidate_ranks_behind_its_simpler_form_and_is_not_named():
     assert v["cause"] == "unexplained" and "mass term" in v["reason"]
 
 
+@pytest.mark.slow  # 21 s: the suite's budget; inertia against acceleration is also test_diagnosis's
 def test_an_added_mass_with_memory_is_named_inertia_not_acceleration():
     # grid case (valve, basset_added_mass, 1 % noise, gradient of 200-count positions): the
     # acceleration part closed 0.87 of the gap above the floor as dm a (a_s, v_c at the top

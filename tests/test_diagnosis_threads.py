@@ -19,6 +19,7 @@ def _effects(rep):
             for e in rep["effects"]}
 
 
+@pytest.mark.slow  # 9 s: the suite's budget; test_the_fits_run_on_two_threads stays
 def test_two_threads_give_the_serial_report_bit_for_bit(case):
     serial = diagnose(case, "lugre", threads=1)
     threaded = diagnose(case, "lugre", threads=2)

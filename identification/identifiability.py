@@ -237,12 +237,17 @@ def _refit_normal(fit, base, free, x0, max_nfev):
     return full(res.x), float(2.0 * res.cost)
 
 
+def _unit(space, j, x, value) -> float:
+    """Parameter ``j`` at ``value`` (physical units) in its search box's coordinates [-]
+    (0 and 1 the box's edges; log scale for positive parameters); ``x`` the estimate, the
+    other parameters' values."""
+    return float(space.to_unit(np.where(np.arange(len(x)) == j, value, x))[j])
+
+
 def _box_share(space, j, x, low, high) -> float:
     """Share of parameter ``j``'s search box [-] (in its search coordinates) that the
     interval ``[low, high]`` covers; ``x`` the estimate (the other parameters' values)."""
-    at = np.arange(len(x)) == j
-    ends = [float(space.to_unit(np.where(at, v, x))[j]) for v in (low, high)]
-    return abs(ends[1] - ends[0])
+    return abs(_unit(space, j, x, high) - _unit(space, j, x, low))
 
 
 def _profile_side(fit, j, sgn, thresh2, step0, budget_left):
@@ -853,8 +858,7 @@ def assess_identifiability(objective, space, u, cost, *, model, data, jac=None,
             continue
         end = e["low"] if side == "lower" else e["high"]
         if abs(fit.u[j] - (0.0 if side == "lower" else 1.0)) > 0 and \
-                abs(float(space.to_unit(np.where(np.arange(D) == j, end, x))[j])
-                    - (0.0 if side == "lower" else 1.0)) > ON_BOUND:
+                abs(_unit(space, j, x, end) - (0.0 if side == "lower" else 1.0)) > ON_BOUND:
             del at_side[j]
             report["at_bound"].remove(n)
             del report["bounds"][n]

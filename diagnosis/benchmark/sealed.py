@@ -1,12 +1,12 @@
-"""The eighteenth sealed truth family: one more mechanism per effect, kept out of all tuning.
+"""The nineteenth sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-11-30 (session 23) by another hand, once, without running the diagnosis on it;
+Written 2026-11-30 (session 24) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 22's, was run once at the end of session 23 and is :mod:`.seen17`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen17`
+sealed before it, session 23's, was run once at the end of session 24 and is :mod:`.seen18`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen18`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen17`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen18`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`), taken from the friction literature or from real
 machines, integrated along the plant's continuous motion on the grid :data:`.kinematics.FINE`
@@ -18,72 +18,72 @@ amplitude monotonically from the base law at ``s`` = 0 (its calibration,
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``ball_train``: the balls of a recirculating guide's return channel
-                   (or a ball nut's) are pushed as a train through the end cap's
-                   turnaround by the balls leaving the loaded zone; speeding the carriage
-                   up compresses the train, whose ball-to-ball and wall contacts slide
-                   (Ohta and Tanaka 2010; the makers' ball spacers and retainers):
-                   a drag with the speeding-up acceleration only; slowing down, the
-                   train runs on by itself and opens
-load               ``ploughing_onset``: beside the adhesive friction, the harder
-                   surface's asperities (or embedded hard particles) plough grooves in
-                   the softer one once the load passes the yield onset (Bowden and
-                   Tabor 1950; Goddard and Wilman 1962; Suh and Sin 1981): a ploughing
-                   force ~ (load - onset)^1.5 (a groove's section, ~ its width cubed)
-                   above the onset, nothing below
-asymmetry          ``running_belt``: a skid shoe of the carriage rests on a conveyor
-                   belt running at a fixed speed in the positive direction (a shuttle
-                   beside a running transfer belt): its friction follows the *relative*
-                   velocity v - u_belt: the belt pulls the carriage forward at rest and
-                   in the negative direction, and drags it only above the belt's speed
-stribeck_shape     ``bellows_breathing``: the way's accordion bellows cover is
-                   compressed and stretched by the carriage and breathes through its
-                   vents: the orifice law (Delta p ~ rho (Q / A)^2) makes a drag ~ v^2,
-                   which turns linear in v once the vents' flow chokes (the sonic
-                   limit of compressible orifice flow, Saint-Venant and Wantzel 1839)
-position           ``false_brinelling``: the carriage was parked where fit and held-out
-                   parts both pass while the machine vibrated (transport, a nearby
-                   press): its balls wore dents in the raceway at their pitch (false
-                   brinelling, Almen 1937; Tallian 1992): rolling over them, the balls
-                   drop into and climb out of the dents, most where all balls meet
-                   dents at once: a pattern at the ball pitch whose envelope falls
-                   linearly over the carriage's loaded length either side
-inertia            ``feedforward_lead``: the force is read from the drive's force
-                   command, which carries an acceleration feedforward of the *commanded*
-                   trajectory with a mass setting off the true one (Tomizuka 1987;
-                   Altintas 2012): the command leads the measured motion by the servo's
-                   tracking lag, so the missed mass multiplies the acceleration of a
-                   moment *later*
-delay              ``transducer_resonance``: the force transducer with the mass mounted
-                   on it is a lightly damped spring-mass system (the dynamic
-                   calibration of force transducers, Kumme 1996; ISO 4965): its
-                   reading follows the force through a second-order low-pass of low
-                   damping: a lag on ramps and a ringing after each fast change
-drift              ``screw_loosening``: the gib's (or the preloaded nut's) clamping
-                   screw works loose by the transverse slip each reversal puts through
-                   its joint (self-loosening, Junker 1969; DIN 65151): the preload, and
-                   the levels, fall step by step at the reversals, a share of what is
-                   left at each: a drift that follows the count of reversals, not the
-                   clock or the travel
-backlash           ``polymer_gear``: drive and contact joined by a plastic gear (POM,
-                   PA) with play: the mesh's friction power warms the teeth, which swell
-                   (the play closes) and soften (the flanks' compliance grows) with
-                   their temperature (VDI 2736; the makers' backlash allowances for
-                   plastic gears): the lost motion at the reversals shrinks over the
-                   record while the force's build-up after them grows softer
-gms                ``slip_avalanches``: the presliding junctions beside the bristle are
-                   coupled to their neighbours through the elastic body between them
-                   (the Burridge-Knopoff chain, 1967; Olami, Feder and Christensen
-                   1992; Rubinstein, Cohen and Fineberg 2007's precursors): a junction
-                   that slips loads its neighbours and may set off a slip avalanche, so
-                   the presliding curve climbs in bursts of all sizes, not element by
-                   element; at ``s`` = 0 the base itself
+acceleration       ``current_ripple``: the drive's current controller is a hysteresis
+                   (bang-bang) controller whose band is a share of the current command
+                   (Bose 1990's adaptive band): its high-frequency force ripple, and the
+                   contact's tangential velocity ripple, grow with the thrust, i.e.
+                   with |a|; a fast tangential vibration averages the friction's sign
+                   (dither), so the friction falls where the speed is below the ripple's
+                   velocity amplitude: at low speed under a strong acceleration
+load               ``viscoelastic_rolling``: a hard support roller of the carriage runs
+                   on a viscoelastic (polyurethane-coated) track: its hysteresis rolling
+                   resistance ~ L^(4/3) tan(delta) (Greenwood, Minshall and Tabor 1961),
+                   the track's loss factor (a standard linear solid) taken at the
+                   excitation rate v / a, a the contact's half-width ~ L^(1/3): a drag
+                   that grows faster than the load and whose speed of peak loss moves
+                   up with the load
+asymmetry          ``leaning_brush``: a strip brush (a way wiper's bristles) fixed to the
+                   carriage with its bristles leaning towards +x: moving with the lean
+                   the bristles bend over, a low force built over a long, soft path;
+                   moving against it they stand up and dig in, a high force built over a
+                   short, stiff path (brush seal hysteresis, Chupp and Dowler 1993):
+                   direction-dependent levels *and* presliding paths
+stribeck_shape     ``eddy_brake``: a conductive fin of the carriage runs between
+                   permanent magnets (an eddy-current brake, a magnetic damper): its drag
+                   rises linearly with the speed and falls beyond the critical speed at
+                   which the eddy currents' own field expels the magnets' (the skin
+                   effect; Wouterse 1991): 2 F_max u / (1 + u^2), u = v / v_crit
+position           ``rail_joint``: the rail is butt-jointed from two pieces where fit and
+                   held-out parts both pass, the piece on the +x side a little higher:
+                   while the carriage straddles the joint the share of its rolling
+                   elements on the high piece carries more preload (levels up with that
+                   share, which grows linearly across the carriage's loaded length) and
+                   the extra elastic energy pushes it back towards -x (a conservative
+                   force while it straddles)
+inertia            ``abbe_pitch``: the linear scale is read at a height off the
+                   carriage's centre of mass (an Abbe offset) and the carriage pitches on
+                   its guides' compliance under the acceleration's moment (a pitch mode):
+                   the read acceleration carries the scale head's pitch motion, so the
+                   inverse dynamics misses the mass times a high-passed acceleration
+                   (s^2 / (s^2 + 2 zeta omega s + omega^2) of a)
+delay              ``gauge_snubber``: the force read as a pressure through a gauge
+                   snubber (an orifice restrictor) into the transducer's volume: the
+                   flow through it has a laminar and a turbulent part (Delta p = R_l Q +
+                   R_t Q |Q|), so the reading lags the force by a time that grows with
+                   the force's rate of change
+drift              ``film_dewetting``: the thin lubricant film on the track dewets:
+                   holes nucleate after an incubation time and grow at a constant speed
+                   (Reiter 1992), so the bare share of the track follows Avrami's
+                   kinetics 1 - exp(-(t / t_d)^3) and the boundary levels rise with it
+backlash           ``grease_packed_gap``: drive and contact joined across a play packed
+                   with grease (a Bingham plastic, yield stress tau_y): the grease
+                   squeezed out of the closing side resists as ~ tau_y / h (a Bingham
+                   squeeze film, Covey and Stanmore 1981), so the contact is dragged
+                   along before the flanks meet once the thinning gap's force passes its
+                   friction: a gradual take-up of the play
+gms                ``slip_weakening``: the presliding junctions beside the bristle weaken
+                   with their own slip: each one's strength falls linearly from its peak
+                   to a residual over a critical slip distance (Rabinowicz 1951; Palmer
+                   and Rice 1973) and heals when its slip reverses, so every reversal's
+                   presliding curve climbs to a peak and falls back to the sliding level
+                   over the slip distance, whatever the speed; at ``s`` = 0 the base
+                   itself
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``bellows_breathing``
-needs a Stribeck curve (not the isolator's mre_lugre), ``false_brinelling`` a record that
-revisits its positions (not the press), ``ploughing_onset`` a load that changes,
-``polymer_gear`` and ``slip_avalanches`` a classic LuGre base (valve, damping rig,
+Where a form applies: as its effect's record (``truth_applies``); ``eddy_brake`` needs a
+Stribeck curve (not the isolator's mre_lugre), ``rail_joint`` a record that revisits its
+positions (not the press), ``viscoelastic_rolling`` a load that changes,
+``grease_packed_gap`` and ``slip_weakening`` a classic LuGre base (valve, damping rig,
 XML-350); each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
@@ -98,57 +98,56 @@ from friction.shapes import SHAPES
 from .kinematics import PlantKinematics
 from .truths import (_base_parts, _bump_centre, _contact_constants, _level,
                      _light_contact_step, _lugre_params, _motion_time, _presliding_path,
-                     _smooth_max0, _span, _substeps, has_stribeck_curve, level_inside,
-                     on_fine_grid)
+                     _smooth_max0, _substeps, has_stribeck_curve, level_inside, on_fine_grid)
 
-__all__ = ["FORMS", "ball_train_truth", "ploughing_onset_truth", "running_belt_truth",
-           "bellows_breathing_truth", "false_brinelling_truth", "feedforward_lead_truth",
-           "transducer_resonance_truth", "screw_loosening_truth", "polymer_gear_truth",
-           "slip_avalanches_truth"]
+__all__ = ["FORMS", "current_ripple_truth", "viscoelastic_rolling_truth",
+           "leaning_brush_truth", "eddy_brake_truth", "rail_joint_truth",
+           "abbe_pitch_truth", "gauge_snubber_truth", "film_dewetting_truth",
+           "grease_packed_gap_truth", "slip_weakening_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "ball_train", "load": "ploughing_onset",
-         "asymmetry": "running_belt", "stribeck_shape": "bellows_breathing",
-         "position": "false_brinelling", "inertia": "feedforward_lead",
-         "delay": "transducer_resonance", "drift": "screw_loosening",
-         "backlash": "polymer_gear", "gms": "slip_avalanches"}
+FORMS = {"acceleration": "current_ripple", "load": "viscoelastic_rolling",
+         "asymmetry": "leaning_brush", "stribeck_shape": "eddy_brake",
+         "position": "rail_joint", "inertia": "abbe_pitch",
+         "delay": "gauge_snubber", "drift": "film_dewetting",
+         "backlash": "grease_packed_gap", "gms": "slip_weakening"}
 
 
 # -- acceleration ----------------------------------------------------------------------------
-#: ``ball_train``'s drag at the top acceleration, x the friction level, at strength 1 [-];
-#: the speed the train's motion is rounded over, x the top speed [-]
-TRAIN_DRAG, TRAIN_ROUND = 0.5, 0.02
+#: ``current_ripple``'s velocity amplitude of the contact's ripple at the top acceleration,
+#: x the top speed, at strength 1 [-]; the lowest relative level the averaging leaves [-];
+#: the speed the averaging is rounded over, x the top speed [-]
+RIPPLE_SPEED, RIPPLE_FLOOR, RIPPLE_ROUND = 0.3, 0.05, 1e-4
 
 
-def _train_push(v, a, v_round):
-    """The ball train's compression [-] (over the one at ``a`` = 1) along the velocities
-    ``v`` [m/s] and accelerations ``a`` [m/s^2] and the direction of travel tanh(v /
-    ``v_round``) it is pushed in: the speeding-up acceleration max(a sgn(v), 0);
-    slowing down, nothing pushes the train (it runs on and opens). Returns
-    (compression, direction)."""
-    sgn = np.tanh(np.asarray(v, float) / v_round)
-    return np.maximum(np.asarray(a, float) * sgn, 0.0), sgn
+def _dither_share(v, v_ripple, eps):
+    """The friction's share [-] left by averaging its sign over a fast sinusoidal velocity
+    ripple of amplitude ``v_ripple`` [m/s] about the velocities ``v`` [m/s]: (2 / pi)
+    asin(|v| / v_ripple) below the ripple's amplitude, 1 above (the speeds rounded by
+    ``eps`` [m/s], so that no ripple leaves the friction whole)."""
+    u = (np.abs(np.asarray(v, float)) + eps) / (np.asarray(v_ripple, float) + eps)
+    return np.where(u < 1.0, (2.0 / np.pi) * np.arcsin(np.minimum(u, 1.0)), 1.0)
 
 
 @on_fine_grid
-def ball_train_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The contact is a recirculating ball guide (or a ball nut) without spacers: the
-    balls leaving the loaded zone push the balls of the return channel as a train through
-    the end cap's curved turnaround. Speeding the carriage up, the train must be
-    accelerated too and is compressed from behind; its balls turn the same way, so their
-    contacts with each other slide at twice their surface speed, and the turnaround's
-    wall takes the compression round the bend: both drag in proportion to the
-    compression (:func:`_train_push`). Slowing down, nothing pushes: the train runs on by
-    its own momentum and opens. The truth adds ``s`` :data:`TRAIN_DRAG` F_level max(a
-    sgn(v), 0) / a99 in the direction of travel to the base.
+def current_ripple_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The drive's current controller is a hysteresis (bang-bang) controller whose band
+    is a fixed share of the current command: the current, and the drive's force, ripple
+    at a high frequency with an amplitude proportional to the thrust, which the inertial
+    force m a dominates. The ripple shakes the contact tangentially with a velocity
+    amplitude v_r = ``s`` :data:`RIPPLE_SPEED` v99 |a| / a99, and the friction, whose sign
+    follows v + v_r sin(omega t), averages over a period to (2 / pi) asin(|v| / v_r) of
+    itself where |v| < v_r (:func:`_dither_share`). The Coulomb and Stribeck levels are
+    the base's times that share (at least :data:`RIPPLE_FLOOR`), inside the bristle
+    dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the train's mass times its contacts' friction, / its value
-        at strength 1.
+        Amplitude factor [-]: the controller's relative band (the ripple per unit of
+        current), / its value at strength 1.
 
     Returns
     -------
@@ -157,61 +156,68 @@ def ball_train_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Ball-to-ball contact and ball circulation resistance in linear ball guides and ball
-    screws (Ohta and Tanaka 2010, Effect of ball-to-ball contact on friction of linear
-    ball guides, Tribol. Trans.; THK's caged-ball technology and the makers' ball
-    spacers that prevent it). The candidate raises the levels with |a|, lagged, tilts them
-    with a and adds a force odd in a; the open forms lag the velocity, a film or a
-    contact state, heat the contact, skid rolling elements, move load between rows or
-    supports, press seals, pull with the thrust, squeeze or starve films, dilate, lift on
-    a wedge, shift a gib, soften an elastomer, swing a roller arm, unload by the jerk or
-    tilt a pressurised film. Here the drag depends on whether the carriage speeds up or
-    slows down: the product a v, not |a|, with nothing at all while it slows.
+    Hysteresis current control with a band proportional to the command (Bose 1990, An
+    adaptive hysteresis-band current control technique of a voltage-fed PWM inverter for
+    machine drive system, IEEE Trans. Ind. Electron. 37); friction averaged by a fast
+    tangential vibration (Thomsen 1999, Using fast vibrations to quench friction-induced
+    oscillations, J. Sound Vib. 228; Armstrong-Helouvry, Dupont and Canudas de Wit 1994).
+    The candidate raises the levels with |a|, lagged, tilts them with a and adds a force
+    odd in a; the open forms lag the velocity, a film or a contact state, heat the
+    contact, skid or push rolling elements, move load between rows or supports, press
+    seals, pull with the thrust, squeeze or starve films, dilate, lift on a wedge, shift a
+    gib, soften an elastomer, swing a roller arm, unload by the jerk or tilt a pressurised
+    film. Here the acceleration *lowers* the friction, and only where the speed is low
+    against the ripple it sets: most at the reversals of a strong acceleration.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     sc = kin.scales
+    v99 = max(sc["v99"], 1e-12)
     a99 = max(sc["a99"], 1e-12)
-    push, sgn = _train_push(kin.v, kin.a, TRAIN_ROUND * max(sc["v99"], 1e-12))
-    return F + float(s) * TRAIN_DRAG * _level(kin) * (push / a99) * sgn
+    v_r = float(s) * RIPPLE_SPEED * v99 * np.abs(np.asarray(kin.a, float)) / a99
+    share = _dither_share(kin.v, v_r, RIPPLE_ROUND * v99)
+    lev = np.maximum(share, RIPPLE_FLOOR)
+    return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- load ------------------------------------------------------------------------------------
-#: ``ploughing_onset``'s onset of the ploughing, as a percentile of the record's load [%];
-#: the ploughing force at the record's top load (its 99th percentile), x the friction
-#: level, at strength 1 [-]; the load the onset is rounded over, x the mean load [-]
-PLOUGH_ONSET, PLOUGH_SHARE, PLOUGH_ROUND = 40.0, 0.8, 0.01
+#: ``viscoelastic_rolling``'s rolling resistance at the record's top load (its 99th
+#: percentile) and the track's peak loss, x the friction level, at strength 1 [-]; the
+#: speed of peak loss at the record's mean load, x the top speed [-]
+ROLL_SHARE, ROLL_PEAK = 0.6, 0.3
 
 
-def _ploughing(load, onset, top, eps):
-    """The ploughing force [-] (1 at the load ``top``) along the loads ``load`` [N]: the
-    groove's section of a spherical asperity pressed past the yield onset ``onset`` [N],
-    ~ (L - onset)^1.5 (its width ~ sqrt(L - onset) cubed over its radius), nothing below
-    the onset (the excess rounded over ``eps`` [N])."""
-    e = _smooth_max0(np.asarray(load, float) - onset, eps)
-    ref = max(top - onset, eps)
-    return (e / ref) ** 1.5
+def _rolling_loss(v, load, v_peak, mean_load, top_load):
+    """The roller's hysteresis rolling resistance [-] (1 at the load ``top_load`` [N] and
+    the peak loss) at the velocities ``v`` [m/s] and loads ``load`` [N]: (L / L_top)^(4/3)
+    x 2 u / (1 + u^2), the standard linear solid's loss factor over its peak at the rate u
+    = (v / ``v_peak``) (L / ``mean_load``)^(-1/3) (the contact's half-width ~ L^(1/3)
+    sets the excitation rate v / a); odd in v, nothing at rest."""
+    L = np.maximum(np.abs(np.asarray(load, float)), 1e-9 * mean_load)
+    u = (np.asarray(v, float) / v_peak) * (mean_load / L) ** (1.0 / 3.0)
+    return (L / top_load) ** (4.0 / 3.0) * 2.0 * u / (1.0 + u * u)
 
 
 @on_fine_grid
-def ploughing_onset_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Beside the adhesive friction (the base's, following its own law), the harder
-    surface's asperities plough grooves in the softer surface once the load passes the
-    yield onset (:data:`PLOUGH_ONSET` percentile of the record's load): a spherical
-    asperity pressed in plastically makes a groove whose width grows as the square root
-    of the excess load and whose section, which the ploughing force pushes aside, as its
-    cube over the asperity's radius (:func:`_ploughing`). The Coulomb and Stribeck
-    levels are the base's times 1 + ``s`` :data:`PLOUGH_SHARE` (L - L_onset)_+^1.5 /
-    (L99 - L_onset)^1.5, inside the bristle dynamics; the viscous term is the base's.
+def viscoelastic_rolling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A hard support roller of the carriage (a cam follower, a guide wheel) runs under the
+    normal load on a viscoelastic track (a polyurethane-coated rail, a polymer liner).
+    The track is deformed ahead of the contact and recovers late behind it, so its
+    pressure is asymmetric and resists the rolling: the hysteresis rolling resistance
+    F_r = alpha (3 / 16) L a / R, a ~ (L R / E*)^(1/3) the contact's half-width, so F_r ~
+    L^(4/3), with alpha the track's loss at the excitation rate v / a (a standard linear
+    solid's 2 u / (1 + u^2), u = v tau / a; :func:`_rolling_loss`). The truth adds ``s``
+    :data:`ROLL_SHARE` F_level x that loss (1 at the record's top load and the peak loss,
+    the peak at :data:`ROLL_PEAK` v99 at the mean load) to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (load [N]) and its base law.
+        The motion on the fine grid (v [m/s], load [N]) and its base law.
     s : float
-        Amplitude factor [-]: the ploughing asperities' share (their number over their
-        radius), / its value at strength 1.
+        Amplitude factor [-]: the track's loss modulus over its stiffness (the roller's
+        share of the load), / its value at strength 1.
 
     Returns
     -------
@@ -220,190 +226,76 @@ def ploughing_onset_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The ploughing term of friction (Bowden and Tabor 1950, The Friction and Lubrication
-    of Solids, ch. 5; Goddard and Wilman 1962, A theory of friction and wear during the
-    abrasion of metals, Wear 5; Suh and Sin 1981, The genesis of friction, Wear 69);
-    the onset of yield under a sphere (Johnson 1985, Contact Mechanics, ch. 6). The
-    candidate's levels are affine in the load (two regimes); the open forms scale them
-    with a power of the load from zero, in one direction, through the Stribeck velocity,
-    a film, a step, a creep, a rate, a lever's play, a plastic area, a hinge, a cavitating
-    film, a pressure-viscous film, an erf area, a flash temperature, a relay, a renewal
-    over the slip, an adhesive area, the position of the load or a preload's relief.
-    Here a second term of other physics starts at a threshold and grows faster than the
-    load above it: nothing below the onset, convex above.
+    Hysteresis rolling resistance (Greenwood, Minshall and Tabor 1961, Hysteresis losses
+    in rolling and sliding friction, Proc. R. Soc. A 259; Johnson 1985, Contact Mechanics,
+    ch. 8; Persson 2010, Rolling friction for hard cylinder and sphere on viscoelastic
+    solids, Eur. Phys. J. E 33). The candidate's levels are affine in the load (two
+    regimes); the open forms scale them with a power of the load from zero, in one
+    direction, through the Stribeck velocity, a film, a step, a creep, a rate, a lever's
+    play, a plastic area, a hinge, a cavitating film, a pressure-viscous film, an erf
+    area, a flash temperature, a relay, a renewal over the slip, an adhesive area, the
+    position of the load, a preload's relief or a ploughing onset. Here a drag of its own
+    beside the friction, nothing at rest, whose speed of peak loss moves with the load:
+    load and speed enter together.
     """
     L = np.asarray(kin.load, float)
     Lm = max(float(np.mean(np.abs(L))), 1e-300)
     if not np.ptp(L) > 1e-9 * Lm:
-        raise ValueError(f"load (ploughing_onset): the {kin.plant} record's load does not "
-                         f"change")
+        raise ValueError(f"load (viscoelastic_rolling): the {kin.plant} record's load does "
+                         f"not change")
+    F = _base_parts(kin)[0]
     if s <= 0.0:
-        return _base_parts(kin)[0]
-    onset = float(np.percentile(L, PLOUGH_ONSET))
-    top = float(np.percentile(L, 99.0))
-    lev = 1.0 + float(s) * PLOUGH_SHARE * _ploughing(L, onset, top, PLOUGH_ROUND * Lm)
-    return level_inside(kin, lev, np.ones_like(lev))
+        return F
+    top = max(float(np.percentile(np.abs(L), 99.0)), 1e-300)
+    v_peak = ROLL_PEAK * max(kin.scales["v99"], 1e-12)
+    loss = _rolling_loss(kin.v, L, v_peak, Lm, top)
+    return F + float(s) * ROLL_SHARE * _level(kin) * loss
 
 
 # -- asymmetry -------------------------------------------------------------------------------
-#: ``running_belt``'s belt speed, x the top speed [-]; the shoe's friction, x the friction
-#: level, at strength 1 [-]; the relative speed the shoe's friction is rounded over, x the
-#: top speed [-]
-BELT_SPEED, BELT_SHOE, BELT_ROUND = 0.4, 0.4, 0.02
+#: ``leaning_brush``'s sliding force moving with the bristles' lean (+x) and against it
+#: (-x), x the friction level, at strength 1 [-]; the travel over which each builds up, x
+#: the stroke [-]
+BRUSH_WITH, BRUSH_AGAINST, BRUSH_PATH_WITH, BRUSH_PATH_AGAINST = 0.25, 0.8, 0.03, 0.004
 
 
-def _shoe_friction(v, u_belt, v_round):
-    """The skid shoe's friction [-] (over its Coulomb force) at the carriage's velocities
-    ``v`` [m/s] on a belt running at ``u_belt`` [m/s]: tanh((v - u_belt) / ``v_round``),
-    the sign of the slip against the belt, rounded."""
-    return np.tanh((np.asarray(v, float) - u_belt) / v_round)
-
-
-@on_fine_grid
-def running_belt_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A skid shoe of the carriage (a pusher's, a shuttle's) rests on a conveyor belt that
-    runs beside the axis at the fixed speed u = :data:`BELT_SPEED` v99 in the positive
-    direction. The shoe's friction follows the slip against the belt, v - u
-    (:func:`_shoe_friction`): at rest and moving in the negative direction the belt
-    pulls the carriage forward with the shoe's whole friction; moving in the positive
-    direction it still pulls while the carriage is slower than the belt and drags once
-    it is faster. The truth adds ``s`` :data:`BELT_SHOE` F_level tanh((v - u) / (
-    :data:`BELT_ROUND` v99)) to the base.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law.
-    s : float
-        Amplitude factor [-]: the shoe's friction (its spring's force), / its value at
-        strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Sliding on a moving counter-surface, the friction along the relative velocity
-    (Coulomb's law in the frame of the belt; belt conveyors' skid plates and pushers,
-    CEMA 2014, Belt Conveyors for Bulk Materials; pallets and accumulation on a running
-    belt). The candidate's twins and offset are the same at every speed; the open forms
-    change with the direction through twin levels, curves or a viscous slope, roll a lip,
-    load a thrust bearing, wipe a rod's film, climb a texture, compress a spring, wedge a
-    pad or a sprag, throttle an exhaust, meter a cylinder, pump through grooves, buckle a
-    cable, bulldoze chips, commutate late, tension an idler, lock a roller's clutch or
-    lay an oil film ahead. Here the counter-surface itself moves: the direction that
-    matters is the one of the slip against the belt, so the positive direction's force
-    changes sign at the belt's speed.
-    """
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    v99 = max(kin.scales["v99"], 1e-12)
-    shoe = _shoe_friction(kin.v, BELT_SPEED * v99, BELT_ROUND * v99)
-    return F + float(s) * BELT_SHOE * _level(kin) * shoe
-
-
-# -- stribeck_shape --------------------------------------------------------------------------
-#: ``bellows_breathing``'s drag at the top speed, x the Coulomb level, at strength 1 [-]; the
-#: speed at which the vents' flow chokes, x the top speed [-]
-BELLOWS_DRAG, BELLOWS_CHOKE = 0.5, 0.45
-
-
-def _vent_drag(u, choke):
-    """The bellows' pressure drag [-] at the relative speeds ``u`` = v / v99 [-]: the
-    orifice law's u |u| at low flows, linear in u once the flow chokes at ``choke``
-    [-]: u |u| / sqrt(1 + (u / choke)^2) (over its value at ``u`` = 1 times the same)."""
-    u = np.asarray(u, float)
-    return u * np.abs(u) / np.sqrt(1.0 + (u / choke) ** 2)
+@njit(cache=True)
+def _brush(x, f_with, f_against, p_with, p_against):
+    """The brush's force [N] along the positions ``x`` [m]: moving in +x (with the lean)
+    it approaches ``f_with`` [N] exponentially over the travel ``p_with`` [m], moving in
+    -x (against it) -``f_against`` [N] over ``p_against`` [m] (a Dahl law of each
+    direction's own level and path, exact for a piecewise-linear path). Starts unloaded."""
+    n = x.size
+    out = np.empty(n)
+    f = 0.0
+    out[0] = 0.0
+    for k in range(1, n):
+        dx = x[k] - x[k - 1]
+        if dx > 0.0:
+            f = f_with + (f - f_with) * math.exp(-dx / p_with)
+        elif dx < 0.0:
+            f = -f_against + (f + f_against) * math.exp(dx / p_against)
+        out[k] = f
+    return out
 
 
 @on_fine_grid
-def bellows_breathing_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The way is covered by an accordion bellows that the carriage compresses on one
-    side and stretches on the other; the air it displaces (its section times v) breathes
-    through the bellows' vents. Through an orifice the pressure difference grows with the
-    square of the flow, so the drag on the carriage grows as v |v|; once the vents' flow
-    chokes (the sonic limit of compressible orifice flow) the pressure ahead grows only in
-    proportion to the flow, so the drag turns linear in v (:func:`_vent_drag`). The truth
-    adds ``s`` :data:`BELLOWS_DRAG` Fc q(v / v99) / q(1) to the base, q the vent drag.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law (with a Stribeck curve).
-    s : float
-        Amplitude factor [-]: the bellows' section over its vents' (squared), / its value
-        at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Orifice flow and its choking (Saint-Venant and Wantzel 1839; ISO 6358 for pneumatic
-    components' sonic conductance); way covers and bellows of machine tools (Weck and
-    Brecher 2006, Werkzeugmaschinen 2). The open forms take other tails, lift-offs,
-    peaks, roughness, rate-and-state, Eyring films, starvation, rubber hysteresis,
-    resonances, dither, melt films, granular flow, readsorption, thermal, turbulent,
-    thixotropic films, churning or the drive's core losses, each a property of the contact,
-    its lubricant or the drive. Here the curve's new part is the air the cover pumps: a
-    drag that starts quadratic from zero and straightens at the choke, with no level at
-    rest.
-    """
-    law = kin.base
-    if not has_stribeck_curve(kin):
-        raise ValueError("stribeck_shape (bellows_breathing): the mre_lugre base has no "
-                         "Stribeck curve")
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    v99 = max(kin.scales["v99"], 1e-12)
-    q1 = float(_vent_drag(np.array([1.0]), BELLOWS_CHOKE)[0])
-    drag = float(s) * BELLOWS_DRAG * float(law.params.Fc) / q1
-    return F + drag * _vent_drag(np.asarray(kin.v, float) / v99, BELLOWS_CHOKE)
-
-
-# -- position --------------------------------------------------------------------------------
-#: ``false_brinelling``'s ball pitch, x the stroke [-]; the balls in a loaded row [-]; the
-#: dents' width (their standard deviation), x the pitch [-]; the levels' rise with every
-#: ball in a dent, at strength 1 [-]
-DENT_PITCH, DENT_BALLS, DENT_WIDTH, DENT_RISE = 0.04, 8, 0.15, 0.8
-
-
-def _dent_pattern(x, centre, pitch, balls, width):
-    """The share [-] of a row's balls in a dent along the positions ``x`` [m] of a carriage
-    parked at ``centre`` [m]: the dents sit at the parked balls' places, a ``pitch`` [m]
-    apart; moved by k pitches, ``balls`` - |k| of the balls meet a dent at once (a
-    triangle of half-width ``balls`` pitches), and each dent's depth profile is a
-    Gaussian of ``width`` pitches."""
-    d = (np.asarray(x, float) - centre) / pitch
-    frac = d - np.round(d)
-    dent = np.exp(-0.5 * (frac / width) ** 2)
-    return np.clip(1.0 - np.abs(d) / balls, 0.0, None) * dent
-
-
-@on_fine_grid
-def false_brinelling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage stood parked, while the machine vibrated, where fit and held-out parts
-    both pass (:func:`.truths._bump_centre`): the balls of its loaded row
-    (:data:`DENT_BALLS`, a pitch :data:`DENT_PITCH` x the stroke apart) wore shallow
-    dents in the raceway where they stood. Rolling over them, a ball drops into a dent
-    and climbs out of it: the rolling resistance rises while balls sit in dents, most
-    where all of them meet their dents at once (the parked position, and every pitch
-    from it with one ball fewer: :func:`_dent_pattern`). The Coulomb and Stribeck levels
-    are the base's times 1 + ``s`` :data:`DENT_RISE` x the share of balls in a dent,
-    inside the bristle dynamics; the viscous term is the base's.
+def leaning_brush_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A strip brush on the carriage (a way wiper's bristles, a brush seal) sweeps the way
+    with its bristles leaning towards +x. Moving with the lean (v > 0) the bristles bend
+    further over and their tips slide after a long, soft deflection: the force builds
+    over :data:`BRUSH_PATH_WITH` x the stroke to ``s`` :data:`BRUSH_WITH` F_level. Moving
+    against it (v < 0) they stand up, stiffen and dig their tips in: the force builds over
+    the short :data:`BRUSH_PATH_AGAINST` x the stroke to ``s`` :data:`BRUSH_AGAINST`
+    F_level (:func:`_brush`). The truth adds the brush's force to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m]) and its base law.
     s : float
-        Amplitude factor [-]: the dents' depth, / its value at strength 1.
+        Amplitude factor [-]: the brush's bristle density (its force per unit of
+        deflection and its sliding force), / its value at strength 1.
 
     Returns
     -------
@@ -412,56 +304,199 @@ def false_brinelling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    False brinelling (fretting wear of a standing rolling contact under vibration: Almen
-    1937, Lubricants and false brinelling of ball and roller bearings, Mech. Eng. 59;
-    Tallian 1992, Failure Atlas for Hertz Contact Machine Elements; the makers' transport
-    locks for linear guides). The open forms raise the levels by a bump, a wave, a worn
-    stretch, a runout, a bent rail, a transfer film, a cogging force, a taper, an oil
-    port's wake, a cushion, a cover, an air spring, bolt holes, an immersed plunger, a
-    sagging beam, a festoon, a curved track, a gliding chain, a cam or a heated zone.
-    Here a short wave at the ball pitch, only around one place, with an envelope that
-    falls linearly over the carriage's length: the mark of where the carriage once stood.
+    The frictional hysteresis of inclined bristle packs (Chupp and Dowler 1993,
+    Performance characteristics of brush seals for limited-life engines, J. Eng. Gas
+    Turbines Power 115; Demiroglu, Gursoy and Tichy 2004; the anisotropic friction of
+    inclined fibres, Tramsen et al. 2018). The candidate changes the levels and offsets
+    with the direction; the open forms twin levels, curves or slopes, add a tail, roll a
+    lip, take the thrust on other bearings, drag a seal's film, climb a texture, hold a
+    spring, wedge a pad, a sprag or grooves, throttle an exhaust, unbalance a cylinder's
+    areas, buckle a cable, bulldoze chips, shift the commutation, bend a belt over an
+    idler, lock a freewheel, oil ahead of the carriage or ride a running belt. Here the
+    two directions differ in their presliding too: after each reversal the force turns
+    over a path ten times shorter one way than the other.
     """
-    xc = _bump_centre(kin)
-    if xc is None:
-        raise ValueError(f"position (false_brinelling): the held-out part of the "
-                         f"{kin.plant} record never revisits the positions of its fit part")
+    F = _base_parts(kin)[0]
     if s <= 0.0:
-        return _base_parts(kin)[0]
-    share = _dent_pattern(kin.x, xc, DENT_PITCH * _span(kin), DENT_BALLS, DENT_WIDTH)
-    lev = 1.0 + float(s) * DENT_RISE * share
-    return level_inside(kin, lev, np.ones_like(lev))
+        return F
+    stroke = max(float(np.ptp(kin.x)), 1e-12)
+    lev = _level(kin)
+    f = _brush(np.ascontiguousarray(kin.x, dtype=float), float(s) * BRUSH_WITH * lev,
+               float(s) * BRUSH_AGAINST * lev, BRUSH_PATH_WITH * stroke,
+               BRUSH_PATH_AGAINST * stroke)
+    return F + f
 
 
-# -- inertia ---------------------------------------------------------------------------------
-#: ``feedforward_lead``'s mass error of the feedforward at strength 1, x the friction level /
-#: a99 [-]; the servo's tracking lag, x the motion's time scale v99 / a99 [-]
-FF_MASS, FF_LEAD = 0.6, 0.15
+# -- stribeck_shape --------------------------------------------------------------------------
+#: ``eddy_brake``'s peak drag (at the critical speed), x the Coulomb level, at strength 1
+#: [-]; the critical speed, x the top speed [-]
+EDDY_DRAG, EDDY_CRIT = 0.4, 0.35
 
 
-def _commanded(t, a, lead):
-    """The commanded acceleration [m/s^2] along the times ``t`` [s]: the measured
-    accelerations ``a`` [m/s^2] read ``lead`` [s] later (the command leads the motion by
-    the servo's tracking lag; past the record's end its last value)."""
-    return np.interp(np.asarray(t, float) + lead, t, a)
+def _eddy_drag(u):
+    """The eddy-current brake's drag [-] (1 at its peak) at the relative speeds ``u`` =
+    v / v_crit [-]: 2 u / (1 + u^2), linear below the critical speed, falling as 2 / u
+    above it (the eddy currents' field expels the magnets'); odd in ``u``."""
+    u = np.asarray(u, float)
+    return 2.0 * u / (1.0 + u * u)
 
 
 @on_fine_grid
-def feedforward_lead_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force is read from the drive's force command (its current set point), which is
-    the position controller's output plus an acceleration feedforward of the commanded
-    trajectory with a mass setting m off the carriage's. The measured motion follows the
-    command with the servo's tracking lag (:data:`FF_LEAD` x the motion's time scale), so
-    the commanded acceleration is the measured one read that much later
-    (:func:`_commanded`): the truth adds m a(t + lag) to the base, m a99 = ``s``
-    :data:`FF_MASS` x the friction level.
+def eddy_brake_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A conductive fin (a copper or aluminium plate) on the carriage runs through the gap
+    of permanent magnets on the frame (an eddy-current brake, a magnetic damper). The
+    moving conductor carries eddy currents whose force on it opposes the motion: at low
+    speeds in proportion to the speed (a viscous drag); at higher speeds the eddy
+    currents' own field cancels the magnets' in the plate (the magnetic Reynolds number
+    passes 1) and the drag falls: 2 F_max u / (1 + u^2), u = v / v_crit
+    (:func:`_eddy_drag`). The truth adds ``s`` :data:`EDDY_DRAG` F_c x that to the base,
+    v_crit = :data:`EDDY_CRIT` v99.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (v [m/s]) and its base law (with a Stribeck curve).
+    s : float
+        Amplitude factor [-]: the magnets' flux squared times the fin's conductivity, /
+        its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    The eddy-current brake's speed-drag characteristic with its critical speed (Wouterse
+    1991, Critical torque and speed of eddy current brake with widely separated soft iron
+    poles, IEE Proc. B 138; Heald 1988, Magnetic braking: improved theory, Am. J. Phys.
+    56). The candidate reshapes the Stribeck curve; the open forms add a tail, a rational
+    drop, a film's root, a spike, a lift-off, two roughness scales, a log weakening, an
+    Eyring film, starvation, an elastomer's loss, a resonance, a dither, a melt, a
+    granular flow, a readsorption, a heated film, a turbulent film, a thixotropic
+    grease, a churning drag, core losses or a bellows' breathing. Here a drag beside the
+    friction that rises and then falls with the speed: highest at a speed of its own,
+    far above the Stribeck velocity.
+    """
+    law = kin.base
+    if not has_stribeck_curve(kin):
+        raise ValueError("stribeck_shape (eddy_brake): the mre_lugre base has no Stribeck "
+                         "curve")
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    v_crit = EDDY_CRIT * max(kin.scales["v99"], 1e-12)
+    return F + float(s) * EDDY_DRAG * float(law.params.Fc) * _eddy_drag(kin.v / v_crit)
+
+
+# -- position --------------------------------------------------------------------------------
+#: ``rail_joint``'s loaded length of the carriage, x the stroke [-]; the levels' rise with
+#: the whole loaded length on the high piece, at strength 1 [-]; the push back while the
+#: carriage straddles the joint, x the friction level, at strength 1 [-]; the share of the
+#: loaded length the straddle's ends are rounded over [-]
+JOINT_LENGTH, JOINT_RISE, JOINT_PUSH, JOINT_ROUND = 0.15, 0.5, 0.3, 0.05
+
+
+def _straddle(x, joint, length, rounding):
+    """The share [-] of the carriage's loaded length ``length`` [m] past the joint at
+    ``joint`` [m] along the carriage's (centre) positions ``x`` [m], and its derivative
+    [1/m]: 0 before, rising linearly across the joint, 1 after (the ends rounded over
+    ``rounding`` x the length). Returns (share, d share / dx)."""
+    u = (np.asarray(x, float) - joint) / length + 0.5
+    e = rounding
+    share = _smooth_max0(u, e) - _smooth_max0(u - 1.0, e)
+    du = 0.5 * (u / np.sqrt(u * u + e * e) - (u - 1.0) / np.sqrt((u - 1.0) ** 2 + e * e))
+    return share, du / length
+
+
+@on_fine_grid
+def rail_joint_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The guide rail is butt-jointed from two pieces, the joint where fit and held-out
+    parts both pass (:func:`.truths._bump_centre`), the piece on the +x side a little
+    higher. While the carriage (its loaded length :data:`JOINT_LENGTH` x the stroke)
+    straddles the joint, the share of its rolling elements on the high piece
+    (:func:`_straddle`) is compressed further: the Coulomb and Stribeck levels are the
+    base's times 1 + ``s`` :data:`JOINT_RISE` x that share (inside the bristle dynamics;
+    the viscous term is the base's), and the elastic energy the step stores, which grows
+    with the share, pushes the carriage back towards -x: a conservative force ``s``
+    :data:`JOINT_PUSH` F_level x length x d share / dx, whatever the direction of travel.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (x [m]) and its base law.
+    s : float
+        Amplitude factor [-]: the step's height, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Butt-jointed rails of linear guides and the makers' allowance for the step at their
+    joints (THK and HIWIN catalogues: butt-jointed rails, matched joint marks; the preload
+    of a rolling element ~ its interference^1.5, Harris and Kotzalas 2007). The candidate
+    maps the levels over the position; the open forms bump, wave, step, rectify, bow,
+    coat, cog, taper, oil, cushion, cover, spring, drill, immerse, sag, hang, curve,
+    drag a chain, cam, heat or dent the stroke. Here a level that ramps across one
+    carriage length at the joint, with a force that pushes one way on that ramp in both
+    directions of travel.
+    """
+    centre = _bump_centre(kin)
+    if centre is None:
+        raise ValueError(f"position (rail_joint): the held-out part of the {kin.plant} "
+                         f"record never revisits the positions of its fit part")
+    if s <= 0.0:
+        return _base_parts(kin)[0]
+    length = JOINT_LENGTH * max(float(np.ptp(kin.x)), 1e-12)
+    share, dshare = _straddle(kin.x, centre, length, JOINT_ROUND)
+    lev = 1.0 + float(s) * JOINT_RISE * share
+    F = level_inside(kin, lev, np.ones_like(lev))
+    return F + float(s) * JOINT_PUSH * _level(kin) * length * dshare
+
+
+# -- inertia ---------------------------------------------------------------------------------
+#: ``abbe_pitch``'s mass x the scale's pitch response, x the friction level / a99, at
+#: strength 1 [-]; the pitch mode's angular frequency, x 1 / the motion's time scale v99 /
+#: a99 [-]; its damping ratio [-]
+PITCH_MASS, PITCH_FREQ, PITCH_DAMPING = 1.0, 4.0, 0.15
+
+
+def _pitch_highpass(t, a, omega, zeta):
+    """The acceleration ``a`` [m/s^2] along the times ``t`` [s] (uniform) through the
+    scale head's pitch response s^2 / (s^2 + 2 ``zeta`` ``omega`` s + ``omega``^2) [-]
+    (the pitch follows the acceleration through the pitch mode; the head reads its second
+    derivative), discretised by the bilinear transform, from rest at the first value."""
+    from scipy.signal import bilinear, lfilter, lfilter_zi
+    fs = 1.0 / float(t[1] - t[0])
+    b, den = bilinear([1.0, 0.0, 0.0], [1.0, 2.0 * zeta * omega, omega * omega], fs)
+    a = np.asarray(a, float)
+    return lfilter(b, den, a, zi=lfilter_zi(b, den) * a[0])[0]
+
+
+@on_fine_grid
+def abbe_pitch_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The motion is read by a linear scale whose head sits at a height h off the
+    carriage's centre of mass (an Abbe offset), and the carriage pitches on its guides'
+    compliance: the acceleration's moment tilts it through a pitch mode of angular
+    frequency :data:`PITCH_FREQ` / (v99 / a99) and damping ratio :data:`PITCH_DAMPING`.
+    The head reads the centre's travel plus h theta, so the recorded acceleration carries
+    h theta'' and the inverse dynamics, which subtracts the mass times the recorded
+    acceleration, misses m h theta'': the mass times the acceleration through the
+    high-pass s^2 / (s^2 + 2 zeta omega s + omega^2) (:func:`_pitch_highpass`), m a99 =
+    ``s`` :data:`PITCH_MASS` x the friction level. The truth adds that to the base (the
+    friction at the centre's speed, which differs from the read one by h theta', is taken
+    as the read one's).
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the feedforward's mass error, / its value at strength 1.
+        Amplitude factor [-]: the mass times the Abbe offset over the pitch stiffness, /
+        its value at strength 1.
 
     Returns
     -------
@@ -470,58 +505,72 @@ def feedforward_lead_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Acceleration feedforward and tracking lag of feed drives (Tomizuka 1987, Zero phase
-    error tracking algorithm for digital control, J. Dyn. Syst. Meas. Control 109;
-    Altintas 2012, Manufacturing Automation, ch. 6). The candidate misses a constant
-    mass; the open forms filter it, reflect it through gearing, a chain's polygon or a
-    pinion, hang it on a spring, a cable, a fluid, a clutch, a coupling, a flyweight or a
-    screw, pick it up, drop it, empty it, rattle it, recoil the frame or saturate the
-    motor, each missing the acceleration now or in the past. Here the missed mass
-    multiplies the acceleration a moment ahead: a lead, not a lag.
+    The Abbe principle and the Abbe error of an offset scale (Abbe 1890; Bryan 1979, The
+    Abbe principle revisited, Precis. Eng. 1); carriage pitch on the guides' compliance
+    under acceleration in machine tool axes (Altintas 2012, Manufacturing Automation, ch.
+    6; Okwudire and Altintas 2009). The candidate is a mass error times the acceleration;
+    the open forms filter it, take it raw, add a second mass, a chain, a geared or lossy
+    inertia, an added mass, a dispensing tank, a sliding payload, a rattling part, a
+    flywheel, a pick, eddy or fluid couplings, flyweights, a stage, a recoiling frame, a
+    saturating motor, a sprocket, a screw's spring or a feedforward's lead. Here the
+    missed force is high-passed: the acceleration's slow part is read right and only its
+    changes, seen through the pitch mode, are missed.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     sc = kin.scales
-    lead = FF_LEAD * max(_motion_time(kin), 1e-12)
-    m = float(s) * FF_MASS * _level(kin) / max(sc["a99"], 1e-12)
-    return F + m * _commanded(kin.t, np.asarray(kin.a, float), lead)
+    omega = PITCH_FREQ / max(_motion_time(kin), 1e-12)
+    hp = _pitch_highpass(np.asarray(kin.t, float), kin.a, omega, PITCH_DAMPING)
+    m = float(s) * PITCH_MASS * _level(kin) / max(sc["a99"], 1e-12)
+    return F + m * hp
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: ``transducer_resonance``'s period of the transducer's resonance at strength 1, in data
-#: samples / 2 pi (1 / omega_n) [-]; its damping ratio [-]
-RES_SAMPLES, RES_DAMPING = 3.0, 0.12
+#: ``gauge_snubber``'s lag of the reading at the force's top rate (its 99th percentile), in
+#: data samples, at strength 1 [-]; the laminar part of that lag [-]
+SNUB_SAMPLES, SNUB_LAMINAR = 3.0, 0.2
 
 
-def _resonance(t, F, omega, zeta):
-    """``F`` [N] along the times ``t`` [s] (uniform) through the spring-mass transducer
-    omega^2 / (s^2 + 2 ``zeta`` ``omega`` s + ``omega``^2) (its reading the spring's
-    deflection), discretised by the bilinear transform, from rest at the first value."""
-    from scipy.signal import bilinear, lfilter, lfilter_zi
-    fs = 1.0 / float(t[1] - t[0])
-    b, a = bilinear([omega * omega], [1.0, 2.0 * zeta * omega, omega * omega], fs)
-    F = np.asarray(F, float)
-    return lfilter(b, a, F, zi=lfilter_zi(b, a) * F[0])[0]
+@njit(cache=True)
+def _snubbed(F, h, lam, turb):
+    """The reading [N] of the force ``F`` [N] (steps ``h`` [s]) behind an orifice
+    snubber: the reading's rate Q [N/s] and the difference e = F - reading [N] obey |e| =
+    ``lam`` |Q| + ``turb`` Q^2 (the restrictor's laminar ``lam`` [s] and turbulent
+    ``turb`` [s^2/N] parts), integrated by backward Euler (exact root of the step's
+    quadratic). Starts at the first value."""
+    n = F.size
+    y = np.empty(n)
+    y[0] = F[0]
+    c1 = lam / h + 1.0
+    c2 = turb / (h * h)
+    for k in range(1, n):
+        e0 = F[k] - y[k - 1]
+        E = abs(e0)
+        q = 2.0 * E / (c1 + math.sqrt(c1 * c1 + 4.0 * c2 * E))
+        y[k] = y[k - 1] + (q if e0 >= 0.0 else -q)
+    return y
 
 
 @on_fine_grid
-def transducer_resonance_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force transducer carries the mass mounted on it (the contact's holder): with
-    the transducer's spring it is a lightly damped spring-mass system of angular
-    frequency omega_n = 1 / (``s`` :data:`RES_SAMPLES` data samples) and damping ratio
-    :data:`RES_DAMPING`, and the reading is the spring's deflection
-    (:func:`_resonance`): it follows a ramp late by 2 zeta / omega_n and rings at
-    omega_n after each fast change of the force (a reversal, a breakaway). No cap at
-    :data:`.truths.MAX_DELAY_SAMPLES`: the plants whose force turns gently need a slow
-    resonance to reach the requested size.
+def gauge_snubber_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force is read as a pressure (a hydraulic cylinder's, a hydraulic load cell's)
+    whose transducer sits behind a gauge snubber, a restrictor that protects it from
+    pressure spikes: the oil flows through the restrictor into the transducer's volume,
+    laminar and turbulent, Delta p = R_l Q + R_t Q |Q|, and the transducer's pressure
+    rises with the volume that has flowed in. In force units the reading's rate Q and
+    the difference e = F - reading obey |e| = lam |Q| + turb Q^2 (:func:`_snubbed`): it
+    follows a ramp of rate R late by lam + turb R, a lag that grows with the force's rate.
+    At the force's top rate R99 the lag is ``s`` :data:`SNUB_SAMPLES` data samples, of
+    which :data:`SNUB_LAMINAR` laminar. No cap at :data:`.truths.MAX_DELAY_SAMPLES`: the
+    plants whose force turns gently need a slow snubber to reach the requested size.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the resonance's period, / its value at strength 1.
+        Amplitude factor [-]: the restrictor's resistance, / its value at strength 1.
 
     Returns
     -------
@@ -530,81 +579,63 @@ def transducer_resonance_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The dynamic behaviour of force transducers and their mounted mass (Kumme 1996, Dynamic
-    force measurement in practical applications, IMEKO; ISO 4965-1 for the dynamic
-    calibration of testing machines; Link, Glockner and Kobusch 2010). The open forms delay
-    by one amount, filter by a low-pass, linearly or by rank, hold at a fieldbus's clock,
-    let the delay drift, wander or follow the force's rate, level or slowness, the
-    motion's speed or the position, hold stale values over lost telegrams, lead through a
-    leaking charge, creep, take out the mains' band or track with a rate state. Here a
-    mechanical resonance of the sensor itself: little damping, so each fast change of the
-    force rings on in the reading.
+    Pressure gauge snubbers and restrictors (ASME B40.100, Pressure gauges and gauge
+    attachments; Doebelin 2004, Measurement Systems, ch. 6, the dynamics of pressure
+    measuring systems); orifice flow's square law (Merritt 1967, Hydraulic Control
+    Systems, ch. 3). The open forms delay by one amount, filter by a low-pass, linearly or
+    by rank, hold at a fieldbus's clock, let the delay drift, wander or follow the force's
+    rate, level or slowness, the motion's speed or the position, hold stale values over
+    lost telegrams, lead through a leaking charge, creep, take out the mains' band, track
+    with a rate state or ring in a resonance. Here a restriction with a square law: no
+    hard limit to the reading's rate, but a lag that grows smoothly and without bound
+    with the force's rate of change.
     """
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    tau = float(s) * RES_SAMPLES * float(kin.sample_dt)
-    return _resonance(np.asarray(kin.t, float), F, 1.0 / tau, RES_DAMPING)
+    F = np.asarray(F, float)
+    rate = np.abs(np.gradient(F, float(kin.dt)))
+    r99 = max(float(np.percentile(rate, 99.0)), 1e-300)
+    lag = float(s) * SNUB_SAMPLES * float(kin.sample_dt)
+    lam = SNUB_LAMINAR * lag
+    turb = (1.0 - SNUB_LAMINAR) * lag / r99
+    return _snubbed(F, float(kin.dt), lam, turb)
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: ``screw_loosening``'s share of the remaining preload lost at each reversal [-]; the
-#: levels' fall with the whole preload lost, at strength 1 [-]; the time each loosening
-#: step is rounded over, x the record's length [-]; the speed the direction of travel is
-#: told by (a hysteresis), x the top speed [-]; the lowest relative level [-]
-LOOSEN_STEP, LOOSEN_DROP, LOOSEN_ROUND, LOOSEN_SPEED, LOOSEN_FLOOR = (
-    0.06, 0.6, 0.004, 0.02, 0.05)
+#: ``film_dewetting``'s rise of the levels with the whole track bare, at strength 1 [-]; the
+#: incubation time, x the record's length [-]; the Avrami time, x the record's length [-];
+#: Avrami's exponent (constant nucleation, two-dimensional growth) [-]
+DEWET_RISE, DEWET_ONSET, DEWET_TIME, DEWET_ORDER = 0.6, 0.15, 0.6, 3.0
 
 
-def _reversal_times(t, v, v_min):
-    """The times [s] along ``t`` [s] at which the direction of travel changes (the
-    velocities ``v`` [m/s] pass -``v_min`` and ``v_min`` [m/s] the other way, a
-    hysteresis against the standstills' crawl), at the zero crossing before it."""
-    v = np.asarray(v, float)
-    out = []
-    state = 0
-    last_zero = 0
-    for k in np.flatnonzero(np.abs(v) > v_min):
-        d = 1 if v[k] > 0.0 else -1
-        if state != 0 and d != state:
-            # the last sign change before this sample
-            seg = np.flatnonzero(np.sign(v[last_zero:k + 1]) != d)
-            j = last_zero + (seg[-1] if seg.size else 0)
-            out.append(float(t[j]))
-        if d != state:
-            state = d
-        last_zero = k
-    return np.asarray(out)
-
-
-def _loosened(t, reversals, step, width):
-    """The preload lost [-] (1 - the remaining share) along the times ``t`` [s] after the
-    ``reversals`` [s]: each loses ``step`` of what is left, 1 - (1 - step)^n(t), the
-    count n(t) of reversals rounded over ``width`` [s]."""
-    t = np.asarray(t, float)
-    n = np.zeros_like(t)
-    for tr in reversals:
-        n += 0.5 * (1.0 + np.tanh((t - tr) / width))
-    return 1.0 - (1.0 - step) ** n
+def _bare_share(t, onset, t_d, order):
+    """The bare share of the track [-] along the times ``t`` [s]: Avrami's 1 - exp(-((t -
+    ``onset``)_+ / ``t_d``)^``order``) (holes nucleating at a steady rate after the
+    incubation ``onset`` [s] and growing at a constant speed; ``t_d`` [s])."""
+    u = np.maximum(np.asarray(t, float) - onset, 0.0) / t_d
+    return 1.0 - np.exp(-u ** order)
 
 
 @on_fine_grid
-def screw_loosening_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The contact's preload is set by a clamping screw (a gib's adjusting screw, a
-    preloaded nut's lock) whose joint slips a little transversely at each reversal of the
-    friction force: each slip turns the screw back a little (self-loosening), so at each
-    reversal (:func:`_reversal_times`) the preload loses :data:`LOOSEN_STEP` of what is
-    left (:func:`_loosened`). The Coulomb and Stribeck levels are the base's times 1 -
-    ``s`` :data:`LOOSEN_DROP` x the preload lost (at least :data:`LOOSEN_FLOOR`), inside
-    the bristle dynamics; the viscous term is the base's.
+def film_dewetting_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The track carries a thin lubricant film (a light oil, a fluorinated or silicone
+    film) on a surface it does not wet well: the film is unstable and dewets. After an
+    incubation time of :data:`DEWET_ONSET` x the record, holes nucleate at a steady rate
+    and grow at a constant speed (a dry hole's rim advances at the dewetting speed), so
+    the bare share follows Avrami's kinetics 1 - exp(-(t / t_d)^3) with t_d =
+    :data:`DEWET_TIME` x the record (:func:`_bare_share`). The boundary friction on the
+    bare track is higher: the Coulomb and Stribeck levels are the base's times 1 + ``s``
+    :data:`DEWET_RISE` x the bare share, inside the bristle dynamics; the viscous term is
+    the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s], v [m/s]) and its base law.
+        The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the preload's share of the friction, / its value at
-        strength 1.
+        Amplitude factor [-]: the bare track's friction over the wetted one's, less 1, /
+        its value at strength 1.
 
     Returns
     -------
@@ -613,52 +644,45 @@ def screw_loosening_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Self-loosening of threaded fasteners under transverse slip (Junker 1969, New criteria
-    for self-loosening of fasteners under vibration, SAE Trans. 78; DIN 65151, the
-    Junker test; Yokoyama et al. 2012). The candidate is a trend, a saturating change, a
-    step, a cycle, an accelerating part, a part that builds up and resets and a part that
-    follows the friction's heating; the open forms warm up, wear in, step, cycle, rise
-    and fall with debris, drop with grease shots, relax, oxidise, wear through, swell,
-    grow a tribofilm, take in particles, expand, shear the oil, heat the magnets, charge
-    the surfaces or creep a cage. Here the drift is counted in reversals: steps at each
-    one, each a share of what is left, whatever the time or the distance between them.
+    Dewetting of thin films by nucleated holes (Reiter 1992, Dewetting of thin polymer
+    films, Phys. Rev. Lett. 68; Redon, Brochard-Wyart and Rondelez 1991, Dynamics of
+    dewetting, Phys. Rev. Lett. 66); the kinetics of nucleation and growth (Avrami 1939,
+    J. Chem. Phys. 7). The candidate is a trend, a saturating change, a step, a cycle, an
+    accelerating part, a part that builds up and resets and a part that follows the
+    friction's heating; the open forms warm up, wear in, step, cycle, rise and fall with
+    debris, drop with grease shots, relax, oxidise, wear through, swell, grow a
+    tribofilm, take in particles, expand, shear the oil, heat the magnets, charge the
+    surfaces, creep a cage or loosen a screw. Here nothing happens for a while, then the
+    levels rise along a cubic-exponential sigmoid of the clock, neither the travel nor
+    the friction's work.
     """
     if s <= 0.0:
         return _base_parts(kin)[0]
     t = np.asarray(kin.t, float)
-    rev = _reversal_times(t, kin.v, LOOSEN_SPEED * max(kin.scales["v99"], 1e-12))
-    lost = _loosened(t, rev, LOOSEN_STEP, LOOSEN_ROUND * max(float(t[-1] - t[0]), 1e-12))
-    lev = np.clip(1.0 - float(s) * LOOSEN_DROP * lost, LOOSEN_FLOOR, None)
+    T = max(float(t[-1] - t[0]), 1e-12)
+    bare = _bare_share(t - t[0], DEWET_ONSET * T, DEWET_TIME * T, DEWET_ORDER)
+    lev = 1.0 + float(s) * DEWET_RISE * bare
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: ``polymer_gear``'s play at strength 1 when cold, as a share of the stroke [-]; the flank's
-#: deflection at the Coulomb level when cold, at strength 1, as a share of the stroke [-];
-#: the share of the play the warm teeth's swelling closes, and the share of the flanks'
-#: stiffness their warming takes, at the record's warmest [-]; the teeth's thermal time
-#: constant, x the record's length [-]
-GEAR_PLAY, GEAR_COMPLIANCE, GEAR_CLOSE, GEAR_SOFT, GEAR_HEAT = 0.008, 0.003, 0.7, 0.5, 0.3
-
-
-def _tooth_warming(t, F, v, tau):
-    """The teeth's temperature rise [-] (1 at the record's warmest) along the times ``t``
-    [s]: the first-order lag (``tau`` [s]) of the mesh's friction power |F v| [W] (the
-    forces ``F`` [N] at the velocities ``v`` [m/s]), from cold."""
-    from scipy.signal import lfilter
-    p = np.abs(np.asarray(F, float) * np.asarray(v, float))
-    e = math.exp(-float(t[1] - t[0]) / tau)
-    th = lfilter([1.0 - e], [1.0, -e], p)              # from cold (zero initial state)
-    return th / max(float(np.max(th)), 1e-300)
+#: ``grease_packed_gap``'s play at strength 1, as a share of the stroke [-]; the grease's
+#: squeeze force with the contact in the middle of the play, x the Coulomb level [-]; the
+#: thinnest gap the grease is squeezed to, x the half play [-]; the relative speed the
+#: grease's yield is rounded over, x the top speed [-]
+GREASE_PLAY, GREASE_YIELD, GREASE_FLOOR, GREASE_ROUND = 0.008, 0.3, 0.05, 0.02
 
 
 @njit(cache=True)
-def _warm_mesh(h, xd, half, kflank, c1, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
+def _greased_play(h, xd, half, g_yield, floor, v_round, kh, ch, m, s0, s1, s2, Fc, Fs, vs,
+                  alpha, shape):
     """LuGre friction [N] of a contact of mass ``m`` [kg] driven by the drive positions
-    ``xd`` [m] (step ``h`` [s]) across a play of half-width ``half`` [m] (at each step),
-    the flank a spring ``kflank`` [N/m] (at each step) and a damper ``c1`` [N s/m],
-    compressive only. Semi-implicit Euler of the mass
-    (:func:`.truths._light_contact_step`). Starts at rest, centred in the play."""
+    ``xd`` [m] (step ``h`` [s]) across a play of half-width ``half`` [m] packed with grease:
+    inside the play the grease squeezed out of the closing side pushes with its yield
+    force ``g_yield`` [N] x ``half`` / the closing gap (at least ``floor`` x ``half``),
+    tanh-rounded over the relative speed ``v_round`` [m/s] (a Bingham squeeze film); at the
+    flanks a spring ``kh`` [N/m] and damper ``ch`` [N s/m], compressive only. Semi-implicit
+    Euler of the mass (:func:`.truths._light_contact_step`). Starts at rest, centred."""
     n = xd.size
     F = np.empty(n)
     v = 0.0
@@ -668,45 +692,45 @@ def _warm_mesh(h, xd, half, kflank, c1, m, s0, s1, s2, Fc, Fs, vs, alpha, shape)
         vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
         e = xd[j] - x
         ed = vd - v
-        k = kflank[j]
-        hw = half[j]
         fc = 0.0
-        if e > hw:
-            f2 = k * (e - hw) + c1 * ed
+        if e > half:
+            f2 = kh * (e - half) + ch * ed
             if f2 > 0.0:
                 fc = f2
-        elif e < -hw:
-            f2 = k * (e + hw) + c1 * ed
+        elif e < -half:
+            f2 = kh * (e + half) + ch * ed
             if f2 < 0.0:
                 fc = f2
+        else:
+            # the closing side: ahead of the drive's relative motion
+            gap = half - e if ed >= 0.0 else half + e
+            gap = max(gap, floor * half)
+            fc = g_yield * (half / gap) * math.tanh(ed / v_round)
         F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha, shape)
         x = x + h * v
     return F
 
 
 @on_fine_grid
-def polymer_gear_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact joined by a plastic gear (POM, PA) with play, half-width ``s``^2
-    :data:`GEAR_PLAY` / 2 x the stroke when cold, whose flank deflects by ``s``^2
-    :data:`GEAR_COMPLIANCE` x the stroke at the Coulomb level when cold. The mesh's
-    friction power (the base's |F v|) warms the teeth with the time constant
-    :data:`GEAR_HEAT` x the record (:func:`_tooth_warming`); warm, they swell, closing up
-    to :data:`GEAR_CLOSE` of the play, and soften, losing up to :data:`GEAR_SOFT` of the
-    flanks' stiffness (:func:`_warm_mesh`). After each reversal the play is crossed and
-    the force built through the flank (the teeth's compliance in series with the stiff
-    flank of the other forms): a shorter crossing and a softer build-up as the record goes
-    on. The contact is light (:func:`.truths._contact_constants`), with the
-    base's LuGre friction; the measured force is its friction. At ``s`` = 0 the base
-    itself.
+def grease_packed_gap_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact joined across a play of half-width ``s``^2 :data:`GREASE_PLAY` /
+    2 x the stroke that is packed with grease (a greased gear mesh or keyway). Grease is a
+    Bingham plastic: squeezed between the closing flanks it flows only past its yield
+    stress, and a plate squeezing a Bingham layer of thickness h feels ~ tau_y / h. So
+    as the drive crosses the play after a reversal the grease on the closing side pushes
+    the contact with :data:`GREASE_YIELD` F_c x half / h (h the closing gap, at least
+    :data:`GREASE_FLOOR` x half; :func:`_greased_play`): with the gap thinning it passes
+    the contact's friction and drags the contact along before the flanks meet. The
+    contact is light (:func:`.truths._contact_constants`), with the base's LuGre
+    friction; the measured force is its friction. At ``s`` = 0 the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s], x [m], v [m/s]) and its base law (a classic
-        LuGre).
+        The motion on the fine grid (t [s], x [m]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the square root of the play and the flanks' compliance, /
-        their values at strength 1 (as the open plays').
+        Amplitude factor [-]: the square root of the play, / its value at strength 1 (as
+        the open plays').
 
     Returns
     -------
@@ -715,117 +739,106 @@ def polymer_gear_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Plastic gears' backlash allowance for thermal and moisture expansion and their
-    temperature-dependent tooth stiffness (VDI 2736 Blatt 2, 2014, Thermoplastic gear
-    wheels; Hooton 1969; Mao 2007, A new approach for polymer composite gear design,
-    Wear 262). The candidate holds or frees the force across a play, with a bias, a
-    spring or a drag across it; the open forms couple rigidly, compliantly, by impacts,
-    springs, oil in the play, an idler, a bias, chains, magnets, a preload, a hardening
-    gear, a slipping rope, a rubber spider, an oil column, a cable in a sheath, a clutch
-    or a mesh of varying stiffness, with a play varying with the position or the travel.
-    Here the play and the flank's stiffness follow the coupling's own heating: both
-    change over the record with the power the motion has put through the mesh.
+    Squeeze films of Bingham plastics (Covey and Stanmore 1981, Use of the parallel-plate
+    plastometer for the characterisation of viscous fluids with a yield stress, J.
+    Non-Newtonian Fluid Mech. 8); greases as Bingham (Herschel-Bulkley) fluids (Lugt
+    2013, Grease Lubrication in Rolling Bearings, ch. 6). The candidate holds or frees the
+    force across a play, with a bias, a spring or a drag across it; the open forms couple
+    rigidly, compliantly, by impacts, springs, oil in the play, an idler, a bias, chains,
+    magnets, a preload, a hardening gear, a slipping rope, a rubber spider, an oil column,
+    a cable in a sheath, a clutch, a mesh of varying stiffness or a warming plastic gear,
+    with a play varying with the position or the travel. Here a plastic, not a viscous,
+    medium fills the play: a force that does not vanish with the relative speed and grows
+    as the gap closes, so the play is taken up gradually at a gap set by the friction.
     """
-    p = _lugre_params(kin, "backlash (polymer_gear)")
+    p = _lugre_params(kin, "backlash (grease_packed_gap)")
     if s <= 0.0:
         return _base_parts(kin)[0]
-    m, kh, _ = _contact_constants(kin, p)
+    m, kh, ch = _contact_constants(kin, p)
     stroke = float(np.ptp(kin.x))
     Fc = float(p.Fc)
-    half0 = 0.5 * float(s) ** 2 * GEAR_PLAY * stroke
-    # the teeth's compliance (cold) in series with the other forms' stiff flank
-    comp = float(s) ** 2 * GEAR_COMPLIANCE * stroke / Fc
-    k1 = 1.0 / (1.0 / kh + comp)
-    c1 = 2.0 * 0.5 * math.sqrt(k1 * m)
-    t = np.asarray(kin.t, float)
-    F0 = _base_parts(kin)[0]
-    th = _tooth_warming(t, F0, kin.v, GEAR_HEAT * max(float(t[-1] - t[0]), 1e-12))
-    h, xd, n_sub = _substeps(kin, max(math.sqrt((k1 + float(p.sigma0)) / m),
-                                      (float(p.sigma1) + float(p.sigma2) + c1) / m))
-    th_sub = np.interp(t[0] + h * np.arange(xd.size), t, th)
-    half = half0 * (1.0 - GEAR_CLOSE * th_sub)
-    kflank = 1.0 / (1.0 / kh + comp / (1.0 - GEAR_SOFT * th_sub))
-    F = _warm_mesh(h, xd, half, kflank, c1, m, float(p.sigma0), float(p.sigma1),
-                   float(p.sigma2), Fc, float(p.Fs), float(p.vs), float(p.alpha),
-                   SHAPES[p.shape])
+    half = 0.5 * float(s) ** 2 * GREASE_PLAY * stroke
+    g_yield = GREASE_YIELD * Fc
+    v_round = GREASE_ROUND * max(kin.scales["v99"], 1e-12)
+    # the grease's stiffest drag: its yield force at the thinnest gap over the rounding
+    c_grease = g_yield / GREASE_FLOOR / v_round
+    h, xd, n_sub = _substeps(kin, max(math.sqrt((kh + float(p.sigma0)) / m),
+                                      (float(p.sigma1) + float(p.sigma2) + ch + c_grease) / m))
+    F = _greased_play(h, xd, half, g_yield, GREASE_FLOOR, v_round, kh, ch, m,
+                      float(p.sigma0), float(p.sigma1), float(p.sigma2), Fc, float(p.Fs),
+                      float(p.vs), float(p.alpha), SHAPES[p.shape])
     return F[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: the junctions' travel to slip at strength 1, beyond the base bristle's path, as a share of
-#: the stroke / 3 [-]; their share of the friction at strength 1 [-]; the junctions in the
-#: chain [-]; the coupling between neighbours, x a junction's own stiffness [-]; the force a
-#: junction keeps after it slips, x its strength (the static-to-dynamic drop) [-]
-AVAL_SLIP, AVAL_SHARE, AVAL_BLOCKS, AVAL_COUPLING, AVAL_DROP = 0.1, 0.7, 24, 3.0, 0.8
-
-
-def _strengths(n):
-    """The chain's junction strengths [-]: 0.6 to 1, spread along the chain by the golden
-    ratio's sequence (no two neighbours alike, the same every time)."""
-    g = (math.sqrt(5.0) - 1.0) / 2.0
-    return 0.6 + 0.4 * np.mod(np.arange(n) * g, 1.0)
+#: the junctions' travel to their peak at strength 1, beyond the base bristle's path, as a
+#: share of the stroke / 3 [-]; their share of the friction at strength 1 [-]; the
+#: junctions [-]; the residual strength over the peak [-]; the critical slip distance, x the
+#: strongest junction's elastic travel [-]
+WEAK_SLIP, WEAK_SHARE, WEAK_BLOCKS, WEAK_RESIDUAL, WEAK_DIST = 0.1, 0.6, 10, 0.7, 2.0
 
 
 @njit(cache=True)
-def _avalanche_chain(x, caps, kp, kc, drop):
-    """The chain's force f [-] (over its summed strengths x (1 + ``drop``) / 2, about 1
-    while it slides) along the positions ``x`` [m]: junction i sits at u_i [m], pulled by
-    the moving body with ``kp`` (x - u_i) and by its neighbours with ``kc`` (u_(i-1) +
-    u_(i+1) - 2 u_i) [-]; where that force passes its strength ``caps``[i] it slips until
-    ``drop`` x its strength is left, which loads its neighbours; repeated until every
-    junction holds (an avalanche). Starts unloaded."""
+def _weakening_junctions(x, caps, kp, residual, dc):
+    """The junctions' force f [-] (over their summed residual strengths: 1 while they all
+    slide) along the positions ``x`` [m]: junction i sits at u_i [m], pulled by ``kp`` (x -
+    u_i); its strength falls linearly from ``caps``[i] to ``residual`` x ``caps``[i] over
+    the slip ``dc`` [m] it has made since its slip last changed direction (it heals at
+    once when its slip reverses); where the pull passes the strength it slips to the
+    force its weakened strength allows (a linear equation on the weakening branch, the
+    residual beyond it). Starts unloaded."""
     n = x.size
     m = caps.size
     u = np.full(m, x[0])
+    slip = np.zeros(m)
+    last = np.zeros(m)
     out = np.empty(n)
     out[0] = 0.0
-    norm = np.sum(caps) * 0.5 * (1.0 + drop)
+    norm = residual * np.sum(caps)
     for k in range(1, n):
         xk = x[k]
-        for _ in range(50 * m):
-            moved = False
-            for i in range(m):
-                f = kp * (xk - u[i])
-                nb = 0.0
-                if i > 0:
-                    f += kc * (u[i - 1] - u[i])
-                    nb += kc
-                if i < m - 1:
-                    f += kc * (u[i + 1] - u[i])
-                    nb += kc
-                if abs(f) > caps[i]:
-                    target = drop * caps[i] if f > 0.0 else -drop * caps[i]
-                    u[i] += (f - target) / (kp + nb)
-                    moved = True
-            if not moved:
-                break
         tot = 0.0
         for i in range(m):
+            f = kp * (xk - u[i])
+            sg = 1.0 if f > 0.0 else -1.0
+            d = slip[i] if sg == last[i] else 0.0
+            c = caps[i]
+            cap = c * (residual + (1.0 - residual) * max(0.0, 1.0 - d / dc))
+            if abs(f) > cap:
+                e0 = abs(f) / kp
+                w = c * (1.0 - residual) / dc
+                dl = (kp * e0 - c + w * d) / (kp - w)
+                if d + dl > dc:
+                    dl = e0 - c * residual / kp
+                dl = max(dl, 0.0)
+                u[i] += sg * dl
+                slip[i] = d + dl
+                last[i] = sg
             tot += kp * (xk - u[i])
         out[k] = tot / norm
     return out
 
 
 @on_fine_grid
-def slip_avalanches_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The presliding junctions beside the bristle (:data:`AVAL_BLOCKS` of them, strengths
-    0.6 to 1: :func:`_strengths`) are held to the moving body each by its own stiffness
-    and to its neighbours by the elastic body between them (:data:`AVAL_COUPLING` x as
-    stiff): a junction slips where its force passes its strength, keeps
-    :data:`AVAL_DROP` of it and passes the rest on to its neighbours, which may slip in
-    turn (:func:`_avalanche_chain`). The largest junction's travel to slip on its own is
-    the base bristle's path Fs / sigma0 plus ``s`` :data:`AVAL_SLIP` x the stroke / 3; a
-    share w = :data:`AVAL_SHARE` min(``s``, 1) of the friction is the chain's (its
-    sliding force the Stribeck level, the viscous term the base's): F = (1 - w) F_lugre +
-    w (g(v) f + sigma2 v). At ``s`` = 0 the base itself.
+def slip_weakening_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The presliding junctions beside the bristle (:data:`WEAK_BLOCKS` of them, peak
+    strengths 0.5 to 1, all of the same stiffness) weaken with their own slip: once a
+    junction slips its strength falls linearly from its peak to :data:`WEAK_RESIDUAL` of
+    it over a critical slip distance (:data:`WEAK_DIST` x the strongest one's elastic
+    travel), and it heals to its peak when its slip reverses (:func:`_weakening_junctions`).
+    The strongest junction's travel to its peak is the base bristle's path Fs / sigma0
+    plus ``s`` :data:`WEAK_SLIP` x the stroke / 3; a share w = :data:`WEAK_SHARE` min(``s``,
+    1) of the friction is the junctions' (their sliding force the Stribeck level, the
+    viscous term the base's): F = (1 - w) F_lugre + w (g(v) f + sigma2 v). At ``s`` = 0
+    the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the chain's share (up to ``s`` = 1) and its travel to slip
-        (as the open presliding forms' path).
+        Amplitude factor [-]: the junctions' share (up to ``s`` = 1) and their travel to
+        the peak (as the open presliding forms' path).
 
     Returns
     -------
@@ -834,26 +847,26 @@ def slip_avalanches_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The spring-block (Burridge and Knopoff 1967, Model and theoretical seismicity, Bull.
-    Seismol. Soc. Am. 57) and Olami-Feder-Christensen (1992, Phys. Rev. Lett. 68) models;
-    precursors of sliding as detachment fronts (Rubinstein, Cohen and Fineberg 2007,
-    Phys. Rev. Lett. 98; Braun, Barel and Urbakh 2009). Maxwell-slip (the candidate) and
-    the open forms use equal, geometric or power-law strengths, path laws, an elastic
-    range, rate-dependent creep, Mindlin's 3/2 law, multistable tips, bonds, a fabric, a
-    back-stress, a climb out of a nest, capillary bridges, a hardening yield, peeling,
-    load-dependent microslip or growing junctions, each element on its own. Here the
-    elements are coupled: one slip sets off others, so the presliding curve climbs in
-    bursts and its steps, and the sliding force's flicker, come in avalanches.
+    The static-to-kinetic transition over a critical slip distance (Rabinowicz 1951, The
+    nature of the static and kinetic coefficients of friction, J. Appl. Phys. 22) and the
+    linear slip-weakening law (Ida 1972; Palmer and Rice 1973, Proc. R. Soc. A 332).
+    Maxwell-slip (the candidate) and the open forms use equal, geometric or power-law
+    strengths, path laws, an elastic range, rate-dependent creep, Mindlin's 3/2 law,
+    multistable tips, bonds, a fabric, a back-stress, a climb out of a nest, capillary
+    bridges, a hardening yield, peeling, load-dependent microslip, growing junctions or a
+    coupled chain's avalanches. Here each junction's strength is a function of its own
+    slip since its last reversal: the presliding curve overshoots the sliding level and
+    falls back to it over a distance, not a speed.
     """
-    p = _lugre_params(kin, "gms (slip_avalanches)")
+    p = _lugre_params(kin, "gms (slip_weakening)")
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    e0, extra = _presliding_path(kin, s, AVAL_SLIP)
-    w = AVAL_SHARE * min(float(s), 1.0)
+    e0, extra = _presliding_path(kin, s, WEAK_SLIP)
+    w = WEAK_SHARE * min(float(s), 1.0)
     v = np.asarray(kin.v, float)
-    caps = _strengths(AVAL_BLOCKS)
-    kp = 1.0 / (e0 + extra)          # the strongest junction slips alone after e0 + extra
-    f = _avalanche_chain(np.ascontiguousarray(kin.x, dtype=float), caps, kp,
-                         AVAL_COUPLING * kp, AVAL_DROP)
+    caps = np.linspace(0.5, 1.0, WEAK_BLOCKS)
+    kp = 1.0 / (e0 + extra)          # the strongest junction reaches its peak after e0 + extra
+    f = _weakening_junctions(np.ascontiguousarray(kin.x, dtype=float), caps, kp,
+                             WEAK_RESIDUAL, WEAK_DIST / kp)
     return (1.0 - w) * F + w * (kin.base.g(v) * f + float(p.sigma2) * v)

@@ -1,5 +1,5 @@
 """The eighteenth seen truth family (diagnosis.benchmark.seen18, sealed in session 23, run
-once at the end of session 24 on <COMMIT>, <TOP1> top-1, now open): each form builds a finite
+once at the start of session 24 on ba95736, 53.4 % top-1, now open): each form builds a finite
 case of the requested size on every plant it applies to, is the base law at s = 0, grows with
 its amplitude factor and refuses the plants it does not apply to."""
 import dataclasses

@@ -440,7 +440,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
-                       "sensor's own dynamics (a charge leak, a load cell's creep)",
+                       "sensor's own dynamics (a charge leak, a load cell's creep, the "
+                       "transducer's resonance with its mounted mass)",
                  "shift"),
            plant_entry="delay", fmu=True, families=("|a|", "frequency", "accel/decel"),
            evidence=("dF/dt", "|a|"),

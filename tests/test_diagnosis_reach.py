@@ -634,6 +634,92 @@ def test_creeping_load_cell_is_named_delay():
     assert rep["effect_details"]["delay"]["extras"]["sensor_gain"] > 0.05
 
 
+def test_resonant_transducer_reading_against_an_integrator():
+    # the reading of a spring-mass transducer, y'' + 2 zeta w y' + w^2 y = w^2 F, against
+    # scipy's adaptive integrator on the force's linear interpolation (another method than
+    # the first-order-hold discretisation), and its analytic limits
+    from scipy.integrate import solve_ivp
+    from diagnosis.candidates import resonant, unresonant
+    dt, fn, zeta = 1e-3, 40.0, 0.1
+    period = 1.0 / fn
+    t = np.arange(0.0, 1.0, dt)
+    F = 20.0 * np.sin(2 * np.pi * 3.0 * t) + np.where(t > 0.5, 200.0 * (t - 0.5), 0.0) + 5.0
+    w = 2.0 * np.pi * fn
+
+    def rhs(tt, y):
+        return [y[1], w * w * (np.interp(tt, t, F) - y[0]) - 2.0 * zeta * w * y[1]]
+    ref = solve_ivp(rhs, (t[0], t[-1]), [F[0], 0.0], t_eval=t, rtol=1e-10, atol=1e-10,
+                    max_step=dt / 4).y[0]
+    y = resonant(F, dt, period, zeta)
+    np.testing.assert_allclose(y, ref, atol=1e-6 * np.ptp(F))
+    assert y[0] == pytest.approx(F[0], rel=1e-12)  # settled at the first sample
+    # a step rings over by exp(-zeta pi / sqrt(1 - zeta^2)) (sampled: within 1 % of the step)
+    step = resonant(np.r_[0.0, np.ones(3000)], 1e-4, period, zeta)
+    assert step.max() - 1.0 == pytest.approx(np.exp(-zeta * np.pi / np.sqrt(1 - zeta ** 2)),
+                                             abs=0.01)
+    # a ramp is followed late by 2 zeta / w
+    ramp = np.linspace(0.0, 1.0, 2001)
+    late = (ramp[-1] - resonant(ramp, 1e-3, period, zeta)[-1]) * 2.0
+    assert late == pytest.approx(2.0 * zeta / w, rel=1e-3)
+    # a rigid transducer reads the force; the inverse undoes the reading up to the
+    # derivatives' truncation
+    assert np.array_equal(resonant(F, dt, 0.0, zeta), F)
+    back = unresonant(y, dt, period, zeta)
+    assert np.max(np.abs(back - F)[2:-2]) < 0.02 * np.ptp(F)
+    for p_bad, z_bad, name in ((-1.0, 0.1, "sensor_period"),
+                               (float("nan"), 0.1, "sensor_period"),
+                               (0.025, 0.0, "sensor_zeta"), (0.025, float("inf"), "sensor_zeta")):
+        with pytest.raises(ValueError, match=name):
+            resonant(F, dt, p_bad, z_bad)
+        with pytest.raises(ValueError, match=name):
+            unresonant(F, dt, p_bad, z_bad)
+
+
+def test_a_transducer_resonance_has_practical_size_by_its_lag_or_its_ringing():
+    from diagnosis.candidates import Delay
+    from diagnosis.effects import make_context
+    data = make_case("clean", 1.0, 0.0, n=3000)
+    ctx = make_context(data)
+    d = Delay("delay", "", "shift")
+    small = {"delay": 0.3 * ctx.dt - ctx.v_lag * ctx.dt, "sensor_rate": 0.0,
+             "sensor_gain": 0.0}
+    fast = 4.0 * ctx.dt  # four samples a period
+    # four samples a period: lightly damped it rings over by 73 %, damped at 0.75 it lags
+    # by 2 zeta / w = 0.95 samples, with the shift's 0.3 more than one: a sensor's own
+    assert d.practical({**small, "sensor_period": fast, "sensor_zeta": 0.1}, ctx) == ""
+    assert d.practical({**small, "sensor_period": fast, "sensor_zeta": 0.75}, ctx) == ""
+    # slow and well damped: a lag of several samples
+    assert d.practical({**small, "sensor_period": 10.0 * fast, "sensor_zeta": 0.9}, ctx) == ""
+    # but not by its ringing under four samples a period, near the Nyquist period: what
+    # averaging over the sample period makes (clean records: 2.0-2.9 samples); its lag
+    # still adds to the shift's
+    for period, zeta in ((0.53, 0.33), (0.73, 0.11), (0.5, 1.0)):
+        why = d.practical({**small, "sensor_period": period * fast, "sensor_zeta": zeta}, ctx)
+        assert "under 4, what averaging" in why
+    assert d.practical({**small, "sensor_period": 0.95 * fast, "sensor_zeta": 1.0}, ctx) == ""
+
+
+def test_transducer_resonance_is_named_delay():
+    # the eighteenth family's force transducer with its mounted mass (sealed, run once on
+    # ba95736: 0 of 20 named): a spring-mass reading that rings after each reversal; the
+    # fitted natural frequency is the truth's (omega_n = 1 / (s RES_SAMPLES samples))
+    from diagnosis import diagnose
+    from diagnosis.benchmark.cases import make_plant_case
+    from diagnosis.benchmark.runner import MEASURED
+    from diagnosis.benchmark.seen18 import RES_DAMPING, RES_SAMPLES
+    case = make_plant_case("valve", "delay", 1.0, 0.01, seed=751859, quick=True,
+                           form="transducer_resonance", measured=MEASURED[0])
+    rep = diagnose(case.data, case.base, seed=0,
+                   candidates=["delay", "acceleration", "inertia", "backlash"])
+    assert rep["verdict"]["cause"] == "delay"
+    assert rep["verdict"]["excess_closed"] > 0.8
+    fitted = rep["effect_details"]["delay"]["extras"]
+    dt = float(case.data.t[1] - case.data.t[0])
+    period_truth = 2.0 * np.pi * case.info["amplitude"] * RES_SAMPLES * dt
+    assert fitted["sensor_period"] == pytest.approx(period_truth, rel=0.05)
+    assert fitted["sensor_zeta"] == pytest.approx(RES_DAMPING, abs=0.05)
+
+
 def test_friction_heat_is_a_lag_of_the_friction_power_that_carries_on():
     # constant power from a cold start: the step-invariant lag's closed form; the
     # held-out part of a split record starts from the fit part's final state (as the whole

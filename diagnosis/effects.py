@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen18`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen19`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -248,6 +248,7 @@ _S15 = "diagnosis.benchmark.seen15:"
 _S16 = "diagnosis.benchmark.seen16:"
 _S17 = "diagnosis.benchmark.seen17:"
 _S18 = "diagnosis.benchmark.seen18:"
+_S19 = "diagnosis.benchmark.seen19:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -303,7 +304,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "swing_arm_roller": _S15 + "swing_arm_roller_truth",
                    "jerk_unloading": _S16 + "jerk_unloading_truth",
                    "aerostatic_tilt": _S17 + "aerostatic_tilt_truth",
-                   "ball_train": _S18 + "ball_train_truth"},
+                   "ball_train": _S18 + "ball_train_truth",
+                   "current_ripple": _S19 + "current_ripple_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -329,7 +331,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "jkr_adhesion": _S15 + "jkr_adhesion_truth",
                    "overhung_load": _S16 + "overhung_load_truth",
                    "preload_relief": _S17 + "preload_relief_truth",
-                   "ploughing_onset": _S18 + "ploughing_onset_truth"},
+                   "ploughing_onset": _S18 + "ploughing_onset_truth",
+                   "viscoelastic_rolling": _S19 + "viscoelastic_rolling_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -355,7 +358,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "belt_idler": _S15 + "belt_idler_truth",
                    "freewheel_roller": _S16 + "freewheel_roller_truth",
                    "felt_lubricator": _S17 + "felt_lubricator_truth",
-                   "running_belt": _S18 + "running_belt_truth"},
+                   "running_belt": _S18 + "running_belt_truth",
+                   "leaning_brush": _S19 + "leaning_brush_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -381,7 +385,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "thixotropic_grease": _S15 + "thixotropic_grease_truth",
                    "churning_drag": _S16 + "churning_drag_truth",
                    "core_loss_drag": _S17 + "core_loss_drag_truth",
-                   "bellows_breathing": _S18 + "bellows_breathing_truth"},
+                   "bellows_breathing": _S18 + "bellows_breathing_truth",
+                   "eddy_brake": _S19 + "eddy_brake_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -411,7 +416,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "gliding_chain": _S15 + "gliding_chain_truth",
                    "cam_plunger": _S16 + "cam_plunger_truth",
                    "heated_zone": _S17 + "heated_zone_truth",
-                   "false_brinelling": _S18 + "false_brinelling_truth"},
+                   "false_brinelling": _S18 + "false_brinelling_truth",
+                   "rail_joint": _S19 + "rail_joint_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -436,7 +442,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "force_saturation": _S15 + "force_saturation_truth",
                    "chordal_action": _S16 + "chordal_action_truth",
                    "screw_stiffness": _S17 + "screw_stiffness_truth",
-                   "feedforward_lead": _S18 + "feedforward_lead_truth"},
+                   "feedforward_lead": _S18 + "feedforward_lead_truth",
+                   "abbe_pitch": _S19 + "abbe_pitch_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -465,7 +472,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "load_cell_creep": _S15 + "load_cell_creep_truth",
                    "mains_notch": _S16 + "mains_notch_truth",
                    "alpha_beta_tracker": _S17 + "alpha_beta_tracker_truth",
-                   "transducer_resonance": _S18 + "transducer_resonance_truth"},
+                   "transducer_resonance": _S18 + "transducer_resonance_truth",
+                   "gauge_snubber": _S19 + "gauge_snubber_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -492,7 +500,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "magnet_heating": _S15 + "magnet_heating_truth",
                    "tribocharging": _S16 + "tribocharging_truth",
                    "cage_creep": _S17 + "cage_creep_truth",
-                   "screw_loosening": _S18 + "screw_loosening_truth"},
+                   "screw_loosening": _S18 + "screw_loosening_truth",
+                   "film_dewetting": _S19 + "film_dewetting_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -517,7 +526,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "bowden_cable": _S15 + "bowden_cable_truth",
                    "reversing_clutch": _S16 + "reversing_clutch_truth",
                    "mesh_stiffness": _S17 + "mesh_stiffness_truth",
-                   "polymer_gear": _S18 + "polymer_gear_truth"},
+                   "polymer_gear": _S18 + "polymer_gear_truth",
+                   "grease_packed_gap": _S19 + "grease_packed_gap_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -542,7 +552,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "unloading_microslip": _S15 + "unloading_microslip_truth",
                    "power_law_joint": _S16 + "power_law_joint_truth",
                    "junction_growth": _S17 + "junction_growth_truth",
-                   "slip_avalanches": _S18 + "slip_avalanches_truth"},
+                   "slip_avalanches": _S18 + "slip_avalanches_truth",
+                   "slip_weakening": _S19 + "slip_weakening_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

@@ -1,12 +1,12 @@
-"""The nineteenth sealed truth family: one more mechanism per effect, kept out of all tuning.
+"""The twentieth sealed truth family: one more mechanism per effect, kept out of all tuning.
 
 Written 2026-11-30 (session 24) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 23's, was run once at the end of session 24 and is :mod:`.seen18`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen18`
+sealed before it, session 24's, was run once at the end of session 24 and is :mod:`.seen19`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen19`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen18`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen19`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`), taken from the friction literature or from real
 machines, integrated along the plant's continuous motion on the grid :data:`.kinematics.FINE`
@@ -18,72 +18,69 @@ amplitude monotonically from the base law at ``s`` = 0 (its calibration,
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``current_ripple``: the drive's current controller is a hysteresis
-                   (bang-bang) controller whose band is a share of the current command
-                   (Bose 1990's adaptive band): its high-frequency force ripple, and the
-                   contact's tangential velocity ripple, grow with the thrust, i.e.
-                   with |a|; a fast tangential vibration averages the friction's sign
-                   (dither), so the friction falls where the speed is below the ripple's
-                   velocity amplitude: at low speed under a strong acceleration
-load               ``viscoelastic_rolling``: a hard support roller of the carriage runs
-                   on a viscoelastic (polyurethane-coated) track: its hysteresis rolling
-                   resistance ~ L^(4/3) tan(delta) (Greenwood, Minshall and Tabor 1961),
-                   the track's loss factor (a standard linear solid) taken at the
-                   excitation rate v / a, a the contact's half-width ~ L^(1/3): a drag
-                   that grows faster than the load and whose speed of peak loss moves
-                   up with the load
-asymmetry          ``leaning_brush``: a strip brush (a way wiper's bristles) fixed to the
-                   carriage with its bristles leaning towards +x: moving with the lean
-                   the bristles bend over, a low force built over a long, soft path;
-                   moving against it they stand up and dig in, a high force built over a
-                   short, stiff path (brush seal hysteresis, Chupp and Dowler 1993):
-                   direction-dependent levels *and* presliding paths
-stribeck_shape     ``eddy_brake``: a conductive fin of the carriage runs between
-                   permanent magnets (an eddy-current brake, a magnetic damper): its drag
-                   rises linearly with the speed and falls beyond the critical speed at
-                   which the eddy currents' own field expels the magnets' (the skin
-                   effect; Wouterse 1991): 2 F_max u / (1 + u^2), u = v / v_crit
-position           ``rail_joint``: the rail is butt-jointed from two pieces where fit and
-                   held-out parts both pass, the piece on the +x side a little higher:
-                   while the carriage straddles the joint the share of its rolling
-                   elements on the high piece carries more preload (levels up with that
-                   share, which grows linearly across the carriage's loaded length) and
-                   the extra elastic energy pushes it back towards -x (a conservative
-                   force while it straddles)
-inertia            ``abbe_pitch``: the linear scale is read at a height off the
-                   carriage's centre of mass (an Abbe offset) and the carriage pitches on
-                   its guides' compliance under the acceleration's moment (a pitch mode):
-                   the read acceleration carries the scale head's pitch motion, so the
-                   inverse dynamics misses the mass times a high-passed acceleration
-                   (s^2 / (s^2 + 2 zeta omega s + omega^2) of a)
-delay              ``gauge_snubber``: the force read as a pressure through a gauge
-                   snubber (an orifice restrictor) into the transducer's volume: the
-                   flow through it has a laminar and a turbulent part (Delta p = R_l Q +
-                   R_t Q |Q|), so the reading lags the force by a time that grows with
-                   the force's rate of change
-drift              ``film_dewetting``: the thin lubricant film on the track dewets:
-                   holes nucleate after an incubation time and grow at a constant speed
-                   (Reiter 1992), so the bare share of the track follows Avrami's
-                   kinetics 1 - exp(-(t / t_d)^3) and the boundary levels rise with it
-backlash           ``grease_packed_gap``: drive and contact joined across a play packed
-                   with grease (a Bingham plastic, yield stress tau_y): the grease
-                   squeezed out of the closing side resists as ~ tau_y / h (a Bingham
-                   squeeze film, Covey and Stanmore 1981), so the contact is dragged
-                   along before the flanks meet once the thinning gap's force passes its
-                   friction: a gradual take-up of the play
-gms                ``slip_weakening``: the presliding junctions beside the bristle weaken
-                   with their own slip: each one's strength falls linearly from its peak
-                   to a residual over a critical slip distance (Rabinowicz 1951; Palmer
-                   and Rice 1973) and heals when its slip reverses, so every reversal's
-                   presliding curve climbs to a peak and falls back to the sliding level
-                   over the slip distance, whatever the speed; at ``s`` = 0 the base
-                   itself
+acceleration       ``rack_flank_sliding``: the carriage is driven by a rack and pinion
+                   whose tooth flanks slide on each other with a speed that grows with
+                   the distance of the contact from the pitch point (zero there, largest
+                   at the ends of the path of contact; Buckingham 1949): the flanks'
+                   friction loss, carried by the carriage, is the thrust through the
+                   mesh (~ m |a|) times that sliding ratio: levels that rise with |a|,
+                   modulated along each tooth pitch
+load               ``heathcote_slip``: the rolling elements run in close-conforming
+                   (gothic-arch) grooves: across the contact ellipse's width the groove's
+                   radius, and so the rolling speed, varies, and the differential
+                   (Heathcote) slip about two rolling lines dissipates a rolling drag
+                   ~ mu L (b / R)^2, b ~ L^(1/3): a drag ~ L^(5/3)
+asymmetry          ``sealing_band``: the steel sealing band of a slotted (rodless)
+                   cylinder or a way cover, held by a constant-force spring at one end,
+                   is pulled by the carriage over a fixed guide radius: the band's
+                   tension at the carriage is the spring's times exp(+mu theta) moving
+                   away from the spring and exp(-mu theta) towards it (Euler-Eytelwein),
+                   mu with the band's own static and kinetic values: an offset and
+                   levels, and speed dependences, that differ with the direction
+stribeck_shape     ``shear_thinning_oil``: a polymer-thickened (multigrade) oil film
+                   beside the contact whose viscosity thins with the shear rate (Cross
+                   1965): the film's drag is viscous at low speed and bends over to a
+                   lower slope above the thinning speed
+position           ``rail_misalignment``: the two rails of the axis are not parallel:
+                   beyond the point of the stroke where their spacing fits the carriages,
+                   the misfit grows linearly and is taken up elastically by the
+                   carriages' preload: the levels rise with it, and the stored elastic
+                   energy pushes the carriage back towards the fitting point
+inertia            ``friction_damped_mount``: a payload rides on the carriage on a spring
+                   mount with a friction damper (a wire-mesh or friction-pad isolator):
+                   it moves rigidly while the damper holds, and on its spring, with a
+                   dry friction slip, where its inertial force passes the damper's slip
+                   force: the mass the inverse dynamics misses is whole at low
+                   acceleration and springs and slips at the peaks
+delay              ``magnetostrictive_wire``: the position is read by a magnetostrictive
+                   sensor (a waveguide wire, the Wiedemann effect): the torsional strain
+                   pulse travels from the position magnet to the head at the wire's
+                   sound speed, so the motion channels are late by a time that grows
+                   with the magnet's distance from the head: a delay that varies along
+                   the stroke
+drift              ``grease_channelling``: the grease of the guide is pushed aside at each
+                   reversal of the motion into ridges beside the track (channelling,
+                   Lugt 2013): the share of the track left starved grows by a fixed
+                   fraction of what remains at every reversal, and the levels rise with
+                   it: a drift counted in reversals, not in time or travel
+backlash           ``wedge_flank``: drive and contact meet across their play on inclined
+                   flanks (a thread or a gear flank) that slide on one another as the
+                   contact deflects: the flank friction stiffens the coupling while it
+                   loads and softens it while it unloads (the wedge's tan(phi + rho)
+                   against tan(phi - rho)): a compliant take-up of the play with a
+                   hysteresis of its own
+gms                ``microslip_bar``: presliding of a slender part clamped along its
+                   length on a friction bed (a rod in its bore, a lap joint's strip;
+                   Menq, Bielak and Griffin 1986): the slip front advances from the
+                   loaded end, so the force grows as the square root of the
+                   displacement up to full slip, and unloading follows Masing's rule; at
+                   ``s`` = 0 the base itself
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``eddy_brake`` needs a
-Stribeck curve (not the isolator's mre_lugre), ``rail_joint`` a record that revisits its
-positions (not the press), ``viscoelastic_rolling`` a load that changes,
-``grease_packed_gap`` and ``slip_weakening`` a classic LuGre base (valve, damping rig,
+Where a form applies: as its effect's record (``truth_applies``); ``shear_thinning_oil``
+needs a Stribeck curve (not the isolator's mre_lugre), ``rail_misalignment`` a record that
+revisits its positions (not the press), ``heathcote_slip`` a load that changes,
+``wedge_flank`` and ``microslip_bar`` a classic LuGre base (valve, damping rig,
 XML-350); each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
@@ -100,54 +97,54 @@ from .truths import (_base_parts, _bump_centre, _contact_constants, _level,
                      _light_contact_step, _lugre_params, _motion_time, _presliding_path,
                      _smooth_max0, _substeps, has_stribeck_curve, level_inside, on_fine_grid)
 
-__all__ = ["FORMS", "current_ripple_truth", "viscoelastic_rolling_truth",
-           "leaning_brush_truth", "eddy_brake_truth", "rail_joint_truth",
-           "abbe_pitch_truth", "gauge_snubber_truth", "film_dewetting_truth",
-           "grease_packed_gap_truth", "slip_weakening_truth"]
+__all__ = ["FORMS", "rack_flank_sliding_truth", "heathcote_slip_truth",
+           "sealing_band_truth", "shear_thinning_oil_truth", "rail_misalignment_truth",
+           "friction_damped_mount_truth", "magnetostrictive_wire_truth",
+           "grease_channelling_truth", "wedge_flank_truth", "microslip_bar_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "current_ripple", "load": "viscoelastic_rolling",
-         "asymmetry": "leaning_brush", "stribeck_shape": "eddy_brake",
-         "position": "rail_joint", "inertia": "abbe_pitch",
-         "delay": "gauge_snubber", "drift": "film_dewetting",
-         "backlash": "grease_packed_gap", "gms": "slip_weakening"}
+FORMS = {"acceleration": "rack_flank_sliding", "load": "heathcote_slip",
+         "asymmetry": "sealing_band", "stribeck_shape": "shear_thinning_oil",
+         "position": "rail_misalignment", "inertia": "friction_damped_mount",
+         "delay": "magnetostrictive_wire", "drift": "grease_channelling",
+         "backlash": "wedge_flank", "gms": "microslip_bar"}
 
 
 # -- acceleration ----------------------------------------------------------------------------
-#: ``current_ripple``'s velocity amplitude of the contact's ripple at the top acceleration,
-#: x the top speed, at strength 1 [-]; the lowest relative level the averaging leaves [-];
-#: the speed the averaging is rounded over, x the top speed [-]
-RIPPLE_SPEED, RIPPLE_FLOOR, RIPPLE_ROUND = 0.3, 0.05, 1e-4
+#: ``rack_flank_sliding``'s flank friction at the top acceleration and the end of the path of
+#: contact, x the friction level, at strength 1 [-]; the rack's tooth pitch, x the stroke the
+#: record visits [-]
+RACK_SHARE, RACK_PITCH = 0.8, 0.06
 
 
-def _dither_share(v, v_ripple, eps):
-    """The friction's share [-] left by averaging its sign over a fast sinusoidal velocity
-    ripple of amplitude ``v_ripple`` [m/s] about the velocities ``v`` [m/s]: (2 / pi)
-    asin(|v| / v_ripple) below the ripple's amplitude, 1 above (the speeds rounded by
-    ``eps`` [m/s], so that no ripple leaves the friction whole)."""
-    u = (np.abs(np.asarray(v, float)) + eps) / (np.asarray(v_ripple, float) + eps)
-    return np.where(u < 1.0, (2.0 / np.pi) * np.arcsin(np.minimum(u, 1.0)), 1.0)
+def _sliding_ratio(x, pitch, x0):
+    """The flanks' sliding speed over the pitch-line speed [-] (1 at the ends of the path of
+    contact) along the positions ``x`` [m] of a rack of tooth pitch ``pitch`` [m] whose
+    pitch point is passed at ``x0`` [m]: |2 u - 1|, u the mesh's phase in [0, 1) - the
+    sliding speed grows linearly with the contact's distance from the pitch point (a
+    single pair in mesh)."""
+    u = np.mod((np.asarray(x, float) - x0) / pitch + 0.5, 1.0)
+    return np.abs(2.0 * u - 1.0)
 
 
 @on_fine_grid
-def current_ripple_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The drive's current controller is a hysteresis (bang-bang) controller whose band
-    is a fixed share of the current command: the current, and the drive's force, ripple
-    at a high frequency with an amplitude proportional to the thrust, which the inertial
-    force m a dominates. The ripple shakes the contact tangentially with a velocity
-    amplitude v_r = ``s`` :data:`RIPPLE_SPEED` v99 |a| / a99, and the friction, whose sign
-    follows v + v_r sin(omega t), averages over a period to (2 / pi) asin(|v| / v_r) of
-    itself where |v| < v_r (:func:`_dither_share`). The Coulomb and Stribeck levels are
-    the base's times that share (at least :data:`RIPPLE_FLOOR`), inside the bristle
-    dynamics; the viscous term is the base's.
+def rack_flank_sliding_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage is driven by a rack and pinion. The thrust through the mesh is, above
+    all, the inertial force m a that accelerates the carriage; its flanks slide on each
+    other with a speed proportional to the contact's distance from the pitch point (zero
+    there, largest at the ends of the path of contact; :func:`_sliding_ratio`), and the
+    flank friction mu N v_slide, over the carriage's speed, is a drag ~ |m a| x the
+    sliding ratio. The Coulomb and Stribeck levels are the base's times 1 + ``s``
+    :data:`RACK_SHARE` (|a| / a99) x the sliding ratio (tooth pitch :data:`RACK_PITCH` x
+    the stroke), inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
+        The motion on the fine grid (x [m], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the controller's relative band (the ripple per unit of
-        current), / its value at strength 1.
+        Amplitude factor [-]: the flanks' friction coefficient times the carriage's mass,
+        / its value at strength 1.
 
     Returns
     -------
@@ -156,68 +153,60 @@ def current_ripple_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Hysteresis current control with a band proportional to the command (Bose 1990, An
-    adaptive hysteresis-band current control technique of a voltage-fed PWM inverter for
-    machine drive system, IEEE Trans. Ind. Electron. 37); friction averaged by a fast
-    tangential vibration (Thomsen 1999, Using fast vibrations to quench friction-induced
-    oscillations, J. Sound Vib. 228; Armstrong-Helouvry, Dupont and Canudas de Wit 1994).
-    The candidate raises the levels with |a|, lagged, tilts them with a and adds a force
-    odd in a; the open forms lag the velocity, a film or a contact state, heat the
-    contact, skid or push rolling elements, move load between rows or supports, press
-    seals, pull with the thrust, squeeze or starve films, dilate, lift on a wedge, shift a
-    gib, soften an elastomer, swing a roller arm, unload by the jerk or tilt a pressurised
-    film. Here the acceleration *lowers* the friction, and only where the speed is low
-    against the ripple it sets: most at the reversals of a strong acceleration.
+    Sliding velocity along the path of contact and the resulting tooth friction loss
+    (Buckingham 1949, Analytical Mechanics of Gears, ch. 14; Niemann and Winter 1983,
+    Maschinenelemente II; ISO/TR 14179-2 on gear power losses); rack-and-pinion drives of
+    long axes. The candidate raises the levels with |a|, lagged, tilts them with a and
+    adds a force odd in a; the open forms lag the velocity, a film or a contact state,
+    heat the contact, skid or push rolling elements, move load between rows or supports,
+    press seals, pull with the thrust, squeeze or starve films, dilate, lift on a wedge,
+    shift a gib, soften an elastomer, swing a roller arm, unload by the jerk, tilt a
+    pressurised film or shake the contact with a current ripple. Here the acceleration's
+    friction is a loss of the mesh: it vanishes each time the contact passes the pitch
+    point and is largest between, once per tooth along the stroke.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     sc = kin.scales
-    v99 = max(sc["v99"], 1e-12)
     a99 = max(sc["a99"], 1e-12)
-    v_r = float(s) * RIPPLE_SPEED * v99 * np.abs(np.asarray(kin.a, float)) / a99
-    share = _dither_share(kin.v, v_r, RIPPLE_ROUND * v99)
-    lev = np.maximum(share, RIPPLE_FLOOR)
+    stroke = (sc["x_hi"] - sc["x_lo"]) or 1.0
+    ratio = _sliding_ratio(kin.x, RACK_PITCH * stroke, sc["x_lo"])
+    lev = 1.0 + float(s) * RACK_SHARE * np.abs(np.asarray(kin.a, float)) / a99 * ratio
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- load ------------------------------------------------------------------------------------
-#: ``viscoelastic_rolling``'s rolling resistance at the record's top load (its 99th
-#: percentile) and the track's peak loss, x the friction level, at strength 1 [-]; the
-#: speed of peak loss at the record's mean load, x the top speed [-]
-ROLL_SHARE, ROLL_PEAK = 0.6, 0.3
+#: ``heathcote_slip``'s rolling drag at the record's top load (its 99th percentile), x the
+#: friction level, at strength 1 [-]; the exponent of the load (the drag mu L (b / R)^2,
+#: b ~ L^(1/3)) [-]
+HEATH_SHARE, HEATH_POWER = 0.5, 5.0 / 3.0
 
 
-def _rolling_loss(v, load, v_peak, mean_load, top_load):
-    """The roller's hysteresis rolling resistance [-] (1 at the load ``top_load`` [N] and
-    the peak loss) at the velocities ``v`` [m/s] and loads ``load`` [N]: (L / L_top)^(4/3)
-    x 2 u / (1 + u^2), the standard linear solid's loss factor over its peak at the rate u
-    = (v / ``v_peak``) (L / ``mean_load``)^(-1/3) (the contact's half-width ~ L^(1/3)
-    sets the excitation rate v / a); odd in v, nothing at rest."""
-    L = np.maximum(np.abs(np.asarray(load, float)), 1e-9 * mean_load)
-    u = (np.asarray(v, float) / v_peak) * (mean_load / L) ** (1.0 / 3.0)
-    return (L / top_load) ** (4.0 / 3.0) * 2.0 * u / (1.0 + u * u)
+def _heathcote_drag(load, top_load):
+    """The differential-slip drag [-] (1 at the load ``top_load`` [N]) at the loads
+    ``load`` [N]: (|L| / L_top)^(5/3) (:data:`HEATH_POWER`)."""
+    return (np.abs(np.asarray(load, float)) / top_load) ** HEATH_POWER
 
 
 @on_fine_grid
-def viscoelastic_rolling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A hard support roller of the carriage (a cam follower, a guide wheel) runs under the
-    normal load on a viscoelastic track (a polyurethane-coated rail, a polymer liner).
-    The track is deformed ahead of the contact and recovers late behind it, so its
-    pressure is asymmetric and resists the rolling: the hysteresis rolling resistance
-    F_r = alpha (3 / 16) L a / R, a ~ (L R / E*)^(1/3) the contact's half-width, so F_r ~
-    L^(4/3), with alpha the track's loss at the excitation rate v / a (a standard linear
-    solid's 2 u / (1 + u^2), u = v tau / a; :func:`_rolling_loss`). The truth adds ``s``
-    :data:`ROLL_SHARE` F_level x that loss (1 at the record's top load and the peak loss,
-    the peak at :data:`ROLL_PEAK` v99 at the mean load) to the base.
+def heathcote_slip_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The rolling elements of the guide run in close-conforming (gothic-arch) grooves.
+    Across the width 2b of the contact ellipse the groove's radius, and with it the
+    element's rolling speed, varies: the element rolls without slip on two lines only and
+    slips forwards between and backwards outside them (Heathcote slip), which dissipates
+    a rolling drag mu L (b / R)^2 with the contact's half-width b ~ (L R / E*)^(1/3): a
+    drag ~ L^(5/3) (:func:`_heathcote_drag`). The Coulomb and Stribeck levels are the
+    base's times 1 + ``s`` :data:`HEATH_SHARE` x that drag (1 at the record's top load),
+    inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (v [m/s], load [N]) and its base law.
+        The motion on the fine grid (load [N]) and its base law.
     s : float
-        Amplitude factor [-]: the track's loss modulus over its stiffness (the roller's
-        share of the load), / its value at strength 1.
+        Amplitude factor [-]: the slip's friction coefficient times the grooves'
+        conformity, / its value at strength 1.
 
     Returns
     -------
@@ -226,76 +215,66 @@ def viscoelastic_rolling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Hysteresis rolling resistance (Greenwood, Minshall and Tabor 1961, Hysteresis losses
-    in rolling and sliding friction, Proc. R. Soc. A 259; Johnson 1985, Contact Mechanics,
-    ch. 8; Persson 2010, Rolling friction for hard cylinder and sphere on viscoelastic
-    solids, Eur. Phys. J. E 33). The candidate's levels are affine in the load (two
-    regimes); the open forms scale them with a power of the load from zero, in one
-    direction, through the Stribeck velocity, a film, a step, a creep, a rate, a lever's
-    play, a plastic area, a hinge, a cavitating film, a pressure-viscous film, an erf
-    area, a flash temperature, a relay, a renewal over the slip, an adhesive area, the
-    position of the load, a preload's relief or a ploughing onset. Here a drag of its own
-    beside the friction, nothing at rest, whose speed of peak loss moves with the load:
-    load and speed enter together.
+    Differential slip in conforming grooves (Heathcote 1921, The ball bearing: in the
+    making, under test and on service, Proc. Inst. Automob. Eng. 15; Johnson 1985, Contact
+    Mechanics, ch. 8.4; Harris and Kotzalas 2007, ch. 7). The candidate makes the levels
+    affine in the load, with a memory over the travel; the open forms scale the friction
+    with the load, as a Hertz contact's area, a seal's, a film's, a junction's, a pivot's
+    or an adhesive contact's, break or squeeze films, plough, creep, roll on a lossy track
+    and more. Here the drag grows faster than the load, as its 5/3 power: a rolling loss
+    that is nearly nothing at light loads.
     """
     L = np.asarray(kin.load, float)
-    Lm = max(float(np.mean(np.abs(L))), 1e-300)
+    Lm = float(np.mean(np.abs(L))) or 1.0
     if not np.ptp(L) > 1e-9 * Lm:
-        raise ValueError(f"load (viscoelastic_rolling): the {kin.plant} record's load does "
-                         f"not change")
+        raise ValueError(f"load (heathcote_slip): the {kin.plant} record's load does not "
+                         f"change")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    top = max(float(np.percentile(np.abs(L), 99.0)), 1e-300)
-    v_peak = ROLL_PEAK * max(kin.scales["v99"], 1e-12)
-    loss = _rolling_loss(kin.v, L, v_peak, Lm, top)
-    return F + float(s) * ROLL_SHARE * _level(kin) * loss
+    top = max(float(np.percentile(np.abs(L), 99)), 1e-12 * Lm)
+    lev = 1.0 + float(s) * HEATH_SHARE * _heathcote_drag(L, top)
+    return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- asymmetry -------------------------------------------------------------------------------
-#: ``leaning_brush``'s sliding force moving with the bristles' lean (+x) and against it
-#: (-x), x the friction level, at strength 1 [-]; the travel over which each builds up, x
-#: the stroke [-]
-BRUSH_WITH, BRUSH_AGAINST, BRUSH_PATH_WITH, BRUSH_PATH_AGAINST = 0.25, 0.8, 0.03, 0.004
+#: ``sealing_band``'s spring tension, x the friction level, at strength 1 [-]; the wrap's
+#: mu theta at the band's kinetic friction [-]; its static excess over the kinetic [-]; the
+#: speed the band's friction falls to the kinetic over, x the top speed [-]; the speed its
+#: sign is rounded over, x the top speed [-]
+BAND_TENSION, BAND_WRAP, BAND_STATIC, BAND_SPEED, BAND_ROUND = 0.3, 0.6, 0.6, 0.05, 2e-3
 
 
-@njit(cache=True)
-def _brush(x, f_with, f_against, p_with, p_against):
-    """The brush's force [N] along the positions ``x`` [m]: moving in +x (with the lean)
-    it approaches ``f_with`` [N] exponentially over the travel ``p_with`` [m], moving in
-    -x (against it) -``f_against`` [N] over ``p_against`` [m] (a Dahl law of each
-    direction's own level and path, exact for a piecewise-linear path). Starts unloaded."""
-    n = x.size
-    out = np.empty(n)
-    f = 0.0
-    out[0] = 0.0
-    for k in range(1, n):
-        dx = x[k] - x[k - 1]
-        if dx > 0.0:
-            f = f_with + (f - f_with) * math.exp(-dx / p_with)
-        elif dx < 0.0:
-            f = -f_against + (f + f_against) * math.exp(dx / p_against)
-        out[k] = f
-    return out
+def _band_tension(v, wrap, static, v_fall, v_round):
+    """The band's tension at the carriage over the spring's [-] at the velocities ``v``
+    [m/s]: exp(mu theta(v) r(v)), mu theta(v) = ``wrap`` (1 + ``static`` exp(-(v /
+    ``v_fall``)^2)) and r(v) = tanh(v / ``v_round``) the sliding direction over the guide
+    radius (Euler-Eytelwein: the tight side's tension is the slack side's times exp(mu
+    theta)); 1 at rest."""
+    v = np.asarray(v, float)
+    mu = wrap * (1.0 + static * np.exp(-(v / v_fall) ** 2))
+    return np.exp(mu * np.tanh(v / v_round))
 
 
 @on_fine_grid
-def leaning_brush_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A strip brush on the carriage (a way wiper's bristles, a brush seal) sweeps the way
-    with its bristles leaning towards +x. Moving with the lean (v > 0) the bristles bend
-    further over and their tips slide after a long, soft deflection: the force builds
-    over :data:`BRUSH_PATH_WITH` x the stroke to ``s`` :data:`BRUSH_WITH` F_level. Moving
-    against it (v < 0) they stand up, stiffen and dig their tips in: the force builds over
-    the short :data:`BRUSH_PATH_AGAINST` x the stroke to ``s`` :data:`BRUSH_AGAINST`
-    F_level (:func:`_brush`). The truth adds the brush's force to the base.
+def sealing_band_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A steel sealing band (the slot cover of a rodless cylinder, a way cover's band) is
+    held at its far end by a constant-force spring of tension T0 = ``s``
+    :data:`BAND_TENSION` x the friction level and runs to the carriage over a fixed guide
+    radius that it wraps by theta. Moving away from the spring (+x) the carriage pulls the
+    band over the guide against its friction, and the tension it feels is T0 exp(mu
+    theta); moving towards it the spring pulls the band back over the guide, and the
+    friction holds the tension at the carriage down to T0 exp(-mu theta) (Euler-Eytelwein,
+    :func:`_band_tension`), mu falling from its static to its kinetic value over
+    :data:`BAND_SPEED` x the top speed. The truth adds that tension (towards -x) to the
+    base.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m]) and its base law.
+        The motion on the fine grid (v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the brush's bristle density (its force per unit of
-        deflection and its sliding force), / its value at strength 1.
+        Amplitude factor [-]: the spring's tension, / its value at strength 1.
 
     Returns
     -------
@@ -304,61 +283,57 @@ def leaning_brush_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The frictional hysteresis of inclined bristle packs (Chupp and Dowler 1993,
-    Performance characteristics of brush seals for limited-life engines, J. Eng. Gas
-    Turbines Power 115; Demiroglu, Gursoy and Tichy 2004; the anisotropic friction of
-    inclined fibres, Tramsen et al. 2018). The candidate changes the levels and offsets
-    with the direction; the open forms twin levels, curves or slopes, add a tail, roll a
-    lip, take the thrust on other bearings, drag a seal's film, climb a texture, hold a
-    spring, wedge a pad, a sprag or grooves, throttle an exhaust, unbalance a cylinder's
-    areas, buckle a cable, bulldoze chips, shift the commutation, bend a belt over an
-    idler, lock a freewheel, oil ahead of the carriage or ride a running belt. Here the
-    two directions differ in their presliding too: after each reversal the force turns
-    over a path ten times shorter one way than the other.
+    Belt friction (Euler 1762; Eytelwein 1808; Johnson 1985, Contact Mechanics, ch. 8);
+    sealing bands of slotted rodless cylinders (Festo's and Parker's catalogues; Beater
+    2007, Pneumatic Drives, ch. 6). The candidate frees the levels (and the Stribeck
+    velocity and viscous term) of each direction and an offset; the open forms twin the
+    levels, curves or viscous terms, roll lips, load thrust bearings, pump films, ratchet,
+    spring back, tilt pads, strut, throttle, differ in areas, pump along grooves, buckle,
+    scrape chips, commutate, tension idlers, free-wheel, wick felts, run belts or lean
+    brushes. Here the direction multiplies an offset: the two directions' levels are in
+    the ratio exp(2 mu theta), and their static peaks in a larger one.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    stroke = max(float(np.ptp(kin.x)), 1e-12)
-    lev = _level(kin)
-    f = _brush(np.ascontiguousarray(kin.x, dtype=float), float(s) * BRUSH_WITH * lev,
-               float(s) * BRUSH_AGAINST * lev, BRUSH_PATH_WITH * stroke,
-               BRUSH_PATH_AGAINST * stroke)
-    return F + f
+    v99 = max(kin.scales["v99"], 1e-12)
+    ratio = _band_tension(kin.v, BAND_WRAP, BAND_STATIC, BAND_SPEED * v99, BAND_ROUND * v99)
+    return F + float(s) * BAND_TENSION * _level(kin) * ratio
 
 
 # -- stribeck_shape --------------------------------------------------------------------------
-#: ``eddy_brake``'s peak drag (at the critical speed), x the Coulomb level, at strength 1
-#: [-]; the critical speed, x the top speed [-]
-EDDY_DRAG, EDDY_CRIT = 0.4, 0.35
+#: ``shear_thinning_oil``'s film drag at the top speed, x the Coulomb level, at strength 1
+#: [-]; the thinning speed (the Cross model's 1 / lambda x the film's thickness), x the top
+#: speed [-]; the Cross exponent [-]; the thinned viscosity over the rest viscosity [-]
+THIN_DRAG, THIN_SPEED, THIN_EXPONENT, THIN_FLOOR = 0.4, 0.04, 0.8, 0.15
 
 
-def _eddy_drag(u):
-    """The eddy-current brake's drag [-] (1 at its peak) at the relative speeds ``u`` =
-    v / v_crit [-]: 2 u / (1 + u^2), linear below the critical speed, falling as 2 / u
-    above it (the eddy currents' field expels the magnets'); odd in ``u``."""
-    u = np.asarray(u, float)
-    return 2.0 * u / (1.0 + u * u)
+def _cross_drag(v, v_thin, exponent, floor):
+    """The shear-thinning film's drag [-] at the velocities ``v`` [m/s], over its drag at
+    ``v`` = ``v_thin`` [m/s] without thinning: (v / v_thin) eta(v) / eta_0 with the Cross
+    model eta / eta_0 = ``floor`` + (1 - ``floor``) / (1 + |v / v_thin|^``exponent``);
+    odd in ``v``."""
+    u = np.asarray(v, float) / v_thin
+    return u * (floor + (1.0 - floor) / (1.0 + np.abs(u) ** exponent))
 
 
 @on_fine_grid
-def eddy_brake_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A conductive fin (a copper or aluminium plate) on the carriage runs through the gap
-    of permanent magnets on the frame (an eddy-current brake, a magnetic damper). The
-    moving conductor carries eddy currents whose force on it opposes the motion: at low
-    speeds in proportion to the speed (a viscous drag); at higher speeds the eddy
-    currents' own field cancels the magnets' in the plate (the magnetic Reynolds number
-    passes 1) and the drag falls: 2 F_max u / (1 + u^2), u = v / v_crit
-    (:func:`_eddy_drag`). The truth adds ``s`` :data:`EDDY_DRAG` F_c x that to the base,
-    v_crit = :data:`EDDY_CRIT` v99.
+def shear_thinning_oil_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Beside the contact a film of a polymer-thickened (multigrade) oil is sheared between
+    the carriage and the way. Its viscosity thins with the shear rate v / h along the Cross
+    model eta = eta_inf + (eta_0 - eta_inf) / (1 + (lambda v / h)^m) (:func:`_cross_drag`;
+    thinning speed :data:`THIN_SPEED` x the top speed, m = :data:`THIN_EXPONENT`, eta_inf =
+    :data:`THIN_FLOOR` eta_0): its drag eta v A / h is viscous at low speed and bends over
+    to a lower slope above the thinning speed. The truth adds that drag, ``s``
+    :data:`THIN_DRAG` x the Coulomb level at the top speed, to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s]) and its base law (with a Stribeck curve).
     s : float
-        Amplitude factor [-]: the magnets' flux squared times the fin's conductivity, /
-        its value at strength 1.
+        Amplitude factor [-]: the film's area over its thickness times its rest viscosity,
+        / its value at strength 1.
 
     Returns
     -------
@@ -367,66 +342,63 @@ def eddy_brake_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The eddy-current brake's speed-drag characteristic with its critical speed (Wouterse
-    1991, Critical torque and speed of eddy current brake with widely separated soft iron
-    poles, IEE Proc. B 138; Heald 1988, Magnetic braking: improved theory, Am. J. Phys.
-    56). The candidate reshapes the Stribeck curve; the open forms add a tail, a rational
-    drop, a film's root, a spike, a lift-off, two roughness scales, a log weakening, an
-    Eyring film, starvation, an elastomer's loss, a resonance, a dither, a melt, a
-    granular flow, a readsorption, a heated film, a turbulent film, a thixotropic
-    grease, a churning drag, core losses or a bellows' breathing. Here a drag beside the
-    friction that rises and then falls with the speed: highest at a speed of its own,
-    far above the Stribeck velocity.
+    Shear thinning of polymer-containing oils (Cross 1965, Rheology of non-Newtonian
+    fluids: a new flow equation for pseudoplastic systems, J. Colloid Sci. 20; Bair 2007,
+    High Pressure Rheology for Quantitative Elastohydrodynamics, ch. 4; temporary
+    viscosity loss of multigrade oils, ASTM D6616). The candidate reshapes the Stribeck
+    curve; the open forms add a tail, a rational drop, a hydrodynamic rise, a spike, a
+    lift-off, two roughness scales, a logarithmic or Eyring law, starve a film, add rubber
+    hysteresis, resonate, dither, melt, flow grains, readsorb, heat the film, make it
+    turbulent, thixotropic or churned, add core losses, breathe a bellows or brake by
+    eddy currents. Here a film drag rises steeply from rest and bends to a lower slope at
+    speed: a viscous term whose coefficient falls with the speed.
     """
-    law = kin.base
     if not has_stribeck_curve(kin):
-        raise ValueError("stribeck_shape (eddy_brake): the mre_lugre base has no Stribeck "
-                         "curve")
+        raise ValueError("stribeck_shape (shear_thinning_oil): the mre_lugre base has no "
+                         "Stribeck curve")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    v_crit = EDDY_CRIT * max(kin.scales["v99"], 1e-12)
-    return F + float(s) * EDDY_DRAG * float(law.params.Fc) * _eddy_drag(kin.v / v_crit)
+    v99 = max(kin.scales["v99"], 1e-12)
+    v_thin = THIN_SPEED * v99
+    top = float(_cross_drag(np.array([v99]), v_thin, THIN_EXPONENT, THIN_FLOOR)[0])
+    drag = _cross_drag(kin.v, v_thin, THIN_EXPONENT, THIN_FLOOR) / top
+    return F + float(s) * THIN_DRAG * float(kin.base.params.Fc) * drag
 
 
 # -- position --------------------------------------------------------------------------------
-#: ``rail_joint``'s loaded length of the carriage, x the stroke [-]; the levels' rise with
-#: the whole loaded length on the high piece, at strength 1 [-]; the push back while the
-#: carriage straddles the joint, x the friction level, at strength 1 [-]; the share of the
-#: loaded length the straddle's ends are rounded over [-]
-JOINT_LENGTH, JOINT_RISE, JOINT_PUSH, JOINT_ROUND = 0.15, 0.5, 0.3, 0.05
+#: ``rail_misalignment``'s rise of the levels at the far end of the stroke from the fitting
+#: point, at strength 1 [-]; the push back there, x the friction level, at strength 1 [-];
+#: the travel the misfit's onset is rounded over, x the stroke [-]
+MISFIT_RISE, MISFIT_PUSH, MISFIT_ROUND = 0.5, 0.3, 0.03
 
 
-def _straddle(x, joint, length, rounding):
-    """The share [-] of the carriage's loaded length ``length`` [m] past the joint at
-    ``joint`` [m] along the carriage's (centre) positions ``x`` [m], and its derivative
-    [1/m]: 0 before, rising linearly across the joint, 1 after (the ends rounded over
-    ``rounding`` x the length). Returns (share, d share / dx)."""
-    u = (np.asarray(x, float) - joint) / length + 0.5
-    e = rounding
-    share = _smooth_max0(u, e) - _smooth_max0(u - 1.0, e)
-    du = 0.5 * (u / np.sqrt(u * u + e * e) - (u - 1.0) / np.sqrt((u - 1.0) ** 2 + e * e))
-    return share, du / length
+def _misfit(x, x_fit, far, rounding):
+    """The rails' misfit [-] along the positions ``x`` [m] (1 at ``x_fit`` + ``far``):
+    nothing before the fitting point ``x_fit`` [m], where the rails' spacing fits the
+    carriages (there they have play), then growing linearly with the distance past it
+    (the onset rounded over ``rounding`` [m])."""
+    return _smooth_max0(np.asarray(x, float) - x_fit, rounding) / far
 
 
 @on_fine_grid
-def rail_joint_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The guide rail is butt-jointed from two pieces, the joint where fit and held-out
-    parts both pass (:func:`.truths._bump_centre`), the piece on the +x side a little
-    higher. While the carriage (its loaded length :data:`JOINT_LENGTH` x the stroke)
-    straddles the joint, the share of its rolling elements on the high piece
-    (:func:`_straddle`) is compressed further: the Coulomb and Stribeck levels are the
-    base's times 1 + ``s`` :data:`JOINT_RISE` x that share (inside the bristle dynamics;
-    the viscous term is the base's), and the elastic energy the step stores, which grows
-    with the share, pushes the carriage back towards -x: a conservative force ``s``
-    :data:`JOINT_PUSH` F_level x length x d share / dx, whatever the direction of travel.
+def rail_misalignment_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The two rails of the axis are mounted at a small angle to each other (not
+    parallel): up to a point of the stroke their spacing leaves the carriages their play,
+    past it the misfit grows linearly with the travel (:func:`_misfit`) and is taken up
+    elastically by the carriages' rolling elements as extra preload. The levels rise with
+    that preload, 1 + ``s`` :data:`MISFIT_RISE` x the misfit (1 at the far end of the
+    stroke), inside the bristle dynamics, and the elastic energy stored, ~ misfit^2, pushes
+    the carriage back towards the fitting point: a force ``s`` :data:`MISFIT_PUSH` x the
+    friction level x the misfit, whatever the direction of travel. The fitting point is
+    where fit and held-out parts both pass.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m]) and its base law.
     s : float
-        Amplitude factor [-]: the step's height, / its value at strength 1.
+        Amplitude factor [-]: the rails' angle, / its value at strength 1.
 
     Returns
     -------
@@ -435,68 +407,84 @@ def rail_joint_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Butt-jointed rails of linear guides and the makers' allowance for the step at their
-    joints (THK and HIWIN catalogues: butt-jointed rails, matched joint marks; the preload
-    of a rolling element ~ its interference^1.5, Harris and Kotzalas 2007). The candidate
-    maps the levels over the position; the open forms bump, wave, step, rectify, bow,
-    coat, cog, taper, oil, cushion, cover, spring, drill, immerse, sag, hang, curve,
-    drag a chain, cam, heat or dent the stroke. Here a level that ramps across one
-    carriage length at the joint, with a force that pushes one way on that ramp in both
-    directions of travel.
+    Parallelism of the rails of linear guides and the resulting rise of the running
+    resistance (THK's and Bosch Rexroth's catalogues: permissible parallelism error and
+    its load; Slocum 1992, Precision Machine Design, ch. 8). The candidate scales the
+    friction along the stroke and adds a force of the position; the open forms put a
+    defect, a waviness, a worn section, runout, a bent rail, a transfer film, cogging, a
+    taper, a pocket, a cushion, a cover, an air spring, bolt holes, a plunger, a sag, a
+    festoon, a curve, a chain, a cam, a heated zone, brinelled dents or a rail joint on
+    the stroke. Here the levels and a spring-like push both start at one point and grow
+    linearly from it: a kink in the middle of the visited stroke.
     """
-    centre = _bump_centre(kin)
-    if centre is None:
-        raise ValueError(f"position (rail_joint): the held-out part of the {kin.plant} "
+    x_fit = _bump_centre(kin)
+    if x_fit is None:
+        raise ValueError(f"position (rail_misalignment): the held-out part of the {kin.plant} "
                          f"record never revisits the positions of its fit part")
     if s <= 0.0:
         return _base_parts(kin)[0]
-    length = JOINT_LENGTH * max(float(np.ptp(kin.x)), 1e-12)
-    share, dshare = _straddle(kin.x, centre, length, JOINT_ROUND)
-    lev = 1.0 + float(s) * JOINT_RISE * share
-    F = level_inside(kin, lev, np.ones_like(lev))
-    return F + float(s) * JOINT_PUSH * _level(kin) * length * dshare
+    sc = kin.scales
+    stroke = (sc["x_hi"] - sc["x_lo"]) or 1.0
+    far = max(sc["x_hi"] - x_fit, 0.05 * stroke)
+    m = _misfit(kin.x, x_fit, far, MISFIT_ROUND * stroke)
+    lev = 1.0 + float(s) * MISFIT_RISE * m
+    return level_inside(kin, lev, np.ones_like(lev)) + float(s) * MISFIT_PUSH * _level(kin) * m
 
 
 # -- inertia ---------------------------------------------------------------------------------
-#: ``abbe_pitch``'s mass x the scale's pitch response, x the friction level / a99, at
-#: strength 1 [-]; the pitch mode's angular frequency, x 1 / the motion's time scale v99 /
-#: a99 [-]; its damping ratio [-]
-PITCH_MASS, PITCH_FREQ, PITCH_DAMPING = 1.0, 4.0, 0.15
+#: ``friction_damped_mount``'s payload mass x the top acceleration, x the friction level, at
+#: strength 1 [-]; the damper's slip force, x the payload's inertial force at the top
+#: acceleration [-]; the mount spring's angular frequency and the damper pad's (stuck), x
+#: 1 / the motion's time scale v99 / a99 [-]; the mount's damping ratio at the pad's
+#: frequency [-]
+MOUNT_MASS, MOUNT_SLIP, MOUNT_SPRING, MOUNT_PAD, MOUNT_DAMPING = 1.0, 0.35, 2.0, 25.0, 0.05
 
 
-def _pitch_highpass(t, a, omega, zeta):
-    """The acceleration ``a`` [m/s^2] along the times ``t`` [s] (uniform) through the
-    scale head's pitch response s^2 / (s^2 + 2 ``zeta`` ``omega`` s + ``omega``^2) [-]
-    (the pitch follows the acceleration through the pitch mode; the head reads its second
-    derivative), discretised by the bilinear transform, from rest at the first value."""
-    from scipy.signal import bilinear, lfilter, lfilter_zi
-    fs = 1.0 / float(t[1] - t[0])
-    b, den = bilinear([1.0, 0.0, 0.0], [1.0, 2.0 * zeta * omega, omega * omega], fs)
-    a = np.asarray(a, float)
-    return lfilter(b, den, a, zi=lfilter_zi(b, den) * a[0])[0]
+@njit(cache=True)
+def _mount_force(a, h, n_sub, m, k, k_pad, c, slip):
+    """The force [N] the payload of mass ``m`` [kg] exerts back on the carriage, whose
+    accelerations ``a`` [m/s^2] come in steps ``h`` [s] (each taken in ``n_sub`` sub-steps):
+    the payload's displacement u [m] on the carriage obeys m (a + u'') = -(k u + f + c u'),
+    ``k`` [N/m] the mount's spring, ``c`` [N s/m] its damping and f [N] the friction
+    damper's force, a stiff pad ``k_pad`` [N/m] that slips at ``slip`` [N] (an elastic-
+    perfectly plastic element). Semi-implicit Euler; starts at rest, unloaded. The drive
+    supplies m (a + u'') = -(k u + f + c u')."""
+    n = a.size
+    out = np.empty(n)
+    hs = h / n_sub
+    u = 0.0
+    w = 0.0
+    f = 0.0
+    for j in range(n):
+        out[j] = -(k * u + f + c * w)
+        for _ in range(n_sub):
+            w = (w + hs * (-a[j] - (k * u + f) / m)) / (1.0 + hs * c / m)
+            du = hs * w
+            u += du
+            f = min(max(f + k_pad * du, -slip), slip)
+    return out
 
 
 @on_fine_grid
-def abbe_pitch_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The motion is read by a linear scale whose head sits at a height h off the
-    carriage's centre of mass (an Abbe offset), and the carriage pitches on its guides'
-    compliance: the acceleration's moment tilts it through a pitch mode of angular
-    frequency :data:`PITCH_FREQ` / (v99 / a99) and damping ratio :data:`PITCH_DAMPING`.
-    The head reads the centre's travel plus h theta, so the recorded acceleration carries
-    h theta'' and the inverse dynamics, which subtracts the mass times the recorded
-    acceleration, misses m h theta'': the mass times the acceleration through the
-    high-pass s^2 / (s^2 + 2 zeta omega s + omega^2) (:func:`_pitch_highpass`), m a99 =
-    ``s`` :data:`PITCH_MASS` x the friction level. The truth adds that to the base (the
-    friction at the centre's speed, which differs from the read one by h theta', is taken
-    as the read one's).
+def friction_damped_mount_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A payload rides on the carriage on a spring mount with a dry friction damper (a
+    wire-mesh or friction-pad isolator), mass m with m a99 = ``s`` :data:`MOUNT_MASS` x
+    the friction level. While the damper's pad holds (its slip force :data:`MOUNT_SLIP`
+    x m a99) the payload moves with the carriage on the pad's stiffness (a fast mode,
+    :data:`MOUNT_PAD` / the motion's time scale); where its inertial force passes the slip
+    force the pad slips and the payload swings on the mount's soft spring
+    (:data:`MOUNT_SPRING` / the motion's time scale), lightly damped, until the pad holds
+    again (:func:`_mount_force`). The truth adds the force the payload takes from the
+    carriage, m (a + u''), to the base (the inverse dynamics' mass is the carriage's
+    alone).
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the mass times the Abbe offset over the pitch stiffness, /
-        its value at strength 1.
+        Amplitude factor [-]: the payload's mass (its damper's slip force with it), / its
+        value at strength 1.
 
     Returns
     -------
@@ -505,72 +493,64 @@ def abbe_pitch_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The Abbe principle and the Abbe error of an offset scale (Abbe 1890; Bryan 1979, The
-    Abbe principle revisited, Precis. Eng. 1); carriage pitch on the guides' compliance
-    under acceleration in machine tool axes (Altintas 2012, Manufacturing Automation, ch.
-    6; Okwudire and Altintas 2009). The candidate is a mass error times the acceleration;
-    the open forms filter it, take it raw, add a second mass, a chain, a geared or lossy
-    inertia, an added mass, a dispensing tank, a sliding payload, a rattling part, a
-    flywheel, a pick, eddy or fluid couplings, flyweights, a stage, a recoiling frame, a
-    saturating motor, a sprocket, a screw's spring or a feedforward's lead. Here the
-    missed force is high-passed: the acceleration's slow part is read right and only its
-    changes, seen through the pitch mode, are missed.
+    Friction-damped isolators and mounts (Den Hartog 1931, Forced vibrations with combined
+    Coulomb and viscous friction, Trans. ASME 53; Harris and Piersol 2002, Shock and
+    Vibration Handbook, ch. 32 on wire-rope and friction isolators). The candidate misses
+    a constant mass; the open forms filter it, reflect it through gearing, a chain's
+    polygon or a pinion, hang it on a spring, a cable, a fluid, a clutch, a coupling, a
+    flyweight or a screw, pick it up, drop it, empty it, slide it, rattle it, recoil the
+    frame, saturate the motor, lead it by the feedforward or pitch the scale head. Here
+    the payload is whole while the damper holds and springs away where the acceleration
+    peaks: a mass error that depends on the size of the acceleration and on its history.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    sc = kin.scales
-    omega = PITCH_FREQ / max(_motion_time(kin), 1e-12)
-    hp = _pitch_highpass(np.asarray(kin.t, float), kin.a, omega, PITCH_DAMPING)
-    m = float(s) * PITCH_MASS * _level(kin) / max(sc["a99"], 1e-12)
-    return F + m * hp
+    T = max(_motion_time(kin), 1e-12)
+    a99 = max(kin.scales["a99"], 1e-12)
+    m = float(s) * MOUNT_MASS * _level(kin) / a99
+    w_pad = MOUNT_PAD / T
+    k_pad = m * w_pad ** 2
+    k = m * (MOUNT_SPRING / T) ** 2
+    c = 2.0 * MOUNT_DAMPING * m * w_pad
+    h = float(kin.t[1] - kin.t[0])
+    n_sub = max(1, int(math.ceil(h * w_pad / 0.05)))
+    extra = _mount_force(np.ascontiguousarray(kin.a, dtype=float), h, n_sub, m, k, k_pad, c,
+                         MOUNT_SLIP * m * a99)
+    return F + extra
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: ``gauge_snubber``'s lag of the reading at the force's top rate (its 99th percentile), in
-#: data samples, at strength 1 [-]; the laminar part of that lag [-]
-SNUB_SAMPLES, SNUB_LAMINAR = 3.0, 0.2
+#: ``magnetostrictive_wire``'s time of flight of the strain pulse from the far end of the
+#: stroke to the head, in data samples, at strength 1 [-]
+WIRE_SAMPLES = 2.0
 
 
-@njit(cache=True)
-def _snubbed(F, h, lam, turb):
-    """The reading [N] of the force ``F`` [N] (steps ``h`` [s]) behind an orifice
-    snubber: the reading's rate Q [N/s] and the difference e = F - reading [N] obey |e| =
-    ``lam`` |Q| + ``turb`` Q^2 (the restrictor's laminar ``lam`` [s] and turbulent
-    ``turb`` [s^2/N] parts), integrated by backward Euler (exact root of the step's
-    quadratic). Starts at the first value."""
-    n = F.size
-    y = np.empty(n)
-    y[0] = F[0]
-    c1 = lam / h + 1.0
-    c2 = turb / (h * h)
-    for k in range(1, n):
-        e0 = F[k] - y[k - 1]
-        E = abs(e0)
-        q = 2.0 * E / (c1 + math.sqrt(c1 * c1 + 4.0 * c2 * E))
-        y[k] = y[k - 1] + (q if e0 >= 0.0 else -q)
-    return y
+def _flight_time(x, x_head, length, t_full):
+    """The strain pulse's time of flight [s] from the magnet at the positions ``x`` [m] to
+    the head at ``x_head`` [m] along the waveguide: ``t_full`` [s] over the length
+    ``length`` [m], in proportion to the distance (the wire's constant sound speed)."""
+    return t_full * np.abs(np.asarray(x, float) - x_head) / length
 
 
 @on_fine_grid
-def gauge_snubber_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force is read as a pressure (a hydraulic cylinder's, a hydraulic load cell's)
-    whose transducer sits behind a gauge snubber, a restrictor that protects it from
-    pressure spikes: the oil flows through the restrictor into the transducer's volume,
-    laminar and turbulent, Delta p = R_l Q + R_t Q |Q|, and the transducer's pressure
-    rises with the volume that has flowed in. In force units the reading's rate Q and
-    the difference e = F - reading obey |e| = lam |Q| + turb Q^2 (:func:`_snubbed`): it
-    follows a ramp of rate R late by lam + turb R, a lag that grows with the force's rate.
-    At the force's top rate R99 the lag is ``s`` :data:`SNUB_SAMPLES` data samples, of
-    which :data:`SNUB_LAMINAR` laminar. No cap at :data:`.truths.MAX_DELAY_SAMPLES`: the
-    plants whose force turns gently need a slow snubber to reach the requested size.
+def magnetostrictive_wire_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The motion is read by a magnetostrictive position sensor: a current pulse in the
+    waveguide wire meets the position magnet's field, the Wiedemann effect launches a
+    torsional strain pulse there, and the head times its arrival. The pulse travels at the
+    wire's sound speed, so the position is that of the moment the pulse left the magnet,
+    late by the time of flight, which grows with the magnet's distance from the head (at
+    the stroke's low end): ``s`` :data:`WIRE_SAMPLES` data samples at the far end
+    (:func:`_flight_time`). The force, on time, leads the motion channels by that
+    position-dependent time.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s]) and its base law.
+        The motion on the fine grid (t [s], x [m]) and its base law.
     s : float
-        Amplitude factor [-]: the restrictor's resistance, / its value at strength 1.
+        Amplitude factor [-]: the waveguide's length over its sound speed, / its value at
+        strength 1.
 
     Returns
     -------
@@ -579,63 +559,78 @@ def gauge_snubber_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Pressure gauge snubbers and restrictors (ASME B40.100, Pressure gauges and gauge
-    attachments; Doebelin 2004, Measurement Systems, ch. 6, the dynamics of pressure
-    measuring systems); orifice flow's square law (Merritt 1967, Hydraulic Control
-    Systems, ch. 3). The open forms delay by one amount, filter by a low-pass, linearly or
-    by rank, hold at a fieldbus's clock, let the delay drift, wander or follow the force's
-    rate, level or slowness, the motion's speed or the position, hold stale values over
-    lost telegrams, lead through a leaking charge, creep, take out the mains' band, track
-    with a rate state or ring in a resonance. Here a restriction with a square law: no
-    hard limit to the reading's rate, but a lag that grows smoothly and without bound
-    with the force's rate of change.
+    Magnetostrictive displacement sensors (Wiedemann 1862; Tumanski 2011, Handbook of
+    Magnetic Measurements, ch. 6; Seco et al. 2009, Improving the accuracy of
+    magnetostrictive linear position sensors, IEEE Trans. Instrum. Meas. 58; MTS
+    Temposonics data sheets: torsional wave speed ~2800 m/s). The candidate shifts the
+    force by a constant time, low-passes it, reads it through a transducer's resonance and
+    leaks it; the open forms sample, filter, average, hold, skew, jitter, rate-limit,
+    transmit, median, report by deadband, trigger on positions, run a belt, aerate, drop
+    telegrams, leak, creep, notch, track or snub it. Here the lag is the motion's and
+    changes along the stroke: none at the head, largest at the far end.
     """
-    F, _ = _base_parts(kin)
+    from scipy.interpolate import CubicSpline
+    F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    F = np.asarray(F, float)
-    rate = np.abs(np.gradient(F, float(kin.dt)))
-    r99 = max(float(np.percentile(rate, 99.0)), 1e-300)
-    lag = float(s) * SNUB_SAMPLES * float(kin.sample_dt)
-    lam = SNUB_LAMINAR * lag
-    turb = (1.0 - SNUB_LAMINAR) * lag / r99
-    return _snubbed(F, float(kin.dt), lam, turb)
+    sc = kin.scales
+    length = (sc["x_hi"] - sc["x_lo"]) or 1.0
+    tau = _flight_time(kin.x, sc["x_lo"], length, float(s) * WIRE_SAMPLES * kin.sample_dt)
+    return CubicSpline(kin.t, F)(np.clip(kin.t + tau, None, kin.t[-1]))
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: ``film_dewetting``'s rise of the levels with the whole track bare, at strength 1 [-]; the
-#: incubation time, x the record's length [-]; the Avrami time, x the record's length [-];
-#: Avrami's exponent (constant nucleation, two-dimensional growth) [-]
-DEWET_RISE, DEWET_ONSET, DEWET_TIME, DEWET_ORDER = 0.6, 0.15, 0.6, 3.0
+#: ``grease_channelling``'s rise of the levels with the whole track starved, at strength 1
+#: [-]; the e-folds of the grease's share left on the track over all the record's reversals
+#: [-]; the time the pushed grease settles in, x the record's length [-]; the speed below
+#: which no reversal is counted, x the top speed [-]
+CHANNEL_RISE, CHANNEL_FOLDS, CHANNEL_SETTLE, CHANNEL_DEAD = 0.6, 1.5, 0.01, 0.02
 
 
-def _bare_share(t, onset, t_d, order):
-    """The bare share of the track [-] along the times ``t`` [s]: Avrami's 1 - exp(-((t -
-    ``onset``)_+ / ``t_d``)^``order``) (holes nucleating at a steady rate after the
-    incubation ``onset`` [s] and growing at a constant speed; ``t_d`` [s])."""
-    u = np.maximum(np.asarray(t, float) - onset, 0.0) / t_d
-    return 1.0 - np.exp(-u ** order)
+def _reversal_count(v, dead):
+    """The number of reversals of the motion [-] made up to each of the velocities ``v``
+    [m/s]: changes of the direction of travel, speeds below ``dead`` [m/s] keeping the
+    last direction."""
+    v = np.asarray(v, float)
+    d = np.where(np.abs(v) > dead, np.sign(v), 0.0)
+    idx = np.where(d != 0.0, np.arange(v.size), 0)
+    np.maximum.accumulate(idx, out=idx)
+    held = d[idx]
+    turns = np.concatenate(([0.0], (held[1:] * held[:-1] < 0.0).astype(float)))
+    return np.cumsum(turns)
+
+
+def _starved_share(t, count, total, folds, settle):
+    """The starved share of the track [-] along the times ``t`` [s] after ``count``
+    reversals of ``total`` in the record: 1 - exp(-``folds`` count / total), each
+    reversal pushing the same fraction of what grease is left aside, settling over the
+    first-order lag ``settle`` [s]."""
+    from scipy.signal import lfilter
+    target = 1.0 - np.exp(-folds * np.asarray(count, float) / max(total, 1.0))
+    dt = float(t[1] - t[0])
+    e = math.exp(-dt / settle)
+    return lfilter([1.0 - e], [1.0, -e], target, zi=[target[0] * e])[0]
 
 
 @on_fine_grid
-def film_dewetting_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The track carries a thin lubricant film (a light oil, a fluorinated or silicone
-    film) on a surface it does not wet well: the film is unstable and dewets. After an
-    incubation time of :data:`DEWET_ONSET` x the record, holes nucleate at a steady rate
-    and grow at a constant speed (a dry hole's rim advances at the dewetting speed), so
-    the bare share follows Avrami's kinetics 1 - exp(-(t / t_d)^3) with t_d =
-    :data:`DEWET_TIME` x the record (:func:`_bare_share`). The boundary friction on the
-    bare track is higher: the Coulomb and Stribeck levels are the base's times 1 + ``s``
-    :data:`DEWET_RISE` x the bare share, inside the bristle dynamics; the viscous term is
-    the base's.
+def grease_channelling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The guide is greased. At every reversal of the motion the rolling elements push a
+    part of the grease left on the track aside into ridges beside it (channelling), where
+    it no longer takes part; the contact runs on what the ridges bleed back and is
+    progressively starved. The starved share of the track after N reversals is 1 -
+    exp(-:data:`CHANNEL_FOLDS` N / N_total), N_total the record's reversals
+    (:func:`_reversal_count`, :func:`_starved_share`; each settling over
+    :data:`CHANNEL_SETTLE` x the record). The Coulomb and Stribeck levels are the base's
+    times 1 + ``s`` :data:`CHANNEL_RISE` x that share, inside the bristle dynamics; the
+    viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s]) and its base law.
+        The motion on the fine grid (t [s], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the bare track's friction over the wetted one's, less 1, /
-        its value at strength 1.
+        Amplitude factor [-]: the starved track's friction over the greased one's, less
+        1, / its value at strength 1.
 
     Returns
     -------
@@ -644,45 +639,44 @@ def film_dewetting_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Dewetting of thin films by nucleated holes (Reiter 1992, Dewetting of thin polymer
-    films, Phys. Rev. Lett. 68; Redon, Brochard-Wyart and Rondelez 1991, Dynamics of
-    dewetting, Phys. Rev. Lett. 66); the kinetics of nucleation and growth (Avrami 1939,
-    J. Chem. Phys. 7). The candidate is a trend, a saturating change, a step, a cycle, an
-    accelerating part, a part that builds up and resets and a part that follows the
-    friction's heating; the open forms warm up, wear in, step, cycle, rise and fall with
-    debris, drop with grease shots, relax, oxidise, wear through, swell, grow a
-    tribofilm, take in particles, expand, shear the oil, heat the magnets, charge the
-    surfaces, creep a cage or loosen a screw. Here nothing happens for a while, then the
-    levels rise along a cubic-exponential sigmoid of the clock, neither the travel nor
-    the friction's work.
+    Grease channelling and starvation in rolling contacts (Lugt 2013, Grease Lubrication
+    in Rolling Bearings, ch. 6 and 9; Cann 1996, Starved grease lubrication of rolling
+    contacts, Tribol. Trans. 42; short-stroke reciprocation in linear guides, THK's
+    lubrication notes). The candidate is a trend, a saturating change, a step, a cycle, a
+    resetting change or the friction power's heat; the open forms warm up, wear in, change
+    the lubricant, heat, wear, follow the humidity, grind a third body, relubricate,
+    relax a seal, oxidise, deplete, wear through, swell, build a tribofilm, take in
+    particles, expand, shear down, heat magnets, charge, creep a cage, loosen a screw or
+    dewet a film. Here the friction changes at the reversals only, and so with the
+    motion's count of them, not with the time or the travel.
     """
+    F = _base_parts(kin)[0]
     if s <= 0.0:
-        return _base_parts(kin)[0]
-    t = np.asarray(kin.t, float)
-    T = max(float(t[-1] - t[0]), 1e-12)
-    bare = _bare_share(t - t[0], DEWET_ONSET * T, DEWET_TIME * T, DEWET_ORDER)
-    lev = 1.0 + float(s) * DEWET_RISE * bare
+        return F
+    v99 = max(kin.scales["v99"], 1e-12)
+    count = _reversal_count(kin.v, CHANNEL_DEAD * v99)
+    T = float(kin.t[-1] - kin.t[0]) or 1.0
+    share = _starved_share(kin.t, count, float(count[-1]), CHANNEL_FOLDS, CHANNEL_SETTLE * T)
+    lev = 1.0 + float(s) * CHANNEL_RISE * share
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: ``grease_packed_gap``'s play at strength 1, as a share of the stroke [-]; the grease's
-#: squeeze force with the contact in the middle of the play, x the Coulomb level [-]; the
-#: thinnest gap the grease is squeezed to, x the half play [-]; the relative speed the
-#: grease's yield is rounded over, x the top speed [-]
-GREASE_PLAY, GREASE_YIELD, GREASE_FLOOR, GREASE_ROUND = 0.008, 0.3, 0.05, 0.02
+#: ``wedge_flank``'s play at strength 1, as a share of the stroke [-]; the flanks' friction
+#: over their inclination, tan(rho) / tan(phi), which stiffens the loading coupling by 1 +
+#: it and softens the unloading one by 1 - it [-]; the relative speed the change between
+#: them is rounded over, x the top speed [-]
+WEDGE_PLAY, WEDGE_FRICTION, WEDGE_ROUND = 0.008, 0.5, 0.01
 
 
 @njit(cache=True)
-def _greased_play(h, xd, half, g_yield, floor, v_round, kh, ch, m, s0, s1, s2, Fc, Fs, vs,
-                  alpha, shape):
+def _wedged_play(h, xd, half, eta, v_round, kh, ch, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
     """LuGre friction [N] of a contact of mass ``m`` [kg] driven by the drive positions
-    ``xd`` [m] (step ``h`` [s]) across a play of half-width ``half`` [m] packed with grease:
-    inside the play the grease squeezed out of the closing side pushes with its yield
-    force ``g_yield`` [N] x ``half`` / the closing gap (at least ``floor`` x ``half``),
-    tanh-rounded over the relative speed ``v_round`` [m/s] (a Bingham squeeze film); at the
-    flanks a spring ``kh`` [N/m] and damper ``ch`` [N s/m], compressive only. Semi-implicit
-    Euler of the mass (:func:`.truths._light_contact_step`). Starts at rest, centred."""
+    ``xd`` [m] (step ``h`` [s]) across a play of half-width ``half`` [m] whose flanks meet
+    on a wedge: in contact the coupling is ``kh`` [N/m] x the penetration x (1 + ``eta``
+    tanh(r / ``v_round``)), r [m/s] the penetration's rate (loading: stiffer, unloading:
+    softer), plus the damping ``ch`` [N s/m]; it only pushes. Euler of the mass
+    (:func:`.truths._light_contact_step`). Starts at rest, centred."""
     n = xd.size
     F = np.empty(n)
     v = 0.0
@@ -694,35 +688,29 @@ def _greased_play(h, xd, half, g_yield, floor, v_round, kh, ch, m, s0, s1, s2, F
         ed = vd - v
         fc = 0.0
         if e > half:
-            f2 = kh * (e - half) + ch * ed
+            f2 = kh * (e - half) * (1.0 + eta * math.tanh(ed / v_round)) + ch * ed
             if f2 > 0.0:
                 fc = f2
         elif e < -half:
-            f2 = kh * (e + half) + ch * ed
+            f2 = kh * (e + half) * (1.0 - eta * math.tanh(ed / v_round)) + ch * ed
             if f2 < 0.0:
                 fc = f2
-        else:
-            # the closing side: ahead of the drive's relative motion
-            gap = half - e if ed >= 0.0 else half + e
-            gap = max(gap, floor * half)
-            fc = g_yield * (half / gap) * math.tanh(ed / v_round)
         F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha, shape)
         x = x + h * v
     return F
 
 
 @on_fine_grid
-def grease_packed_gap_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact joined across a play of half-width ``s``^2 :data:`GREASE_PLAY` /
-    2 x the stroke that is packed with grease (a greased gear mesh or keyway). Grease is a
-    Bingham plastic: squeezed between the closing flanks it flows only past its yield
-    stress, and a plate squeezing a Bingham layer of thickness h feels ~ tau_y / h. So
-    as the drive crosses the play after a reversal the grease on the closing side pushes
-    the contact with :data:`GREASE_YIELD` F_c x half / h (h the closing gap, at least
-    :data:`GREASE_FLOOR` x half; :func:`_greased_play`): with the gap thinning it passes
-    the contact's friction and drags the contact along before the flanks meet. The
-    contact is light (:func:`.truths._contact_constants`), with the base's LuGre
-    friction; the measured force is its friction. At ``s`` = 0 the base itself.
+def wedge_flank_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact joined across a play of half-width ``s``^2 :data:`WEDGE_PLAY` / 2
+    x the stroke whose flanks meet at an inclination (a thread's flank, a gear's pressure
+    angle) and slide on one another as the contact deflects. The flank friction (angle
+    rho) adds to the wedge's angle phi while the coupling loads and subtracts from it
+    while it unloads: the coupling's stiffness is tan(phi + rho) / tan(phi) times its
+    nominal one on loading and tan(phi - rho) / tan(phi) on unloading, ~ 1 +- tan(rho) /
+    tan(phi) = 1 +- :data:`WEDGE_FRICTION` (rounded over :data:`WEDGE_ROUND` x the top
+    speed of the penetration's rate; :func:`_wedged_play`). The light contact behind it
+    carries the base's LuGre friction (:func:`.truths._contact_constants`).
 
     Parameters
     ----------
@@ -739,106 +727,93 @@ def grease_packed_gap_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Squeeze films of Bingham plastics (Covey and Stanmore 1981, Use of the parallel-plate
-    plastometer for the characterisation of viscous fluids with a yield stress, J.
-    Non-Newtonian Fluid Mech. 8); greases as Bingham (Herschel-Bulkley) fluids (Lugt
-    2013, Grease Lubrication in Rolling Bearings, ch. 6). The candidate holds or frees the
-    force across a play, with a bias, a spring or a drag across it; the open forms couple
-    rigidly, compliantly, by impacts, springs, oil in the play, an idler, a bias, chains,
-    magnets, a preload, a hardening gear, a slipping rope, a rubber spider, an oil column,
-    a cable in a sheath, a clutch, a mesh of varying stiffness or a warming plastic gear,
-    with a play varying with the position or the travel. Here a plastic, not a viscous,
-    medium fills the play: a force that does not vanish with the relative speed and grows
-    as the gap closes, so the play is taken up gradually at a gap set by the friction.
+    Friction on inclined flanks and the hysteresis of a wedge's stiffness (the screw's
+    efficiency tan(phi) / tan(phi + rho), and tan(phi - rho) / tan(phi) back-driven:
+    Shigley and Mischke 2001, Mechanical Engineering Design, ch. 8; Johnson 1985,
+    Contact Mechanics, ch. 7 on tangential loading with friction). The candidate holds or
+    frees the contact across a rigid play; the open forms take it up rigidly, compliantly,
+    by impact, against a spring, eccentrically, through oil, worn, with a dragging idler,
+    biased, slack, magnetic, preloaded, through a flexspline, a rope, a spider, a fluid
+    link, a cable, a clutch, a varying mesh, a polymer gear or grease. Here the take-up
+    has a hysteresis of its own: the coupling is stiffer while it closes than while it
+    opens.
     """
-    p = _lugre_params(kin, "backlash (grease_packed_gap)")
+    p = _lugre_params(kin, "backlash (wedge_flank)")
     if s <= 0.0:
         return _base_parts(kin)[0]
     m, kh, ch = _contact_constants(kin, p)
     stroke = float(np.ptp(kin.x))
-    Fc = float(p.Fc)
-    half = 0.5 * float(s) ** 2 * GREASE_PLAY * stroke
-    g_yield = GREASE_YIELD * Fc
-    v_round = GREASE_ROUND * max(kin.scales["v99"], 1e-12)
-    # the grease's stiffest drag: its yield force at the thinnest gap over the rounding
-    c_grease = g_yield / GREASE_FLOOR / v_round
-    h, xd, n_sub = _substeps(kin, max(math.sqrt((kh + float(p.sigma0)) / m),
-                                      (float(p.sigma1) + float(p.sigma2) + ch + c_grease) / m))
-    F = _greased_play(h, xd, half, g_yield, GREASE_FLOOR, v_round, kh, ch, m,
-                      float(p.sigma0), float(p.sigma1), float(p.sigma2), Fc, float(p.Fs),
-                      float(p.vs), float(p.alpha), SHAPES[p.shape])
+    half = 0.5 * float(s) ** 2 * WEDGE_PLAY * stroke
+    v_round = WEDGE_ROUND * max(kin.scales["v99"], 1e-12)
+    h, xd, n_sub = _substeps(kin, max(math.sqrt(((1.0 + WEDGE_FRICTION) * kh
+                                                 + float(p.sigma0)) / m),
+                                      (float(p.sigma1) + float(p.sigma2) + ch) / m))
+    F = _wedged_play(h, xd, half, WEDGE_FRICTION, v_round, kh, ch, m,
+                     float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
+                     float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
     return F[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: the junctions' travel to their peak at strength 1, beyond the base bristle's path, as a
-#: share of the stroke / 3 [-]; their share of the friction at strength 1 [-]; the
-#: junctions [-]; the residual strength over the peak [-]; the critical slip distance, x the
-#: strongest junction's elastic travel [-]
-WEAK_SLIP, WEAK_SHARE, WEAK_BLOCKS, WEAK_RESIDUAL, WEAK_DIST = 0.1, 0.6, 10, 0.7, 2.0
+#: the bar's travel to full slip at strength 1, beyond the base bristle's path, as a share
+#: of the stroke / 3 [-]; its share of the friction at strength 1 [-]
+BAR_SLIP, BAR_SHARE = 0.1, 0.6
 
 
 @njit(cache=True)
-def _weakening_junctions(x, caps, kp, residual, dc):
-    """The junctions' force f [-] (over their summed residual strengths: 1 while they all
-    slide) along the positions ``x`` [m]: junction i sits at u_i [m], pulled by ``kp`` (x -
-    u_i); its strength falls linearly from ``caps``[i] to ``residual`` x ``caps``[i] over
-    the slip ``dc`` [m] it has made since its slip last changed direction (it heals at
-    once when its slip reverses); where the pull passes the strength it slips to the
-    force its weakened strength allows (a linear equation on the weakening branch, the
-    residual beyond it). Starts unloaded."""
+def _microslip(x, d_full):
+    """The bar's force f [-] (1 at full slip) along the positions ``x`` [m] of its loaded
+    end: from rest the backbone sqrt(|x - x0| / ``d_full``) (the slip front's length grows
+    as the square root of the end's travel) up to 1; after each reversal at (x_r, f_r)
+    Masing's branch f_r -+ 2 sqrt(|x - x_r| / (2 ``d_full``)), within [-1, 1]."""
     n = x.size
-    m = caps.size
-    u = np.full(m, x[0])
-    slip = np.zeros(m)
-    last = np.zeros(m)
     out = np.empty(n)
     out[0] = 0.0
-    norm = residual * np.sum(caps)
+    xr = x[0]
+    fr = 0.0
+    direction = 0.0
+    virgin = True
+    f = 0.0
     for k in range(1, n):
-        xk = x[k]
-        tot = 0.0
-        for i in range(m):
-            f = kp * (xk - u[i])
-            sg = 1.0 if f > 0.0 else -1.0
-            d = slip[i] if sg == last[i] else 0.0
-            c = caps[i]
-            cap = c * (residual + (1.0 - residual) * max(0.0, 1.0 - d / dc))
-            if abs(f) > cap:
-                e0 = abs(f) / kp
-                w = c * (1.0 - residual) / dc
-                dl = (kp * e0 - c + w * d) / (kp - w)
-                if d + dl > dc:
-                    dl = e0 - c * residual / kp
-                dl = max(dl, 0.0)
-                u[i] += sg * dl
-                slip[i] = d + dl
-                last[i] = sg
-            tot += kp * (xk - u[i])
-        out[k] = tot / norm
+        dx = x[k] - x[k - 1]
+        if dx != 0.0:
+            d = 1.0 if dx > 0.0 else -1.0
+            if direction != 0.0 and d != direction:
+                xr = x[k - 1]
+                fr = f
+                virgin = False
+            direction = d
+        if direction != 0.0:
+            dist = abs(x[k] - xr)
+            if virgin:
+                f = direction * min(math.sqrt(dist / d_full), 1.0)
+            else:
+                f = fr + direction * 2.0 * math.sqrt(0.5 * dist / d_full)
+                f = min(max(f, -1.0), 1.0)
+        out[k] = f
     return out
 
 
 @on_fine_grid
-def slip_weakening_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The presliding junctions beside the bristle (:data:`WEAK_BLOCKS` of them, peak
-    strengths 0.5 to 1, all of the same stiffness) weaken with their own slip: once a
-    junction slips its strength falls linearly from its peak to :data:`WEAK_RESIDUAL` of
-    it over a critical slip distance (:data:`WEAK_DIST` x the strongest one's elastic
-    travel), and it heals to its peak when its slip reverses (:func:`_weakening_junctions`).
-    The strongest junction's travel to its peak is the base bristle's path Fs / sigma0
-    plus ``s`` :data:`WEAK_SLIP` x the stroke / 3; a share w = :data:`WEAK_SHARE` min(``s``,
-    1) of the friction is the junctions' (their sliding force the Stribeck level, the
-    viscous term the base's): F = (1 - w) F_lugre + w (g(v) f + sigma2 v). At ``s`` = 0
-    the base itself.
+def microslip_bar_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Beside the bristle, part of the contact is a slender part clamped along its length
+    on a friction bed (a rod in its bore, the strip of a lap joint): pushed at one end it
+    slips first there, and the slip front advances along it as the force grows, F =
+    sqrt(2 EA q delta) for the end's travel delta, up to full slip F = q L at delta_full
+    = q L^2 / (2 EA) (:func:`_microslip`); unloading and reloading follow Masing's rule
+    (twice the backbone from the last reversal). delta_full is the base bristle's path Fs
+    / sigma0 plus ``s`` :data:`BAR_SLIP` x the stroke / 3; the bar's share w = ``s``
+    :data:`BAR_SHARE` (up to ``s`` = 1) of the friction is its force times the Stribeck
+    level, the viscous term the base's: F = (1 - w) F_lugre + w (g(v) f + sigma2 v). At
+    ``s`` = 0 the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the junctions' share (up to ``s`` = 1) and their travel to
-        the peak (as the open presliding forms' path).
+        Amplitude factor [-]: the bar's share (up to ``s`` = 1) and its travel to full
+        slip (as the open presliding forms' path).
 
     Returns
     -------
@@ -847,26 +822,23 @@ def slip_weakening_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The static-to-kinetic transition over a critical slip distance (Rabinowicz 1951, The
-    nature of the static and kinetic coefficients of friction, J. Appl. Phys. 22) and the
-    linear slip-weakening law (Ida 1972; Palmer and Rice 1973, Proc. R. Soc. A 332).
-    Maxwell-slip (the candidate) and the open forms use equal, geometric or power-law
-    strengths, path laws, an elastic range, rate-dependent creep, Mindlin's 3/2 law,
-    multistable tips, bonds, a fabric, a back-stress, a climb out of a nest, capillary
-    bridges, a hardening yield, peeling, load-dependent microslip, growing junctions or a
-    coupled chain's avalanches. Here each junction's strength is a function of its own
-    slip since its last reversal: the presliding curve overshoots the sliding level and
-    falls back to it over a distance, not a speed.
+    The microslip bar (Menq, Bielak and Griffin 1986, The influence of microslip on
+    vibratory response, part I: a new microslip model, J. Sound Vib. 107; Csaba 1998 on
+    shear-lag in friction dampers; Masing 1926). The candidate's presliding is a
+    generalized Maxwell-slip (GMS) element set; the open forms are Maxwell-slip sets, Dahl,
+    elasto-plastic, Bliman-Sorine, Bouc-Wen, Zener junctions, Mindlin contacts,
+    rate-and-state, Tomlinson asperities, bond rupture, gouge, kinematic hardening,
+    interlocking, capillary bridges, cyclic hardening, peeling, unloading microslip, a
+    power-law joint, junction growth, avalanches and slip weakening. Here the presliding
+    stiffness is infinite at each reversal and falls as one over the square root of the
+    travel since it.
     """
-    p = _lugre_params(kin, "gms (slip_weakening)")
+    p = _lugre_params(kin, "gms (microslip_bar)")
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    e0, extra = _presliding_path(kin, s, WEAK_SLIP)
-    w = WEAK_SHARE * min(float(s), 1.0)
+    e0, extra = _presliding_path(kin, s, BAR_SLIP)
+    w = BAR_SHARE * min(float(s), 1.0)
     v = np.asarray(kin.v, float)
-    caps = np.linspace(0.5, 1.0, WEAK_BLOCKS)
-    kp = 1.0 / (e0 + extra)          # the strongest junction reaches its peak after e0 + extra
-    f = _weakening_junctions(np.ascontiguousarray(kin.x, dtype=float), caps, kp,
-                             WEAK_RESIDUAL, WEAK_DIST / kp)
+    f = _microslip(np.ascontiguousarray(kin.x, dtype=float), e0 + extra)
     return (1.0 - w) * F + w * (kin.base.g(v) * f + float(p.sigma2) * v)

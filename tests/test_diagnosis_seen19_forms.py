@@ -1,5 +1,5 @@
 """The nineteenth seen truth family (diagnosis.benchmark.seen19, sealed in session 24, run
-once at the end of session 24 on <COMMIT>, <TOP1> top-1, now open): each form builds a finite
+once at the end of session 24 on 3cef9aa, 43.8 % top-1, now open): each form builds a finite
 case of the requested size on every plant it applies to, is the base law at s = 0, grows with
 its amplitude factor and refuses the plants it does not apply to."""
 import dataclasses

@@ -77,7 +77,7 @@ low-passed gradient (:func:`.kinematics.measure_motion`, :data:`.runner.MEASURED
 The **sealed** family (:mod:`.sealed`, ``forms="sealed"``) is one more form per effect, kept
 out of all tuning and run only at the end of a piece of work (the present one written in
 session 24, sealed: not run; session 24's other, run once at the end of session 24 on
-<COMMIT>, <TOP1> top-1, is :mod:`.seen19`, session 23's (53.4 %) :mod:`.seen18`, session 22's
+3cef9aa, 43.8 % top-1, is :mod:`.seen19`, session 23's (53.4 %) :mod:`.seen18`, session 22's
 (47.2 %) :mod:`.seen17`, session 21's (31.8 %) :mod:`.seen16`, session 20's
 (35.8 %) :mod:`.seen15`, session 19's (36.4 %) :mod:`.seen14`, session 18's (17.0 %)
 :mod:`.seen13`, session 17's (29.5 %) :mod:`.seen12`, session 16's (47.7 %) :mod:`.seen11`,

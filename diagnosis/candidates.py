@@ -1666,9 +1666,9 @@ class Delay(Candidate):
     not ring, and the shift draws only the lag: on the eighteenth family's mounted-mass
     truth (sealed, run once on ba95736) none of 20 cases was named; with the resonance, 13
     (valve 4, press 4, isolator 3, damping rig 2), the fitted natural period within 1 % of
-    the truth's on the valve and the isolator; the XML-350's 4 stay unnamed (fitted
-    periods of 3.4-3.6 samples, under :attr:`PERIOD_SAMPLES`' four). On a uniform random
-    272 cases of the open grid no verdict changed. The trajectory level and the FMU blocks keep the shift (a sensor's dynamics
+    the truth's on the valve and the isolator; the XML-350's 4 stay unnamed (2 with fitted
+    periods of 3.4-3.6 samples, under :attr:`PERIOD_SAMPLES`' four, 2 where the start
+    keeps none). On a uniform random 272 cases of the open grid no verdict changed. The trajectory level and the FMU blocks keep the shift (a sensor's dynamics
     act on the reading, not on the plant).
     """
     MAX_SAMPLES = 25

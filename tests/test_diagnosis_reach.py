@@ -699,6 +699,7 @@ def test_a_transducer_resonance_has_practical_size_by_its_lag_or_its_ringing():
     assert d.practical({**small, "sensor_period": 0.95 * fast, "sensor_zeta": 1.0}, ctx) == ""
 
 
+@pytest.mark.slow
 def test_transducer_resonance_is_named_delay():
     # the eighteenth family's force transducer with its mounted mass (sealed, run once on
     # ba95736: 0 of 20 named): a spring-mass reading that rings after each reversal; the

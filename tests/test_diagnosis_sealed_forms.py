@@ -80,6 +80,7 @@ def test_sealed_form_builds_a_case_and_grows_with_its_amplitude(effect):
     assert_builds_and_grows(effect, FORM[effect], PLANT[effect])
 
 
+@pytest.mark.slow
 def test_sealed_forms_are_finite_and_grow_on_every_plant_they_apply_to():
     # no diagnosis: only the truths, on each plant's quick motion
     assert_finite_and_grow_on_every_plant(FORM)

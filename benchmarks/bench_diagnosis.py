@@ -86,6 +86,16 @@ drift 0.089. Before the 12-knot position map (a 4th-order Legendre series) posit
 before the acceleration part lagged as a whole (seed 000's "lag" form; the lag acted on the
 acceleration only) acceleration was 0.129; overall 0.082 with both.
 
+Session 25 (2026-11-30 09:05 UTC, load 0.95-1.34, one BLAS thread, ``--speed-only
+--repeats 5``): the candidate fits in 2 worker processes forked from the caller's
+(:func:`diagnosis.cluster.process_fits`, the default where the platform forks): best
+**4.00 s**, median 4.55 s (19.3 / 17.0 x one base identification, 0.21 / 0.27 s); on 2
+threads of the process 5.85 / 6.61 s; on one 7.33 / 8.46 s (35.4 / 31.6 x). The same
+report bit for bit. At the start of the session, on 2 threads, 6.53 / 6.92 s (30.3 / 28.9 x):
+over the 5 s goal since sessions 20-24 added candidates' forms and starts; the fits' Python
+parts hold the interpreter lock, so threads gained 1.1 x. Two processes run each fit about
+1.3 x slower than one alone (the two cores share the machine's caches), so they gain 1.6 x.
+
 Full diagnosis of 20,000 samples, every candidate that applies (backlash and GMS included;
 the case has no load column), warm (``--speed-only --repeats 5``, 2026-11-29 03:34 UTC,
 load 1.0-1.1, one BLAS thread), the candidate fits on 2 threads (:func:`diagnosis.cluster.
@@ -208,6 +218,7 @@ def speed_only(n=20000, repeats=5, scipy_jacobian=False):
     -------
     dict
         Lists of seconds ``full`` (the candidate fits on the machine's cores, at most 4
+        workers: forked processes where the platform forks), ``full_threads`` (as many
         threads), ``full_serial`` (one thread), ``base`` (and ``full_scipy``), ``load``
         (1-minute load average before and after), ``verdict``.
     """
@@ -216,12 +227,18 @@ def speed_only(n=20000, repeats=5, scipy_jacobian=False):
     load0 = os.getloadavg()[0]
     _time_base(fit)  # warm-up: numba kernels compiled and cached, imports done
     _, rep = _time_full(data)
-    times = {"base": [], "full": [], "full_serial": []}
+    from diagnosis import cluster
+    times = {"base": [], "full": [], "full_threads": [], "full_serial": []}
     if scipy_jacobian:
         times["full_scipy"] = []
     for _ in range(repeats):
         times["base"].append(_time_base(fit))
         times["full"].append(_time_full(data)[0])
+        cluster.PROCESSES = False  # the same workers as threads of this process
+        try:
+            times["full_threads"].append(_time_full(data)[0])
+        finally:
+            cluster.PROCESSES = True
         times["full_serial"].append(_time_full(data, threads=1)[0])
         if scipy_jacobian:
             composite.STRUCTURED_JACOBIAN = False
@@ -235,15 +252,16 @@ def speed_only(n=20000, repeats=5, scipy_jacobian=False):
     print(f"full diagnosis of {n} samples, every candidate, {repeats} warm runs "
           f"(load {load0:.2f} -> {load1:.2f}, OPENBLAS_NUM_THREADS="
           f"{os.environ.get('OPENBLAS_NUM_THREADS')}); verdict {rep['verdict']['cause']}")
-    from diagnosis.cluster import thread_count
-    labels = {"full": f"full diagnosis, {thread_count()} thr.",
+    kind = "forked processes" if cluster.can_fork() else "threads"
+    labels = {"full": f"full diagnosis, {cluster.thread_count()} {kind}",
+              "full_threads": f"  {cluster.thread_count()} threads",
               "full_serial": "  one thread", "full_scipy": "  with scipy's Jacobian",
               "base": "base identification"}
-    for k in ("full", "full_serial", "full_scipy", "base"):
+    for k in ("full", "full_threads", "full_serial", "full_scipy", "base"):
         if k in times:
             ratio = "" if k == "base" else (f"  ({best[k] / best['base']:.1f} / "
                                             f"{med[k] / med['base']:.1f} x base id)")
-            print(f"  {labels[k]:24s} best {best[k]:.2f} s, median {med[k]:.2f} s{ratio}")
+            print(f"  {labels[k]:34s} best {best[k]:.2f} s, median {med[k]:.2f} s{ratio}")
     return {**times, "load": [load0, load1], "verdict": rep["verdict"]["cause"]}
 
 

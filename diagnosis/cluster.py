@@ -1,11 +1,16 @@
-"""Where the diagnosis' candidate fits run: threads of this process, or a
-``dask.distributed`` cluster (force level and trajectory level).
+"""Where the diagnosis' candidate fits run: worker processes forked from this one, threads
+of this process, or a ``dask.distributed`` cluster (force level and trajectory level).
 
-In-process, the force level's candidate fits run on :data:`THREADS` threads
-(:func:`thread_fits`): they are independent of each other, and their compiled kernels (the
-laws' simulations, ``nogil``) and LAPACK release the interpreter lock, so two cores take
-about two fits at a time. Each thread runs exactly the fit the serial loop runs; the
-report is the same.
+In-process, the force level's candidate fits run on :data:`THREADS` workers
+(:func:`local_fits`): they are independent of each other. Where the platform forks (Linux)
+the workers are processes forked from this one (:func:`process_fits`): the fit record, the
+base law and the compiled kernels are already in them, and each fit's Python parts (scipy's
+trust region, each trial's start state) run beside the other's. Elsewhere, or inside a
+daemonic process, they are threads (:func:`thread_fits`), which gain less: the laws'
+kernels (``nogil``) and LAPACK release the interpreter lock, the Python parts do not
+(20,000 samples, every candidate, session 25: one thread 7.3 s, two threads 6.5 s, two
+forked processes 4.6 s; ``benchmarks/bench_diagnosis.py --speed-only``). Each worker runs
+exactly the fit the serial loop runs; the report is the same.
 
 Every candidate effect is re-identified jointly with the base law on the fit record
 (:func:`diagnosis.composite.fit_composite`), independently of the others: they are mapped
@@ -27,20 +32,27 @@ called once per candidate.
 from __future__ import annotations
 
 __all__ = ["candidate_fits", "applicable", "as_client", "trajectory_fits", "thread_fits",
-           "THREADS"]
+           "process_fits", "local_fits", "can_fork", "THREADS", "PROCESSES"]
 
 import contextvars
+import functools
+import multiprocessing
 import os
-from concurrent.futures import ThreadPoolExecutor
+import warnings
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, ThreadPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 
 from threadpoolctl import threadpool_limits
 
-#: threads of this process the force level's candidate fits run on when no cluster is
-#: given: ``None`` the environment's ``FRICTIONLAB_THREADS``, else the machine's cores (at
+#: workers (forked processes or threads, :func:`local_fits`) the force level's candidate
+#: fits run on when no cluster is given: ``None`` the environment's ``FRICTIONLAB_THREADS``, else the machine's cores (at
 #: most :data:`MAX_THREADS`); 1 one after the other (a process pool that already keeps
 #: every core busy sets ``FRICTIONLAB_THREADS=1`` in its workers)
 THREADS = None
 MAX_THREADS = 4
+#: the in-process workers are processes forked from this one where the platform forks
+#: (False: always threads)
+PROCESSES = True
 
 
 def as_client(executor):
@@ -167,6 +179,18 @@ def thread_count(threads=None) -> int:
     return n
 
 
+def _widest_first(names, law, base_names, ctx) -> list:
+    """``names`` with the widest fits first (most Jacobian columns, the cost's first
+    order), so that no long one starts last and runs alone."""
+    from .effects import CANDIDATES
+    width = {}
+    for name in names:
+        cand = CANDIDATES[name].specialise(law)
+        width[name] = len(cand.force_extras(ctx)) + max(
+            (len(nv) for _, nv in cand.modify_law(law, base_names, ctx)), default=0)
+    return sorted(names, key=lambda nm: -width[nm])
+
+
 def thread_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> dict:
     """The candidates' joint fits on threads of this process.
 
@@ -196,17 +220,8 @@ def thread_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> 
     names = applicable(names, law, fit, ctx, val_sets) if n > 1 else []
     if len(names) < 2:
         return {}
-    import functools
     one = functools.partial(_fit_one, law=law, base_names=list(base_names), fit=fit, ctx=ctx)
-    # the widest fits first (most Jacobian columns, the cost's first order), so that no
-    # long one starts last and runs alone
-    from .effects import CANDIDATES
-    width = {}
-    for name in names:
-        cand = CANDIDATES[name].specialise(law)
-        width[name] = len(cand.force_extras(ctx)) + max(
-            (len(nv) for _, nv in cand.modify_law(law, base_names, ctx)), default=0)
-    order = sorted(names, key=lambda nm: -width[nm])
+    order = _widest_first(names, law, base_names, ctx)
     # one BLAS thread per fit while they run side by side: each fit's trust-region steps
     # take SVDs of its Jacobian, and two fits whose BLAS spawns a thread per core each
     # oversubscribe the cores (OpenBLAS's threads spin while they wait; measured below)
@@ -216,6 +231,123 @@ def thread_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> 
         futures = {name: pool.submit(contextvars.copy_context().run, one, name)
                    for name in order}
         return {name: futures[name].result() for name in names}
+
+
+def can_fork() -> bool:
+    """Whether :func:`local_fits` may fork its workers: :data:`PROCESSES` is on, the
+    platform forks, and this process is not daemonic (those may not have children)."""
+    return (PROCESSES and "fork" in multiprocessing.get_all_start_methods()
+            and not multiprocessing.current_process().daemon)
+
+
+#: the forked workers' job, set before the fork (the children read their copy): the fit
+#: function with the record, the law and the context bound, and the progress queue
+_JOB = {}
+
+
+def _worker_start():
+    """A forked worker: population simulations row by row (the parent's numba may run
+    GNU OpenMP, whose parallel kernels abort a forked child), the parent's progress
+    reporter replaced by one that sends its ticks back."""
+    from friction import base
+    base.SERIAL_POPULATIONS = True
+
+
+def _forked_fit(name):
+    """One candidate's fit in a forked worker, its progress ticks sent to the parent."""
+    from .composite import reporting
+    ticks = _JOB.get("ticks")
+    send = (lambda n, info: ticks.put((n, info))) if ticks is not None else None
+    with reporting(send):
+        best = _JOB["one"](name)
+    if best is not None:
+        best[0].ctx = None  # the parent has it: not pickled back (the record's size)
+    return best
+
+
+def process_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> dict:
+    """The candidates' joint fits in worker processes forked from this one.
+
+    The workers inherit the fit record, the base law and the compiled kernels (nothing is
+    sent but each candidate's name; each result comes back pickled). A fit that raises
+    raises here; a worker that dies leaves its candidates out of the result, for the
+    caller's loop to fit.
+
+    Parameters
+    ----------
+    names, law, base_names, fit, ctx, val_sets
+        As :func:`thread_fits`.
+    threads : int, optional
+        Worker processes (default :func:`thread_count`); 1: ``{}`` (the caller's loop
+        fits).
+
+    Returns
+    -------
+    dict
+        ``name -> (Composite, fit NRMSE)``, the same as the serial loop gives.
+    """
+    n = thread_count(threads)
+    names = applicable(names, law, fit, ctx, val_sets) if n > 1 else []
+    if len(names) < 2:
+        return {}
+    from .composite import _PROGRESS
+    progress = _PROGRESS.get()
+    mp = multiprocessing.get_context("fork")
+    _JOB["one"] = functools.partial(_fit_one, law=law, base_names=list(base_names), fit=fit,
+                                    ctx=ctx)
+    _JOB["ticks"] = mp.SimpleQueue() if progress is not None else None
+    out = {}
+    try:
+        # one BLAS thread in each worker (inherited through the fork), as in thread_fits
+        with threadpool_limits(limits=1, user_api="blas"), \
+                ProcessPoolExecutor(max_workers=min(n, len(names)), mp_context=mp,
+                                    initializer=_worker_start) as pool, \
+                warnings.catch_warnings():
+            # Python 3.12+ warns on a fork of a process with threads (numba's, OpenBLAS's):
+            # the children run only the fits, not the threads' work
+            warnings.simplefilter("ignore", DeprecationWarning)
+            futures = {pool.submit(_forked_fit, name): name
+                       for name in _widest_first(names, law, base_names, ctx)}
+            pending = set(futures)
+            while pending:
+                done, pending = wait(pending, timeout=0.25, return_when=FIRST_COMPLETED)
+                _relay(_JOB["ticks"], progress)
+                for fut in done:
+                    try:
+                        best = fut.result()
+                    except BrokenProcessPool:
+                        continue  # the caller's loop fits it
+                    if best is not None:
+                        best[0].ctx = ctx
+                    out[futures[fut]] = best
+            _relay(_JOB["ticks"], progress)
+    finally:
+        _JOB.clear()
+    return {name: out[name] for name in names if name in out}
+
+
+def _relay(ticks, progress):
+    """The workers' progress ticks so far, to the caller's reporter."""
+    while ticks is not None and not ticks.empty():
+        progress(*ticks.get())
+
+
+def local_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> dict:
+    """The candidates' joint fits in this machine's workers: forked processes where
+    :func:`can_fork`, else threads.
+
+    Parameters
+    ----------
+    names, law, base_names, fit, ctx, val_sets, threads
+        As :func:`thread_fits` (``threads``: the workers, processes or threads).
+
+    Returns
+    -------
+    dict
+        ``name -> (Composite, fit NRMSE)``, the same as the serial loop gives.
+    """
+    run = process_fits if can_fork() else thread_fits
+    return run(names, law, base_names, fit, ctx, val_sets, threads)
 
 
 def trajectory_fits(executor, names, run_one, tm, engine) -> dict:

@@ -337,9 +337,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         dask cluster, one task per candidate, the fit record scattered once
         (:mod:`diagnosis.cluster`); the report is the same.
     threads : int, optional
-        Threads of this process the candidates' fits run on when no ``executor`` is given
-        (default :data:`diagnosis.cluster.THREADS`: the machine's cores, at most 4; 1: one
-        after the other); the report is the same.
+        Workers the candidates' fits run on when no ``executor`` is given: processes
+        forked from this one where the platform forks, else threads of this process
+        (:func:`diagnosis.cluster.local_fits`; default :data:`diagnosis.cluster.THREADS`:
+        the machine's cores, at most 4; 1: one after the other); the report is the same.
 
     Every record is simulated from the law's steady state at its first velocity (a record
     that starts in motion), a separate held-out record that starts at rest after an
@@ -444,10 +445,10 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
 
     # 3. which
     effects, skipped, fitted = [], {}, {}
-    from .cluster import as_client, candidate_fits, thread_fits  # the fits at once
+    from .cluster import as_client, candidate_fits, local_fits  # the fits at once
     remote = candidate_fits(executor, names, base.law, base_names, fit, ctx, val_sets)
     if as_client(executor) is None:
-        remote = thread_fits(names, base.law, base_names, fit, ctx, val_sets, threads)
+        remote = local_fits(names, base.law, base_names, fit, ctx, val_sets, threads)
     for k, name in enumerate(names, 1):
         cand = CANDIDATES[name].specialise(base.law)
         ok, why = cand.applicable(base.law, fit, ctx)

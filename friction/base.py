@@ -48,6 +48,15 @@ WARM_UP_SAMPLES = 64
 #: h*sigma0*|v|/g(v) > 2; kept to reproduce their instability).
 METHODS = {"exact": 0, "euler": 1}
 
+#: ``True``: :meth:`FrictionModel.simulate_population` (and the fused population costs of
+#: :mod:`identification.objectives`) run the population row by row through the law's
+#: serial kernel in this thread instead of the ``parallel=True`` kernel (the same run code
+#: from the same rest state, so the same numbers). Set in a process forked from one whose
+#: numba already runs GNU OpenMP (numba's wheels): its parallel kernels abort such a child
+#: ("fork() called from a process already using GNU OpenMP"); the diagnosis' forked fit
+#: workers (:func:`diagnosis.cluster.local_fits`) set it
+SERIAL_POPULATIONS = False
+
 
 def param(default, unit: str, description: str, *, lower: float = -math.inf,
           upper: float = math.inf, lower_open: bool = False, upper_open: bool = False,
@@ -548,7 +557,8 @@ class FrictionModel:
                             method: str = "exact") -> np.ndarray:
         """Simulate many parameter sets at once: returns ``F[npop, N]`` [N].
 
-        The kernel runs the population in parallel (numba ``prange``). Parameter vectors
+        The kernel runs the population in parallel (numba ``prange``; row by row where
+        :data:`SERIAL_POPULATIONS` is set). Parameter vectors
         are not bound-checked here (the optimiser keeps them inside its box); rows whose
         values are inadmissible may give NaN, which objectives treat as +inf cost.
 
@@ -569,6 +579,12 @@ class FrictionModel:
             raise ValueError(f"method must be one of {sorted(METHODS)}, got {method!r}")
         t, v, a, load, x = self._inputs(t, v, a, load, x)
         Theta = self.population_theta(names, X)
+        if SERIAL_POPULATIONS:
+            s0 = self.initial_state()
+            F = np.empty((Theta.shape[0], t.size))
+            for i in range(Theta.shape[0]):
+                F[i] = self._kernel(t, v, a, load, x, Theta[i], METHODS[method], s0)[0]
+            return F
         return self._population_kernel(t, v, a, load, x, Theta, METHODS[method])
 
     def with_values(self, **values) -> "FrictionModel":

@@ -458,12 +458,26 @@ class GMS(FrictionModel):
             def state(u):
                 return sgn * np.clip(u - d, -d, d)
 
+        # :meth:`derivatives` at v0 with what does not change along the family taken
+        # out of the bisection (the same numbers, a third of the time)
+        damped = bool(p.sigma1) and v0 != 0.0
+        if damped:
+            g0 = float(self.g(v0))
+            w = self.element_shares()
+            lam = p.C / g0
+            dw = [g0 * (w[i] / k[i]) for i in range(N_ELEMENTS)]
+            ksum = float(np.sum(k))
+            rate = np.empty(N_ELEMENTS)
+
         def f(u):
             # increasing in u (the micro-damping's part falls as blocks start slipping,
             # by less than their springs' part grows)
             z = state(u)
-            damp = p.sigma1 * float(k @ self.derivatives(z, v0)) / float(np.sum(k)) \
-                if p.sigma1 and v0 != 0.0 else 0.0
+            damp = 0.0
+            if damped:
+                for i in range(N_ELEMENTS):
+                    rate[i] = _block_rate(float(z[i]), v0, dw[i], lam)
+                damp = p.sigma1 * float(k @ rate) / ksum
             return (float(np.sum(k * z)) + damp) * sgn
 
         want = target * sgn

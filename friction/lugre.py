@@ -518,33 +518,49 @@ def _population_kernel(t, v, a, load, x, Theta, method):
 _SSE_BLOCK = 4096
 
 
+@njit(cache=True, nogil=True)
+def _row_sse(t, v, th, method, Fm):
+    """``sum_k (F[k] - Fm[k])^2`` of one parameter row without its force record:
+    :func:`lugre_run` block by block, the state carried across (the same forces)."""
+    n = t.size
+    F = np.empty(_SSE_BLOCK + 1)
+    Z = np.empty(_SSE_BLOCK + 1)
+    z = 0.0
+    acc = 0.0
+    k0 = 0
+    while True:
+        k1 = min(k0 + _SSE_BLOCK, n - 1)
+        m = k1 - k0 + 1
+        lugre_run(t[k0:k1 + 1], v[k0:k1 + 1], th, method, z, F[:m], Z[:m])
+        last = m if k1 == n - 1 else m - 1  # the block's last sample starts the next
+        for k in range(last):
+            d = F[k] - Fm[k0 + k]
+            acc += d * d
+        if k1 == n - 1:
+            break
+        z = Z[m - 1]
+        k0 = k1
+    return acc
+
+
 @njit(cache=True, parallel=True)
 def _population_sse_kernel(t, v, Theta, method, Fm):
-    """``sum_k (F_i[k] - Fm[k])^2`` of every parameter row ``i`` without an ``npop x N``
-    force matrix: each row runs :func:`lugre_run` block by block (the state carried
-    across, so its forces are the same numbers), in parallel over the rows."""
+    """:func:`_row_sse` of every parameter row, in parallel over the rows (no
+    ``npop x N`` force matrix)."""
     npop = Theta.shape[0]
-    n = t.size
     out = np.empty(npop)
     for i in prange(npop):
-        F = np.empty(_SSE_BLOCK + 1)
-        Z = np.empty(_SSE_BLOCK + 1)
-        z = 0.0
-        acc = 0.0
-        k0 = 0
-        while True:
-            k1 = min(k0 + _SSE_BLOCK, n - 1)
-            m = k1 - k0 + 1
-            lugre_run(t[k0:k1 + 1], v[k0:k1 + 1], Theta[i], method, z, F[:m], Z[:m])
-            last = m if k1 == n - 1 else m - 1  # the block's last sample starts the next
-            for k in range(last):
-                d = F[k] - Fm[k0 + k]
-                acc += d * d
-            if k1 == n - 1:
-                break
-            z = Z[m - 1]
-            k0 = k1
-        out[i] = acc
+        out[i] = _row_sse(t, v, Theta[i], method, Fm)
+    return out
+
+
+@njit(cache=True, nogil=True)
+def _serial_sse_kernel(t, v, Theta, method, Fm):
+    """:func:`_population_sse_kernel` row after row in this thread
+    (:data:`friction.base.SERIAL_POPULATIONS`)."""
+    out = np.empty(Theta.shape[0])
+    for i in range(Theta.shape[0]):
+        out[i] = _row_sse(t, v, Theta[i], method, Fm)
     return out
 
 
@@ -573,6 +589,8 @@ class LuGre(DirectionalStribeck, FrictionModel):
     _normal_equations_kernel = staticmethod(lugre_normal_equations)
     #: population sums of squared force errors without the population's forces
     _population_sse_kernel = staticmethod(_population_sse_kernel)
+    #: the same sums row after row (:data:`friction.base.SERIAL_POPULATIONS`)
+    _serial_sse_kernel = staticmethod(_serial_sse_kernel)
 
     def _pack(self, p: LuGreParams) -> np.ndarray:
         return np.array([p.sigma0, p.sigma1, p.sigma2, p.resolved("sigma2", -1),

@@ -109,7 +109,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="a standstill record (CSV/.mat, same --map/--scale): the spread of its "
                    "force channel is the noise level")
     g.add_argument("--threads", type=int, default=None,
-                   help="threads the candidates' fits run on (default: the machine's cores, "
+                   help="workers the candidates' fits run on: processes forked from this "
+                   "one where the platform forks, else threads (default: the machine's cores, "
                    "at most 4, or FRICTIONLAB_THREADS; 1: one after the other); same report")
     return ap
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from friction import base as _base
 from friction.base import METHODS, FrictionModel
 from friction.dataset import Dataset
 
@@ -231,6 +232,8 @@ class InProcessObjective(Objective):
         X = np.atleast_2d(np.asarray(X, float))
         t, v, a, load, xx = self._prepared()
         Theta = self.model.population_theta(self.names, X)
+        if _base.SERIAL_POPULATIONS:  # a forked worker: no parallel kernel
+            kernel = type(self.model)._serial_sse_kernel
         sse = kernel(t, v, Theta, METHODS[self.method], self.data.F)
         c = np.sqrt(sse / t.size) / self._sd
         return np.where(np.isfinite(c), c, np.inf)

@@ -1,5 +1,6 @@
-"""The force level's candidate fits on threads of this process (diagnosis.cluster.thread_fits):
-the same report as one after the other, the fits really side by side, bad counts refused."""
+"""The force level's candidate fits on threads of this process (diagnosis.cluster.thread_fits,
+where the platform does not fork or cluster.PROCESSES is off): the same report as one after
+the other, the fits really side by side, bad counts refused."""
 import threading
 
 import numpy as np
@@ -7,6 +8,11 @@ import pytest
 
 from diagnosis import cluster, diagnose
 from diagnosis.benchmark import make_case
+
+
+@pytest.fixture(autouse=True)
+def threads_only(monkeypatch):
+    monkeypatch.setattr(cluster, "PROCESSES", False)  # forked workers: test_diagnosis_forked
 
 
 @pytest.fixture(scope="module")

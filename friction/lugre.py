@@ -268,28 +268,46 @@ def _sens_cutoff(Fc, Fs):
 _NE_BLOCK = 64
 
 
-#: floating-point freedoms of the sensitivity kernels: reassociation (the block sums
-#: vectorise) and fused multiply-adds; no assumption about NaN or infinities (a parameter
-#: set that overflows must still give a non-finite cost)
-_SENS_MATH = {"reassoc", "contract"}
+#: floating-point freedom of the sensitivity kernels: fused multiply-adds only (no
+#: reassociation: see :func:`_dot4`; no assumption about NaN or infinities: a parameter set
+#: that overflows must still give a non-finite cost)
+_SENS_MATH = {"contract"}
+
+
+@njit(cache=True, inline="always", fastmath=_SENS_MATH)
+def _dot4(a, b, m):
+    """``sum_k a[k] b[k]`` over ``k < m`` in four interleaved partial sums, added in a
+    fixed order: the compiler may vectorise the four lanes without reassociating, so the
+    sum is the same bits however the kernel was compiled (fresh or from numba's cache,
+    inlined into one caller or another). With ``fastmath`` reassociation the vectoriser's
+    choice depended on the compile: an identification run in a fresh process differed
+    from a cached one in the last bits of ``J^T J``, and a diagnosis downstream flipped."""
+    a0 = 0.0
+    a1 = 0.0
+    a2 = 0.0
+    a3 = 0.0
+    k = 0
+    while k + 4 <= m:
+        a0 += a[k] * b[k]
+        a1 += a[k + 1] * b[k + 1]
+        a2 += a[k + 2] * b[k + 2]
+        a3 += a[k + 3] * b[k + 3]
+        k += 4
+    while k < m:
+        a0 += a[k] * b[k]
+        k += 1
+    return (a0 + a1) + (a2 + a3)
 
 
 @njit(cache=True, inline="always", fastmath=_SENS_MATH)
 def _flush_normal(R, rb, m, D, H, G):
     """Add the block's ``R[:, :m]^T R[:, :m]`` (lower triangle) to ``H`` and
-    ``R[:, :m] rb[:m]`` to ``G`` (contiguous dot products: vectorised)."""
+    ``R[:, :m] rb[:m]`` to ``G`` (contiguous dot products, :func:`_dot4`)."""
     for i in range(D):
         Ri = R[i]
-        acc = 0.0
-        for k in range(m):
-            acc += Ri[k] * rb[k]
-        G[i] += acc
+        G[i] += _dot4(Ri, rb, m)
         for j in range(i + 1):
-            Rj = R[j]
-            acc = 0.0
-            for k in range(m):
-                acc += Ri[k] * Rj[k]
-            H[i, j] += acc
+            H[i, j] += _dot4(Ri, R[j], m)
 
 
 @njit(cache=True, nogil=True, fastmath=_SENS_MATH)

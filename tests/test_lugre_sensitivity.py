@@ -166,3 +166,47 @@ def test_compressed_residual_has_the_long_residuals_model():
     assert f @ f == pytest.approx(r @ r, rel=1e-12)
     assert np.allclose(Jc.T @ Jc, J.T @ J, rtol=1e-10)
     assert np.allclose(Jc.T @ f, J.T @ r, rtol=1e-8)
+
+
+_FRESH_SCRIPT = """
+import sys, numpy as np
+from friction import make_model
+from friction.lugre import lugre_normal_equations, lugre_sensitivity_run
+d = np.load(sys.argv[1])
+law = make_model("lugre")
+t, v, th, cols, Fm = d["t"], d["v"], d["th"], d["cols"], d["Fm"]
+# the sensitivity run compiled first, as identify's Jacobian does before its normal
+# equations: the order in which the fast-math reductions once vectorised differently
+F = np.empty(t.size); J = np.empty((t.size, int((cols >= 0).sum())))
+lugre_sensitivity_run(t, v, th, 0, 0.0, cols, F, J)
+H = np.zeros((J.shape[1],) * 2); G = np.zeros(J.shape[1])
+sse = lugre_normal_equations(t, v, th, 0, 0.0, cols, Fm, 1.0, H, G)
+np.savez(sys.argv[2], H=H, G=G, sse=np.array([sse]))
+"""
+
+
+@pytest.mark.slow  # compiles the sensitivity kernels afresh in a subprocess (~20 s)
+def test_normal_equations_are_the_same_bits_fresh_or_cached(tmp_path):
+    import os
+    import subprocess
+    import sys
+    rng = np.random.default_rng(11)
+    t, v = _motion(rng, 3000)
+    law = _model(rng, "gaussian", False)
+    names = ALL
+    from friction.lugre import _LAYOUT
+    cols = -np.ones(len(_LAYOUT), np.int64)
+    for j, n in enumerate(names):
+        cols[_LAYOUT.index(n)] = j
+    Fm = law.simulate(t, v) + 0.01 * rng.standard_normal(t.size)
+    np.savez(tmp_path / "in.npz", t=t, v=v, th=law.theta, cols=cols, Fm=Fm)
+    H = np.zeros((len(names),) * 2)
+    G = np.zeros(len(names))
+    sse = lugre_normal_equations(t, v, law.theta, 0, 0.0, cols, Fm, 1.0, H, G)
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "numba")}  # nothing cached
+    (tmp_path / "fresh.py").write_text(_FRESH_SCRIPT)
+    subprocess.run([sys.executable, str(tmp_path / "fresh.py"), str(tmp_path / "in.npz"),
+                    str(tmp_path / "out.npz")], check=True, env=env, timeout=600)
+    out = np.load(tmp_path / "out.npz")
+    assert np.array_equal(out["H"], H) and np.array_equal(out["G"], G)
+    assert out["sse"][0] == sse

@@ -179,6 +179,20 @@ def thread_count(threads=None) -> int:
     return n
 
 
+def _side_by_side(names, law, fit, ctx, val_sets, threads) -> tuple:
+    """``(workers, candidates to fit side by side)``: none (the caller's loop fits them)
+    with one worker or fewer than two candidates that apply."""
+    n = thread_count(threads)
+    names = applicable(names, law, fit, ctx, val_sets) if n > 1 else []
+    return n, (names if len(names) >= 2 else [])
+
+
+def _bound_fit(law, base_names, fit, ctx):
+    """:func:`_fit_one` with the base law, its free parameters, the record and its
+    context bound: ``one(name) -> (Composite, fit NRMSE)``."""
+    return functools.partial(_fit_one, law=law, base_names=list(base_names), fit=fit, ctx=ctx)
+
+
 def _widest_first(names, law, base_names, ctx) -> list:
     """``names`` with the widest fits first (most Jacobian columns, the cost's first
     order), so that no long one starts last and runs alone."""
@@ -216,11 +230,10 @@ def thread_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> 
     dict
         ``name -> (Composite, fit NRMSE)``, the same as the serial loop gives.
     """
-    n = thread_count(threads)
-    names = applicable(names, law, fit, ctx, val_sets) if n > 1 else []
-    if len(names) < 2:
+    n, names = _side_by_side(names, law, fit, ctx, val_sets, threads)
+    if not names:
         return {}
-    one = functools.partial(_fit_one, law=law, base_names=list(base_names), fit=fit, ctx=ctx)
+    one = _bound_fit(law, base_names, fit, ctx)
     order = _widest_first(names, law, base_names, ctx)
     # one BLAS thread per fit while they run side by side: each fit's trust-region steps
     # take SVDs of its Jacobian, and two fits whose BLAS spawns a thread per core each
@@ -286,15 +299,13 @@ def process_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) ->
     dict
         ``name -> (Composite, fit NRMSE)``, the same as the serial loop gives.
     """
-    n = thread_count(threads)
-    names = applicable(names, law, fit, ctx, val_sets) if n > 1 else []
-    if len(names) < 2:
+    n, names = _side_by_side(names, law, fit, ctx, val_sets, threads)
+    if not names:
         return {}
     from .composite import _PROGRESS
     progress = _PROGRESS.get()
     mp = multiprocessing.get_context("fork")
-    _JOB["one"] = functools.partial(_fit_one, law=law, base_names=list(base_names), fit=fit,
-                                    ctx=ctx)
+    _JOB["one"] = _bound_fit(law, base_names, fit, ctx)
     _JOB["ticks"] = mp.SimpleQueue() if progress is not None else None
     out = {}
     try:

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen19`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen20`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -249,6 +249,7 @@ _S16 = "diagnosis.benchmark.seen16:"
 _S17 = "diagnosis.benchmark.seen17:"
 _S18 = "diagnosis.benchmark.seen18:"
 _S19 = "diagnosis.benchmark.seen19:"
+_S20 = "diagnosis.benchmark.seen20:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -305,7 +306,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "jerk_unloading": _S16 + "jerk_unloading_truth",
                    "aerostatic_tilt": _S17 + "aerostatic_tilt_truth",
                    "ball_train": _S18 + "ball_train_truth",
-                   "current_ripple": _S19 + "current_ripple_truth"},
+                   "current_ripple": _S19 + "current_ripple_truth",
+                   "rack_flank_sliding": _S20 + "rack_flank_sliding_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -332,7 +334,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "overhung_load": _S16 + "overhung_load_truth",
                    "preload_relief": _S17 + "preload_relief_truth",
                    "ploughing_onset": _S18 + "ploughing_onset_truth",
-                   "viscoelastic_rolling": _S19 + "viscoelastic_rolling_truth"},
+                   "viscoelastic_rolling": _S19 + "viscoelastic_rolling_truth",
+                   "heathcote_slip": _S20 + "heathcote_slip_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -359,7 +362,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "freewheel_roller": _S16 + "freewheel_roller_truth",
                    "felt_lubricator": _S17 + "felt_lubricator_truth",
                    "running_belt": _S18 + "running_belt_truth",
-                   "leaning_brush": _S19 + "leaning_brush_truth"},
+                   "leaning_brush": _S19 + "leaning_brush_truth",
+                   "sealing_band": _S20 + "sealing_band_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -386,7 +390,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "churning_drag": _S16 + "churning_drag_truth",
                    "core_loss_drag": _S17 + "core_loss_drag_truth",
                    "bellows_breathing": _S18 + "bellows_breathing_truth",
-                   "eddy_brake": _S19 + "eddy_brake_truth"},
+                   "eddy_brake": _S19 + "eddy_brake_truth",
+                   "shear_thinning_oil": _S20 + "shear_thinning_oil_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -417,7 +422,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "cam_plunger": _S16 + "cam_plunger_truth",
                    "heated_zone": _S17 + "heated_zone_truth",
                    "false_brinelling": _S18 + "false_brinelling_truth",
-                   "rail_joint": _S19 + "rail_joint_truth"},
+                   "rail_joint": _S19 + "rail_joint_truth",
+                   "rail_misalignment": _S20 + "rail_misalignment_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -443,7 +449,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "chordal_action": _S16 + "chordal_action_truth",
                    "screw_stiffness": _S17 + "screw_stiffness_truth",
                    "feedforward_lead": _S18 + "feedforward_lead_truth",
-                   "abbe_pitch": _S19 + "abbe_pitch_truth"},
+                   "abbe_pitch": _S19 + "abbe_pitch_truth",
+                   "friction_damped_mount": _S20 + "friction_damped_mount_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -473,7 +480,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "mains_notch": _S16 + "mains_notch_truth",
                    "alpha_beta_tracker": _S17 + "alpha_beta_tracker_truth",
                    "transducer_resonance": _S18 + "transducer_resonance_truth",
-                   "gauge_snubber": _S19 + "gauge_snubber_truth"},
+                   "gauge_snubber": _S19 + "gauge_snubber_truth",
+                   "magnetostrictive_wire": _S20 + "magnetostrictive_wire_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -501,7 +509,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "tribocharging": _S16 + "tribocharging_truth",
                    "cage_creep": _S17 + "cage_creep_truth",
                    "screw_loosening": _S18 + "screw_loosening_truth",
-                   "film_dewetting": _S19 + "film_dewetting_truth"},
+                   "film_dewetting": _S19 + "film_dewetting_truth",
+                   "grease_channelling": _S20 + "grease_channelling_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -527,7 +536,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "reversing_clutch": _S16 + "reversing_clutch_truth",
                    "mesh_stiffness": _S17 + "mesh_stiffness_truth",
                    "polymer_gear": _S18 + "polymer_gear_truth",
-                   "grease_packed_gap": _S19 + "grease_packed_gap_truth"},
+                   "grease_packed_gap": _S19 + "grease_packed_gap_truth",
+                   "wedge_flank": _S20 + "wedge_flank_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -553,7 +563,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "power_law_joint": _S16 + "power_law_joint_truth",
                    "junction_growth": _S17 + "junction_growth_truth",
                    "slip_avalanches": _S18 + "slip_avalanches_truth",
-                   "slip_weakening": _S19 + "slip_weakening_truth"},
+                   "slip_weakening": _S19 + "slip_weakening_truth",
+                   "microslip_bar": _S20 + "microslip_bar_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

@@ -76,7 +76,7 @@ sample at the top speed and differentiated by ``np.gradient``, backward differen
 low-passed gradient (:func:`.kinematics.measure_motion`, :data:`.runner.MEASURED` in turn).
 The **sealed** family (:mod:`.sealed`, ``forms="sealed"``) is one more form per effect, kept
 out of all tuning and run only at the end of a piece of work (the present one written in
-session 25, sealed: not run; session 24's other, run once on <COMMIT>, <TOP1> top-1, is
+session 25, sealed: not run; session 24's other, run once on 5ac3afd, 50.0 % top-1, is
 :mod:`.seen20`, session 24's first (43.8 %) :mod:`.seen19`, session 23's (53.4 %)
 :mod:`.seen18`, session 22's (47.2 %) :mod:`.seen17`, session 21's (31.8 %) :mod:`.seen16`,
 session 20's (35.8 %) :mod:`.seen15`, session 19's (36.4 %) :mod:`.seen14`, session 18's (17.0 %)

@@ -15,6 +15,12 @@ short protocols, 1,400-5,000 samples a record).
 
 Goal: 0 names (every verdict ``none`` or ``unexplained``).
 
+Results of session 25 (2026-11-30 10:00 UTC, 2 workers beside a one-process helper and the
+README's first command, 1716 s wall, code of commit 0a12cc6: the LuGre normal equations the
+same bits however numba compiled them): 500 records, **0 named**, 246 ``none`` / 254
+``unexplained`` (damping rig 8 / 92, forging press 68 / 32, MRE isolator 48 / 52, valve 96 /
+4, XML-350 26 / 74), the split of sessions 22-24.
+
 Results of session 9 (2026-11-24 11:41 UTC, 2 workers, 507 s wall, code of commit 656e3a8:
 the drift's trend chosen by forecasting, ties to the simpler candidate within 5 %): 500
 records, **0 named**, 242 ``none`` / 258 ``unexplained``, as before. On c5f2b7d (the drift's

@@ -95,6 +95,10 @@ report bit for bit. At the start of the session, on 2 threads, 6.53 / 6.92 s (30
 over the 5 s goal since sessions 20-24 added candidates' forms and starts; the fits' Python
 parts hold the interpreter lock, so threads gained 1.1 x. Two processes run each fit about
 1.3 x slower than one alone (the two cores share the machine's caches), so they gain 1.6 x.
+On 0a12cc6 (the normal equations without fast-math reassociation), 10:31 and 10:33 UTC, 5
+rounds each: best 5.26 s, median 6.06 s (20.4 / 20.4 x; base identification 0.26 / 0.30 s,
+one thread 8.55 / 10.68 s: the shared machine slower) and best 4.05 s, median 5.19 s (18.6 /
+20.3 x; base identification 0.22 / 0.26 s; 2 threads 6.07 / 7.12 s, one 7.57 / 7.99 s).
 
 Full diagnosis of 20,000 samples, every candidate that applies (backlash and GMS included;
 the case has no load column), warm (``--speed-only --repeats 5``, 2026-11-29 03:34 UTC,

@@ -38,6 +38,7 @@ import contextvars
 import functools
 import multiprocessing
 import os
+import threading
 import warnings
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, ThreadPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
@@ -45,9 +46,9 @@ from concurrent.futures.process import BrokenProcessPool
 from threadpoolctl import threadpool_limits
 
 #: workers (forked processes or threads, :func:`local_fits`) the force level's candidate
-#: fits run on when no cluster is given: ``None`` the environment's ``FRICTIONLAB_THREADS``, else the machine's cores (at
-#: most :data:`MAX_THREADS`); 1 one after the other (a process pool that already keeps
-#: every core busy sets ``FRICTIONLAB_THREADS=1`` in its workers)
+#: fits run on when no cluster is given: ``None`` the environment's ``FRICTIONLAB_THREADS``,
+#: else the machine's cores (at most :data:`MAX_THREADS`); 1 one after the other (a process
+#: pool that already keeps every core busy sets ``FRICTIONLAB_THREADS=1`` in its workers)
 THREADS = None
 MAX_THREADS = 4
 #: the in-process workers are processes forked from this one where the platform forks
@@ -254,14 +255,15 @@ def can_fork() -> bool:
 
 
 #: the forked workers' job, set before the fork (the children read their copy): the fit
-#: function with the record, the law and the context bound, and the progress queue
+#: function with the record, the law and the context bound, and the progress queue; one
+#: caller's pool at a time holds it (:data:`_JOB_LOCK`: diagnoses run from two threads)
 _JOB = {}
+_JOB_LOCK = threading.Lock()
 
 
 def _worker_start():
-    """A forked worker: population simulations row by row (the parent's numba may run
-    GNU OpenMP, whose parallel kernels abort a forked child), the parent's progress
-    reporter replaced by one that sends its ticks back."""
+    """A forked worker's start: population simulations row by row (the parent's numba may
+    run GNU OpenMP, whose parallel kernels abort a forked child)."""
     from friction import base
     base.SERIAL_POPULATIONS = True
 
@@ -305,9 +307,16 @@ def process_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) ->
     from .composite import _PROGRESS
     progress = _PROGRESS.get()
     mp = multiprocessing.get_context("fork")
-    _JOB["one"] = _bound_fit(law, base_names, fit, ctx)
-    _JOB["ticks"] = mp.SimpleQueue() if progress is not None else None
     out = {}
+    with _JOB_LOCK:
+        _JOB["one"] = _bound_fit(law, base_names, fit, ctx)
+        _JOB["ticks"] = mp.SimpleQueue() if progress is not None else None
+        _run_pool(names, law, base_names, ctx, n, mp, progress, out)
+    return {name: out[name] for name in names if name in out}
+
+
+def _run_pool(names, law, base_names, ctx, n, mp, progress, out):
+    """The pool of :func:`process_fits`: its results into ``out`` as they come."""
     try:
         # one BLAS thread in each worker (inherited through the fork), as in thread_fits
         with threadpool_limits(limits=1, user_api="blas"), \
@@ -334,7 +343,6 @@ def process_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) ->
             _relay(_JOB["ticks"], progress)
     finally:
         _JOB.clear()
-    return {name: out[name] for name in names if name in out}
 
 
 def _relay(ticks, progress):

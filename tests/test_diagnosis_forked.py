@@ -129,3 +129,20 @@ def test_serial_population_costs_equal_the_fused_parallel_ones(monkeypatch):
     monkeypatch.setattr(base, "SERIAL_POPULATIONS", True)
     assert np.array_equal(par, obj.costs(X))
     assert np.argmin(par) == 1
+
+
+def test_two_callers_threads_each_get_their_own_fits(case):
+    # two diagnoses from two threads of one process: each pool forks with its own job
+    from concurrent.futures import ThreadPoolExecutor
+    law, names, fit, ctx = _base(case)
+    other = make_case("asymmetry", 1.0, 0.02, n=3000, seed=5)
+    law2, names2, fit2, ctx2 = _base(other)
+    jobs = [(law, names, fit, ctx), (law2, names2, fit2, ctx2)]
+    with ThreadPoolExecutor(2) as pool:
+        got = list(pool.map(lambda j: cluster.process_fits(["delay", "inertia"], *j,
+                                                             threads=2), jobs))
+    for (lw, nm, ft, cx), remote in zip(jobs, got):
+        for cand in ("delay", "inertia"):
+            serial = cluster._fit_one(cand, law=lw, base_names=nm, fit=ft, ctx=cx)
+            assert remote[cand][1] == serial[1]
+            assert remote[cand][0].extras == serial[0].extras

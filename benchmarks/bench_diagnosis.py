@@ -88,7 +88,7 @@ acceleration only) acceleration was 0.129; overall 0.082 with both.
 
 Session 25 (2026-11-30 09:05 UTC, load 0.95-1.34, one BLAS thread, ``--speed-only
 --repeats 5``): the candidate fits in 2 worker processes forked from the caller's
-(:func:`diagnosis.cluster.process_fits`, the default where the platform forks): best
+(:func:`diagnosis.cluster.process_fits`, the default on Linux): best
 **4.00 s**, median 4.55 s (19.3 / 17.0 x one base identification, 0.21 / 0.27 s); on 2
 threads of the process 5.85 / 6.61 s; on one 7.33 / 8.46 s (35.4 / 31.6 x). The same
 report bit for bit. At the start of the session, on 2 threads, 6.53 / 6.92 s (30.3 / 28.9 x):
@@ -222,7 +222,7 @@ def speed_only(n=20000, repeats=5, scipy_jacobian=False):
     -------
     dict
         Lists of seconds ``full`` (the candidate fits on the machine's cores, at most 4
-        workers: forked processes where the platform forks), ``full_threads`` (as many
+        workers: forked processes on Linux), ``full_threads`` (as many
         threads), ``full_serial`` (one thread), ``base`` (and ``full_scipy``), ``load``
         (1-minute load average before and after), ``verdict``.
     """

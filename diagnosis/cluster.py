@@ -2,7 +2,7 @@
 of this process, or a ``dask.distributed`` cluster (force level and trajectory level).
 
 In-process, the force level's candidate fits run on :data:`THREADS` workers
-(:func:`local_fits`): they are independent of each other. Where the platform forks (Linux)
+(:func:`local_fits`): they are independent of each other. On Linux
 the workers are processes forked from this one (:func:`process_fits`): the fit record, the
 base law and the compiled kernels are already in them, and each fit's Python parts (scipy's
 trust region, each trial's start state) run beside the other's. Elsewhere, or inside a
@@ -38,6 +38,7 @@ import contextvars
 import functools
 import multiprocessing
 import os
+import sys
 import threading
 import warnings
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, ThreadPoolExecutor, wait
@@ -51,7 +52,7 @@ from threadpoolctl import threadpool_limits
 #: pool that already keeps every core busy sets ``FRICTIONLAB_THREADS=1`` in its workers)
 THREADS = None
 MAX_THREADS = 4
-#: the in-process workers are processes forked from this one where the platform forks
+#: the in-process workers are processes forked from this one on Linux
 #: (False: always threads)
 PROCESSES = True
 
@@ -248,9 +249,12 @@ def thread_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> 
 
 
 def can_fork() -> bool:
-    """Whether :func:`local_fits` may fork its workers: :data:`PROCESSES` is on, the
-    platform forks, and this process is not daemonic (those may not have children)."""
-    return (PROCESSES and "fork" in multiprocessing.get_all_start_methods()
+    """Whether :func:`local_fits` may fork its workers: :data:`PROCESSES` is on, this is
+    Linux (macOS forks, but a child of a process that used Apple's frameworks, numpy's
+    Accelerate among them, may crash: Python's own default there is to spawn), and this
+    process is not daemonic (those may not have children)."""
+    return (PROCESSES and sys.platform.startswith("linux")
+            and "fork" in multiprocessing.get_all_start_methods()
             and not multiprocessing.current_process().daemon)
 
 

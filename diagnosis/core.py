@@ -338,7 +338,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
         (:mod:`diagnosis.cluster`); the report is the same.
     threads : int, optional
         Workers the candidates' fits run on when no ``executor`` is given: processes
-        forked from this one where the platform forks, else threads of this process
+        forked from this one on Linux, else threads of this process
         (:func:`diagnosis.cluster.local_fits`; default :data:`diagnosis.cluster.THREADS`:
         the machine's cores, at most 4; 1: one after the other); the report is the same.
 

@@ -110,7 +110,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "force channel is the noise level")
     g.add_argument("--threads", type=int, default=None,
                    help="workers the candidates' fits run on: processes forked from this "
-                   "one where the platform forks, else threads (default: the machine's cores, "
+                   "one on Linux, else threads (default: the machine's cores, "
                    "at most 4, or FRICTIONLAB_THREADS; 1: one after the other); same report")
     return ap
 

@@ -13,7 +13,7 @@ from diagnosis import cluster, diagnose
 from diagnosis.benchmark import make_case
 from friction import MODELS, base, make_model
 
-pytestmark = pytest.mark.skipif(not cluster.can_fork(), reason="the platform does not fork")
+pytestmark = pytest.mark.skipif(not cluster.can_fork(), reason="forked workers: Linux only")
 
 
 @pytest.fixture(scope="module")
@@ -86,11 +86,14 @@ def test_a_dead_worker_leaves_its_candidates_to_the_caller(case, monkeypatch):
     assert {e["name"] for e in rep["effects"]} == {"delay", "drift"}
 
 
-def test_processes_off_or_a_daemon_falls_back_to_threads(monkeypatch):
+def test_processes_off_another_platform_or_a_daemon_falls_back_to_threads(monkeypatch):
     assert cluster.can_fork()
     monkeypatch.setattr(cluster, "PROCESSES", False)
     assert not cluster.can_fork()
     monkeypatch.setattr(cluster, "PROCESSES", True)
+    monkeypatch.setattr(cluster.sys, "platform", "darwin")  # forks, but spawns by default
+    assert not cluster.can_fork()
+    monkeypatch.setattr(cluster.sys, "platform", "linux")
     import multiprocessing
     monkeypatch.setattr(multiprocessing.current_process(), "_config",
                         {**multiprocessing.current_process()._config, "daemon": True})

@@ -390,16 +390,25 @@ class GMS(FrictionModel):
 
     def derivatives(self, state, v, **inputs) -> np.ndarray:
         """dz_i/dt [m/s] of the four blocks at velocity ``v`` [m/s] (module docstring)."""
+        return self._rates_at(float(v))(state)
+
+    def _rates_at(self, v: float):
+        """``rates(state) -> dz/dt`` [m/s] of the four blocks at the velocity ``v`` [m/s]:
+        what depends on ``v`` alone (g(v), each block's break-away deflection, the slip
+        rate C / g) computed once, for a loop over states at one speed."""
         p = self.params
-        v = float(v)
         g = float(self.g(v))
         k = self.element_stiffness()
         w = self.element_shares()
         lam = p.C / g
-        out = np.empty(N_ELEMENTS)
-        for i in range(N_ELEMENTS):
-            out[i] = _block_rate(float(state[i]), v, g * (w[i] / k[i]), lam)
-        return out
+        d = [g * (w[i] / k[i]) for i in range(N_ELEMENTS)]
+
+        def rates(state):
+            out = np.empty(N_ELEMENTS)
+            for i in range(N_ELEMENTS):
+                out[i] = _block_rate(float(state[i]), v, d[i], lam)
+            return out
+        return rates
 
     def force(self, state, v, **inputs) -> float:
         """F = sum_i (k_i z_i + sigma1 (k_i / sigma0) dz_i/dt) + sigma2 v + b [N]."""
@@ -458,26 +467,17 @@ class GMS(FrictionModel):
             def state(u):
                 return sgn * np.clip(u - d, -d, d)
 
-        # :meth:`derivatives` at v0 with what does not change along the family taken
-        # out of the bisection (the same numbers, a third of the time)
+        # :meth:`derivatives` at v0, its speed-only part out of the bisection (the same
+        # numbers, a third of the time)
         damped = bool(p.sigma1) and v0 != 0.0
-        if damped:
-            g0 = float(self.g(v0))
-            w = self.element_shares()
-            lam = p.C / g0
-            dw = [g0 * (w[i] / k[i]) for i in range(N_ELEMENTS)]
-            ksum = float(np.sum(k))
-            rate = np.empty(N_ELEMENTS)
+        rates = self._rates_at(v0) if damped else None
+        ksum = float(np.sum(k))
 
         def f(u):
             # increasing in u (the micro-damping's part falls as blocks start slipping,
             # by less than their springs' part grows)
             z = state(u)
-            damp = 0.0
-            if damped:
-                for i in range(N_ELEMENTS):
-                    rate[i] = _block_rate(float(z[i]), v0, dw[i], lam)
-                damp = p.sigma1 * float(k @ rate) / ksum
+            damp = p.sigma1 * float(k @ rates(z)) / ksum if damped else 0.0
             return (float(np.sum(k * z)) + damp) * sgn
 
         want = target * sgn

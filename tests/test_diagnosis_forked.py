@@ -149,3 +149,16 @@ def test_two_callers_threads_each_get_their_own_fits(case):
             serial = cluster._fit_one(cand, law=lw, base_names=nm, fit=ft, ctx=cx)
             assert remote[cand][1] == serial[1]
             assert remote[cand][0].extras == serial[0].extras
+
+
+def test_a_fit_that_raises_in_a_worker_raises_in_the_caller_with_its_message(case,
+                                                                             monkeypatch):
+    fit_one = cluster._fit_one
+
+    def refuses(name, **kw):
+        if name == "drift":
+            raise ValueError("drift_tau = -1 is out of bounds: must be > 0 [s]")
+        return fit_one(name, **kw)
+    monkeypatch.setattr(cluster, "_fit_one", refuses)
+    with pytest.raises(ValueError, match="drift_tau = -1 is out of bounds"):
+        cluster.process_fits(["delay", "drift", "inertia"], *_base(case), threads=2)

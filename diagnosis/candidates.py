@@ -23,6 +23,7 @@ of the effect's formula at every level, ``force_extras`` add what measured frict
 """
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass, field
 from typing import ClassVar
 
@@ -34,8 +35,9 @@ from friction import make_model
 from friction.alignment import velocity_lag
 from friction.dataset import Dataset
 from friction.extensions import (DRIFT_CYCLE_NAMES, DRIFT_NAMES, DRIFT_RESET_NAMES,
-                                 POSITION_FORM_NAMES, POSITION_NAMES, acceleration_weight,
-                                 drift_change, pack_extensions, position_change)
+                                 DRIFT_SCALES, POSITION_FORM_NAMES, POSITION_NAMES,
+                                 acceleration_weight, drift_change, drift_parts,
+                                 pack_extensions, position_change)
 
 __all__ = ["Candidate", "LawCandidate", "Context", "Extra", "make_context", "velocity_lag",
            "Fixed", "Acceleration", "Load", "Drift", "Asymmetry", "AsymmetryTwins", "Position",
@@ -840,10 +842,33 @@ class Drift(Candidate):
     def apply(self, F, p, data, ctx):
         # friction level changing over time (warming, running-in, a lubricant change, an
         # ambient that cycles), and with the contact's heating by its own friction power
-        d = 1.0 + drift_change(data.t, self._packed(p, ctx))
+        e = self._packed(p, ctx)
+        d = 1.0 + drift_change(data.t, e, self._parts(data.t, e))
         if p.get("k_heat", 0.0) != 0.0:
             d = d + p["k_heat"] * friction_heat(data, p["tau_heat"], ctx)
         return F * d
+
+    #: the last time scales' parts, per thread (:meth:`_parts`), and how many are kept: a
+    #: Jacobian's columns that move a time scale (the step's time and width) come back to
+    #: the point's own scales
+    _last, PARTS_KEPT = threading.local(), 4
+
+    def _parts(self, t, e):
+        """The drift's time-scale parts (:func:`friction.extensions.drift_parts`) at times
+        ``t`` [s], kept for the next calls with the same array and time scales: a fit's
+        Jacobian moves the amplitudes alone in most columns, and the parts' exp, tanh and
+        cos cost most of the drift's share of an evaluation (the same bits)."""
+        key = e[list(DRIFT_SCALES)].tobytes()
+        kept = getattr(self._last, "entries", None)
+        if kept is None:
+            kept = self._last.entries = []
+        for entry in kept:
+            if entry[0] is t and entry[1] == key:
+                return entry[2]
+        parts = drift_parts(t, e)
+        kept.insert(0, (t, key, parts))
+        del kept[self.PARTS_KEPT:]
+        return parts
 
 
     #: share of the fit record the forms are fitted on when the start chooses among them;

@@ -58,6 +58,7 @@ from numba import njit
 
 __all__ = ["EXTENSIONS", "EXTENSION_PARAMS", "EXTENSION_INDEX", "POSITION_KNOTS", "POSITION_NAMES",
            "POSITION_FORM_NAMES", "DRIFT_NAMES", "DRIFT_CYCLE_NAMES", "DRIFT_RESET_NAMES",
+           "DRIFT_SCALES", "drift_parts",
            "extension_force", "pack_extensions",
            "acceleration_weight",
            "position_map", "position_change", "drift_change"]
@@ -228,29 +229,72 @@ def _position_m(x, e):
 
 
 @njit(cache=True, nogil=True)
+def _drift_scales(e, every):
+    """The drift's time scales in ``e``, for :func:`_drift_parts`, and whether its rise and
+    step are wanted: all with ``every``, else only where their amplitude is not 0 (the
+    scalar formula's work). Read once per record, as :func:`_drift_amps`."""
+    return (e[_T0], every or e[_K_SAT] != 0.0, e[_TAU_SAT], every or e[_K_STEP] != 0.0,
+            e[_T_STEP], e[_W_STEP], e[_P_CYC], e[_T_RST], e[_P_RST])
+
+
+@njit(cache=True, nogil=True)
+def _drift_parts(t, sc):
+    """The parts of the drift's d(t) at time ``t`` [s] that depend on its time scales ``sc``
+    (:func:`_drift_scales`) only, not on its amplitudes: the saturating change's rise, the
+    step's ``1 + tanh``, the periodic part's two harmonics and the resetting part's
+    phase."""
+    t0, want_sat, tau_sat, want_step, t_step, w_step, P_cyc, t_rst, P_rst = sc
+    s = t - t0
+    sat = 0.0
+    if want_sat and s > 0.0:
+        sat = 1.0 - math.exp(-s / tau_sat) if tau_sat > 0.0 else 1.0
+    step = 0.0
+    if want_step:
+        if w_step > 0.0:
+            step = 1.0 + math.tanh(0.5 * (t - t_step) / w_step)
+        elif t >= t_step:
+            step = 2.0
+    c1 = s1 = c2 = s2 = 0.0
+    if P_cyc > 0.0:
+        psi = _TWO_PI * s / P_cyc
+        c1, s1, c2, s2 = math.cos(psi), math.sin(psi), math.cos(2.0 * psi), math.sin(2.0 * psi)
+    u = 0.0
+    if P_rst > 0.0:
+        u = (t - t_rst) / P_rst
+        u -= math.floor(u)
+    return sat, step, c1, s1, c2, s2, u
+
+
+@njit(cache=True, nogil=True)
+def _drift_amps(e):
+    """The drift's amplitudes and switches in ``e``, for :func:`_drift_sum` (read once per
+    record: inside a loop over samples, reads of ``e`` made it 30 x slower)."""
+    return (e[_K_DRIFT], e[_T], e[_K_SAT], e[_K_STEP], e[_K_C1], e[_K_C1 + 1], e[_K_C1 + 2],
+            e[_K_C1 + 3], e[_P_CYC], e[_K_R1], e[_K_R2], e[_P_RST])
+
+
+@njit(cache=True, nogil=True)
+def _drift_sum(s, a, sat, step, c1, s1, c2, s2, u):
+    """d(t) [-] at ``s = t - t0`` [s] from the parts of :func:`_drift_parts` and the
+    amplitudes ``a`` of :func:`_drift_amps`."""
+    k_drift, T, k_sat, k_step, k_c1, k_s1, k_c2, k_s2, P_cyc, k_r1, k_r2, P_rst = a
+    d = k_drift * s / T
+    if k_sat != 0.0 and s > 0.0:
+        d += k_sat * sat
+    if k_step != 0.0:
+        d += k_step * 0.5 * step
+    if P_cyc > 0.0:  # periodic part, two harmonics
+        d += k_c1 * c1 + k_s1 * s1 + k_c2 * c2 + k_s2 * s2
+    if P_rst > 0.0:  # resetting part: builds up over each period from 0
+        d += (k_r1 + k_r2 * u) * u
+    return d
+
+
+@njit(cache=True, nogil=True)
 def _drift_m(t, e):
     """Relative level change d(t) [-] of the drift in the packed vector ``e``."""
-    s = t - e[_T0]
-    d = e[_K_DRIFT] * s / e[_T]
-    if e[_K_SAT] != 0.0 and s > 0.0:
-        if e[_TAU_SAT] > 0.0:
-            d += e[_K_SAT] * (1.0 - math.exp(-s / e[_TAU_SAT]))
-        else:
-            d += e[_K_SAT]
-    if e[_K_STEP] != 0.0:
-        if e[_W_STEP] > 0.0:
-            d += e[_K_STEP] * 0.5 * (1.0 + math.tanh(0.5 * (t - e[_T_STEP]) / e[_W_STEP]))
-        elif t >= e[_T_STEP]:
-            d += e[_K_STEP]
-    if e[_P_CYC] > 0.0:  # periodic part, two harmonics (k_c1, k_s1, k_c2, k_s2 in a row)
-        psi = _TWO_PI * s / e[_P_CYC]
-        d += (e[_K_C1] * math.cos(psi) + e[_K_C1 + 1] * math.sin(psi)
-              + e[_K_C1 + 2] * math.cos(2.0 * psi) + e[_K_C1 + 3] * math.sin(2.0 * psi))
-    if e[_P_RST] > 0.0:  # resetting part: builds up over each period from 0
-        u = (t - e[_T_RST]) / e[_P_RST]
-        u -= math.floor(u)
-        d += (e[_K_R1] + e[_K_R2] * u) * u
-    return d
+    sat, step, c1, s1, c2, s2, u = _drift_parts(t, _drift_scales(e, False))
+    return _drift_sum(t - e[_T0], _drift_amps(e), sat, step, c1, s1, c2, s2, u)
 
 
 @njit(cache=True, nogil=True)
@@ -264,8 +308,30 @@ def _position_vec(x, e):
 @njit(cache=True, nogil=True)
 def _drift_vec(t, e):
     out = np.empty(t.size)
+    a, sc = _drift_amps(e), _drift_scales(e, False)
     for i in range(t.size):
-        out[i] = _drift_m(t[i], e)
+        sat, step, c1, s1, c2, s2, u = _drift_parts(t[i], sc)
+        out[i] = _drift_sum(t[i] - sc[0], a, sat, step, c1, s1, c2, s2, u)
+    return out
+
+
+@njit(cache=True, nogil=True)
+def _drift_parts_vec(t, e):
+    out = np.empty((7, t.size))
+    sc = _drift_scales(e, True)
+    for i in range(t.size):
+        (out[0, i], out[1, i], out[2, i], out[3, i], out[4, i], out[5, i],
+         out[6, i]) = _drift_parts(t[i], sc)
+    return out
+
+
+@njit(cache=True, nogil=True)
+def _drift_sum_vec(t, e, parts):
+    out = np.empty(t.size)
+    a, t0 = _drift_amps(e), e[_T0]
+    for i in range(t.size):
+        out[i] = _drift_sum(t[i] - t0, a, parts[0, i], parts[1, i], parts[2, i], parts[3, i],
+                            parts[4, i], parts[5, i], parts[6, i])
     return out
 
 
@@ -277,11 +343,32 @@ def position_change(x, e) -> np.ndarray:
                          np.asarray(e, float))
 
 
-def drift_change(t, e) -> np.ndarray:
+def drift_change(t, e, parts=None) -> np.ndarray:
     """Relative level change ``d(t)`` [-] of the drift of the packed vector ``e``
-    (:func:`pack_extensions`) at times ``t`` [s]: the formula of :func:`extension_force`."""
-    return _drift_vec(np.ascontiguousarray(np.atleast_1d(t), dtype=float),
-                      np.asarray(e, float))
+    (:func:`pack_extensions`) at times ``t`` [s]: the formula of :func:`extension_force`.
+    ``parts``, the :func:`drift_parts` of the same times and time scales, spares their
+    transcendental functions (the same bits): a fit's Jacobian moves the amplitudes alone
+    in most of its columns."""
+    t = np.ascontiguousarray(np.atleast_1d(t), dtype=float)
+    e = np.asarray(e, float)
+    if parts is None:
+        return _drift_vec(t, e)
+    if parts.shape != (7, t.size):
+        raise ValueError(f"parts has shape {parts.shape}, expected (7, {t.size}) (drift_parts "
+                         f"of the same times)")
+    return _drift_sum_vec(t, e, parts)
+
+
+#: entries of the packed vector the drift's parts depend on (its time scales)
+DRIFT_SCALES = tuple(EXTENSION_INDEX[k] for k in
+                     ("t0", "tau_sat", "t_step", "w_step", "P_cyc", "P_rst", "t_rst"))
+
+
+def drift_parts(t, e) -> np.ndarray:
+    """The drift's parts that depend on its time scales only (:data:`DRIFT_SCALES`) at times
+    ``t`` [s], for :func:`drift_change`: a 7 x N array [-]."""
+    return _drift_parts_vec(np.ascontiguousarray(np.atleast_1d(t), dtype=float),
+                            np.asarray(e, float))
 
 
 def position_map(x, x_lo: float, x_hi: float, c, **form) -> np.ndarray:

@@ -196,6 +196,32 @@ def test_stroke_map_and_drift_forms_are_the_documented_formulas():
         pack_extensions({"drift": {"P_rst": 0.4, "t_rst": float("nan")}}, t0=0.5, T=2.0)
 
 
+
+def test_drift_parts_kept_for_new_amplitudes_give_the_same_bits():
+    # a fit's Jacobian moves the drift's amplitudes alone in most columns: the parts of its
+    # time scales, computed once, must give exactly the formula's d(t), whatever amplitude
+    # is 0 when they are computed; and a drift candidate's apply reuses them
+    from friction.extensions import drift_parts
+    rng = np.random.default_rng(7)
+    t = np.sort(rng.uniform(-1.0, 12.0, 2000))
+    for _ in range(50):
+        scales = {"tau_sat": rng.choice([0.0, rng.uniform(0.1, 5.0)]),
+                  "t_step": rng.uniform(0.0, 10.0),
+                  "w_step": rng.choice([0.0, rng.uniform(0.01, 1.0)]),
+                  "P_cyc": rng.choice([0.0, rng.uniform(1.0, 5.0)]),
+                  "P_rst": rng.choice([0.0, rng.uniform(1.0, 5.0)]),
+                  "t_rst": rng.uniform(0.0, 3.0)}
+        parts = drift_parts(t, pack_extensions({"drift": scales}, t0=0.3, T=10.0))
+        for _ in range(3):
+            amps = {k: rng.choice([0.0, rng.normal()]) for k in
+                    ("k_drift", "k_sat", "k_step", "k_c1", "k_s1", "k_c2", "k_s2",
+                     "k_r1", "k_r2")}
+            e = pack_extensions({"drift": {**scales, **amps}}, t0=0.3, T=10.0)
+            assert np.array_equal(drift_change(t, e, parts), drift_change(t, e))
+    with pytest.raises(ValueError, match=r"parts has shape \(7, 2000\), expected \(7, 5\)"):
+        drift_change(t[:5], e, parts)
+
+
 def test_acceleration_level_part_is_even_in_a_and_starts_at_its_onset():
     # F (1 + f_e max(|a| - a_e, 0)) beside the odd part: braking raises the level as
     # accelerating does; a negative onset is refused by name

@@ -21,16 +21,16 @@ derived name                        what it is
 
 How to add an effect
 --------------------
-1. Write its candidate: a subclass of :class:`diagnosis.candidates.Candidate` (import it from
-   :mod:`diagnosis.candidates`, never from this module, which imports yours) with
+1. Write its candidate in a module of its own, ``diagnosis/effects_<name>.py``: a subclass of
+   :class:`diagnosis.candidates.Candidate` (import it from :mod:`diagnosis.candidates`, never
+   from this module, which imports yours) with
    ``extras(ctx)`` (its parameters: name, start, box from the fit data's scales, unit),
    ``apply(F, p, data, ctx)`` (its formula on the base law's force) or ``modify_law`` (a law
    of the friction package with more free parameters), and where needed ``force_extras``,
    ``start``, ``practical``, ``applicable``, ``held_out_reason``, ``specialise``,
    ``own_law_names``, ``inside`` (a relative level the force level applies inside a classic
    LuGre's bristle dynamics: ``stribeck_shape`` and ``load`` specialise to such forms
-   there). It may live in its own module, e.g. ``diagnosis/effects_backlash.py``,
-   with its truth forms.
+   there). Its truth forms may live beside it (``diagnosis/effects_backlash.py``).
 2. Write its truth forms for the benchmark: functions ``truth(kin, s) -> F`` [N] (``kin`` a
    :class:`diagnosis.benchmark.PlantKinematics`: the plant's ``t, x, v, a, load`` and its
    ``base`` law; ``s`` an amplitude factor the benchmark calibrates to the requested
@@ -83,12 +83,18 @@ from typing import Callable, Mapping, Union
 from friction.extensions import EXTENSIONS, POSITION_NAMES
 
 # the candidate builders, and what the rest of the package has always imported from here
-from .candidates import (Acceleration, Asymmetry, AsymmetryTwins, Candidate,  # noqa: F401
-                         Context, Delay, Drift, Extra, Inertia, Load, Position, Presliding,
-                         StribeckShape, make_context, MAX_FILTER_SAMPLES)
-# candidates in modules of their own, with their truth forms
-from .effects_backlash import Backlash  # noqa: E402
-from .effects_gms import GMSCandidate  # noqa: E402
+from .candidates import (Asymmetry, AsymmetryTwins, Candidate, Context, Extra,  # noqa: F401
+                         MAX_FILTER_SAMPLES, Presliding, make_context)
+# candidates in modules of their own (backlash's and gms's with their truth forms)
+from .effects_acceleration import Acceleration
+from .effects_backlash import Backlash
+from .effects_delay import Delay
+from .effects_drift import Drift
+from .effects_gms import GMSCandidate
+from .effects_inertia import Inertia
+from .effects_load import Load
+from .effects_position import Position
+from .effects_stribeck import StribeckShape
 
 __all__ = ["Effect", "EFFECTS", "EFFECT_NAMES", "CANDIDATES", "FORCE_EFFECTS", "FMU_EFFECTS",
            "LEVELS", "INPUTS", "EXPECTED_FAMILIES", "EXPECTED_EVIDENCE", "PLANT_ENTRIES", "Candidate",

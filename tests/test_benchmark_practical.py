@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from diagnosis.benchmark.scoring import practical_size, truth_shift
-from diagnosis.candidates import Delay
+from diagnosis.effects_delay import Delay
 
 
 def _record(n=2000, dt=1e-3):

@@ -1,11 +1,11 @@
-"""The inertia candidate's coupled part (:func:`diagnosis.candidates.coupled_part`) against
+"""The inertia candidate's coupled part (:func:`diagnosis.effects_inertia.coupled_part`) against
 a fine reference integration and its analytic limits, and the candidate's fit of a part
 whose coupling slips."""
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from diagnosis.candidates import coupled_part
+from diagnosis.effects_inertia import coupled_part
 
 
 def _reference(t, v, tau, g_up, g_dn):

@@ -426,7 +426,7 @@ def test_acceleration_start_keeps_its_level_part_only_where_the_odd_part_falls_s
 
 
 def test_slip_memory_follows_its_signal_over_the_travel_not_the_time():
-    from diagnosis.candidates import slip_memory
+    from diagnosis.effects_acceleration import slip_memory
     x = np.r_[np.linspace(0.0, 0.01, 101), np.full(100, 0.01), np.linspace(0.01, 0.02, 101)]
     u = np.r_[np.zeros(101), np.ones(201)]  # the load steps while the slide stands
     m = slip_memory(u, x, 0.002)
@@ -446,7 +446,8 @@ def test_load_start_keeps_its_memory_only_where_the_load_acts_over_a_travel():
     # junctions renewed by sliding: the levels follow the load over a slip distance of a
     # tenth of the stroke; the instantaneous slopes cannot follow it, the memory is kept.
     # A load that acts at once: the memory is pinned off
-    from diagnosis.candidates import Fixed, slip_memory
+    from diagnosis.candidates import Fixed
+    from diagnosis.effects_acceleration import slip_memory
     from diagnosis.effects import CANDIDATES, make_context
     from friction.dataset import Dataset
     base = make_case("clean", 1.0, 0.0, n=6000)
@@ -542,7 +543,7 @@ def test_acceleration_level_odd_in_a_draws_a_pitching_carriage():
 
 
 def test_delay_reads_a_force_sensors_own_dynamics():
-    from diagnosis.candidates import Delay, sensed, unsensed
+    from diagnosis.effects_delay import Delay, sensed, unsensed
     from diagnosis.effects import make_context
     F = 50.0 * np.sin(np.linspace(0.0, 20.0, 3000)) + 30.0
     # the reading's inverse is exact, for a leak (-1), a partial leak and a creep (> 0)
@@ -583,7 +584,8 @@ def test_delay_start_leaves_a_lead_to_the_shift():
     # (wrong `delay` names at 13-220 / T, g -0.1 to -0.5); the start keeps no leak faster
     # than Delay.MAX_LEAK_RATE / T, and a fast one has no practical size of its own
     from diagnosis.effects import make_context
-    from diagnosis.candidates import Delay, Fixed
+    from diagnosis.candidates import Fixed
+    from diagnosis.effects_delay import Delay
     data = make_case("clean", 1.0, 0.0, n=6000)
     ctx = make_context(data)
     d = Delay("delay", "", "shift")
@@ -639,7 +641,7 @@ def test_resonant_transducer_reading_against_an_integrator():
     # scipy's adaptive integrator on the force's linear interpolation (another method than
     # the first-order-hold discretisation), and its analytic limits
     from scipy.integrate import solve_ivp
-    from diagnosis.candidates import resonant, unresonant
+    from diagnosis.effects_delay import resonant, unresonant
     dt, fn, zeta = 1e-3, 40.0, 0.1
     period = 1.0 / fn
     t = np.arange(0.0, 1.0, dt)
@@ -676,7 +678,7 @@ def test_resonant_transducer_reading_against_an_integrator():
 
 
 def test_a_transducer_resonance_has_practical_size_by_its_lag_or_its_ringing():
-    from diagnosis.candidates import Delay
+    from diagnosis.effects_delay import Delay
     from diagnosis.effects import make_context
     data = make_case("clean", 1.0, 0.0, n=3000)
     ctx = make_context(data)

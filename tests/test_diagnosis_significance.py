@@ -194,7 +194,8 @@ def test_stribeck_shape_candidate_frees_the_exponent_of_a_lorentzian_base():
     # at the force level the speed map bends the lorentzian curve (StribeckMap)
     assert eff["stribeck_shape"]["excess_closed"] > 0.7  # (was -1e-7)
     # the family form (the trajectory level's and the FMUs') finds the exponent
-    from diagnosis.candidates import StribeckShape, make_context
+    from diagnosis.candidates import make_context
+    from diagnosis.effects_stribeck import StribeckShape
     from diagnosis.composite import fit_composite
     fit, _ = data.split(0.7)
     ctx = make_context(fit)

@@ -1,12 +1,13 @@
 """Friction levels scaled inside the LuGre bristle dynamics (``LuGre.simulate_level``) and the
-``stribeck_shape`` speed map that uses them (:class:`diagnosis.candidates.StribeckMap`):
+``stribeck_shape`` speed map that uses them (:class:`diagnosis.effects_stribeck.StribeckMap`):
 analytic limits, an independent reference integrator, bad input, and a fit that reaches a
 Stribeck drop outside the Gaussian-alpha/Lorentzian family."""
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from diagnosis.candidates import (StribeckMap, StribeckShape, make_context, speed_map)
+from diagnosis.candidates import make_context
+from diagnosis.effects_stribeck import StribeckMap, StribeckShape, speed_map
 from diagnosis.composite import fit_composite
 from diagnosis.effects import CANDIDATES
 from friction import make_model
@@ -150,7 +151,7 @@ def test_speed_map_reaches_a_stribeck_curve_the_family_cannot():
 
 # -- load and drift inside the bristle dynamics ------------------------------------------------
 def test_load_specialises_to_its_inside_form_on_a_classic_lugre_only():
-    from diagnosis.candidates import LoadInside
+    from diagnosis.effects_load import LoadInside
     law = _law()
     assert isinstance(CANDIDATES["load"].specialise(law), LoadInside)
     backlash = make_model("backlash_lugre")
@@ -172,7 +173,7 @@ def _load_record(law, inside):
 
 
 def test_load_inside_reaches_levels_that_act_through_the_bristle():
-    from diagnosis.candidates import Load
+    from diagnosis.effects_load import Load
     law = _law()
     data = _load_record(law, inside=True)
     fit, held = data.split(0.7)

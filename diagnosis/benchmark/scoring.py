@@ -136,7 +136,7 @@ def truth_shift(t: np.ndarray, Fb: np.ndarray, F: np.ndarray,
     leads, as when the motion channels are late): the oracle's size of a ``delay`` truth,
     whatever mechanism made it (a transport delay, a filter's group delay, a hold, an
     encoder's latency), in the unit of the delay candidate's practical-size rule
-    (:attr:`diagnosis.candidates.Delay.MIN_SAMPLES`).
+    (:attr:`diagnosis.effects_delay.Delay.MIN_SAMPLES`).
 
     Least squares over shifts of -``most`` to ``most`` samples of the cubic spline through
     ``Fb``: a grid of tenths of a sample, refined by a bounded scalar search. With ``left``,
@@ -184,13 +184,13 @@ def practical_size(case_effect: str, info: dict) -> str:
     """Why the truth of a case is below its effect's practical size, so that the issue's
     rule forbids naming it ('' when it is not): a ``delay`` truth whose shift
     (:func:`truth_shift`, ``info["truth_shift"]``) is below the candidate's
-    :attr:`~diagnosis.candidates.Delay.MIN_SAMPLES` ("a shift smaller than a sample is not
+    :attr:`~diagnosis.effects_delay.Delay.MIN_SAMPLES` ("a shift smaller than a sample is not
     a delay"), where that shift draws the truth (it leaves at most :data:`SHIFT_EXPLAINS`
     of its departure from the base, ``info["shift_left"]``; a truth no shift draws, a
     sensor's leak, is judged by its size alone). Such a case is not counted among the
     detectable ones: no verdict may name it.
     """
-    from ..candidates import Delay
+    from ..effects_delay import Delay
     shift = info.get("truth_shift")
     left = info.get("shift_left", 0.0)
     if case_effect == "delay" and shift is not None and abs(shift) < Delay.MIN_SAMPLES \

@@ -499,7 +499,7 @@ def freewheel_flywheel_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
 # -- delay -----------------------------------------------------------------------------------
 #: longest window of ``running_median`` [samples]: a delay of 25 samples, the candidate's
-#: reach (:attr:`diagnosis.candidates.Delay.MAX_SAMPLES`; the open forms stop at
+#: reach (:attr:`diagnosis.effects_delay.Delay.MAX_SAMPLES`; the open forms stop at
 #: :data:`.truths.MAX_DELAY_SAMPLES`, 20, but a median, which cuts the reversals' peaks
 #: that a shift keeps, needs a delay of 22 samples for the full size on the valve's 20 kHz
 #: record)

@@ -1,0 +1,117 @@
+"""The ``stribeck_shape`` candidate: the Stribeck curve's shape freed (:class:`StribeckShape`)
+or a map of the friction level over the speed's decades (:class:`StribeckMap`,
+:func:`speed_map`)."""
+from __future__ import annotations
+
+import numpy as np
+
+from .candidates import Candidate, Extra
+
+__all__ = ["StribeckShape", "StribeckMap", "speed_map"]
+
+
+class StribeckShape(Candidate):
+    """The law's Stribeck curve in another shape of its family: a free exponent ``alpha``
+    (Gaussian) or the other shape (Lorentzian).
+
+    Its reach ends there: a rational drop, a hydrodynamic rise bending as sqrt(|v|), a
+    stiction spike or a lift-off kink lie outside the family (grid: 2 of 74). Tried in
+    session 9 and not kept: a speed map on the law's output, ``F (1 + m(|v|))`` with ``m``
+    piecewise linear in log |v| on 8 knots over two decades below the top speed, beside
+    these variants. It named 7 of 45 detectable Stribeck cases (was 0), most refused for
+    significance (z 1.6-2.9): the map acts on the output, the truths' curves inside the
+    bristle dynamics (the XML-350's gap lies in its presliding transitions). On a classic
+    LuGre the force level now puts the map there (:class:`StribeckMap`, :meth:`specialise`);
+    this family stays the form of the trajectory level and the FMUs, and of the other
+    laws.
+    """
+
+    def applicable(self, law, fit, ctx):
+        if not hasattr(law.params, "shape") or not hasattr(law.params, "alpha"):
+            return False, f"{law.name} has no Stribeck-shape parameters"
+        return True, ""
+
+    def specialise(self, law):
+        # a classic LuGre carries a speed map inside its bristle dynamics
+        if type(law).__name__ == "LuGre" and hasattr(law, "simulate_level"):
+            return StribeckMap(self.name, self.description, self.stage, self.tags)
+        return self
+
+    def modify_law(self, law, base_names, ctx):
+        names = list(base_names)
+        with_alpha = names + ([] if "alpha" in names else ["alpha"])
+        if law.params.shape == "gaussian":
+            # a base that already fits its exponent (identify's default set) has only the
+            # other shape left to try
+            variants = [] if "alpha" in names else [(law, with_alpha)]
+            return variants + [(law.with_values(shape="lorentzian"), names)]
+        # the exponent acts on the gaussian form only: a lorentzian base gets the gaussian
+        # family with a free exponent, started at alpha = 1 (an exponential tail, closest
+        # to the lorentzian's heavy one) and at 2 (was: the gaussian at alpha = 2 only, so
+        # a lorentzian base could never change its Stribeck exponent)
+        return [(law.with_values(shape="gaussian", alpha=1.0), with_alpha),
+                (law.with_values(shape="gaussian", alpha=2.0), with_alpha)]
+
+
+def speed_map(speed, v_hi, knots, decades) -> np.ndarray:
+    """Relative level change ``m(|v|)`` [-] of :class:`StribeckMap`: piecewise linear in
+    ``log |v|`` through ``0, knots...`` at speeds spaced evenly in ``log |v|`` from
+    ``v_hi / 10^decades`` to ``v_hi``; 0 below, the last knot's value above.
+
+    Parameters
+    ----------
+    speed : ndarray
+        |v| [m/s].
+    v_hi : float
+        Top knot speed [m/s].
+    knots : sequence of float
+        Values at the inner knots [-].
+    decades : float
+        Span of the knots [decades of speed].
+    """
+    vals = np.concatenate([[0.0], np.asarray(knots, float)])
+    u = np.log10(np.maximum(speed, 1e-300) / v_hi) + decades
+    return np.interp(u, np.linspace(0.0, decades, vals.size), vals, left=0.0)
+
+
+class StribeckMap(StribeckShape):
+    """``stribeck_shape`` of a classic LuGre law at the force level: the base's curve bent
+    by a speed map *inside* the bristle dynamics - its levels (Stribeck curve and viscous
+    term) times ``1 + m(|v|)``, ``m`` piecewise linear in ``log |v|`` (:func:`speed_map`)
+    on :attr:`KNOTS` knots over :attr:`DECADES` decades below the fit record's top speed,
+    the lowest pinned at 0 (the breakaway stays the law's ``Fs``). The law's curve
+    parameters (:attr:`CURVE`) keep the base's values; its bristle, damping, viscous and
+    offset parameters are re-identified with the map.
+
+    A rational or exponential drop, a hydrodynamic rise bending as sqrt(|v|), a
+    lift-off kink lie outside the Gaussian-alpha/Lorentzian family (session 9: the
+    family reached 2 of 74 grid cases). The same map on the law's *output* closed
+    0.3-0.6 of such truths with the base at its true values, inside 0.8-1.0 (valve,
+    damping rig, press): the curve acts through the bristle's steady deflection and
+    rate, so the map belongs there. The trajectory level and the FMUs keep the family
+    variants of :class:`StribeckShape` (:meth:`extras` is empty): the map's knots are
+    fitted on measured friction only (:meth:`force_extras`).
+    """
+    #: knots of the speed map (the lowest pinned at 0: the breakaway is the law's ``Fs``)
+    KNOTS = 9
+    #: span of the knots below the top speed [decades]
+    DECADES = 2.5
+    #: the law's curve parameters the map bends: kept at the base's values (freed with the
+    #: map they trade against it - on the damping rig the map ran to its bounds while the
+    #: law's Fc and vs moved the other way; started from the family's own fit instead, the
+    #: map closed less: 1 of 18 grid cases named where the base's values named 3)
+    CURVE = ("Fc", "Fs", "vs", "alpha", "Fc_neg", "Fs_neg", "vs_neg")
+
+    def modify_law(self, law, base_names, ctx):
+        return [(law, [n for n in base_names if n not in self.CURVE])]
+
+    def _names(self):
+        return [f"c_s{k}" for k in range(1, self.KNOTS)]
+
+    def force_extras(self, ctx):
+        return [Extra(n, 0.0, -0.9, 3.0, "1") for n in self._names()]
+
+    def inside(self, p, data, ctx):
+        knots = [p[n] for n in self._names()]
+        return np.clip(1.0 + speed_map(np.abs(data.v), ctx.sv, knots, self.DECADES),
+                       0.05, None)

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen20`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen21`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -256,6 +256,7 @@ _S17 = "diagnosis.benchmark.seen17:"
 _S18 = "diagnosis.benchmark.seen18:"
 _S19 = "diagnosis.benchmark.seen19:"
 _S20 = "diagnosis.benchmark.seen20:"
+_S21 = "diagnosis.benchmark.seen21:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -313,7 +314,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "aerostatic_tilt": _S17 + "aerostatic_tilt_truth",
                    "ball_train": _S18 + "ball_train_truth",
                    "current_ripple": _S19 + "current_ripple_truth",
-                   "rack_flank_sliding": _S20 + "rack_flank_sliding_truth"},
+                   "rack_flank_sliding": _S20 + "rack_flank_sliding_truth",
+                   "cone_sensor_brake": _S21 + "cone_sensor_brake_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -341,7 +343,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "preload_relief": _S17 + "preload_relief_truth",
                    "ploughing_onset": _S18 + "ploughing_onset_truth",
                    "viscoelastic_rolling": _S19 + "viscoelastic_rolling_truth",
-                   "heathcote_slip": _S20 + "heathcote_slip_truth"},
+                   "heathcote_slip": _S20 + "heathcote_slip_truth",
+                   "pin_in_bore": _S21 + "pin_in_bore_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -369,7 +372,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "felt_lubricator": _S17 + "felt_lubricator_truth",
                    "running_belt": _S18 + "running_belt_truth",
                    "leaning_brush": _S19 + "leaning_brush_truth",
-                   "sealing_band": _S20 + "sealing_band_truth"},
+                   "sealing_band": _S20 + "sealing_band_truth",
+                   "counterbalance_valve": _S21 + "counterbalance_valve_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -397,7 +401,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "core_loss_drag": _S17 + "core_loss_drag_truth",
                    "bellows_breathing": _S18 + "bellows_breathing_truth",
                    "eddy_brake": _S19 + "eddy_brake_truth",
-                   "shear_thinning_oil": _S20 + "shear_thinning_oil_truth"},
+                   "shear_thinning_oil": _S20 + "shear_thinning_oil_truth",
+                   "flying_pad": _S21 + "flying_pad_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -429,7 +434,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "heated_zone": _S17 + "heated_zone_truth",
                    "false_brinelling": _S18 + "false_brinelling_truth",
                    "rail_joint": _S19 + "rail_joint_truth",
-                   "rail_misalignment": _S20 + "rail_misalignment_truth"},
+                   "rail_misalignment": _S20 + "rail_misalignment_truth",
+                   "spool_flow_force": _S21 + "spool_flow_force_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -456,7 +462,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "screw_stiffness": _S17 + "screw_stiffness_truth",
                    "feedforward_lead": _S18 + "feedforward_lead_truth",
                    "abbe_pitch": _S19 + "abbe_pitch_truth",
-                   "friction_damped_mount": _S20 + "friction_damped_mount_truth"},
+                   "friction_damped_mount": _S20 + "friction_damped_mount_truth",
+                   "spring_surge": _S21 + "spring_surge_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -487,7 +494,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "alpha_beta_tracker": _S17 + "alpha_beta_tracker_truth",
                    "transducer_resonance": _S18 + "transducer_resonance_truth",
                    "gauge_snubber": _S19 + "gauge_snubber_truth",
-                   "magnetostrictive_wire": _S20 + "magnetostrictive_wire_truth"},
+                   "magnetostrictive_wire": _S20 + "magnetostrictive_wire_truth",
+                   "magnetoelastic_cell": _S21 + "magnetoelastic_cell_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -516,7 +524,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "cage_creep": _S17 + "cage_creep_truth",
                    "screw_loosening": _S18 + "screw_loosening_truth",
                    "film_dewetting": _S19 + "film_dewetting_truth",
-                   "grease_channelling": _S20 + "grease_channelling_truth"},
+                   "grease_channelling": _S20 + "grease_channelling_truth",
+                   "receiver_pressure": _S21 + "receiver_pressure_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -543,7 +552,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "mesh_stiffness": _S17 + "mesh_stiffness_truth",
                    "polymer_gear": _S18 + "polymer_gear_truth",
                    "grease_packed_gap": _S19 + "grease_packed_gap_truth",
-                   "wedge_flank": _S20 + "wedge_flank_truth"},
+                   "wedge_flank": _S20 + "wedge_flank_truth",
+                   "overlapped_servo": _S21 + "overlapped_servo_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -570,7 +580,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "junction_growth": _S17 + "junction_growth_truth",
                    "slip_avalanches": _S18 + "slip_avalanches_truth",
                    "slip_weakening": _S19 + "slip_weakening_truth",
-                   "microslip_bar": _S20 + "microslip_bar_truth"},
+                   "microslip_bar": _S20 + "microslip_bar_truth",
+                   "contact_renewal": _S21 + "contact_renewal_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

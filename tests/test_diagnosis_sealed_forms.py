@@ -1,10 +1,10 @@
-"""The twenty-first sealed truth family (diagnosis.benchmark.sealed, written in session 25 by
+"""The twenty-second sealed truth family (diagnosis.benchmark.sealed, written in session 26 by
 another hand, sealed: not run): each form builds a finite case of the requested size on every
 plant it applies to, is the base law at s = 0, grows with its amplitude factor and refuses
 the plants it does not apply to. No diagnosis is run on these forms: the family stays unseen
 until the end of a piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS`
-names it as its ``sealed`` form (the twentieth family, sealed before it, is
-:mod:`diagnosis.benchmark.seen20` since its run)."""
+names it as its ``sealed`` form (the twenty-first family, sealed before it, is
+:mod:`diagnosis.benchmark.seen21` since its run)."""
 import dataclasses
 import importlib
 
@@ -21,11 +21,11 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "cone_sensor_brake", "load": "pin_in_bore",
-        "asymmetry": "counterbalance_valve", "stribeck_shape": "flying_pad",
-        "position": "spool_flow_force", "inertia": "spring_surge",
-        "delay": "magnetoelastic_cell", "drift": "receiver_pressure",
-        "backlash": "overlapped_servo", "gms": "contact_renewal"}
+FORM = {"acceleration": "inertia_valve_damper", "load": "ball_spin",
+        "asymmetry": "elliptic_vibration", "stribeck_shape": "wiping_meniscus",
+        "position": "crank_transmission", "inertia": "rolling_payload",
+        "delay": "quartz_counter", "drift": "spall_growth",
+        "backlash": "side_loaded_pin", "gms": "grease_yield"}
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
@@ -41,8 +41,8 @@ _FORM_MODULES = ("diagnosis.benchmark.truths", "diagnosis.benchmark.forms",
                  "diagnosis.benchmark.seen15", "diagnosis.benchmark.seen16",
                  "diagnosis.benchmark.seen17", "diagnosis.benchmark.seen18",
                  "diagnosis.benchmark.seen19", "diagnosis.benchmark.seen20",
-                 "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
-                 "diagnosis.effects_gms")
+                 "diagnosis.benchmark.seen21", "diagnosis.benchmark.sealed",
+                 "diagnosis.effects_backlash", "diagnosis.effects_gms")
 
 
 def test_the_family_has_one_new_form_per_effect():
@@ -64,9 +64,9 @@ def test_the_family_has_one_new_form_per_effect():
         assert not names & set(vars(mod)), name
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
-    assert doc.startswith("The twenty-first sealed truth family")
-    assert "sealed: not run" in doc and "2026-11-30 (session 25)" in doc
-    assert "session 24's other, was run once and is :mod:`.seen20`" in doc
+    assert doc.startswith("The twenty-second sealed truth family")
+    assert "sealed: not run" in doc and "2026-11-30 (session 26)" in doc
+    assert "session 25's, was run once and is :mod:`.seen21`" in doc
 
 
 def test_registered_forms_resolve():
@@ -107,20 +107,20 @@ def test_sealed_forms_reach_their_size_on_two_plants(plant):
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        family.flying_pad_truth(iso, 1.0)
+        family.wiping_meniscus_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.contact_renewal_truth(iso, 1.0)
+        family.grease_yield_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.overlapped_servo_truth(iso, 1.0)
+        family.side_loaded_pin_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
     # a one-way stroke (the press's) never comes back over the positions the fit part saw
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        family.spool_flow_force_truth.__wrapped__(one_way, 1.0)
-    # a load that never changes cannot show the contact arc's growth with the load
+        family.crank_transmission_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes cannot show the drag's growth with the load
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        family.pin_in_bore_truth.__wrapped__(still, 1.0)
+        family.ball_spin_truth.__wrapped__(still, 1.0)
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
@@ -136,180 +136,153 @@ def _triangle(plant="valve", n=4001, v=0.01):
                            kin.base, kin.seed_law, "triangle", step=FINE)
 
 
-def test_the_relay_switches_on_above_one_level_and_off_below_a_lower_one():
-    u = np.array([0.0, 0.5, 0.7, 0.5, 0.4, 0.2, 0.5, 0.65])
-    assert np.array_equal(family._relay(u, 0.6, 0.3, 0.0), [0, 0, 1, 1, 1, 0, 0, 1])
-    assert np.array_equal(family._relay(u[3:5], 0.6, 0.3, 1.0), [1, 1])   # held from before
-
-
-def test_the_cone_sensor_sets_its_shoe_only_while_the_acceleration_is_high():
+def test_the_poppet_moves_only_past_its_preload_and_the_damper_drags_then():
+    h, n = 1e-3, 20001
+    below = family._poppet(np.full(n, 0.3), h, 0.5, 10.0, 0.7)
+    assert np.all(below == 0.0)
+    above = family._poppet(np.full(n, 2.0), h, 0.5, 10.0, 0.7)
+    assert np.isclose(above[-1], 1.5, rtol=1e-3)                       # beyond the preload
+    assert np.allclose(family._poppet(-np.full(n, 2.0), h, 0.5, 10.0, 0.7), -above)
     kin = _triangle()
-    F = family.cone_sensor_brake_truth.__wrapped__(kin, 1.0)
-    F0 = family.cone_sensor_brake_truth.__wrapped__(kin, 0.0)
+    F = family.inertia_valve_damper_truth.__wrapped__(kin, 1.0)
+    F0 = family.inertia_valve_damper_truth.__wrapped__(kin, 0.0)
     Fc = float(kin.base.params.Fc)
-    d = F - F0
-    assert np.all(np.isfinite(F)) and np.all(d * kin.v >= -1e-12 * Fc)  # a drag
-    steady = (kin.t > 0.05) & (kin.t < 0.15)                           # no acceleration
-    assert np.max(np.abs(d[steady])) < 1e-6 * Fc
-    # braking into the reversal and speeding up out of it: the shoe is set
-    turn = (kin.t > 0.19) & (kin.t < 0.21)
-    assert np.max(np.abs(d[turn])) > 0.5 * family.CONE_DRAG * Fc
+    steady = (kin.t > 0.1) & (kin.t < 0.19)                            # the valve open again
+    assert np.max(np.abs(F[steady] - F0[steady])) < 1e-6 * Fc
+    assert np.all((F - F0) * kin.v >= -1e-12 * Fc)                     # a drag
+    assert np.max(np.abs(F - F0)) > 0.01 * Fc
 
 
-def test_the_pins_contact_arc_widens_with_the_load_and_its_friction_grows_faster():
-    assert np.isclose(family._contact_arc(np.array([1.0]), 1.0)[0], np.pi / 2)
-    f = family._arc_factor(np.array([0.0, 1e-3, 0.1, np.pi / 2, np.pi - 1e-9]))
-    assert f[0] == 1.0 and np.isclose(f[1], 1.0) and np.isclose(f[2], 1.0 + 0.01 / 10.0,
-                                                                 rtol=1e-4)
-    assert np.isclose(f[3], 4.0 / np.pi) and np.isclose(f[4], 2.0, rtol=1e-6)
-    # continuous where the series takes over
-    assert np.isclose(family._arc_factor(np.array([0.0100001]))[0],
-                      family._arc_factor(np.array([0.0099999]))[0], rtol=1e-7)
+def test_the_spin_drag_grows_faster_than_the_load_to_the_4_3():
+    d = family._spin_drag(np.array([0.5, 1.0, -1.0, 0.0]), 1.0)
+    assert np.isclose(d[1], 1.0) and d[2] == d[1] and d[3] == 0.0
+    assert d[1] / d[0] > 2.0 ** (4.0 / 3.0)                            # the angle opens
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
-    F = family.pin_in_bore_truth.__wrapped__(fk, 1.0)
-    F0 = family.pin_in_bore_truth.__wrapped__(fk, 0.0)
+    F = family.ball_spin_truth.__wrapped__(fk, 1.0)
+    F0 = family.ball_spin_truth.__wrapped__(fk, 0.0)
     assert np.all(np.isfinite(F)) and np.max(np.abs(F - F0)) > 0.0
 
 
-def test_the_valve_resists_inward_at_its_setting_until_the_pilot_has_built_up():
-    v = np.array([1.0, -1.0, -1.0, -0.5])
-    r = family._valve_resistance(v, np.array([0.0, 0.0, 1.0, 1.0]), 1.0, 1.5, 0.15, 0.5, 1e-6)
-    assert np.isclose(r[0], 0.15)                                      # the check's cracking
-    assert np.isclose(r[1], -1.5 * 2.5) and np.isclose(r[2], -1.5)     # pilot: 2.5 x lower
-    assert np.isclose(r[3], -1.25)                                     # the override
-    kin = _triangle()
-    d = family.counterbalance_valve_truth.__wrapped__(kin, 1.0) - \
-        family.counterbalance_valve_truth.__wrapped__(kin, 0.0)
-    hold = family.VALVE_HOLD * float(kin.base.params.Fc)
-    up = (kin.t > 0.1) & (kin.t < 0.19)
-    assert np.allclose(d[up], family.VALVE_CHECK * hold, rtol=1e-6)
-    # moving in: the piloted holding resistance with its override, more just after the turn
-    down = (kin.t > 0.3) & (kin.t < 0.35)
-    assert np.allclose(d[down], -hold * (1.0 + family.VALVE_OVERRIDE), rtol=1e-3)
-    # just after the turn (slow, the pilot not yet up) more than at full speed later
-    early = (kin.t > 0.2) & (kin.t < 0.2003)
-    assert d[early].min() < -1.02 * (1.0 + family.VALVE_OVERRIDE) * hold
-
-
-def test_the_pad_takes_off_at_one_speed_and_lands_at_a_lower_one():
-    t = np.linspace(0.0, 2.0, 2001)
-    v = 0.01 * np.sin(np.pi * t / 2.0)                                 # up to 0.01, back to 0
-    kin = _triangle()
-    kin = PlantKinematics(kin.plant, t, np.cumsum(v) * 1e-3, v, np.gradient(v, t),
-                          np.full(t.size, 100.0), kin.base, kin.seed_law, "arch", step=FINE)
-    lift = family._relay(np.abs(v) / 0.01, family.PAD_TAKEOFF, family.PAD_TOUCHDOWN, 0.0)
-    rising, falling = (t < 1.0) & (np.abs(v) > 0.3e-2) & (np.abs(v) < 0.45e-2), \
-        (t > 1.0) & (np.abs(v) > 0.3e-2) & (np.abs(v) < 0.45e-2)
-    assert np.all(lift[rising] == 0.0) and np.all(lift[falling] == 1.0)
-    F = family.flying_pad_truth.__wrapped__(kin, 1.0)
-    F0 = family.flying_pad_truth.__wrapped__(kin, 0.0)
-    # at the same speeds: the base's levels speeding up, relieved slowing down
-    assert np.all(np.isfinite(F))
-    i, j = np.flatnonzero(rising)[-1], np.flatnonzero(falling)[0]
-    assert abs(F[i] - F0[i]) < 1e-3 * abs(F0[i])
-    assert F[j] < F0[j] - 0.5 * family.PAD_SHARE * float(kin.base.g(np.array([v[j]]))[0])
-
-
-def test_the_flow_force_centres_the_spool_past_its_overlap():
-    c = family._jet_cosine(np.array([0.0, 1e6]), 1.0)
-    assert np.isclose(c[0], np.cos(np.radians(21.0))) and np.isclose(c[1], np.cos(np.radians(
-        69.0)), rtol=1e-4)
+def test_the_vibrated_way_drives_the_carriage_one_way_below_its_speed():
+    u = np.array([-2.0, -0.5, 0.0, 0.5, 2.0])
+    f = family._vibrated_friction(u, 0.8, 60.0)
+    assert f[0] == -1.0 and f[4] == 1.0                                # above it: none
+    assert abs(f[2]) > 0.05                                            # pushes at rest
+    assert not np.isclose(f[3], -f[1], rtol=0.05)                      # uneven
+    assert np.allclose(family._vibrated_friction(u, 0.0, 60.0)[1:4],
+                       [-1.0 / 3.0, 0.0, 1.0 / 3.0], atol=2e-3)        # no swing: even
     kin = plant_kinematics("valve", quick=True)
-    fk = fine_kinematics(kin)
-    d = family.spool_flow_force_truth.__wrapped__(fk, 1.0) - \
-        family.spool_flow_force_truth.__wrapped__(fk, 0.0)
-    from diagnosis.benchmark.truths import _bump_centre
-    x0 = _bump_centre(fk)
-    stroke = float(np.ptp(fk.x))
-    e = fk.x - x0
-    inside = np.abs(e) < (family.FLOW_LAP - 4 * family.FLOW_ROUND) * stroke
-    outside = np.abs(e) > (family.FLOW_LAP + 4 * family.FLOW_ROUND) * stroke
-    Fc = float(kin.base.params.Fc)
-    assert inside.any() and outside.any()
-    assert np.max(np.abs(d[inside])) < 1e-2 * family.FLOW_PUSH * Fc
-    assert np.all(d[outside] * e[outside] > 0.0)                       # towards the null
-    # a force of the position alone: the same at the same position both ways
-    k = np.argsort(fk.x)
-    assert np.all(np.diff(d[k]) >= -1e-9 * Fc)
+    d = family.elliptic_vibration_truth(kin, 1.0) - base_force(kin)
+    assert np.all(np.isfinite(d)) and np.max(np.abs(d)) > 0.0
+    fast = np.abs(kin.v) > 2.0 * family.VIB_SPEED * kin.scales["v99"]
+    assert np.max(np.abs(d[fast])) < 1e-6 * float(kin.base.params.Fc)
 
 
-def test_the_springs_coils_carry_a_third_of_its_mass_and_ring_after_a_step():
-    m_s, w1, h = 3.0, 10.0, 1e-3
-    a = np.concatenate([np.zeros(100), np.full(20000, 2.0)])
-    out = family._surge_force(a, h, 4, m_s, w1, 0.05, 8)
-    assert np.isclose(out[-1], m_s * 2.0 / 3.0, rtol=1e-3)            # Rayleigh's third
-    assert out[:100].max() == 0.0
-    assert out[100:1000].max() > 1.05 * m_s * 2.0 / 3.0                # ringing
+def test_the_meniscus_drag_grows_as_the_speed_to_the_2_3():
+    u = np.array([0.1, 0.8, 1.0, -1.0, 0.0])
+    d = family._meniscus_drag(u, 1e-5)
+    assert np.isclose(d[2], 1.0) and d[3] == -d[2] and d[4] == 0.0
+    assert np.isclose(d[1] / d[0], 4.0, rtol=2e-3)                     # 8^(2/3)
+    kin = plant_kinematics("valve", quick=True)
+    d = family.wiping_meniscus_truth(kin, 1.0) - base_force(kin)
+    assert np.all(np.isfinite(d)) and np.all(d * kin.v >= 0.0)
+    assert np.max(np.abs(d)) > 0.0
+
+
+def test_the_crank_passes_less_travel_per_angle_towards_its_dead_centres():
+    r = 1.0
+    x = np.array([-0.9, -0.5, 0.0, 0.5, 0.9])
+    lever = family._crank_lever(x, r, 0.3)
+    assert lever[0] < lever[1] < lever[2] and lever[4] < lever[3] < lever[2]
+    assert not np.isclose(lever[0], lever[4], rtol=1e-2)               # the rod's obliquity
+    assert 0.9 < lever[2] < 1.1                                        # about r per radian
+    kin = plant_kinematics("valve", quick=True)
+    d = family.crank_transmission_truth(kin, 1.0) - base_force(kin)
+    assert np.all(np.isfinite(d)) and np.all(d * kin.v >= 0.0) and np.max(np.abs(d)) > 0.0
+
+
+def test_the_rolling_payload_is_whole_when_slow_and_a_third_when_fast():
+    h, n, w = 1e-4, 400001, 2.0 * np.pi
+    slow = family._rolling_force(np.full(n, 1.0), h, w, 0.15)
+    assert np.isclose(slow[-1], 1.0, rtol=1e-3)                        # the whole mass
+    t = h * np.arange(n)
+    fast = family._rolling_force(np.sin(2.0 * np.pi * 30.0 * t), h, w, 0.15)
+    assert np.isclose(np.max(np.abs(fast[n // 2:])), 1.0 / 3.0, rtol=0.03)
     kin = plant_kinematics("xml350", quick=True)
-    d = family.spring_surge_truth(kin, 1.0) - base_force(kin)
+    d = family.rolling_payload_truth(kin, 1.0) - base_force(kin)
     assert np.all(np.isfinite(d)) and np.max(np.abs(d)) > 0.0
 
 
-def test_the_core_lags_a_ramp_by_a_third_of_its_diffusion_time():
-    w, taus = family._diffusion_modes(1.0, 2000)
-    assert np.isclose(w.sum(), 1.0, atol=1e-3) and np.isclose(np.sum(w * taus), 1.0 / 3.0)
-    t = np.linspace(0.0, 20.0, 200001)
-    y = family._diffused(t, t.copy(), 0.9, family.CELL_MODES)
-    assert np.isclose(t[-1] - y[-1], 0.3, rtol=2e-3)                   # tau / 3
-    assert np.allclose(family._diffused(t, np.full(t.size, 2.0), 0.9, 60), 2.0)
-    step = np.where(t < 1.0, 0.0, 1.0)
-    ys = family._diffused(t, step, 0.9, family.CELL_MODES)
-    assert np.all(np.diff(ys) >= -1e-12) and ys.max() <= 1.0 + 1e-9    # no overshoot
-    kin = plant_kinematics("xml350", quick=True)
-    d = family.magnetoelastic_cell_truth(kin, 1.0) - base_force(kin)
-    assert np.all(np.isfinite(d)) and np.max(np.abs(d)) > 0.0
-
-
-def test_the_receiver_drains_with_the_travel_and_refills_in_time():
-    t = np.linspace(0.0, 3.0, 3001)
-    p = family._receiver(t, np.ones(t.size), 1.0, 10.0)
-    assert p[0] == 1.0 and np.isclose(p[500], 0.5)                     # drained by the travel
-    k0 = int(np.argmax(p <= 0.0))
-    assert np.isclose(t[k0], 1.0, atol=2e-3)                           # the cut-in
-    assert np.isclose(p[k0 + 100], 0.9, atol=2e-2)                     # refilling at 10 - 1
-    still = family._receiver(t, np.zeros(t.size), 1.0, 10.0)
-    assert np.all(still == 1.0)                                        # no travel, no drain
-    kin = _triangle()
-    F = family.receiver_pressure_truth.__wrapped__(kin, 1.0)
-    F0 = family.receiver_pressure_truth.__wrapped__(kin, 0.0)
+def test_the_counter_reports_the_gate_mean_at_the_gates_end():
+    t = np.linspace(0.0, 1.0, 1001)
+    m = family._gate_mean(t, 2.0 * t, 0.1)
+    late = t >= 0.1
+    assert np.allclose(m[late], 2.0 * (t[late] - 0.05))                # half a gate late
+    assert m[0] == 0.0
+    fk = fine_kinematics(plant_kinematics("xml350", quick=True))
+    F0 = family.quartz_counter_truth.__wrapped__(fk, 0.0)
+    F = family.quartz_counter_truth.__wrapped__(fk, 1.0)
     assert np.all(np.isfinite(F)) and np.max(np.abs(F - F0)) > 0.0
+    # a steady force reads true: the conversion inverts the resonator's law
+    still = dataclasses.replace(fk, v=np.zeros_like(fk.v))
+    Fs = family.quartz_counter_truth.__wrapped__(still, 1.0)
+    Fs0 = family.quartz_counter_truth.__wrapped__(still, 0.0)
+    assert np.allclose(Fs, Fs0, atol=1e-9 * (np.max(np.abs(Fs0)) + 1.0))
 
 
-def test_the_overlapped_spool_takes_up_the_lead_at_a_rate():
-    h = 1e-4
-    t = h * np.arange(20001)
-    xd = 0.01 * t                                                      # a ramp from rest
-    v = family._overlapped_follower(xd, h, 1e-4, 50.0)
-    assert np.all(v[t < 0.0099] == 0.0)                                # within the overlap
-    assert np.isclose(v[-1], 0.01, rtol=1e-3)                          # following, lagged
+def test_the_spall_grows_ever_faster_with_the_overrollings():
+    n = np.linspace(0.0, 1.0, 101)
+    a = family._spall_area(n, 6.0)
+    assert a[0] == 1.0 and np.isclose(a[-1], 6.0)
+    assert np.all(np.diff(a) > 0.0) and np.all(np.diff(a, 2) > 0.0)    # accelerating
+    kin = _triangle()
+    F = family.spall_growth_truth.__wrapped__(kin, 1.0)
+    F0 = family.spall_growth_truth.__wrapped__(kin, 0.0)
+    Fc = float(kin.base.params.Fc)
+    end = (kin.t > 0.37) & (kin.t < 0.39)
+    rise = np.abs(F[end]) - np.abs(F0[end])
+    assert np.all(rise > 0.0) and np.all(rise <= family.SPALL_RISE * 1.05 * float(
+        kin.base.params.Fs))
+    assert np.max(np.abs(F[kin.t < 0.01] - F0[kin.t < 0.01])) < 0.05 * Fc
+
+
+def test_the_pin_takes_up_the_play_later_the_wider_and_the_lighter_it_is(monkeypatch):
     kin = _triangle()
     Fc = float(kin.base.params.Fc)
-    turn = []
-    for s in (0.0, 1.0, 2.0):
-        F = family.overlapped_servo_truth.__wrapped__(kin, s)
+
+    def turn(s):
+        F = family.side_loaded_pin_truth.__wrapped__(kin, s)
         assert np.all(np.isfinite(F))
         after = np.flatnonzero((kin.t > 0.2) & (F < -0.9 * Fc))
-        turn.append(kin.t[after[0]])
-    assert turn[0] < turn[1] < turn[2]
+        return kin.t[after[0]]
+    times = [turn(s) for s in (0.0, 1.0, 2.0)]
+    assert times[0] < times[1] < times[2]
+    monkeypatch.setattr(family, "PIN_WEIGHT", 0.5 * family.PIN_WEIGHT)
+    assert turn(2.0) > times[2]                                        # rolls further
 
 
-def test_the_rolling_contacts_are_renewed_within_their_width():
-    assert family._renewal_share(0.0) == 0.0 and np.isclose(family._renewal_share(1.0), 1.0)
-    assert np.isclose(family._renewal_share(0.5), 0.5)
-    x = np.concatenate([np.linspace(0.0, 2.0, 20001), np.linspace(2.0, 0.0, 20001)[1:]])
-    f = family._renewed(x, 1.0)
-    assert f[0] == 0.0 and np.isclose(f[5000], family._renewal_share(0.5))
-    assert np.allclose(f[10000:20001], 1.0)                            # renewed
-    assert np.isclose(f[20000 + 5000], 0.0, atol=1e-3)                 # half way back: 0
-    assert np.allclose(f[30000:], -1.0)                                # and renewed again
-    # a short stroke back is forgotten once the contact has rolled its width on
-    y = np.concatenate([np.linspace(0.0, 2.0, 2001), np.linspace(2.0, 1.8, 201)[1:],
-                        np.linspace(1.8, 3.0, 1201)[1:]])
-    g = family._renewed(y, 1.0)
-    assert np.isclose(g[2200], 1.0 - 2.0 * family._renewal_share(0.2), rtol=1e-3)
-    assert np.isclose(g[-1], 1.0)
+def test_the_grease_holds_below_its_yield_and_flows_as_a_power_above_it():
+    path, y, n_index = 1e-4, 0.7, 0.5
+    t = np.linspace(0.0, 2.0, 20001)
+    v = np.where(t < 1.0, 1.0, 0.0)
+    u = family._grease_layer(t, v, path, 1.0, y, n_index)
+    assert np.isclose(u[9999], 1.0, rtol=1e-3)                         # steady at v_top
+    rest = u[10001:]
+    assert np.all(rest >= y - 1e-9) and np.all(np.diff(rest) <= 1e-12)  # flows off to y
+    v2 = np.where(t < 1.0, 0.25, 0.0)
+    u2 = family._grease_layer(t, v2, path, 1.0, y, n_index)
+    assert np.isclose(u2[9999], y + (1.0 - y) * 0.25 ** n_index, rtol=1e-3)
+    # a small stroke below the yield is elastic: back to where it started
+    x = np.concatenate([np.linspace(0, 0.3 * path, 1001), np.linspace(0.3 * path, 0, 1001)[1:]])
+    tt = np.linspace(0.0, 1.0, x.size)
+    g = family._grease_layer(tt, np.gradient(x, tt), path, 1.0, y, n_index)
+    assert np.isclose(np.max(g), 0.3, rtol=1e-2) and abs(g[-1]) < 1e-2
+    # and a stress below the yield, held at rest, stays: no creep
+    x = np.concatenate([np.linspace(0, 0.3 * path, 1001), np.full(1000, 0.3 * path)])
+    g = family._grease_layer(tt, np.gradient(x, tt), path, 1.0, y, n_index)
+    assert np.ptp(g[1010:]) < 1e-9 and np.isclose(g[-1], 0.3, rtol=1e-2)
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.contact_renewal_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.grease_yield_truth(kin, 1.0)))
 
 
 @pytest.mark.slow

@@ -46,7 +46,18 @@ class Delay(Candidate):
     (valve 4, press 4, isolator 3, damping rig 2), the fitted natural period within 1 % of
     the truth's on the valve and the isolator; the XML-350's 4 stay unnamed (2 with fitted
     periods of 3.4-3.6 samples, under :attr:`PERIOD_SAMPLES`' four, 2 where the start
-    keeps none). On a uniform random 272 cases of the open grid no verdict changed. The trajectory level and the FMU blocks keep the shift (a sensor's dynamics
+    keeps none). On a uniform random 272 cases of the open grid no verdict changed.
+
+    At the force level the shift may also change along the stroke: ``delay + delay_x u``
+    with ``u`` the position over the fit record's stroke (:meth:`shift`), freed only where
+    the start finds it draws clearly more than any constant shift (:meth:`_start_along`).
+    A position sensor that reads late by its signal's time of flight (a magnetostrictive
+    waveguide, the twentieth family's ``magnetostrictive_wire``: up to 35 samples at the
+    far end on the valve) lags by a time that grows with the distance from its head; the
+    constant shift named 1 of those 20 cases (``position`` and ``inertia`` took 8), with
+    the change along the stroke 17.
+
+    The trajectory level and the FMU blocks keep the constant shift (a sensor's dynamics
     act on the reading, not on the plant).
     """
     MAX_SAMPLES = 25
@@ -86,8 +97,11 @@ class Delay(Candidate):
 
     def force_extras(self, ctx):
         # the sensor's dynamics start on the data (:meth:`start`): at a zero gain the
-        # residual is flat in the rate, at a zero period in the damping
+        # residual is flat in the rate, at a zero period in the damping; so does the
+        # shift's change along the stroke (from end to end: at most the shift's whole box)
+        d = 2.0 * self.MAX_SAMPLES * ctx.dt
         return self.extras(ctx) + [
+            Extra("delay_x", 0.0, -d, d, "s"),
             Extra("sensor_rate", 0.0, 0.0, self._max_rate(ctx), "1/s"),
             Extra("sensor_gain", 0.0, -1.0, 1.0, "1"),
             Extra("sensor_period", 0.0, 0.0, self.PERIOD_SAMPLES[1] * ctx.dt, "s"),
@@ -105,10 +119,22 @@ class Delay(Candidate):
     PERIOD_SAMPLES = (4.0, 400.0)
     ZETA = (0.02, 1.0)
 
+    def shift(self, p, data, ctx):
+        """The force channel's lag behind the motion channels [s] at each sample of
+        ``data``: ``delay + delay_x u``, ``u = (x - x_mid) / (x_hi - x_lo)`` the position
+        over the fit record's stroke [-] (a scalar where the shift is the same along it,
+        or the record has no position)."""
+        k = p.get("delay_x", 0.0)
+        if k == 0.0 or data.x is None or not ctx.x_hi > ctx.x_lo:
+            return p["delay"]
+        u = (np.asarray(data.x, float) - 0.5 * (ctx.x_lo + ctx.x_hi)) / (ctx.x_hi - ctx.x_lo)
+        return p["delay"] + k * u
+
     def apply(self, F, p, data, ctx):
-        # the force channel lags (delay > 0) the motion channels; the sensor's own dynamics:
-        # its first-order leak or creep, then the transducer's resonance
-        out = np.interp(data.t - p["delay"], data.t, F)
+        # the force channel lags (delay > 0) the motion channels, by a time that may change
+        # along the stroke; the sensor's own dynamics: its first-order leak or creep, then
+        # the transducer's resonance
+        out = np.interp(data.t - self.shift(p, data, ctx), data.t, F)
         out = sensed(out, data.dt, p.get("sensor_rate", 0.0), p.get("sensor_gain", 0.0))
         return resonant(out, data.dt, p.get("sensor_period", 0.0), p.get("sensor_zeta", 0.5))
 
@@ -124,6 +150,42 @@ class Delay(Candidate):
     #: damping ratios the start tries for the transducer's resonance [-]
     ZETA_GRID = (0.05, 0.1, 0.2, 0.4, 0.7, 1.0)
 
+    #: share of the squared residual the best constant shift leaves below which the shift
+    #: may change along the stroke [-] (else ``delay_x`` stays 0, :class:`Fixed`), and the
+    #: changes the start tries, in samples over the stroke [-]
+    ALONG_GAIN = 0.9
+    ALONG_SAMPLES = (0.5, 1.0, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0, 25.0, 35.0, 50.0)
+
+    def _start_along(self, fit, Fm, sub, ctx) -> dict:
+        """Whether the force's shift against the motion changes along the stroke: the
+        base's force ``Fm`` [N] shifted by ``delay + delay_x u`` (:meth:`shift`), both on
+        grids, against the measured force on the rows ``sub``; the best pair where it
+        leaves less than :attr:`ALONG_GAIN` of what the best constant shift leaves, else
+        ``delay_x`` pinned at 0. A position sensor that reads late by the time its signal
+        travels (a magnetostrictive waveguide's strain pulse, the seen20 family's
+        ``magnetostrictive_wire``) lags by a time that grows with the distance from its
+        head."""
+        if fit.x is None or not ctx.x_hi > ctx.x_lo:
+            return {"delay_x": Fixed(0.0)}
+        t = np.asarray(fit.t, float)
+        ts, Fs = t[sub], np.asarray(fit.F, float)[sub]
+        u = (np.asarray(fit.x, float)[sub] - 0.5 * (ctx.x_lo + ctx.x_hi)) / (ctx.x_hi - ctx.x_lo)
+        shifts = np.linspace(-1.0, 1.0, 4 * self.MAX_SAMPLES + 1) * self.MAX_SAMPLES * ctx.dt
+
+        def best(k):
+            # the constant part's best shift at the change k [s] over the stroke
+            out = (np.inf, 0.0)
+            for dl in shifts:
+                m = Fs - np.interp(ts - dl - k * u, t, Fm)
+                out = min(out, (float(m @ m), float(dl)))
+            return out
+        flat = best(0.0)
+        along = min((best(k) + (k,) for n in self.ALONG_SAMPLES
+                     for k in (n * ctx.dt, -n * ctx.dt)), key=lambda b: b[0])
+        if along[0] < self.ALONG_GAIN * flat[0]:
+            return {"delay": along[1], "delay_x": along[2]}
+        return {"delay_x": Fixed(0.0)}
+
     def start(self, fit, Ff, r, ctx, basis=None) -> dict:
         """The sensor's start from the base's fit residual ``r`` [N]: for each rate of
         :attr:`RATE_GRID`, the gain that best draws ``r`` with the lag of the base's force
@@ -134,7 +196,8 @@ class Delay(Candidate):
         grid's valve truth, the charge leak added to the fitted base alone raised the
         squared residual at every rate). The best pair is kept only where it leaves less
         than :attr:`SENSOR_GAIN` of the squared residual without it, else pinned off
-        (:class:`Fixed`). The shift is then gridded (:attr:`Extra.grid`)."""
+        (:class:`Fixed`). Whether the shift changes along the stroke is chosen likewise
+        (:meth:`_start_along`). The shift is then gridded (:attr:`Extra.grid`)."""
         sub = _subsample(fit.t.size)
         B = _basis_rows(basis, sub)
         Fm = np.asarray(fit.F, float) - r
@@ -177,13 +240,16 @@ class Delay(Candidate):
             out.update({"sensor_period": best_res[1], "sensor_zeta": best_res[2]})
         else:
             out.update({"sensor_period": Fixed(0.0), "sensor_zeta": Fixed(0.5)})
+        out.update(self._start_along(fit, Fm, sub, ctx))
         return out
 
     def practical(self, p, ctx) -> str:
         """Why the fitted shift and sensor dynamics are too small to name ('' when either
         is large enough)."""
         fitted = p["delay"] / ctx.dt
-        n = abs(fitted + ctx.v_lag)
+        # the largest shift along the stroke (at its ends, where it changes along it)
+        half = 0.5 * abs(p.get("delay_x", 0.0)) / ctx.dt
+        n = abs(fitted + ctx.v_lag) + half
         rate, g = p.get("sensor_rate", 0.0), p.get("sensor_gain", 0.0)
         # a fast leak is a lead and a scale (:attr:`MAX_LEAK_RATE`): not a sensor's own size
         moved = (0.0 if g < 0.0 and rate * ctx.T > self.MAX_LEAK_RATE
@@ -213,7 +279,8 @@ class Delay(Candidate):
                        f"makes" if period < self.PERIOD_SAMPLES[0] * ctx.dt else
                        f", with its transducer resonance's lag of {r_lag:.2f} samples and an "
                        f"overshoot of {100 * over:.1f} % (< {100 * self.MIN_SENSOR:g} %)")
-        return (f"its shift of {n:.2f} samples{lag} is below {self.MIN_SAMPLES:g} "
+        along = f" (largest along the stroke, {2 * half:.2f} from end to end)" if half else ""
+        return (f"its shift of {n:.2f} samples{along}{lag} is below {self.MIN_SAMPLES:g} "
                 f"samples, what sampling and differentiation alone make{sensor}")
 
     def undo(self, data, p, ctx):
@@ -221,7 +288,7 @@ class Delay(Candidate):
         ``p["delay"]`` (for a re-identification of the base law without them)."""
         F = unresonant(data.F, data.dt, p.get("sensor_period", 0.0), p.get("sensor_zeta", 0.5))
         F = unsensed(F, data.dt, p.get("sensor_rate", 0.0), p.get("sensor_gain", 0.0))
-        F = np.interp(data.t + p["delay"], data.t, F)
+        F = np.interp(data.t + self.shift(p, data, ctx), data.t, F)
         return Dataset(t=data.t, x=data.x, v=data.v, a=data.a, F=F, load=data.load,
                        name=data.name)
 

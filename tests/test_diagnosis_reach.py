@@ -1,5 +1,7 @@
 """Candidates reach forms their first version could not (issue 15: check every candidate for
 forms it cannot reach and fix the reach)."""
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -597,6 +599,65 @@ def test_delay_start_leaves_a_lead_to_the_shift():
     small = {"delay": 0.3 * ctx.dt - ctx.v_lag * ctx.dt}
     assert d.practical({**small, "sensor_rate": 50.0 / ctx.T, "sensor_gain": -0.4}, ctx)
     assert d.practical({**small, "sensor_rate": 50.0 / ctx.T, "sensor_gain": 0.4}, ctx) == ""
+
+
+
+def test_delay_start_frees_a_shift_that_changes_along_the_stroke():
+    # a position sensor that reads late by its signal's time of flight (a magnetostrictive
+    # waveguide): the force leads the motion by a time that grows along the stroke. The
+    # start frees delay_x only where a shift that changes along the stroke draws clearly
+    # more than any constant one (the seen20 family's magnetostrictive_wire: 1 of 20 named
+    # with the constant shift alone); a constant shift leaves it pinned at 0
+    from scipy.interpolate import CubicSpline
+    from diagnosis.effects import make_context
+    from diagnosis.candidates import Fixed
+    from diagnosis.effects_delay import Delay
+    data = make_case("clean", 1.0, 0.0, n=6000)
+    ctx = make_context(data)
+    d = Delay("delay", "", "shift")
+    F = np.asarray(data.F, float)
+    flat = np.interp(data.t + 2.0 * ctx.dt, data.t, F) - F
+    p = d.start(data, None, flat, ctx)
+    assert isinstance(p["delay_x"], Fixed) and p["delay_x"] == 0.0
+    # the truth by another interpolation (a cubic spline), 0 at the stroke's low end and
+    # 8 samples at its top: delay = -4, delay_x = -8 samples over the stroke
+    u = (np.asarray(data.x, float) - ctx.x_lo) / (ctx.x_hi - ctx.x_lo)
+    lead = CubicSpline(data.t, F)(np.clip(data.t + 8.0 * ctx.dt * u, None, data.t[-1]))
+    # measured: the leading force; the base's prediction: the force on time
+    p = d.start(dataclasses.replace(data, F=lead), None, lead - F, ctx)
+    assert not isinstance(p["delay_x"], Fixed)
+    assert p["delay_x"] / ctx.dt == pytest.approx(-8.0, abs=1.0)
+    assert p["delay"] / ctx.dt == pytest.approx(-4.0, abs=1.0)
+    # applied, the shift reproduces the truth within the interpolations' difference
+    got = d.apply(F, {"delay": -4.0 * ctx.dt, "delay_x": -8.0 * ctx.dt}, data, ctx)
+    assert np.sqrt(np.mean((got - lead) ** 2)) < 0.02 * np.std(F)
+    # its practical size is the largest shift along the stroke: 0.3 samples in the middle
+    # and 0.5 more at the ends is below a sample, 0.3 + 1.0 is not
+    base = {"delay": 0.3 * ctx.dt - ctx.v_lag * ctx.dt, "sensor_rate": 0.0,
+            "sensor_gain": 0.0}
+    why = d.practical({**base, "delay_x": 1.0 * ctx.dt}, ctx)
+    assert "0.80 samples (largest along the stroke, 1.00 from end to end)" in why
+    assert d.practical({**base, "delay_x": 2.0 * ctx.dt}, ctx) == ""
+
+
+def test_magnetostrictive_position_sensor_is_named_delay():
+    # the seen20 family's magnetostrictive position sensor on the valve (the motion
+    # channels late by up to 35 samples at the far end of the stroke): with the constant
+    # shift alone `position` took it; with the shift's change along the stroke, delay
+    # closes the whole excess
+    from diagnosis import diagnose
+    from diagnosis.benchmark.cases import make_plant_case
+    from diagnosis.benchmark.runner import MEASURED
+    case = make_plant_case("valve", "delay", 1.0, 0.01, seed=428402, quick=True,
+                           form="magnetostrictive_wire", measured=MEASURED[1])
+    rep = diagnose(case.data, case.base, seed=0, candidates=["delay", "inertia", "position"])
+    assert rep["verdict"]["cause"] == "delay"
+    assert rep["verdict"]["excess_closed"] > 0.9
+    dt = float(np.median(np.diff(case.data.t)))
+    fitted = rep["effect_details"]["delay"]["extras"]
+    # the force leads by a time that grows from the low end: the shift falls along x
+    assert fitted["delay_x"] / dt == pytest.approx(2.0 * fitted["delay"] / dt, rel=0.1)
+    assert fitted["delay_x"] / dt < -20.0
 
 
 def test_charge_amplifier_leak_is_named_delay():

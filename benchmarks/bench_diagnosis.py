@@ -86,6 +86,16 @@ drift 0.089. Before the 12-knot position map (a 4th-order Legendre series) posit
 before the acceleration part lagged as a whole (seed 000's "lag" form; the lag acted on the
 acceleration only) acceleration was 0.129; overall 0.082 with both.
 
+Session 26 (``--speed-only --repeats 5``, one BLAS thread, 2 forked processes): on cead57e
+(the drift's time-scale parts kept; 11:45 UTC, load 0.74-1.31) best 4.50 s, median 4.76 s (19.6 /
+18.8 x one base identification); on aa2e19d (the delay's shift along the stroke) best 4.66 s,
+median 4.82 s (21.8 / 21.6 x; base identification 0.21 / 0.22 s); on a6fc197 best 4.71 s,
+median 5.17 s (22.0 / 23.8 x). The delay candidate now closes 28 % of this asymmetry case's
+excess with a shift that changes along the stroke (the verdict stays asymmetry), and the
+greedy stacking then fits asymmetry + delay: about 0.8 s after the candidates' fits, where
+0.05 s was. The drift's fit still runs out its 60 trial points (its cost falls 0.2 % over
+49 Jacobians): the place for more margin.
+
 Session 25 (2026-11-30 09:05 UTC, load 0.95-1.34, one BLAS thread, ``--speed-only
 --repeats 5``): the candidate fits in 2 worker processes forked from the caller's
 (:func:`diagnosis.cluster.process_fits`, the default on Linux): best

@@ -253,7 +253,7 @@ def _drift_parts(t, sc):
         if w_step > 0.0:
             step = 1.0 + math.tanh(0.5 * (t - t_step) / w_step)
         elif t >= t_step:
-            step = 2.0
+            step = 2.0  # a sharp step: k 0.5 x 2 = k in _drift_sum
     c1 = s1 = c2 = s2 = 0.0
     if P_cyc > 0.0:
         psi = _TWO_PI * s / P_cyc

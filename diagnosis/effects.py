@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen21`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen22`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -257,6 +257,7 @@ _S18 = "diagnosis.benchmark.seen18:"
 _S19 = "diagnosis.benchmark.seen19:"
 _S20 = "diagnosis.benchmark.seen20:"
 _S21 = "diagnosis.benchmark.seen21:"
+_S22 = "diagnosis.benchmark.seen22:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -315,7 +316,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "ball_train": _S18 + "ball_train_truth",
                    "current_ripple": _S19 + "current_ripple_truth",
                    "rack_flank_sliding": _S20 + "rack_flank_sliding_truth",
-                   "cone_sensor_brake": _S21 + "cone_sensor_brake_truth"},
+                   "cone_sensor_brake": _S21 + "cone_sensor_brake_truth",
+                   "inertia_valve_damper": _S22 + "inertia_valve_damper_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -344,7 +346,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "ploughing_onset": _S18 + "ploughing_onset_truth",
                    "viscoelastic_rolling": _S19 + "viscoelastic_rolling_truth",
                    "heathcote_slip": _S20 + "heathcote_slip_truth",
-                   "pin_in_bore": _S21 + "pin_in_bore_truth"},
+                   "pin_in_bore": _S21 + "pin_in_bore_truth",
+                   "ball_spin": _S22 + "ball_spin_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -373,7 +376,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "running_belt": _S18 + "running_belt_truth",
                    "leaning_brush": _S19 + "leaning_brush_truth",
                    "sealing_band": _S20 + "sealing_band_truth",
-                   "counterbalance_valve": _S21 + "counterbalance_valve_truth"},
+                   "counterbalance_valve": _S21 + "counterbalance_valve_truth",
+                   "elliptic_vibration": _S22 + "elliptic_vibration_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -402,7 +406,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "bellows_breathing": _S18 + "bellows_breathing_truth",
                    "eddy_brake": _S19 + "eddy_brake_truth",
                    "shear_thinning_oil": _S20 + "shear_thinning_oil_truth",
-                   "flying_pad": _S21 + "flying_pad_truth"},
+                   "flying_pad": _S21 + "flying_pad_truth",
+                   "wiping_meniscus": _S22 + "wiping_meniscus_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -435,7 +440,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "false_brinelling": _S18 + "false_brinelling_truth",
                    "rail_joint": _S19 + "rail_joint_truth",
                    "rail_misalignment": _S20 + "rail_misalignment_truth",
-                   "spool_flow_force": _S21 + "spool_flow_force_truth"},
+                   "spool_flow_force": _S21 + "spool_flow_force_truth",
+                   "crank_transmission": _S22 + "crank_transmission_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -463,7 +469,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "feedforward_lead": _S18 + "feedforward_lead_truth",
                    "abbe_pitch": _S19 + "abbe_pitch_truth",
                    "friction_damped_mount": _S20 + "friction_damped_mount_truth",
-                   "spring_surge": _S21 + "spring_surge_truth"},
+                   "spring_surge": _S21 + "spring_surge_truth",
+                   "rolling_payload": _S22 + "rolling_payload_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -495,7 +502,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "transducer_resonance": _S18 + "transducer_resonance_truth",
                    "gauge_snubber": _S19 + "gauge_snubber_truth",
                    "magnetostrictive_wire": _S20 + "magnetostrictive_wire_truth",
-                   "magnetoelastic_cell": _S21 + "magnetoelastic_cell_truth"},
+                   "magnetoelastic_cell": _S21 + "magnetoelastic_cell_truth",
+                   "quartz_counter": _S22 + "quartz_counter_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -525,7 +533,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "screw_loosening": _S18 + "screw_loosening_truth",
                    "film_dewetting": _S19 + "film_dewetting_truth",
                    "grease_channelling": _S20 + "grease_channelling_truth",
-                   "receiver_pressure": _S21 + "receiver_pressure_truth"},
+                   "receiver_pressure": _S21 + "receiver_pressure_truth",
+                   "spall_growth": _S22 + "spall_growth_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -553,7 +562,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "polymer_gear": _S18 + "polymer_gear_truth",
                    "grease_packed_gap": _S19 + "grease_packed_gap_truth",
                    "wedge_flank": _S20 + "wedge_flank_truth",
-                   "overlapped_servo": _S21 + "overlapped_servo_truth"},
+                   "overlapped_servo": _S21 + "overlapped_servo_truth",
+                   "side_loaded_pin": _S22 + "side_loaded_pin_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -581,7 +591,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "slip_avalanches": _S18 + "slip_avalanches_truth",
                    "slip_weakening": _S19 + "slip_weakening_truth",
                    "microslip_bar": _S20 + "microslip_bar_truth",
-                   "contact_renewal": _S21 + "contact_renewal_truth"},
+                   "contact_renewal": _S21 + "contact_renewal_truth",
+                   "grease_yield": _S22 + "grease_yield_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

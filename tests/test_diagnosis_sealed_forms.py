@@ -1,10 +1,10 @@
-"""The twenty-second sealed truth family (diagnosis.benchmark.sealed, written in session 26 by
+"""The twenty-third sealed truth family (diagnosis.benchmark.sealed, written in session 27 by
 another hand, sealed: not run): each form builds a finite case of the requested size on every
 plant it applies to, is the base law at s = 0, grows with its amplitude factor and refuses
 the plants it does not apply to. No diagnosis is run on these forms: the family stays unseen
 until the end of a piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS`
-names it as its ``sealed`` form (the twenty-first family, sealed before it, is
-:mod:`diagnosis.benchmark.seen21` since its run)."""
+names it as its ``sealed`` form (the twenty-second family, sealed before it, is
+:mod:`diagnosis.benchmark.seen22` since its run)."""
 import dataclasses
 import importlib
 
@@ -21,11 +21,11 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "inertia_valve_damper", "load": "ball_spin",
-        "asymmetry": "elliptic_vibration", "stribeck_shape": "wiping_meniscus",
-        "position": "crank_transmission", "inertia": "rolling_payload",
-        "delay": "quartz_counter", "drift": "spall_growth",
-        "backlash": "side_loaded_pin", "gms": "grease_yield"}
+FORM = {"acceleration": "belt_creep", "load": "disc_spring_pad",
+        "asymmetry": "fluidic_diode", "stribeck_shape": "sommerfeld_journal",
+        "position": "drawer_overhang", "inertia": "rocking_block",
+        "delay": "swept_grating", "drift": "oil_evaporation",
+        "backlash": "toggle_spring", "gms": "superelastic_flexure"}
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
@@ -41,8 +41,9 @@ _FORM_MODULES = ("diagnosis.benchmark.truths", "diagnosis.benchmark.forms",
                  "diagnosis.benchmark.seen15", "diagnosis.benchmark.seen16",
                  "diagnosis.benchmark.seen17", "diagnosis.benchmark.seen18",
                  "diagnosis.benchmark.seen19", "diagnosis.benchmark.seen20",
-                 "diagnosis.benchmark.seen21", "diagnosis.benchmark.sealed",
-                 "diagnosis.effects_backlash", "diagnosis.effects_gms")
+                 "diagnosis.benchmark.seen21", "diagnosis.benchmark.seen22",
+                 "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
+                 "diagnosis.effects_gms")
 
 
 def test_the_family_has_one_new_form_per_effect():
@@ -64,9 +65,9 @@ def test_the_family_has_one_new_form_per_effect():
         assert not names & set(vars(mod)), name
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
-    assert doc.startswith("The twenty-second sealed truth family")
-    assert "sealed: not run" in doc and "2026-11-30 (session 26)" in doc
-    assert "session 25's, was run once and is :mod:`.seen21`" in doc
+    assert doc.startswith("The twenty-third sealed truth family")
+    assert "sealed: not run" in doc and "2026-11-30 (session 27)" in doc
+    assert "session 26's, was run once and is :mod:`.seen22`" in doc
 
 
 def test_registered_forms_resolve():
@@ -107,20 +108,20 @@ def test_sealed_forms_reach_their_size_on_two_plants(plant):
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        family.wiping_meniscus_truth(iso, 1.0)
+        family.sommerfeld_journal_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.grease_yield_truth(iso, 1.0)
+        family.superelastic_flexure_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.side_loaded_pin_truth(iso, 1.0)
+        family.toggle_spring_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
     # a one-way stroke (the press's) never comes back over the positions the fit part saw
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        family.crank_transmission_truth.__wrapped__(one_way, 1.0)
-    # a load that never changes cannot show the drag's growth with the load
+        family.drawer_overhang_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes does not move the disc spring along its characteristic
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        family.ball_spin_truth.__wrapped__(still, 1.0)
+        family.disc_spring_pad_truth.__wrapped__(still, 1.0)
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
@@ -136,153 +137,184 @@ def _triangle(plant="valve", n=4001, v=0.01):
                            kin.base, kin.seed_law, "triangle", step=FINE)
 
 
-def test_the_poppet_moves_only_past_its_preload_and_the_damper_drags_then():
-    h, n = 1e-3, 20001
-    below = family._poppet(np.full(n, 0.3), h, 0.5, 10.0, 0.7)
-    assert np.all(below == 0.0)
-    above = family._poppet(np.full(n, 2.0), h, 0.5, 10.0, 0.7)
-    assert np.isclose(above[-1], 1.5, rtol=1e-3)                       # beyond the preload
-    assert np.allclose(family._poppet(-np.full(n, 2.0), h, 0.5, 10.0, 0.7), -above)
+def test_the_belts_creep_drag_grows_as_the_square_of_the_drive_force():
+    q = np.array([-2.0, -1.0, 0.0, 0.5, 1.0, 2.0])
+    d = family._creep_loss(q)
+    assert np.allclose(d, q * q) and np.all(d >= 0.0)                  # even in the force
+    assert np.isclose(family._creep_loss(2.0 * q)[4], 4.0 * d[4])
     kin = _triangle()
-    F = family.inertia_valve_damper_truth.__wrapped__(kin, 1.0)
-    F0 = family.inertia_valve_damper_truth.__wrapped__(kin, 0.0)
+    F = family.belt_creep_truth.__wrapped__(kin, 1.0)
+    F0 = family.belt_creep_truth.__wrapped__(kin, 0.0)
     Fc = float(kin.base.params.Fc)
-    steady = (kin.t > 0.1) & (kin.t < 0.19)                            # the valve open again
-    assert np.max(np.abs(F[steady] - F0[steady])) < 1e-6 * Fc
-    assert np.all((F - F0) * kin.v >= -1e-12 * Fc)                     # a drag
-    assert np.max(np.abs(F - F0)) > 0.01 * Fc
+    assert np.all((F - F0) * kin.v >= -1e-12 * Fc) and np.max(np.abs(F - F0)) > 0.0  # a drag
+    # the reversal's deceleration carries the drive force far past the friction: more drag
+    turn = np.abs(kin.t - 0.2) < 0.004
+    steady = (kin.t > 0.1) & (kin.t < 0.19)
+    assert np.max(np.abs(F - F0)[steady]) > 0.0
+    assert np.max(np.abs(F - F0)[turn & (np.abs(kin.v) > 0.5e-2)]) > \
+        np.max(np.abs(F - F0)[steady])
 
 
-def test_the_spin_drag_grows_faster_than_the_load_to_the_4_3():
-    d = family._spin_drag(np.array([0.5, 1.0, -1.0, 0.0]), 1.0)
-    assert np.isclose(d[1], 1.0) and d[2] == d[1] and d[3] == 0.0
-    assert d[1] / d[0] > 2.0 ** (4.0 / 3.0)                            # the angle opens
+def test_the_disc_spring_rises_flattens_and_falls_past_its_top():
+    f = np.linspace(0.0, 2.8, 281)
+    P = family._disc_force(f, 2.0)
+    assert P[0] == 0.0 and np.isclose(np.max(P), 1.0, rtol=1e-3)
+    top = int(np.argmax(P))
+    assert 1.0 < f[top] < 1.4
+    assert np.all(np.diff(P[:top]) > 0.0) and np.all(np.diff(P[top + 5:]) < 0.0)
+    # the visited deflections run across the top: the pad's force is not monotone in the load
+    visited = family._disc_force(np.linspace(family.DISC_SET, family.DISC_SET
+                                             + family.DISC_SPAN, 101), family.DISC_HEIGHT)
+    assert np.argmax(visited) not in (0, 100)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
-    F = family.ball_spin_truth.__wrapped__(fk, 1.0)
-    F0 = family.ball_spin_truth.__wrapped__(fk, 0.0)
+    F = family.disc_spring_pad_truth.__wrapped__(fk, 1.0)
+    F0 = family.disc_spring_pad_truth.__wrapped__(fk, 0.0)
     assert np.all(np.isfinite(F)) and np.max(np.abs(F - F0)) > 0.0
 
 
-def test_the_vibrated_way_drives_the_carriage_one_way_below_its_speed():
-    u = np.array([-2.0, -0.5, 0.0, 0.5, 2.0])
-    f = family._vibrated_friction(u, 0.8, 60.0)
-    assert f[0] == -1.0 and f[4] == 1.0                                # above it: none
-    assert abs(f[2]) > 0.05                                            # pushes at rest
-    assert not np.isclose(f[3], -f[1], rtol=0.05)                      # uneven
-    assert np.allclose(family._vibrated_friction(u, 0.0, 60.0)[1:4],
-                       [-1.0 / 3.0, 0.0, 1.0 / 3.0], atol=2e-3)        # no swing: even
+def test_the_diode_is_even_at_low_speed_and_favours_one_way_at_speed():
+    u = np.array([-1.0, -0.01, 0.01, 1.0])
+    d = family._diode_drag(u, 0.3, 3.0, 0.3)
+    assert np.isclose(d[3], 1.0)
+    assert np.isclose(-d[1], d[2], rtol=0.05)                          # laminar: even
+    assert np.isclose(-d[0] / d[3], 0.3 + 0.7 * (1.0 + 2.0 / 1.3), rtol=1e-9)
+    ratio = [-family._diode_drag(-x, 0.3, 3.0, 0.3) / family._diode_drag(x, 0.3, 3.0, 0.3)
+             for x in (0.1, 0.3, 1.0, 3.0)]
+    assert np.all(np.diff(ratio) > 0.0)                                # grows with Re
     kin = plant_kinematics("valve", quick=True)
-    d = family.elliptic_vibration_truth(kin, 1.0) - base_force(kin)
-    assert np.all(np.isfinite(d)) and np.max(np.abs(d)) > 0.0
-    fast = np.abs(kin.v) > 2.0 * family.VIB_SPEED * kin.scales["v99"]
-    assert np.max(np.abs(d[fast])) < 1e-6 * float(kin.base.params.Fc)
-
-
-def test_the_meniscus_drag_grows_as_the_speed_to_the_2_3():
-    u = np.array([0.1, 0.8, 1.0, -1.0, 0.0])
-    d = family._meniscus_drag(u, 1e-5)
-    assert np.isclose(d[2], 1.0) and d[3] == -d[2] and d[4] == 0.0
-    assert np.isclose(d[1] / d[0], 4.0, rtol=2e-3)                     # 8^(2/3)
-    kin = plant_kinematics("valve", quick=True)
-    d = family.wiping_meniscus_truth(kin, 1.0) - base_force(kin)
-    assert np.all(np.isfinite(d)) and np.all(d * kin.v >= 0.0)
-    assert np.max(np.abs(d)) > 0.0
-
-
-def test_the_crank_passes_less_travel_per_angle_towards_its_dead_centres():
-    r = 1.0
-    x = np.array([-0.9, -0.5, 0.0, 0.5, 0.9])
-    lever = family._crank_lever(x, r, 0.3)
-    assert lever[0] < lever[1] < lever[2] and lever[4] < lever[3] < lever[2]
-    assert not np.isclose(lever[0], lever[4], rtol=1e-2)               # the rod's obliquity
-    assert 0.9 < lever[2] < 1.1                                        # about r per radian
-    kin = plant_kinematics("valve", quick=True)
-    d = family.crank_transmission_truth(kin, 1.0) - base_force(kin)
+    d = family.fluidic_diode_truth(kin, 1.0) - base_force(kin)
     assert np.all(np.isfinite(d)) and np.all(d * kin.v >= 0.0) and np.max(np.abs(d)) > 0.0
 
 
-def test_the_rolling_payload_is_whole_when_slow_and_a_third_when_fast():
-    h, n, w = 1e-4, 400001, 2.0 * np.pi
-    slow = family._rolling_force(np.full(n, 1.0), h, w, 0.15)
-    assert np.isclose(slow[-1], 1.0, rtol=1e-3)                        # the whole mass
+def test_the_journals_friction_dips_below_its_boundary_value_then_rises_as_petroff():
+    f = family._journal_friction(np.array([1e-9, 0.25, 1.0, 4.0, 8.0]), 0.25)
+    assert np.isclose(f[0], 1.0, atol=1e-3)                            # the shaft on its seat
+    assert np.isclose(f[1], 2.0 * np.sqrt(2.0) / 3.0, rtol=1e-3)       # least, e = 1 / sqrt 2
+    assert f[1] < f[0] < f[2] < f[3]
+    assert np.isclose(f[4] / f[3], 2.0, rtol=0.03)                     # Petroff: linear
+    e = family._journal_eccentricity(np.array([0.1, 1.0, 10.0, 100.0]))
+    assert np.all(np.diff(e) > 0.0) and 0.0 < e[0] and e[-1] < 1.0
+    kin = plant_kinematics("valve", quick=True)
+    d = family.sommerfeld_journal_truth(kin, 1.0) - base_force(kin)
+    assert np.all(np.isfinite(d)) and np.all(d * kin.v >= 0.0) and np.max(np.abs(d)) > 0.0
+
+
+def test_the_rams_reactions_grow_hyperbolically_as_it_runs_out():
+    e = np.array([0.0, 0.1, 0.4, 0.7, 0.9])
+    r = family._drawer_reactions(e)
+    assert r[0] == 1.0 and np.all(np.diff(r) > 0.0) and np.all(np.diff(r, 2) > 0.0)
+    assert np.isclose(r[4], 19.0)
+    kin = plant_kinematics("valve", quick=True)
+    d = family.drawer_overhang_truth(kin, 1.0) - base_force(kin)
+    assert np.all(np.isfinite(d)) and np.all(d * kin.v >= 0.0)
+    sc = kin.scales
+    moving = np.abs(kin.v) > 0.5 * sc["v99"]
+    out = moving & (kin.x > sc["x_lo"] + 0.8 * (sc["x_hi"] - sc["x_lo"]))
+    inn = moving & (kin.x < sc["x_lo"] + 0.2 * (sc["x_hi"] - sc["x_lo"]))
+    assert np.median(np.abs(d[out])) > 2.0 * np.median(np.abs(d[inn]))
+
+
+def test_the_block_stands_below_its_tipping_acceleration_and_rocks_above_it():
+    h, n, R, alpha = 1e-4, 100001, 0.05, 0.2
+    tip = 9.81 * np.tan(alpha)
+    slow = family._rocking_force(np.full(n, 0.8 * tip), h, R, alpha, 9.81, 0.1)
+    assert np.allclose(slow[1:], 0.8 * tip)                            # stands: whole mass
     t = h * np.arange(n)
-    fast = family._rolling_force(np.sin(2.0 * np.pi * 30.0 * t), h, w, 0.15)
-    assert np.isclose(np.max(np.abs(fast[n // 2:])), 1.0 / 3.0, rtol=0.03)
+    pulse = np.where(t < 0.05, 3.0 * tip, 0.0)
+    f = family._rocking_force(pulse, h, R, alpha, 9.81, 0.1)
+    rocking = (t > 0.01) & (t < 0.05)
+    assert np.all(np.abs(f[rocking]) < 3.0 * tip)                      # less than its mass
+    assert np.min(f[rocking]) < 0.9 * 3.0 * tip
+    assert np.allclose(f[-100:], 0.0, atol=1e-9 * tip)                 # landed, at rest
+    # mirrored accelerations rock it on the other edge
+    assert np.allclose(family._rocking_force(-pulse, h, R, alpha, 9.81, 0.1), -f)
     kin = plant_kinematics("xml350", quick=True)
-    d = family.rolling_payload_truth(kin, 1.0) - base_force(kin)
+    d = family.rocking_block_truth(kin, 1.0) - base_force(kin)
     assert np.all(np.isfinite(d)) and np.max(np.abs(d)) > 0.0
 
 
-def test_the_counter_reports_the_gate_mean_at_the_gates_end():
-    t = np.linspace(0.0, 1.0, 1001)
-    m = family._gate_mean(t, 2.0 * t, 0.1)
-    late = t >= 0.1
-    assert np.allclose(m[late], 2.0 * (t[late] - 0.05))                # half a gate late
-    assert m[0] == 0.0
+def test_the_sweep_samples_where_the_force_meets_it_and_holds_to_its_end():
+    t = np.linspace(0.0, 1.0, 10001)
+    F = t.copy()
+    out = family._sweep_readings(t, F, np.full(t.size, 0.5), 0.1)
+    assert np.all(out[t < 0.1] == 0.0)                                 # before the first report
+    for k in range(1, 9):
+        held = (t >= 0.1 * k + 1e-9) & (t < 0.1 * (k + 1) - 1e-9)
+        assert np.allclose(out[held], 0.1 * (k - 1) + 0.05, atol=2e-4)  # mid-sweep, a sweep on
+    # the force sets the sampling instant: later in the sweep, a later sample
+    late = family._sweep_readings(t, F, np.full(t.size, 0.9), 0.1)
+    held = (t >= 0.5 + 1e-9) & (t < 0.6 - 1e-9)
+    assert np.allclose(late[held] - out[held], 0.04, atol=2e-4)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
-    F0 = family.quartz_counter_truth.__wrapped__(fk, 0.0)
-    F = family.quartz_counter_truth.__wrapped__(fk, 1.0)
-    assert np.all(np.isfinite(F)) and np.max(np.abs(F - F0)) > 0.0
-    # a steady force reads true: the conversion inverts the resonator's law
+    F0 = family.swept_grating_truth.__wrapped__(fk, 0.0)
+    F1 = family.swept_grating_truth.__wrapped__(fk, 1.0)
+    assert np.all(np.isfinite(F1)) and np.max(np.abs(F1 - F0)) > 0.0
+    # a steady force reads true
     still = dataclasses.replace(fk, v=np.zeros_like(fk.v))
-    Fs = family.quartz_counter_truth.__wrapped__(still, 1.0)
-    Fs0 = family.quartz_counter_truth.__wrapped__(still, 0.0)
+    Fs = family.swept_grating_truth.__wrapped__(still, 1.0)
+    Fs0 = family.swept_grating_truth.__wrapped__(still, 0.0)
     assert np.allclose(Fs, Fs0, atol=1e-9 * (np.max(np.abs(Fs0)) + 1.0))
 
 
-def test_the_spall_grows_ever_faster_with_the_overrollings():
-    n = np.linspace(0.0, 1.0, 101)
-    a = family._spall_area(n, 6.0)
-    assert a[0] == 1.0 and np.isclose(a[-1], 6.0)
-    assert np.all(np.diff(a) > 0.0) and np.all(np.diff(a, 2) > 0.0)    # accelerating
+def test_the_film_evaporates_to_its_heavy_fraction_and_the_asperities_take_over_late():
+    tau = np.linspace(0.0, 1.0, 101)
+    h = family._film(tau, 0.25, 0.5)
+    assert h[0] == 1.0 and np.all(np.diff(h) < 0.0) and h[-1] > 0.25
+    assert np.isclose(family._film(50.0, 0.25, 0.5), 0.25)
+    share = family._asperity_share(3.0 * h)
+    assert np.all(np.diff(share) > 0.0)
+    assert share[50] - share[0] < 0.5 * (share[100] - share[0])       # a delayed onset
     kin = _triangle()
-    F = family.spall_growth_truth.__wrapped__(kin, 1.0)
-    F0 = family.spall_growth_truth.__wrapped__(kin, 0.0)
-    Fc = float(kin.base.params.Fc)
+    F = family.oil_evaporation_truth.__wrapped__(kin, 1.0)
+    F0 = family.oil_evaporation_truth.__wrapped__(kin, 0.0)
+    Fs = float(kin.base.params.Fs)
     end = (kin.t > 0.37) & (kin.t < 0.39)
     rise = np.abs(F[end]) - np.abs(F0[end])
-    assert np.all(rise > 0.0) and np.all(rise <= family.SPALL_RISE * 1.05 * float(
-        kin.base.params.Fs))
-    assert np.max(np.abs(F[kin.t < 0.01] - F0[kin.t < 0.01])) < 0.05 * Fc
+    assert np.all(rise > 0.0) and np.all(rise <= family.EVAP_RISE * 1.05 * Fs)
+    first = (kin.t > 0.05) & (kin.t < 0.1)
+    assert np.max(np.abs(F[first] - F0[first])) < 0.2 * np.min(rise)
 
 
-def test_the_pin_takes_up_the_play_later_the_wider_and_the_lighter_it_is(monkeypatch):
+def test_the_toggle_pushes_away_from_the_centre_and_turns_over_in_the_play():
+    half, push = 1e-3, 2.0
+    e = np.linspace(-2e-3, 2e-3, 401)
+    f = np.array([family._toggle_push(x, half, push, 1.0, 2.8) for x in e])
+    assert np.isclose(family._toggle_push(0.0, half, push, 1.0, 2.8), 0.0)
+    assert np.isclose(family._toggle_push(half, half, push, 1.0, 2.8), -push)
+    assert np.allclose(f, -f[::-1])                                   # odd
+    inside = np.abs(e) <= half
+    assert np.all(np.diff(f[inside]) < 0.0)                           # a negative stiffness
+    assert np.allclose(f[e > half], -push) and np.allclose(f[e < -half], push)
     kin = _triangle()
     Fc = float(kin.base.params.Fc)
+    F = family.toggle_spring_truth.__wrapped__(kin, 1.0)
+    assert np.all(np.isfinite(F))
+    # after the reversal (the drive going down), before the flank takes the contact up:
+    # first the toggle pulls it back after the drive, then, past the centre, pushes it
+    # towards the coming flank: the force turns over inside the play
+    after = kin.t > 0.2
+    taken = np.flatnonzero(after & (F < -0.9 * Fc))[0]
+    window = F[np.flatnonzero(after)[0]:taken]
+    low = np.flatnonzero(window < -0.5 * family.TOGGLE_PUSH * Fc)
+    assert low.size and np.max(window[low[0]:]) > 0.5 * family.TOGGLE_PUSH * Fc
 
-    def turn(s):
-        F = family.side_loaded_pin_truth.__wrapped__(kin, s)
-        assert np.all(np.isfinite(F))
-        after = np.flatnonzero((kin.t > 0.2) & (F < -0.9 * Fc))
-        return kin.t[after[0]]
-    times = [turn(s) for s in (0.0, 1.0, 2.0)]
-    assert times[0] < times[1] < times[2]
-    monkeypatch.setattr(family, "PIN_WEIGHT", 0.5 * family.PIN_WEIGHT)
-    assert turn(2.0) > times[2]                                        # rolls further
 
-
-def test_the_grease_holds_below_its_yield_and_flows_as_a_power_above_it():
-    path, y, n_index = 1e-4, 0.7, 0.5
-    t = np.linspace(0.0, 2.0, 20001)
-    v = np.where(t < 1.0, 1.0, 0.0)
-    u = family._grease_layer(t, v, path, 1.0, y, n_index)
-    assert np.isclose(u[9999], 1.0, rtol=1e-3)                         # steady at v_top
-    rest = u[10001:]
-    assert np.all(rest >= y - 1e-9) and np.all(np.diff(rest) <= 1e-12)  # flows off to y
-    v2 = np.where(t < 1.0, 0.25, 0.0)
-    u2 = family._grease_layer(t, v2, path, 1.0, y, n_index)
-    assert np.isclose(u2[9999], y + (1.0 - y) * 0.25 ** n_index, rtol=1e-3)
-    # a small stroke below the yield is elastic: back to where it started
-    x = np.concatenate([np.linspace(0, 0.3 * path, 1001), np.linspace(0.3 * path, 0, 1001)[1:]])
-    tt = np.linspace(0.0, 1.0, x.size)
-    g = family._grease_layer(tt, np.gradient(x, tt), path, 1.0, y, n_index)
-    assert np.isclose(np.max(g), 0.3, rtol=1e-2) and abs(g[-1]) < 1e-2
-    # and a stress below the yield, held at rest, stays: no creep
-    x = np.concatenate([np.linspace(0, 0.3 * path, 1001), np.full(1000, 0.3 * path)])
-    g = family._grease_layer(tt, np.gradient(x, tt), path, 1.0, y, n_index)
-    assert np.ptp(g[1010:]) < 1e-9 and np.isclose(g[-1], 0.3, rtol=1e-2)
+def test_the_flexure_loops_as_a_flag_and_returns_without_residual_deflection():
+    path = 1.0
+    D = np.concatenate([np.linspace(0.0, 1.0, 1001), np.linspace(1.0, 0.0, 1001)[1:]])
+    u = family._flag(D, path, 0.5, 0.2, 0.1, 1.0)
+    a = 0.5 / 1.1
+    assert np.isclose(u[500], 0.5, atol=1e-9)                          # elastic to the plateau
+    assert np.isclose(u[1000], 0.5 + 0.1 * a, atol=1e-9)               # on the forward one
+    assert np.isclose(u[1500], 0.2 + 0.1 * (0.3 / 1.1), atol=1e-9)     # on the reverse one
+    assert abs(u[-1]) < 1e-9                                           # no residual deflection
+    # the other way alike, and beyond the transformation the contact slips at 1
+    far = np.concatenate([np.linspace(0.0, -4.0, 2001), np.full(500, -4.0)])
+    g = family._flag(far, path, 0.5, 0.2, 0.1, 1.0)
+    assert np.isclose(np.min(g), -1.0) and np.ptp(g[-500:]) == 0.0     # held, no creep
+    assert np.allclose(family._flag(-D, path, 0.5, 0.2, 0.1, 1.0), -u)
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.grease_yield_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.superelastic_flexure_truth(kin, 1.0)))
 
 
 @pytest.mark.slow

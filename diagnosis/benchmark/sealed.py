@@ -1,12 +1,12 @@
-"""The twenty-second sealed truth family: one more mechanism per effect, kept out of all tuning.
+"""The twenty-third sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-11-30 (session 26) by another hand, once, without running the diagnosis on it;
+Written 2026-11-30 (session 27) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 25's, was run once and is :mod:`.seen21`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen21`
+sealed before it, session 26's, was run once and is :mod:`.seen22`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen22`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen21`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen22`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`, ``diagnosis.effects_<name>``), taken from the friction
 literature or from real machines, integrated along the plant's continuous motion on the grid
@@ -18,62 +18,63 @@ each effect's amplitude monotonically from the base law at ``s`` = 0 (its calibr
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``inertia_valve_damper``: a damper on the carriage whose bypass is
-                   closed by an inertia valve (a spring-centred poppet that moves once
-                   the acceleration, either way, passes its springs' preload): the
-                   damper's drag, saturated by its blow-off valve, acts only while the
-                   poppet is deflected, and the poppet follows the acceleration with its
-                   own second-order dynamics
-load               ``ball_spin``: the rolling elements of the guide run in angular
-                   contact and spin (pivot) in their contact ellipses: the spin moment
-                   ~ mu Q a, a ~ Q^(1/3), and the spin-to-roll ratio grows as the contact
-                   angle opens with the load: a drag growing faster than the load
-asymmetry          ``elliptic_vibration``: the way vibrates in an ellipse (an unbalance
-                   drive beside it, a vibratory feeder's trough): below the way's
-                   vibration speed the friction turns within each cycle, and with the
-                   normal force's phase lead the mean friction is lower one way than the
-                   other and pushes the carriage at rest (vibratory conveying); above
-                   it, none
-stribeck_shape     ``wiping_meniscus``: a wiper lip drawn over the wetted way drags a
-                   liquid meniscus whose film thickness and dissipation follow the
-                   capillary number (Landau-Levich-Derjaguin, Bretherton): a drag ~
-                   |v|^(2/3), steep at low speed and bending over above it
-position           ``crank_transmission``: the carriage is driven by a slider-crank; the
-                   crank bearings' dry friction torque reaches the carriage through the
-                   crank's transmission ratio, which falls towards the dead centres: a
-                   friction that rises towards both ends of the stroke, unevenly (the
-                   connecting rod's obliquity)
-inertia            ``rolling_payload``: a cylindrical payload rests in a cradle on the
-                   carriage and rolls in it without slipping: the whole mass at low
-                   frequencies, a third of it (the rolling constraint) above the
-                   cradle's rocking frequency, with the rocking mode between
-delay              ``quartz_counter``: the force is read by a quartz resonator whose
-                   frequency grows as the square root of 1 + F / F_b, counted over a gate
-                   time and converted back at the gate's end: the reading is the force
-                   whose frequency is the mean over the gate (a lag of half the gate, and
-                   the conversion's curvature)
-drift              ``spall_growth``: rolling-contact fatigue: a spall in a raceway grows
-                   with each overrolling at a rate that grows with its size (Paris-law
-                   growth), and the levels rise with the damaged area: a drift counted in
-                   overrollings that accelerates, not one that saturates
-backlash           ``side_loaded_pin``: drive and contact are joined by a pin in a
-                   clearance hole under a transverse load (its weight): after a reversal
-                   the pin rolls round its hole, the axial force it carries W tan(theta)
-                   growing without bound as it reaches the far side: a take-up of the
-                   play whose stiffness grows continuously up to the flank
-gms                ``grease_yield``: presliding of a grease layer, an elasto-viscoplastic
-                   material (Saramito): an elastic gel below its yield stress, which
-                   neither creeps nor relaxes, and a Herschel-Bulkley flow above it: the
-                   force after a reversal unloads elastically to the other yield, then
-                   grows with the speed as a power below one; at ``s`` = 0 the base
+acceleration       ``belt_creep``: the carriage is driven by a flat belt, which creeps
+                   elastically over its pulleys (Reynolds): the creep's loss is the
+                   transmitted force squared over the belt's stiffness, and the force
+                   the belt carries is the carriage's friction plus the inertial force of
+                   the driven mass: a drag that grows with the square of the drive force
+load               ``disc_spring_pad``: a drag pad is pressed on the way by a disc
+                   (Belleville) spring that the carriage's Hertzian approach under the
+                   load compresses further: the pad's force follows the disc spring's
+                   non-linear characteristic (Almen-Laszlo), rising and then falling
+                   with the load past the spring's flat top
+asymmetry          ``fluidic_diode``: a damper whose oil passes a valvular conduit
+                   (Tesla's fluidic diode, no moving part): laminar and even at low
+                   speed, and a resistance of the flow's inertia at speed whose
+                   diodicity grows with the Reynolds number: the drag differs between
+                   the directions only at speed
+stribeck_shape     ``sommerfeld_journal``: the carriage runs on track rollers turning
+                   on plain journal bearings: the journals' friction follows the
+                   Sommerfeld number through the shaft's eccentricity (the full
+                   Sommerfeld solution): a shallow dip from the boundary value at rest to
+                   its least at moderate speed, then Petroff's linear rise
+position           ``drawer_overhang``: the moving part is a ram that runs out of a
+                   fixed sleeve with a weight at its nose (a drawer, a quill): its two
+                   bearing reactions grow as the overhang grows and the engagement
+                   shrinks (the drawer effect), a friction that rises hyperbolically
+                   towards the extended end of the stroke
+inertia            ``rocking_block``: a free-standing block on the carriage rocks on its
+                   edges (Housner's rocking block) once the acceleration passes g times
+                   its width over its height: a missed mass while it stands, less while
+                   it rocks, with its impacts' energy loss when it lands
+delay              ``swept_grating``: the force is read by a fibre Bragg grating
+                   interrogated by a swept laser: each sweep finds the grating's
+                   wavelength at the time within the sweep set by the force itself, and
+                   the reading is held from the sweep's end: a force-dependent sampling
+                   instant and a hold
+drift              ``oil_evaporation``: the lubricant's volatile fraction evaporates
+                   from the thin film on the way (Noack volatility): the film thins
+                   towards the heavy fraction's and the asperities' share of the load
+                   (the Gaussian tail of the film parameter) rises with a delayed
+                   onset
+backlash           ``toggle_spring``: drive and contact are joined across the play by an
+                   over-centre (toggle) spring: a negative stiffness that holds the
+                   contact at the flank it last touched and, past the centre, pushes it
+                   towards the other: after a reversal the force the contact feels turns
+                   over before the flank arrives
+gms                ``superelastic_flexure``: part of the contact is carried through a
+                   superelastic (NiTi) flexure: elastic, then a stress-induced
+                   martensitic transformation on a plateau, and on unloading the reverse
+                   transformation on a lower plateau back to no residual strain: a
+                   flag-shaped presliding loop (Auricchio); at ``s`` = 0 the base
                    itself
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``wiping_meniscus`` needs a
-Stribeck curve (not the isolator's mre_lugre), ``crank_transmission`` a record that revisits
-its positions (not the press), ``ball_spin`` a load that changes, ``side_loaded_pin`` and
-``grease_yield`` a classic LuGre base (valve, damping rig, XML-350); each raises a
-``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
+Where a form applies: as its effect's record (``truth_applies``); ``sommerfeld_journal``
+needs a Stribeck curve (not the isolator's mre_lugre), ``drawer_overhang`` a record that
+revisits its positions (not the press), ``disc_spring_pad`` a load that changes,
+``toggle_spring`` and ``superelastic_flexure`` a classic LuGre base (valve, damping rig,
+XML-350); each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
 
@@ -81,6 +82,7 @@ import math
 
 import numpy as np
 from numba import njit
+from scipy.special import erfc
 
 from friction.shapes import SHAPES
 
@@ -89,71 +91,57 @@ from .truths import (_base_parts, _bump_centre, _contact_constants, _level,
                      _light_contact_step, _lugre_params, _motion_time, _presliding_path,
                      _substeps, has_stribeck_curve, level_inside, on_fine_grid)
 
-__all__ = ["FORMS", "inertia_valve_damper_truth", "ball_spin_truth", "elliptic_vibration_truth",
-           "wiping_meniscus_truth", "crank_transmission_truth", "rolling_payload_truth",
-           "quartz_counter_truth", "spall_growth_truth", "side_loaded_pin_truth",
-           "grease_yield_truth"]
+__all__ = ["FORMS", "belt_creep_truth", "disc_spring_pad_truth", "fluidic_diode_truth",
+           "sommerfeld_journal_truth", "drawer_overhang_truth", "rocking_block_truth",
+           "swept_grating_truth", "oil_evaporation_truth", "toggle_spring_truth",
+           "superelastic_flexure_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "inertia_valve_damper", "load": "ball_spin",
-         "asymmetry": "elliptic_vibration", "stribeck_shape": "wiping_meniscus",
-         "position": "crank_transmission", "inertia": "rolling_payload",
-         "delay": "quartz_counter", "drift": "spall_growth",
-         "backlash": "side_loaded_pin", "gms": "grease_yield"}
+FORMS = {"acceleration": "belt_creep", "load": "disc_spring_pad",
+         "asymmetry": "fluidic_diode", "stribeck_shape": "sommerfeld_journal",
+         "position": "drawer_overhang", "inertia": "rocking_block",
+         "delay": "swept_grating", "drift": "oil_evaporation",
+         "backlash": "toggle_spring", "gms": "superelastic_flexure"}
+
+#: the acceleration of gravity [m/s^2]
+GRAVITY = 9.81
 
 
 # -- acceleration ----------------------------------------------------------------------------
-#: ``inertia_valve_damper``'s damper drag with the bypass shut, x the friction level, at
-#: strength 1 [-]; the poppet springs' preload, x the top acceleration [-]; the poppet's
-#: natural period, x the motion's time scale [-], and its damping ratio [-]; the speed the
-#: blow-off valve opens at, x the top speed [-]
-IV_DRAG, IV_PRELOAD, IV_PERIOD, IV_DAMPING, IV_BLOWOFF = 0.8, 0.35, 0.08, 0.7, 0.1
+#: ``belt_creep``'s creep drag at the record's top transmitted force, x the friction level,
+#: at strength 1 [-]; the driven mass's inertial force at the top acceleration, x the
+#: friction level [-]; the speed the drag turns over, x the top speed [-]
+CREEP_DRAG, CREEP_MASS, CREEP_ROUND = 0.5, 2.0, 2e-3
 
 
-@njit(cache=True)
-def _poppet(a, h, preload, w, zeta):
-    """The deflection y of a spring-centred poppet along the carriage's accelerations
-    ``a`` [m/s^2] (steps ``h`` [s]), returned as w^2 y [m/s^2] (its static value is the
-    acceleration beyond the preload): its inertial load is the acceleration beyond the
-    springs' ``preload`` [m/s^2] (a dead zone), its natural frequency ``w`` [rad/s], its
-    damping ratio ``zeta``. Semi-implicit Euler on sub-steps of at most 0.05 / ``w``
-    (the acceleration interpolated), from rest."""
-    n = a.size
-    out = np.empty(n)
-    m = max(1, int(math.ceil(w * h / 0.05)))
-    hs = h / m
-    y = 0.0
-    yd = 0.0
-    out[0] = 0.0
-    for k in range(1, n):
-        for i in range(m):
-            u = a[k - 1] + (a[k] - a[k - 1]) * (i + 1.0) / m
-            d = u - preload if u > preload else (u + preload if u < -preload else 0.0)
-            ydd = d - w * w * y - 2.0 * zeta * w * yd
-            yd += hs * ydd
-            y += hs * yd
-        out[k] = w * w * y
-    return out
+def _creep_loss(tension):
+    """The belt's creep loss force over its value at the unit transmitted force [-] at the
+    transmitted forces ``tension`` [-]: the belt's strain drops by Delta T / (E A) across
+    the pulley's slip arc, so it slides on the pulley at v Delta T / (E A) under the
+    force Delta T: a loss power v Delta T^2 / (E A), a force Delta T^2 / (E A)."""
+    q = np.asarray(tension, float)
+    return q * q
 
 
 @on_fine_grid
-def inertia_valve_damper_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A hydraulic damper rides between the carriage and the frame, its oil normally free
-    to pass a bypass. The bypass is closed by an inertia valve: a poppet centred by two
-    preloaded springs that moves, either way, once the inertial force of the carriage's
-    acceleration passes the springs' preload (:data:`IV_PRELOAD` x the top acceleration),
-    with its own natural period (:data:`IV_PERIOD` x the motion's time scale) and damping
-    (:func:`_poppet`). The poppet's deflection shuts the bypass in proportion (fully at the
-    top acceleration), and the damper's drag, saturated above :data:`IV_BLOWOFF` x the top
-    speed by its blow-off valve, is ``s`` :data:`IV_DRAG` x the friction level x that
-    closure x tanh(v / v_blow-off), added to the base.
+def belt_creep_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage is driven by a flat (friction) belt. Wrapped over its pulleys, the belt
+    stretches by T / (E A) on the tight span and less on the slack one; over each pulley's
+    slip arc it contracts or stretches from one to the other and so creeps on the pulley's
+    rim (Reynolds' creep) at the speed v (T1 - T2) / (E A) against the rim's friction,
+    which carries the transmitted force T1 - T2: a loss v (T1 - T2)^2 / (E A), a drag
+    (T1 - T2)^2 / (E A) at the carriage (:func:`_creep_loss`). The belt transmits what the
+    drive applies: the base force plus the inertial force of the driven mass
+    (:data:`CREEP_MASS` x the friction level at the top acceleration). The truth adds
+    ``s`` :data:`CREEP_DRAG` x the friction level x that force squared over its top value
+    (99th percentile) squared, along the velocity, to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s], v [m/s], a [m/s^2]) and its base law.
+        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the damper's blow-off force, / its value at strength 1.
+        Amplitude factor [-]: the belt's compliance 1 / (E A), / its value at strength 1.
 
     Returns
     -------
@@ -162,63 +150,70 @@ def inertia_valve_damper_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Inertia-valve (acceleration-sensitive) dampers (Fox 2003, Inertia valve shock absorber,
-    US patent 6,581,948; Dixon 2007, The Shock Absorber Handbook, ch. 8 on
-    acceleration-sensitive valving and blow-off valves). The candidate raises the levels
-    with |a|, lagged, tilts them with a and adds a force odd in a; the open forms lag, age,
-    heat, skid, load, press, attract, squeeze, transfer weight, slosh, dilate, wedge,
-    spring a gib, soften rubber, swing arms, unload by the jerk, tilt pads, push ball
-    trains, ripple the current, slide rack flanks or set a shoe by a ball in a cone. Here
-    a viscous-then-saturated drag of the speed is switched by a resonant valve of the
-    acceleration.
+    Elastic creep of belts (Reynolds 1874, On the efficiency of belts or straps as
+    communicators of work, The Engineer 38; Swift 1928, Power transmission by belts, Proc.
+    Inst. Mech. Eng. 2; Firbank 1970, Mechanics of the belt drive, Int. J. Mech. Sci. 12;
+    Johnson 1985, Contact Mechanics, on creep in belt drives). The candidate raises the
+    levels with |a|, lagged, tilts them with a and adds a force odd in a; the open forms
+    lag, age, heat, skid, load, press, attract, squeeze, transfer weight, slosh, dilate,
+    wedge, spring a gib, soften rubber, swing arms, unload by the jerk, tilt pads, push
+    ball trains, ripple the current, slide rack flanks, set a shoe by a ball in a cone or
+    shut a damper's bypass by an inertia valve. Here the drive's own elasticity slips: a
+    drag of the square of the drive force, even in a.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     a99 = max(kin.scales["a99"], 1e-12)
     v99 = max(kin.scales["v99"], 1e-12)
-    w = 2.0 * math.pi / (IV_PERIOD * max(_motion_time(kin), 1e-12))
-    a = np.ascontiguousarray(kin.a, dtype=float)
-    y = _poppet(a, float(kin.dt), IV_PRELOAD * a99, w, IV_DAMPING)
-    shut = np.minimum(np.abs(y) / ((1.0 - IV_PRELOAD) * a99), 1.0)
-    drag = np.tanh(np.asarray(kin.v, float) / (IV_BLOWOFF * v99))
-    return F + float(s) * IV_DRAG * _level(kin) * shut * drag
+    lev = _level(kin)
+    T = F + CREEP_MASS * lev / a99 * np.asarray(kin.a, float)
+    top = max(float(np.percentile(np.abs(T), 99)), 1e-12 * lev)
+    turn = np.tanh(np.asarray(kin.v, float) / (CREEP_ROUND * v99))
+    return F + float(s) * CREEP_DRAG * lev * _creep_loss(T / top) * turn
 
 
 # -- load ------------------------------------------------------------------------------------
-#: ``ball_spin``'s rise of the levels at the record's top load, at strength 1 [-]; the
-#: contact angle unloaded and its opening at the top load [deg]
-SPIN_SHARE, SPIN_ANGLE, SPIN_OPENING = 0.5, 15.0, 25.0
+#: ``disc_spring_pad``'s rise of the levels at the disc spring's peak force, at strength 1
+#: [-]; the disc's free cone height over its thickness [-]; its deflection at the record's
+#: least load and what the carriage's approach from there to the top load adds, in disc
+#: thicknesses [-]
+PAD_SHARE, DISC_HEIGHT, DISC_SET, DISC_SPAN = 0.4, 2.0, 0.6, 2.2
 
 
-def _spin_drag(load, top):
-    """The balls' spin drag at the loads ``load`` [N] over its value at the load ``top``
-    [N] [-]: the spin moment mu Q a (3/8) E(k), a ~ Q^(1/3) (Hertz), times the spin-to-roll
-    ratio ~ sin(alpha), the contact angle alpha opening from :data:`SPIN_ANGLE` by
-    :data:`SPIN_OPENING` x (Q / Q_top)^(2/3) (the contact's approach)."""
-    q = np.abs(np.asarray(load, float)) / top
-    alpha = np.radians(SPIN_ANGLE + SPIN_OPENING * q ** (2.0 / 3.0))
-    return q ** (4.0 / 3.0) * np.sin(alpha) / math.sin(math.radians(SPIN_ANGLE + SPIN_OPENING))
+def _disc_force(f, height):
+    """A disc (Belleville) spring's force [-] at the deflections ``f`` [-] (in thicknesses)
+    for the free cone height ``height`` [-] (in thicknesses), Almen and Laszlo's
+    f ((height - f) (height - f / 2) + 1), over its top (its local peak, on 0 <= f <=
+    height; past the flat the disc's force falls, and rises again only once it has passed
+    through its plane)."""
+    f = np.asarray(f, float)
+    P = f * ((height - f) * (height - 0.5 * f) + 1.0)
+    grid = np.linspace(0.0, height, 4001)
+    peak = float(np.max(grid * ((height - grid) * (height - 0.5 * grid) + 1.0)))
+    return P / peak
 
 
 @on_fine_grid
-def ball_spin_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The guide's balls run in angular contact with their raceways and, besides rolling,
-    spin (pivot) about the normal of each contact. The spin's micro-slip across the
-    contact ellipse dissipates a moment ~ mu Q a, the ellipse's half-width a ~ Q^(1/3)
-    (Hertz), and the spin-to-roll ratio grows with the contact angle, which opens as the
-    load presses the balls into their grooves (:func:`_spin_drag`). The Coulomb and
-    Stribeck levels are the base's times 1 + ``s`` :data:`SPIN_SHARE` x that drag over
-    its value at the record's top load (its 99th percentile), inside the bristle dynamics;
-    the viscous term is the base's.
+def disc_spring_pad_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A drag pad (a clamping or damping pad) is pressed on the way by a disc (Belleville)
+    spring seated in the carriage. The load presses the carriage onto its guide, whose
+    Hertzian approach ~ load^(2/3) compresses the disc further: set to :data:`DISC_SET`
+    thicknesses at the record's least load (1st percentile), the approach to its top load
+    (99th percentile) adds :data:`DISC_SPAN`. The disc's force follows Almen and
+    Laszlo's characteristic (:func:`_disc_force`, the cone's height :data:`DISC_HEIGHT`
+    thicknesses): it rises, flattens over the disc's top and falls past it (the negative
+    stiffness of a disc spring flattening towards its plane). The Coulomb and Stribeck
+    levels are the base's times 1 + ``s`` :data:`PAD_SHARE` x that force over its peak,
+    inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (load [N]) and its base law.
     s : float
-        Amplitude factor [-]: the spin's friction coefficient times the balls' share of the
-        contact, / its value at strength 1.
+        Amplitude factor [-]: the pad's friction coefficient times the disc's stiffness, /
+        its value at strength 1.
 
     Returns
     -------
@@ -227,74 +222,70 @@ def ball_spin_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Spin (pivoting) friction of balls in angular contact (Jones 1959, Ball motion and
-    sliding friction in ball bearings, J. Basic Eng. 81; Harris and Kotzalas 2007, Rolling
-    Bearing Analysis, ch. on ball spin and the spinning moment). The candidate makes the
-    levels affine in the load, with a memory over the travel; the open forms scale the
+    Disc springs (Almen and Laszlo 1936, The uniform-section disk spring, Trans. ASME 58;
+    DIN EN 16983 / DIN 2092, disc springs' characteristics) and the Hertzian approach of a
+    carriage on its guide (Johnson 1985, Contact Mechanics, ch. 4). The candidate makes
+    the levels affine in the load, with a memory over the travel; the open forms scale the
     friction with a Hertz contact's area, a seal's, a film's, a junction's, a pivot's, an
-    adhesive contact's or a pin's arc, break, squeeze or desorb films, plough, creep, vibrate,
-    overload a pad, heal scuffs, relieve a preload, roll on a lossy track or slip
-    differentially in conforming grooves. Here the contact twists: a drag ~ Q^(4/3),
-    steepened by the opening contact angle.
+    adhesive contact's or a pin's arc, break, squeeze or desorb films, plough, creep,
+    vibrate, overload a pad, heal scuffs, relieve a preload, roll on a lossy track, slip
+    differentially in conforming grooves or spin balls. Here a spring of negative
+    stiffness past its top sets the friction: it grows with the load, then falls.
     """
     L = np.asarray(kin.load, float)
     Lm = float(np.mean(np.abs(L))) or 1.0
     if not np.ptp(L) > 1e-9 * Lm:
-        raise ValueError(f"load (ball_spin): the {kin.plant} record's load does not change")
+        raise ValueError(f"load (disc_spring_pad): the {kin.plant} record's load does not "
+                         f"change")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     top = max(float(np.percentile(np.abs(L), 99)), 1e-12 * Lm)
-    lev = 1.0 + float(s) * SPIN_SHARE * _spin_drag(L, top)
+    low = min(float(np.percentile(np.abs(L), 1)) / top, 1.0)
+    q = np.abs(L) / top
+    span = max(1.0 - low ** (2.0 / 3.0), 1e-9)
+    f = DISC_SET + DISC_SPAN * (q ** (2.0 / 3.0) - low ** (2.0 / 3.0)) / span
+    lev = 1.0 + float(s) * PAD_SHARE * _disc_force(np.maximum(f, 0.0), DISC_HEIGHT)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- asymmetry -------------------------------------------------------------------------------
-#: ``elliptic_vibration``'s tangential vibration speed at strength 1, x the top speed [-];
-#: the normal force's swing at strength 1, x its mean [-], and its largest (below 1: the
-#: carriage never lifts off); the normal motion's phase lead on the tangential [deg]; the
-#: speed the base's direction is rounded over, x the top speed [-]
-VIB_SPEED, VIB_SWING, VIB_MAX_SWING, VIB_LEAD, VIB_ROUND = 0.03, 0.1, 0.95, 60.0, 2e-3
+#: ``fluidic_diode``'s drag at the top speed forwards, x the friction level, at strength 1
+#: [-]; the laminar resistance's share of the forward drag at the top speed [-]; the
+#: diodicity the conduit reaches at high Reynolds numbers [-]; the speed it reaches half of
+#: its excess at, x the top speed [-]
+DIODE_DRAG, DIODE_LAMINAR, DIODE_MAX, DIODE_ONSET = 0.5, 0.3, 3.0, 0.3
 
 
-def _vibrated_friction(u, swing, lead, n_phase=720):
-    """The mean dry friction [-] (1: the plain contact's, sliding +x) of a contact whose
-    way vibrates in an ellipse, at the sliding speeds ``u`` [-] over the way's tangential
-    speed amplitude: the way's tangential speed cos(phi), the normal force 1 + ``swing``
-    sin(phi + ``lead``) [deg] (the normal motion's acceleration), the friction mu N
-    sign(u - cos(phi)) averaged over the phase phi (a table of ``n_phase`` phases); +-1
-    where |u| > 1."""
-    phi = (np.arange(n_phase) + 0.5) * (2.0 * math.pi / n_phase)
-    N = np.maximum(1.0 + swing * np.sin(phi + math.radians(lead)), 0.0)
-    N = N / N.mean()
-    grid = np.linspace(-1.0, 1.0, 2001)
-    table = np.mean(N * np.sign(grid[:, None] - np.cos(phi)), axis=1)
+def _diode_drag(u, laminar, di_max, onset):
+    """The fluidic diode's pressure drop [-] (1 forwards at u = 1) at the flows ``u`` [-]
+    (over the top speed's): a laminar part ``laminar`` u, even, and an inertial part
+    (1 - ``laminar``) K u |u|, K = 1 forwards (u > 0) and, backwards, 1 + (``di_max`` - 1)
+    |u| / (|u| + ``onset``): the diodicity grows with the Reynolds number from 1."""
     u = np.asarray(u, float)
-    return np.where(np.abs(u) >= 1.0, np.sign(u), np.interp(u, grid, table))
+    au = np.abs(u)
+    k = np.where(u < 0.0, 1.0 + (di_max - 1.0) * au / (au + onset), 1.0)
+    return laminar * u + (1.0 - laminar) * k * u * au
 
 
 @on_fine_grid
-def elliptic_vibration_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The way the carriage slides on vibrates, driven by an unbalance motor or a vibratory drive
-    beside it (a vibratory feeder's trough, a shaker's table), in an ellipse: tangentially
-    at the speed amplitude V = ``s`` :data:`VIB_SPEED` x the top speed, and normally, the
-    normal motion's acceleration swinging the contact force by ``s`` :data:`VIB_SWING` of
-    its mean (at most :data:`VIB_MAX_SWING`: no lift-off) with a phase lead of
-    :data:`VIB_LEAD` degrees on the tangential speed. While the carriage slides slower than
-    V the contact's friction turns within each cycle and its mean is the mean of mu N sign(v -
-    V cos(phi)) (:func:`_vibrated_friction`): the way drives the carriage one way (the
-    feeder's conveying), so the mean friction is lower, and even reversed, sliding one way
-    than the other, and it pushes the carriage at rest. The truth replaces the base's
-    direction, tanh(v / :data:`VIB_ROUND` x the top speed), of the friction level by that
-    mean, added to the base.
+def fluidic_diode_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A damper on the carriage (a dashpot, a cylinder's bypass) passes its oil through a
+    valvular conduit, Tesla's fluidic diode: loops that return part of the flow against
+    itself in one direction and let it by in the other, with no moving part. At low flow
+    (small Reynolds numbers) the flow is laminar and the resistance the same both ways;
+    at speed the flow's inertia separates the jets and the backward flow loses several
+    times the forward pressure (the diodicity, growing with the Reynolds number to
+    :data:`DIODE_MAX`; :func:`_diode_drag`). The truth adds ``s`` :data:`DIODE_DRAG` x the
+    friction level x that drop (1 forwards at the top speed) to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the vibration's amplitude (its tangential speed and its
-        normal acceleration), / its value at strength 1.
+        Amplitude factor [-]: the damper's piston area squared times the conduit's
+        resistance, / its value at strength 1.
 
     Returns
     -------
@@ -303,65 +294,75 @@ def elliptic_vibration_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Vibratory conveying by an elliptical (two-axis, phase-shifted) vibration of the track
-    (Redford and Boothroyd 1967, Vibratory feeding, Proc. Inst. Mech. Eng. 182; Boothroyd
-    2005, Assembly Automation and Product Design, ch. 3) and friction under tangential
-    and normal vibration of the contact (Wallaschek 1998, Contact mechanics of
-    piezoelectric ultrasonic motors, Smart Mater. Struct. 7; Littmann, Storck and
-    Wallaschek 2001, Sliding friction in the presence of ultrasonic oscillations, Arch.
-    Appl. Mech. 71). The candidate frees the levels (and the Stribeck velocity and viscous
+    Tesla 1920, Valvular conduit, US patent 1,329,559; the diodicity of Tesla valves and
+    its growth with the Reynolds number (Forster, Bardell, Afromowitz, Sharma and Blanchard
+    1995, Design, fabrication and testing of fixed-valve micro-pumps, ASME FED 234; Bardell
+    2000, The diodicity mechanism of Tesla-type no-moving-parts valves, PhD thesis, Univ.
+    Washington; Nguyen, Lin, Sen and Liu 2021, J. Fluid Mech. 915 on the onset of
+    diodicity). The candidate frees the levels (and the Stribeck velocity and viscous
     term) of each direction and an offset; the open forms twin levels, curves or viscous
     terms, roll lips, load thrust bearings, pump films, ratchet, spring back, tilt pads,
-    strut, throttle, differ in areas, pump along grooves, buckle, scrape chips, commutate,
-    tension idlers, free-wheel, wick felts, run belts, lean brushes, pull sealing bands or
-    hold by a counterbalance valve. Here the asymmetry lives at low speed only: below the
-    way's vibration speed, where the normal force's phase makes one direction slide
-    easier, and none above it.
+    strut, throttle with a check valve, differ in areas, pump along grooves, buckle,
+    scrape chips, commutate, tension idlers, free-wheel, wick felts, run belts, lean
+    brushes, pull sealing bands, hold by a counterbalance valve or vibrate the way. Here
+    the asymmetry is the flow's inertia in a fixed geometry: none at low speed, growing
+    with the speed.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    v = np.asarray(kin.v, float)
     v99 = max(kin.scales["v99"], 1e-12)
-    V = float(s) * VIB_SPEED * v99
-    swing = min(float(s) * VIB_SWING, VIB_MAX_SWING)
-    mean = _vibrated_friction(v / V, swing, VIB_LEAD)
-    return F + _level(kin) * (mean - np.tanh(v / (VIB_ROUND * v99)))
+    d = _diode_drag(np.asarray(kin.v, float) / v99, DIODE_LAMINAR, DIODE_MAX, DIODE_ONSET)
+    return F + float(s) * DIODE_DRAG * _level(kin) * d
 
 
 # -- stribeck_shape --------------------------------------------------------------------------
-#: ``wiping_meniscus``'s drag at the top speed, x the friction level, at strength 1 [-]; the
-#: speed below which the meniscus' drag is viscous, x the top speed [-]
-MENISCUS_DRAG, MENISCUS_ROUND = 0.5, 1e-3
+#: ``sommerfeld_journal``'s journal friction at rest, x the friction level, at strength 1
+#: [-]; the speed (x the top speed) at which the journals' friction is least [-]; the speed
+#: the friction turns over at rest, x the top speed [-]
+JOURNAL_DRAG, JOURNAL_LEAST, JOURNAL_ROUND = 0.5, 0.25, 2e-3
 
 
-def _meniscus_drag(u, eps):
-    """The wiping meniscus' drag [-] (1 at u = 1) at the speeds ``u`` [-] (over the top
-    speed): sign(u) |u|^(2/3) (the capillary number's 2/3 power), viscous below ``eps``:
-    sign(u) ((u^2 + eps^2)^(1/3) - eps^(2/3)) / ((1 + eps^2)^(1/3) - eps^(2/3))."""
-    u = np.asarray(u, float)
-    e23 = eps ** (2.0 / 3.0)
-    return np.sign(u) * ((u * u + eps * eps) ** (1.0 / 3.0) - e23) \
-        / ((1.0 + eps * eps) ** (1.0 / 3.0) - e23)
+def _journal_eccentricity(load_number):
+    """The journal's eccentricity ratio [-] at the load numbers ``load_number`` [-] (W c^2
+    / (eta U r^2 L) up to a constant): the inverse of the full Sommerfeld solution's
+    6 e / ((2 + e^2) sqrt(1 - e^2)), increasing in e on (0, 1)."""
+    e = np.concatenate((np.linspace(1e-6, 0.99, 2000), 1.0 - np.logspace(-2.0001, -12, 400)))
+    w = 6.0 * e / ((2.0 + e * e) * np.sqrt(1.0 - e * e))
+    return np.interp(np.asarray(load_number, float), w, e)
+
+
+def _journal_friction(u, least):
+    """The journal's friction coefficient over its boundary value c / r [-] at the speeds
+    ``u`` [-] (over the top speed), full Sommerfeld: (1 + 2 e^2) / (3 e), e the
+    eccentricity at the load number 2.4 ``least`` / |u| (so the least friction, at e =
+    1 / sqrt(2), lies at |u| = ``least``); 1 at rest, Petroff's |u| / (2.4 ``least``) at
+    speed."""
+    au = np.maximum(np.abs(np.asarray(u, float)), 1e-12)
+    e = _journal_eccentricity(2.4 * least / au)
+    return (1.0 + 2.0 * e * e) / (3.0 * e)
 
 
 @on_fine_grid
-def wiping_meniscus_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A wiper lip (a way wiper, a scraper seal) is drawn over the way, which is wetted by
-    the lubricant or coolant. The liquid's meniscus at the lip is deformed by the motion:
-    the film it leaves behind thickens as Ca^(2/3) (the capillary number Ca = eta v /
-    gamma; Landau-Levich-Derjaguin) and the meniscus' dissipation, like Bretherton's
-    pressure drop, grows as Ca^(2/3): a drag steep at low speed that bends over above it
-    (:func:`_meniscus_drag`, viscous below :data:`MENISCUS_ROUND` x the top speed). The
-    truth adds ``s`` :data:`MENISCUS_DRAG` x the friction level x that drag to the base.
+def sommerfeld_journal_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage runs on track rollers (cam followers) whose plain journal bearings
+    turn with the carriage's speed under a fixed load. A hydrodynamic journal's
+    eccentricity follows the Sommerfeld number (~ speed / load): at rest the shaft sits on
+    the bearing (e -> 1) and the friction coefficient is c / r, as the speed grows the
+    shaft lifts towards the centre and the friction (1 + 2 e^2) / (3 e) x c / r (the full
+    Sommerfeld solution) dips to its least at e = 1 / sqrt(2) (at :data:`JOURNAL_LEAST` x
+    the top speed), then rises as Petroff's viscous drag (:func:`_journal_friction`). The
+    truth adds ``s`` :data:`JOURNAL_DRAG` x the friction level x that friction over its
+    boundary value, along the velocity (rounded over :data:`JOURNAL_ROUND` x the top
+    speed), to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s]) and its base law (with a Stribeck curve).
     s : float
-        Amplitude factor [-]: the lip's wetted length times the surface tension, / its
-        value at strength 1.
+        Amplitude factor [-]: the rollers' load times their journals' clearance ratio, /
+        its value at strength 1.
 
     Returns
     -------
@@ -370,72 +371,63 @@ def wiping_meniscus_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Dip coating and the drag-out film (Landau and Levich 1942, Dragging of a liquid by a
-    moving plate, Acta Physicochim. URSS 17; Derjaguin 1943) and the motion of long
-    bubbles and menisci (Bretherton 1961, The motion of long bubbles in tubes, J. Fluid
-    Mech. 10: the pressure drop ~ Ca^(2/3)); wiper lips and wetted seals (Persson 2006,
-    Sliding Friction, on wiper blades). The candidate reshapes the Stribeck curve; the open
-    forms add a tail, a rational drop, a hydrodynamic rise, a spike, a lift-off, two
-    roughness scales, a logarithmic or Eyring law, starve a film, add rubber hysteresis,
-    resonate, dither, melt, flow grains, readsorb, heat the film, make it turbulent,
-    thixotropic, churned or shear-thinning, add core losses, breathe a bellows, brake by
-    eddy currents or fly a pad. Here a power law of the speed below one: a capillary drag.
+    The full Sommerfeld solution of the long journal bearing (Sommerfeld 1904, Zur
+    hydrodynamischen Theorie der Schmiermittelreibung, Z. Math. Phys. 50; Hamrock, Schmid
+    and Jacobson 2004, Fundamentals of Fluid Film Lubrication, ch. 10; Petroff 1883) and
+    the friction of track rollers on plain bearings. The candidate reshapes the Stribeck
+    curve; the open forms add a tail, a rational drop, a hydrodynamic rise, a spike, a
+    lift-off, two roughness scales, a logarithmic or Eyring law, starve a film, add rubber
+    hysteresis, resonate, dither, melt, flow grains, readsorb, heat the film, make it
+    turbulent, thixotropic, churned or shear-thinning, add core losses, breathe a bellows,
+    brake by eddy currents, fly a pad or wipe a meniscus. Here the journal's eccentricity:
+    a shallow dip below the boundary value and a linear rise, from one formula.
     """
     if not has_stribeck_curve(kin):
-        raise ValueError("stribeck_shape (wiping_meniscus): the mre_lugre base has no "
+        raise ValueError("stribeck_shape (sommerfeld_journal): the mre_lugre base has no "
                          "Stribeck curve")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     v99 = max(kin.scales["v99"], 1e-12)
-    d = _meniscus_drag(np.asarray(kin.v, float) / v99, MENISCUS_ROUND)
-    return F + float(s) * MENISCUS_DRAG * _level(kin) * d
+    u = np.asarray(kin.v, float) / v99
+    d = _journal_friction(u, JOURNAL_LEAST) * np.tanh(u / JOURNAL_ROUND)
+    return F + float(s) * JOURNAL_DRAG * _level(kin) * d
 
 
 # -- position --------------------------------------------------------------------------------
-#: ``crank_transmission``'s friction at mid-stroke, x the friction level, at strength 1 [-];
-#: the crank's radius, x the larger reach of the visited stroke from its centre [-]; the
-#: crank's radius over the connecting rod's length [-]; the speed the friction turns over,
-#: x the top speed [-]
-CRANK_TORQUE, CRANK_REACH, CRANK_RATIO, CRANK_ROUND = 0.4, 1.25, 0.3, 2e-3
+#: ``drawer_overhang``'s friction at mid-stroke, x the friction level, at strength 1 [-];
+#: the ram's overhang at the visited stroke's two ends, x its length [-]; the speed the
+#: friction turns over, x the top speed [-]
+DRAWER_DRAG, DRAWER_IN, DRAWER_OUT, DRAWER_ROUND = 0.4, 0.1, 0.7, 2e-3
 
 
-def _crank_lever(x, r, lam):
-    """The slider's travel per crank angle over the crank radius, |dx / dtheta| / r [-], at
-    the slider positions ``x`` [m] (from the centre of the crank's stroke) of a
-    slider-crank of radius ``r`` [m] and ratio ``lam`` = r / l: the slider at r cos(theta)
-    + l sqrt(1 - lam^2 sin^2 theta), theta in (0, pi) found on a fine table, travels
-    sin(theta) (1 + lam cos(theta) / sqrt(1 - lam^2 sin^2 theta)) per unit angle and
-    radius."""
-    th = np.linspace(1e-4, math.pi - 1e-4, 20001)
-    root = np.sqrt(1.0 - lam * lam * np.sin(th) ** 2)
-    pos = r * (np.cos(th) + root / lam)
-    pos = pos - 0.5 * (pos[0] + pos[-1])          # the stroke's centre at 0
-    lever = np.sin(th) * (1.0 + lam * np.cos(th) / root)
-    # pos falls with theta: interpolate on the reversed table
-    return np.interp(np.asarray(x, float), pos[::-1], lever[::-1])
+def _drawer_reactions(overhang):
+    """The sum of a ram's two bearing reactions over its nose load [-] at the overhangs
+    ``overhang`` [-] (over the ram's length): the sleeve's mouth carries W / (1 - e), the
+    ram's tail bushing, inside the sleeve, W e / (1 - e) (moments about each): (1 + e) /
+    (1 - e)."""
+    e = np.asarray(overhang, float)
+    return (1.0 + e) / (1.0 - e)
 
 
 @on_fine_grid
-def crank_transmission_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage is driven by a slider-crank (a crank and connecting rod), its
-    stroke's centre where fit and held-out parts both pass, its radius
-    :data:`CRANK_REACH` x the larger reach of the visited stroke from there (the dead
-    centres lie outside the visited stroke) and its rod :data:`CRANK_RATIO` times longer.
-    The crank's bearings carry a dry friction torque; at the carriage it is that torque
-    over the slider's travel per crank angle, r sin(theta) (1 + lambda cos(theta) /
-    sqrt(1 - lambda^2 sin^2 theta)) (:func:`_crank_lever`): least near mid-stroke, rising
-    towards both dead centres and unevenly (the rod's obliquity). The truth adds ``s``
-    :data:`CRANK_TORQUE` x the friction level x the lever at mid-stroke over the lever
-    here, against the velocity, to the base.
+def drawer_overhang_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The moving part is a ram (a quill, a drawer, a telescopic arm) that runs out of a
+    fixed sleeve and carries a weight at its nose: the sleeve's mouth and the ram's tail
+    bushing, inside the sleeve, bear it. As the ram runs out its overhang e grows and its
+    engagement 1 - e (both over the ram's length) shrinks, and the reactions, whose sum is
+    W (1 + e) / (1 - e) (:func:`_drawer_reactions`), grow hyperbolically: the drawer
+    effect. The visited stroke runs from the overhang :data:`DRAWER_IN` to
+    :data:`DRAWER_OUT`. The truth adds ``s`` :data:`DRAWER_DRAG` x the friction level x
+    the reactions over their value at mid-stroke, against the velocity, to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the crank bearings' friction torque, / its value at strength
-        1.
+        Amplitude factor [-]: the bearings' friction coefficient times the nose weight,
+        / its value at strength 1.
 
     Returns
     -------
@@ -444,83 +436,128 @@ def crank_transmission_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Slider-crank kinematics and the friction circle of its joints (Shigley and Uicker 1980,
-    Theory of Machines and Mechanisms, ch. 3 and 13; Ham, Crane and Rogers 1958, Mechanics
-    of Machinery, on friction in mechanisms and the transmission angle). The candidate
-    scales the friction along the stroke and adds a force of the position; the open forms
-    put a defect, a waviness, a worn section, runout, a bent rail, a transfer film,
-    cogging, a taper, a pocket, a cushion, a cover, an air spring, bolt holes, a plunger, a
-    sag, a festoon, a curve, a chain, a cam, a heated zone, brinelled dents, a rail joint,
-    misaligned rails or a spool's flow force on the stroke. Here the drive's own geometry:
-    a friction referred through a ratio that changes along the stroke.
+    The drawer effect and the length-to-width rule of sliding bearings (Slocum 1992,
+    Precision Machine Design, ch. 8 on sliding-contact bearings and the 'golden rule';
+    Moore 1970, Foundations of Mechanical Accuracy; quills and rams of boring mills). The
+    candidate scales the friction along the stroke and adds a force of the position; the
+    open forms put a defect, a waviness, a worn section, runout, a bent rail, a transfer
+    film, cogging, a taper, a pocket, a cushion, a cover, an air spring, bolt holes, a
+    plunger, a sag, a festoon, a curve, a chain, a cam, a heated zone, brinelled dents, a
+    rail joint, misaligned rails, a spool's flow force or a crank on the stroke. Here the
+    bearing's span itself shrinks along the stroke: a friction rising hyperbolically
+    towards one end.
     """
-    x0 = _bump_centre(kin)
-    if x0 is None:
-        raise ValueError(f"position (crank_transmission): the held-out part of the "
+    if _bump_centre(kin) is None:
+        raise ValueError(f"position (drawer_overhang): the held-out part of the "
                          f"{kin.plant} record never revisits the positions of its fit part")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     sc = kin.scales
-    reach = max(sc["x_hi"] - x0, x0 - sc["x_lo"], 1e-12)
-    r = CRANK_REACH * reach
-    lever = _crank_lever(np.asarray(kin.x, float) - x0, r, CRANK_RATIO)
-    mid = float(_crank_lever(np.array([0.0]), r, CRANK_RATIO)[0])
+    span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
+    e = DRAWER_IN + (DRAWER_OUT - DRAWER_IN) * (np.asarray(kin.x, float) - sc["x_lo"]) / span
+    e = np.clip(e, 0.0, 0.95)
+    mid = float(_drawer_reactions(0.5 * (DRAWER_IN + DRAWER_OUT)))
     v99 = max(sc["v99"], 1e-12)
-    turn = np.tanh(np.asarray(kin.v, float) / (CRANK_ROUND * v99))
-    return F + float(s) * CRANK_TORQUE * _level(kin) * (mid / np.maximum(lever, 1e-3)) * turn
+    turn = np.tanh(np.asarray(kin.v, float) / (DRAWER_ROUND * v99))
+    return F + float(s) * DRAWER_DRAG * _level(kin) * _drawer_reactions(e) / mid * turn
 
 
 # -- inertia ---------------------------------------------------------------------------------
-#: ``rolling_payload``'s mass at strength 1, x the friction level / a99 [kg per N s^2/m]; the
-#: cradle's rocking period, x the motion's time scale [-]; the rocking's damping ratio
-#: (rolling resistance) [-]
-ROLL_MASS, ROLL_PERIOD, ROLL_DAMPING = 0.4, 1.0, 0.15
+#: ``rocking_block``'s mass at strength 1, x the friction level / a99 [kg per N s^2/m]; the
+#: acceleration it tips at, g x its width over its height, x the top acceleration [-]; the
+#: period of its frequency parameter 2 pi / p (p^2 = 3 g / (4 R)), x the motion's time
+#: scale [-]; the angle a retaining fence stops it at, x its slenderness angle [-]
+ROCK_MASS, ROCK_TIP, ROCK_PERIOD, ROCK_FENCE = 0.4, 0.5, 0.5, 0.5
 
 
 @njit(cache=True)
-def _rolling_force(a, h, w, zeta):
-    """The force [N per kg] a solid cylinder rolling without slip in a cradle exerts on the
-    carriage under the accelerations ``a`` [m/s^2] (steps ``h`` [s]): its position u in the
-    cradle, (3/2) u'' = -(3/2) w^2 u - a - 3 zeta w u' (the rolling constraint's 3/2, the
-    cradle's restoring and the rolling resistance), and the force a + u''. Semi-implicit
-    Euler on sub-steps of at most 0.05 / ``w`` (the acceleration interpolated), from
-    rest."""
+def _rocking_force(a, h, R, alpha, g, fence):
+    """The horizontal force [N per kg] a rigid rectangular block (half-diagonal ``R`` [m],
+    slenderness ``alpha`` [rad], tan(alpha) its width over its height) standing free on
+    the carriage exerts under its accelerations ``a`` [m/s^2] (steps ``h`` [s]):
+    a + the acceleration of its centre relative to the carriage. It stands while |a| <= g
+    tan(alpha); beyond, it rocks on an edge (Housner): theta'' = -(3 / (4 R)) (a cos(alpha
+    - |theta|) sign(theta) + g sin(alpha - |theta|)) sign(theta); landing (theta through
+    0) it keeps 1 - 1.5 sin^2(alpha) of its angular velocity (and comes to rest if that is
+    less than gravity takes in ten sub-steps); a fence stops it
+    (inelastically) at ``fence`` [rad]. Semi-implicit Euler on sub-steps of at most
+    0.02 / p (p^2 = 3 g / (4 R)), the acceleration interpolated, from rest."""
     n = a.size
     out = np.empty(n)
-    m = max(1, int(math.ceil(w * h / 0.05)))
+    c = 0.75 / R
+    p = math.sqrt(c * g)
+    m = max(1, int(math.ceil(p * h / 0.02)))
     hs = h / m
-    u = 0.0
-    ud = 0.0
-    out[0] = a[0] - (2.0 / 3.0) * a[0]
+    r = 1.0 - 1.5 * math.sin(alpha) ** 2
+    tip = g * math.tan(alpha)
+    # the angular velocity gravity takes from it in ten sub-steps: slower after a landing,
+    # the block's ever shorter rocks (Housner's, in finite time) end at once
+    settle = 10.0 * hs * c * g * math.sin(alpha)
+    th = 0.0
+    thd = 0.0
+    out[0] = a[0]
     for k in range(1, n):
+        thdd = 0.0
+        ak = a[k]
         for i in range(m):
             ak = a[k - 1] + (a[k] - a[k - 1]) * (i + 1.0) / m
-            udd = -w * w * u - (2.0 / 3.0) * ak - 2.0 * zeta * w * ud
-            ud += hs * udd
-            u += hs * ud
-        out[k] = a[k] + udd
+            if th == 0.0 and thd == 0.0:
+                if ak < -tip:
+                    side = 1.0
+                elif ak > tip:
+                    side = -1.0
+                else:
+                    thdd = 0.0
+                    continue
+            elif th > 0.0 or (th == 0.0 and thd > 0.0):
+                side = 1.0
+            else:
+                side = -1.0
+            at = abs(th)
+            thdd = -c * (side * ak * math.cos(alpha - at) + g * math.sin(alpha - at)) * side
+            thd += hs * thdd
+            new = th + hs * thd
+            if side * new < 0.0:                      # lands: an impact on the other edge
+                new = 0.0
+                thd *= r
+                if abs(thd) < settle:                 # too slow to lift it again
+                    thd = 0.0
+            if abs(new) > fence:                      # the fence holds it
+                new = math.copysign(fence, new)
+                thd = 0.0
+                thdd = 0.0
+            th = new
+        if th == 0.0 and thd == 0.0:
+            out[k] = ak
+        else:
+            side = 1.0 if (th > 0.0 or (th == 0.0 and thd > 0.0)) else -1.0
+            at = abs(th)
+            xdd = R * math.cos(alpha - at) * thdd + side * R * math.sin(alpha - at) * thd * thd
+            out[k] = ak + xdd
     return out
 
 
 @on_fine_grid
-def rolling_payload_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A cylindrical payload (a roll of material, a drum) rests in a cradle on the carriage
-    and rolls in it without slipping. The inverse dynamics misses it. Slowly accelerated
-    it rocks to where the cradle's slope balances its inertial force and moves with the
-    carriage: its whole mass; accelerated faster than the cradle's rocking frequency
-    (period :data:`ROLL_PERIOD` x the motion's time scale), it rolls back on the cradle and
-    the carriage carries only the force that spins it up, a third of its mass (the solid
-    cylinder's I / (I + m r^2)); the rocking mode, damped by the rolling resistance
-    (:data:`ROLL_DAMPING`), lies between (:func:`_rolling_force`). The truth adds ``s``
-    :data:`ROLL_MASS` x the friction level / a99 x that force per unit mass to the base.
+def rocking_block_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A rigid block (a casting, a cabinet) stands free on the carriage, and the inverse
+    dynamics misses it. While the carriage's acceleration stays below g tan(alpha) (its
+    width over its height; :data:`ROCK_TIP` x the top acceleration) it stands and moves
+    with the carriage: its whole mass. Beyond, it tips onto an edge and rocks (Housner's
+    rocking block, its frequency parameter p = sqrt(3 g / (4 R)) of period
+    :data:`ROCK_PERIOD` x the motion's time scale): the carriage then carries the force
+    that accelerates its centre, less than its mass times a, and when it lands again it
+    loses part of its rocking (the impact's restitution 1 - 1.5 sin^2(alpha)); a fence
+    stops it before it topples (:data:`ROCK_FENCE` x alpha). The truth adds ``s``
+    :data:`ROCK_MASS` x the friction level / a99 x that force per unit mass
+    (:func:`_rocking_force`) to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the payload's mass, / its value at strength 1.
+        Amplitude factor [-]: the block's mass, / its value at strength 1.
 
     Returns
     -------
@@ -529,62 +566,82 @@ def rolling_payload_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Rolling without slipping on an accelerated support and the rolling constraint's
-    effective mass (Routh 1905, Dynamics of a System of Rigid Bodies, on a cylinder rolling
-    inside a cylinder; the ball- and cylinder-in-a-bowl rolling pendulum of rolling
-    isolators: Zayas, Low and Mahin 1990, A simple pendulum technique for achieving seismic
-    isolation, Earthquake Spectra 6). The candidate misses a constant mass; the open forms
+    The rocking of free-standing rigid blocks (Housner 1963, The behavior of inverted
+    pendulum structures during earthquakes, Bull. Seismol. Soc. Am. 53; Yim, Chopra and
+    Penzien 1980, Rocking response of rigid blocks to earthquakes, Earthquake Eng. Struct.
+    Dyn. 8; Makris and Roussos 2000, Rocking response of rigid blocks under near-source
+    ground motions, Geotechnique 50). The candidate misses a constant mass; the open forms
     filter it, reflect it through gearing, a chain's polygon or a pinion, hang it on a
     spring, a cable, a fluid, a clutch, a coupling, a flyweight, a screw, a friction-damped
     mount or a surging spring, add a fluid's mass and its history, pick it up, drop it,
-    empty it, slide it, rattle it, telescope it, recoil the frame, saturate the motor,
-    lead it by the feedforward or pitch the scale head. Here the missed mass rolls: whole
-    below the rocking frequency, a third above.
+    empty it, slide it, rattle it, telescope it, roll it in a cradle, recoil the frame,
+    saturate the motor, lead it by the feedforward or pitch the scale head. Here the
+    missed mass tips on its edge: whole while it stands, less while it rocks, set by its
+    geometry and gravity.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     a99 = max(kin.scales["a99"], 1e-12)
-    w = 2.0 * math.pi / (ROLL_PERIOD * max(_motion_time(kin), 1e-12))
-    f = _rolling_force(np.ascontiguousarray(kin.a, dtype=float), float(kin.dt), w,
-                       ROLL_DAMPING)
-    return F + float(s) * ROLL_MASS * _level(kin) / a99 * f
+    p = 2.0 * math.pi / (ROCK_PERIOD * max(_motion_time(kin), 1e-12))
+    R = 0.75 * GRAVITY / (p * p)
+    alpha = math.atan(ROCK_TIP * a99 / GRAVITY)
+    f = _rocking_force(np.ascontiguousarray(kin.a, dtype=float), float(kin.dt), R, alpha,
+                       GRAVITY, ROCK_FENCE * alpha)
+    return F + float(s) * ROCK_MASS * _level(kin) / a99 * f
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: ``quartz_counter``'s gate time at strength 1 [data samples]; the resonator's force scale
-#: F_b, x the largest |force| of the record [-]
-QUARTZ_SAMPLES, QUARTZ_SCALE = 4.0, 2.0
+#: ``swept_grating``'s sweep period at strength 1 [data samples]; the share of the sweep the
+#: record's force range spans, and where in the sweep its least force lies [-]
+SWEEP_SAMPLES, SWEEP_SPAN, SWEEP_START = 3.0, 0.8, 0.1
 
 
-def _gate_mean(t, u, gate):
-    """The mean [-] of ``u`` over the gate [t - ``gate``, t] at each of the times ``t`` [s]
-    (the record's start bounds the first gates), from the trapezoidal running integral."""
-    c = np.concatenate(([0.0], np.cumsum(0.5 * (u[1:] + u[:-1]) * np.diff(t))))
-    start = np.maximum(t - gate, t[0])
-    span = t - start
-    out = u.copy()
-    ok = span > 0.0
-    out[ok] = (c[ok] - np.interp(start[ok], t, c)) / span[ok]
+@njit(cache=True)
+def _sweep_readings(t, F, q, period):
+    """The interrogator's readings [N] along the times ``t`` [s] of the forces ``F`` [N]:
+    the sweeps of ``period`` [s] from t[0] reach the grating's wavelength when their
+    phase passes ``q`` [-] (the grating's place in the sweep, 0 to 1, at each time); the
+    force then read is held from the sweep's end to the next sweep's end (before the first
+    reading: the first force)."""
+    n = t.size
+    out = np.empty(n)
+    held = F[0]
+    pending = F[0]
+    found = False
+    k_now = 0
+    for i in range(n):
+        ph = (t[i] - t[0]) / period
+        k = int(math.floor(ph))
+        if k > k_now:
+            held = pending if found else F[i - 1]
+            found = False
+            k_now = k
+        if not found and ph - k >= q[i]:
+            pending = F[i]
+            found = True
+        out[i] = held
     return out
 
 
 @on_fine_grid
-def quartz_counter_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force is read by a quartz resonator force sensor (a double-ended tuning fork in
-    tension or compression): its frequency is f0 sqrt(1 + F / F_b) (F_b
-    :data:`QUARTZ_SCALE` x the record's largest |force|). A counter counts its cycles over
-    a gate of ``s`` :data:`QUARTZ_SAMPLES` data samples, which gives the mean frequency over
-    the gate, and the reading, reported at the gate's end, is the force of that frequency:
-    F_b ((mean f / f0)^2 - 1) (:func:`_gate_mean`): a lag of about half the gate, and the
-    square root's curvature averaged in. The motion channels are on time.
+def swept_grating_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force is read by a fibre Bragg grating on the force member, interrogated by a
+    wavelength-swept laser: the grating's Bragg wavelength moves with the strain, so with
+    the force (the record's force range spans :data:`SWEEP_SPAN` of the sweep from
+    :data:`SWEEP_START`), and each sweep (``s`` :data:`SWEEP_SAMPLES` data samples long)
+    finds the reflection peak at the instant its wavelength meets the grating's: the
+    force is sampled at an instant within the sweep that the force itself sets. The
+    interrogator reports that reading at the sweep's end, held until the next one
+    (:func:`_sweep_readings`): a delay of one sweep or more, jittered by the force's
+    place in the sweep. The motion channels are on time.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the gate time, / its value at strength 1.
+        Amplitude factor [-]: the sweep period, / its value at strength 1.
 
     Returns
     -------
@@ -593,59 +650,68 @@ def quartz_counter_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Quartz resonator force and pressure sensors read by frequency counting (EerNisse, Ward
-    and Wiggins 1988, Survey of quartz bulk resonator sensor technologies, IEEE Trans. UFFC
-    35; Albert 1982, Vibrating quartz crystal beam accelerometer, ISA; the gated and
-    reciprocal counters of Hewlett-Packard Application Note 200, Fundamentals of electronic
-    frequency counters). The candidate shifts the force by a constant time, low-passes it,
-    reads it through a transducer's resonance and leaks it; the open forms sample, filter,
-    average, hold, skew, jitter, rate-limit, transmit, median, report by deadband, trigger
-    on positions, run a belt, aerate, drop telegrams, leak, creep, notch, track, snub, time
-    a waveguide's pulse or diffuse eddy currents. Here the force is counted as a frequency:
-    averaged over a gate as the square root of itself and reported at the gate's end.
+    Fibre Bragg grating sensors (Kersey, Davis, Patrick, LeBlanc, Koo, Askins, Putnam and
+    Friebele 1997, Fiber grating sensors, J. Lightwave Technol. 15) read by swept lasers
+    (Yun, Richardson and Kim 1998, Interrogation of fiber grating sensor arrays with a
+    wavelength-swept fiber laser, Opt. Lett. 23). The candidate shifts the force by a
+    constant time, low-passes it, reads it through a transducer's resonance and leaks it;
+    the open forms sample, filter, average, hold, skew, jitter, rate-limit, transmit,
+    median, report by deadband, trigger on positions, run a belt, aerate, drop telegrams,
+    leak, creep, notch, track, snub, time a waveguide's pulse, diffuse eddy currents or
+    count a resonator's frequency over a gate. Here the sampling instant is set by the
+    measured force itself, within each sweep, then held.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    t = np.asarray(kin.t, float)
-    fb = QUARTZ_SCALE * max(float(np.max(np.abs(F))), 1e-12)
-    f = np.sqrt(1.0 + F / fb)
-    m = _gate_mean(t, f, float(s) * QUARTZ_SAMPLES * kin.sample_dt)
-    return fb * (m * m - 1.0)
+    t = np.ascontiguousarray(kin.t, dtype=float)
+    lo, hi = float(np.min(F)), float(np.max(F))
+    q = SWEEP_START + SWEEP_SPAN * (F - lo) / max(hi - lo, 1e-12)
+    period = float(s) * SWEEP_SAMPLES * kin.sample_dt
+    return _sweep_readings(t, np.ascontiguousarray(F, dtype=float),
+                           np.ascontiguousarray(q, dtype=float), period)
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: ``spall_growth``'s rise of the levels at the record's end, at strength 1 [-]; the spall's
-#: area at the record's end over its area at the start [-]
-SPALL_RISE, SPALL_GROWTH = 0.5, 6.0
+#: ``oil_evaporation``'s rise of the levels at the record's end, at strength 1 [-]; the film
+#: parameter (film over roughness) at the start [-]; the heavy fraction's share of the film
+#: [-]; the volatile fraction's evaporation time, x the record's length [-]
+EVAP_RISE, EVAP_LAMBDA, EVAP_HEAVY, EVAP_TIME = 0.5, 3.0, 0.25, 0.5
 
 
-def _spall_area(n, growth):
-    """The spall's area over its initial area [-] after the share ``n`` [-] (0 to 1) of the
-    record's overrollings, growing as dA / dN = C A^2 (a Paris-law growth whose rate goes
-    as the square of the spall's size): 1 / (1 - k n), k = 1 - 1 / ``growth`` (``growth``
-    at n = 1)."""
-    k = 1.0 - 1.0 / growth
-    return 1.0 / (1.0 - k * np.asarray(n, float))
+def _asperity_share(lam):
+    """The asperities' share of the load [-] at the film parameters ``lam`` [-] (film
+    thickness over the composite roughness): the Gaussian tail of the summit heights above
+    the film, erfc(lam / sqrt 2) / 2."""
+    return 0.5 * erfc(np.asarray(lam, float) / math.sqrt(2.0))
+
+
+def _film(tau, heavy, time):
+    """The film's thickness over its initial one [-] at the times ``tau`` [-] (over the
+    record's length): the volatile fraction 1 - ``heavy`` evaporates as exp(-tau /
+    ``time``) (a first-order loss at the oil's vapour pressure), the heavy fraction
+    stays."""
+    return heavy + (1.0 - heavy) * np.exp(-np.asarray(tau, float) / time)
 
 
 @on_fine_grid
-def spall_growth_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Rolling-contact fatigue: a spall (a pit) in a raceway of the guide grows with each
-    overrolling, the cracks at its trailing edge advancing at a rate that grows with its
-    size: dA / dN = C A^2 (:func:`_spall_area`; :data:`SPALL_GROWTH` times its initial
-    area by the record's end). The overrollings are counted by the travel (each ball
-    passes the spall once per ball spacing), so the damage grows with the travel, not the
-    time, and faster and faster. The Coulomb and Stribeck levels are the base's times 1 +
-    ``s`` :data:`SPALL_RISE` x (A / A0 - 1) / (``SPALL_GROWTH`` - 1), inside the bristle
-    dynamics; the viscous term is the base's.
+def oil_evaporation_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The way's lubricant is a blend whose volatile fraction evaporates from the thin film
+    (an oil's Noack volatility, a solvent-thinned lubricant drying): the film thins as
+    heavy + (1 - heavy) exp(-t / tau) (:func:`_film`; :data:`EVAP_HEAVY` of it stays,
+    tau :data:`EVAP_TIME` x the record's length), and the film parameter falls from
+    :data:`EVAP_LAMBDA`: the asperities, whose summits above the film follow a Gaussian
+    tail (:func:`_asperity_share`), take a share of the load that grows slowly at first,
+    faster as the film nears the roughness. The Coulomb and Stribeck levels are the base's
+    times 1 + ``s`` :data:`EVAP_RISE` x that share's rise over its rise by the record's
+    end, inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s], v [m/s]) and its base law.
+        The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the friction added per unit damaged area, / its value at
+        Amplitude factor [-]: the asperities' friction over the film's, / its value at
         strength 1.
 
     Returns
@@ -655,57 +721,69 @@ def spall_growth_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Fatigue crack growth (Paris and Erdogan 1963, A critical analysis of crack propagation
-    laws, J. Basic Eng. 85) and the propagation of spalls in rolling bearings (Hoeprich
-    1992, Rolling element bearing fatigue damage propagation, J. Tribol. 114; Rosado,
-    Forster, Thompson and Cooke 2010, Rolling contact fatigue life and spall propagation of
-    AISI M50, M50NiL and AISI 52100, Tribol. Trans. 53). The candidate is a trend, a
-    saturating change, a step, a cycle, a resetting change or the friction power's heat;
-    the open forms warm up, wear in, change the lubricant, heat, wear, follow the humidity,
-    grind a third body, relubricate, relax a seal, oxidise, deplete, wear through, swell,
-    build a tribofilm, take in particles, expand, shear down, heat magnets, charge, creep a
-    cage, loosen a screw, dewet a film, channel grease or drain a receiver. Here the change
-    accelerates with the travel: slow at first, ever faster.
+    Evaporation losses of lubricants (Noack 1936; ASTM D5800 / CEC L-40, the Noack
+    volatility) and mixed lubrication's load sharing by the film parameter (Patir and Cheng
+    1978; Johnson, Greenwood and Poon 1972, A simple theory of asperity contact in
+    elastohydrodynamic lubrication, Wear 19; Greenwood and Williamson 1966). The
+    candidate is a trend, a saturating change, a step, a cycle, a resetting change or the
+    friction power's heat; the open forms warm up, wear in, change the lubricant, heat,
+    wear, follow the humidity, grind a third body, relubricate, relax a seal, oxidise,
+    deplete, wear through, swell, build a tribofilm, take in particles, expand, shear down,
+    heat magnets, charge, creep a cage, loosen a screw, dewet a film, channel grease, drain
+    a receiver or grow a spall. Here the film evaporates in time: a change with a delayed
+    onset that steepens as the film nears the roughness.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     t = np.asarray(kin.t, float)
-    speed = np.abs(np.asarray(kin.v, float))
-    path = np.concatenate(([0.0], np.cumsum(0.5 * (speed[1:] + speed[:-1]) * np.diff(t))))
-    n = path / (path[-1] or 1.0)
-    lev = 1.0 + float(s) * SPALL_RISE * (_spall_area(n, SPALL_GROWTH) - 1.0) \
-        / (SPALL_GROWTH - 1.0)
+    tau = (t - t[0]) / max(t[-1] - t[0], 1e-12)
+    share = _asperity_share(EVAP_LAMBDA * _film(tau, EVAP_HEAVY, EVAP_TIME))
+    s0 = float(_asperity_share(EVAP_LAMBDA))
+    s1 = float(_asperity_share(EVAP_LAMBDA * _film(1.0, EVAP_HEAVY, EVAP_TIME)))
+    lev = 1.0 + float(s) * EVAP_RISE * (share - s0) / (s1 - s0)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: ``side_loaded_pin``'s clearance at strength 1, as a share of the stroke (its full width,
-#: both sides) [-]; the pin's transverse load, x the Coulomb level [-]; the angle short of
-#: the far side at which the pin meets its flank, as a share of the clearance [-]
-PIN_CLEAR, PIN_WEIGHT, PIN_EDGE = 0.008, 0.2, 0.02
+#: ``toggle_spring``'s clearance at strength 1, as a share of the stroke (its full width,
+#: both sides) [-]; the toggle's push at the flank, x the Coulomb level [-]; its pivot's
+#: offset from the line of the play and its free length's reach along it, x the play's
+#: half-width [-] (the reach such that its push grows all the way to the flank)
+TOGGLE_CLEAR, TOGGLE_PUSH, TOGGLE_OFFSET, TOGGLE_REACH = 0.008, 0.3, 1.0, 2.8
 
 
 @njit(cache=True)
-def _pin_contact(h, xd, half, w, edge, m, kh, ch, s0, s1, s2, Fc, Fs, vs, alpha, shape):
+def _toggle_push(e, half, push, offset, reach):
+    """The over-centre spring's push [N] on the contact at the offset ``e`` [m] (drive
+    minus contact, clipped to the play's half-width ``half`` [m]): a spring of free length
+    L0 = sqrt(d^2 + (``reach`` half)^2) pivoted at d = ``offset`` half from the line of the
+    play, compressed to sqrt(d^2 + e^2): its force along the play ~ e (L0 / sqrt(d^2 +
+    e^2) - 1), pushing the contact away from the centre, ``push`` [N] at the flank."""
+    d = offset * half
+    L0 = math.sqrt(d * d + (reach * half) ** 2)
+    ec = min(max(e, -half), half)
+    at = half * (L0 / math.sqrt(d * d + half * half) - 1.0)
+    return -push * ec * (L0 / math.sqrt(d * d + ec * ec) - 1.0) / at
+
+
+@njit(cache=True)
+def _toggle_contact(h, xd, half, push, offset, reach, m, kh, ch, s0, s1, s2, Fc, Fs, vs,
+                    alpha, shape):
     """LuGre friction [N] of a light contact of mass ``m`` [kg] driven by the drive
-    positions ``xd`` [m] (steps ``h`` [s]) through a pin in a hole of radial clearance
-    ``half`` [m] under the transverse load ``w`` [N]: at an axial offset e the pin has
-    rolled round its hole to sin(theta) = e / ``half`` and carries w tan(theta) = w e /
-    sqrt(half^2 - e^2) (the root at least ``edge`` x half); past the clearance the flank,
-    a spring ``kh`` [N/m] and damper ``ch`` [N s/m], compressive only."""
+    positions ``xd`` [m] (steps ``h`` [s]) across a play of half-width ``half`` [m]
+    bridged by an over-centre spring (:func:`_toggle_push`); past the play the flank, a
+    spring ``kh`` [N/m] and damper ``ch`` [N s/m], compressive only."""
     n = xd.size
     F = np.empty(n)
-    x = xd[0]
+    x = xd[0] - half
     v = 0.0
     z = 0.0
-    floor = (edge * half) ** 2
     for j in range(n):
         vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
         e = xd[j] - x
         ed = vd - v
-        ec = min(max(e, -half), half)
-        fc = w * ec / math.sqrt(max(half * half - ec * ec, floor))
+        fc = _toggle_push(e, half, push, offset, reach)
         if e > half:
             f2 = kh * (e - half) + ch * ed
             if f2 > 0.0:
@@ -721,18 +799,17 @@ def _pin_contact(h, xd, half, w, edge, m, kh, ch, s0, s1, s2, Fc, Fs, vs, alpha,
 
 
 @on_fine_grid
-def side_loaded_pin_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact are joined by a pin in a clearance hole (a clevis, a link's
-    pivot) that also carries a transverse load, its weight (:data:`PIN_WEIGHT` x the
-    Coulomb level), which sets it at the bottom of its hole. An axial force F rolls the
-    pin round the hole to the angle theta with tan(theta) = F / W, its axial offset
-    half x sin(theta): after a reversal the drive crosses the clearance (radius ``s``^2
-    :data:`PIN_CLEAR` / 2 x the stroke) while the force it passes on, W e / sqrt(half^2 -
-    e^2), grows without bound as the pin reaches the far side (:func:`_pin_contact`; the
-    flank met :data:`PIN_EDGE` short of it): the contact is taken up by a coupling whose
-    stiffness grows continuously, held still until the pin has rolled far enough to pass
-    its break-away force. The contact is light (its inertial force at the top acceleration
-    1 % of the Coulomb level) with the base's LuGre friction.
+def toggle_spring_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact are joined across a play (radius ``s``^2 :data:`TOGGLE_CLEAR` / 2 x
+    the stroke) by an over-centre (toggle) spring, as in snap-action switches and toggle
+    clamps: a compressed spring pivoted off the line of the play (:func:`_toggle_push`),
+    whose push along the play is zero at the centre and grows towards either flank
+    (:data:`TOGGLE_PUSH` x the Coulomb level there): a negative stiffness that holds the
+    contact against the flank it last touched. After a reversal the drive leaves that
+    flank, the toggle keeps pushing the contact back towards it, less and less, turns
+    over at the centre and pushes it towards the coming flank, which then takes it up.
+    The contact is light (its inertial force at the top acceleration 1 % of the Coulomb
+    level) with the base's LuGre friction (:func:`_toggle_contact`).
 
     Parameters
     ----------
@@ -749,99 +826,106 @@ def side_loaded_pin_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Clearance joints whose journal moves round its bearing under a steady side load
-    (Flores and Ambrosio 2004, Revolute joints with clearance in multibody systems,
-    Computers and Structures 82; Dubowsky and Freudenstein 1971, Dynamic analysis of
-    mechanical systems with clearances, J. Eng. Ind. 93). The candidate holds or frees the
-    contact across a rigid play; the open forms take it up rigidly, compliantly, by impact,
-    against a spring, eccentrically, through oil, worn, with a dragging idler, biased,
-    slack, magnetic, preloaded, through a flexspline, a rope, a spider, a fluid link, a
-    cable, a clutch, a varying mesh, a polymer gear, grease, a wedge or an overlapped
-    spool. Here the play's take-up is a rolling pin's: geometric, its stiffness set by the
-    side load and growing to the flank.
+    Bistable (over-centre) mechanisms and their negative stiffness (Howell 2001, Compliant
+    Mechanisms, ch. on bistable mechanisms; Jensen and Howell 2004, Bistable configurations
+    of compliant mechanisms modeled using four links and translational joints, J. Mech.
+    Des. 126; snap-action switches). The candidate holds or frees the contact across a
+    rigid play; the open forms take it up rigidly, compliantly, by impact, against a
+    spring, eccentrically, through oil, worn, with a dragging idler, biased, slack,
+    magnetic, preloaded, through a flexspline, a rope, a spider, a fluid link, a cable, a
+    clutch, a varying mesh, a polymer gear, grease, a wedge, an overlapped spool or a side
+    loaded pin. Here the play is bridged by a negative stiffness: the force in the play
+    turns over at its centre.
     """
-    p = _lugre_params(kin, "backlash (side_loaded_pin)")
+    p = _lugre_params(kin, "backlash (toggle_spring)")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    half = 0.5 * float(s) ** 2 * PIN_CLEAR * float(np.ptp(kin.x))
-    w = PIN_WEIGHT * float(p.Fc)
+    half = 0.5 * float(s) ** 2 * TOGGLE_CLEAR * float(np.ptp(kin.x))
+    push = TOGGLE_PUSH * float(p.Fc)
     m, kh, ch = _contact_constants(kin, p)
-    k_pin = w / (PIN_EDGE ** 3 * max(half, 1e-15))
-    rate = max(math.sqrt(max(kh, k_pin) / m), (float(p.sigma1) + float(p.sigma2) + ch) / m)
+    k_toggle = 4.0 * push / max(half, 1e-15)
+    rate = max(math.sqrt(max(kh, k_toggle) / m), (float(p.sigma1) + float(p.sigma2) + ch) / m)
     h, xd, n_sub = _substeps(kin, rate)
-    Fr = _pin_contact(h, xd, half, w, PIN_EDGE, m, kh, ch, float(p.sigma0), float(p.sigma1),
-                      float(p.sigma2), float(p.Fc), float(p.Fs), float(p.vs),
-                      float(p.alpha), SHAPES[p.shape])
+    Fr = _toggle_contact(h, xd, half, push, TOGGLE_OFFSET, TOGGLE_REACH, m, kh, ch,
+                         float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
+                         float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
     return Fr[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: the grease layer's elastic path to its yield at strength 1, beyond the base bristle's
-#: path, as a share of the stroke / 3 [-]; its share of the friction at strength 1 [-]; its
-#: yield stress, x its stress sliding at the top speed [-]; its flow index n [-]
-EVP_PATH, EVP_SHARE, EVP_YIELD, EVP_INDEX = 0.1, 0.6, 0.7, 0.5
+#: the flexure's elastic path to the slip at strength 1, beyond the base bristle's path, as
+#: a share of the stroke / 3 [-]; its share of the friction at strength 1 [-]; its forward
+#: and reverse transformation stresses and their hardening, x the slip stress [-]; its
+#: transformation path, x its elastic path [-]
+SE_PATH, SE_SHARE, SE_FORWARD, SE_REVERSE, SE_HARDEN, SE_STRAIN = 0.1, 0.6, 0.5, 0.2, 0.1, 1.0
 
 
 @njit(cache=True)
-def _grease_layer(t, v, path, v_top, yield_, index):
-    """The grease layer's stress u [-] (1 when sliding steadily at ``v_top`` [m/s]) along
-    the times ``t`` [s] and velocities ``v`` [m/s] (Saramito's elasto-viscoplastic
-    solid): du/dt = (v - v_p) / ``path`` (an elastic gel of path ``path`` [m] to the
-    stress 1), the plastic rate v_p = 0 below the yield stress ``yield_`` [-] and, above
-    it, v_top ((|u| - yield) / (1 - yield))^(1 / ``index``) sign(u) (Herschel-Bulkley
-    flow); implicit Euler, Newton on each step (bisection-safe); starts unstressed."""
-    n = t.size
+def _flag(x, path, fwd, rev, hard, strain):
+    """The superelastic flexure's stress u [-] (1 at the contact's slip) along the
+    positions ``x`` [m]: its deflection D = ``path`` u + ``strain`` ``path`` xi (elastic
+    path ``path`` [m] to u = 1, martensite fraction xi, -1 to 1); forward transformation
+    while |u| = ``fwd`` + ``hard`` |xi| and loading, reverse while |u| = ``rev`` + ``hard``
+    |xi| and unloading, elastic between; past |u| = 1 the contact slips (D follows).
+    Starts unstressed, austenite."""
+    n = x.size
     out = np.zeros(n)
-    u = 0.0
-    k = 1.0 / index
+    eps = strain * path
+    D = 0.0
+    xi = 0.0
     for j in range(1, n):
-        h = t[j] - t[j - 1]
-        c = h / path
-        # the new stress solves x - u - c (v - vp(x)) = 0, increasing in x: bisection
-        lo = min(u + c * v[j], u) - 2.0
-        hi = max(u + c * v[j], u) + 2.0
-        for _ in range(200):
-            x = 0.5 * (lo + hi)
-            ex = abs(x) - yield_
-            vp = 0.0
-            if ex > 0.0:
-                vp = v_top * (ex / (1.0 - yield_)) ** k
-                if x < 0.0:
-                    vp = -vp
-            g = x - u - c * (v[j] - vp)
-            if g > 0.0:
-                hi = x
-            else:
-                lo = x
-            if hi - lo < 1e-12:
-                break
-        u = 0.5 * (lo + hi)
+        D += x[j] - x[j - 1]
+        u = (D - eps * xi) / path
+        if xi != 0.0:                                 # reverse transformation
+            sg = 1.0 if xi > 0.0 else -1.0
+            if u * sg < rev + hard * abs(xi):
+                a = (D * sg - path * rev) / (path * hard + eps)
+                if a <= 0.0:
+                    xi = 0.0
+                    u = D / path
+                else:
+                    xi = sg * a
+                    u = sg * (rev + hard * a)
+        if u != 0.0:                                  # forward transformation
+            sg = 1.0 if u > 0.0 else -1.0
+            if (xi == 0.0 or xi * sg > 0.0) and abs(xi) < 1.0 \
+                    and u * sg > fwd + hard * abs(xi):
+                a = (D * sg - path * fwd) / (path * hard + eps)
+                if a >= 1.0:
+                    xi = sg
+                    u = (D - eps * xi) / path
+                else:
+                    xi = sg * a
+                    u = sg * (fwd + hard * a)
+        if abs(u) > 1.0:                              # the contact slips
+            u = 1.0 if u > 0.0 else -1.0
+            D = path * u + eps * xi
         out[j] = u
     return out
 
 
 @on_fine_grid
-def grease_yield_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Part of the friction is carried by a grease layer in the contact, an elasto-viscoplastic
-    material: below its yield stress it is an elastic gel (its path to the yield, the base
-    bristle's Fs / sigma0 plus ``s`` :data:`EVP_PATH` x the stroke / 3, over
-    :data:`EVP_YIELD`), and below it neither creeps nor relaxes; above it flows, its plastic
-    shear rate a Herschel-Bulkley power (:data:`EVP_INDEX`) of the stress beyond the yield
-    (:func:`_grease_layer`). After a reversal the layer unloads elastically through zero to
-    the yield on the other side, then flows; sliding, its stress rises from the yield with
-    the speed as (v / v99)^n; at rest the stress above the yield flows off, down to the
-    yield, and what is below it is held (no creep). Its share w = ``s`` :data:`EVP_SHARE`
-    (up to ``s`` = 1) of the friction is its stress times the Stribeck level, the viscous
-    term the base's: F = (1 - w) F_lugre + w (g(v) u + sigma2 v). At ``s`` = 0 the base
-    itself.
+def superelastic_flexure_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Part of the contact is carried through a superelastic (NiTi) flexure in series with
+    it (a shape-memory alloy flexure, a pseudoelastic wire): elastic up to the forward
+    transformation stress (:data:`SE_FORWARD` of the slip stress), then a stress-induced
+    martensitic transformation on a plateau (hardening :data:`SE_HARDEN`; its path
+    :data:`SE_STRAIN` x the elastic path), elastic again up to the slip; unloading, elastic
+    down to the lower reverse plateau (:data:`SE_REVERSE`), on which the martensite
+    reverts, then elastic through zero with no residual strain, and likewise the other way
+    (:func:`_flag`; its elastic path the base bristle's Fs / sigma0 plus ``s``
+    :data:`SE_PATH` x the stroke / 3): a flag-shaped loop, not a Masing one. Its share w
+    = ``s`` :data:`SE_SHARE` (up to ``s`` = 1) of the friction is its stress times the
+    Stribeck level, the viscous term the base's: F = (1 - w) F_lugre + w (g(v) u + sigma2
+    v). At ``s`` = 0 the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s], v [m/s]) and its base law (a classic LuGre).
+        The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the layer's share (up to ``s`` = 1) and its elastic path (as
+        Amplitude factor [-]: the flexure's share (up to ``s`` = 1) and its elastic path (as
         the open presliding forms' path).
 
     Returns
@@ -851,26 +935,27 @@ def grease_yield_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Elasto-viscoplastic fluids (Saramito 2007, A new constitutive equation for
-    elastoviscoplastic fluid flows, J. Non-Newtonian Fluid Mech. 145; Herschel and Bulkley
-    1926, Konsistenzmessungen von Gummi-Benzolloesungen, Kolloid-Z. 39) and the yield and
-    flow of lubricating greases (Lugt 2013, Grease Lubrication in Rolling Bearings, ch. 4
-    on grease rheology). The candidate's presliding is a generalized Maxwell-slip (GMS)
+    Superelasticity of shape-memory alloys and its one-dimensional models (Auricchio and
+    Taylor 1997, Shape-memory alloys: modelling and numerical simulations of the finite-
+    strain superelastic behavior, Comput. Methods Appl. Mech. Eng. 143; Brinson 1993, J.
+    Intell. Mater. Syst. Struct. 4; Dolce, Cardone and Marnetto 2000, Implementation and
+    testing of passive control devices based on shape memory alloys, Earthquake Eng.
+    Struct. Dyn. 29). The candidate's presliding is a generalized Maxwell-slip (GMS)
     element set; the open forms are Maxwell-slip sets, Dahl, elasto-plastic,
     Bliman-Sorine, Bouc-Wen, Zener junctions, Mindlin contacts, rate-and-state, Tomlinson
     asperities, bond rupture, gouge, kinematic hardening, interlocking, capillary bridges,
     cyclic hardening, peeling, unloading microslip, a power-law joint, junction growth,
-    avalanches, slip weakening, a microslip bar and contact renewal. Here the presliding
-    is a gel's: elastic below a yield that never creeps, and a power-law flow above it.
+    avalanches, slip weakening, a microslip bar, contact renewal and a grease's yield.
+    Here the presliding is a phase change's: two plateaus, and back to zero without a
+    residual deflection.
     """
-    p = _lugre_params(kin, "gms (grease_yield)")
+    p = _lugre_params(kin, "gms (superelastic_flexure)")
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    e0, extra = _presliding_path(kin, s, EVP_PATH)
-    w = EVP_SHARE * min(float(s), 1.0)
+    e0, extra = _presliding_path(kin, s, SE_PATH)
+    w = SE_SHARE * min(float(s), 1.0)
     v = np.ascontiguousarray(kin.v, dtype=float)
-    v99 = max(kin.scales["v99"], 1e-12)
-    u = _grease_layer(np.ascontiguousarray(kin.t, dtype=float), v,
-                      (e0 + extra) / EVP_YIELD, v99, EVP_YIELD, EVP_INDEX)
+    u = _flag(np.ascontiguousarray(kin.x, dtype=float), e0 + extra, SE_FORWARD, SE_REVERSE,
+              SE_HARDEN, SE_STRAIN)
     return (1.0 - w) * F + w * (kin.base.g(v) * u + float(p.sigma2) * v)

@@ -77,7 +77,7 @@ sample at the top speed and differentiated by ``np.gradient``, backward differen
 low-passed gradient (:func:`.kinematics.measure_motion`, :data:`.runner.MEASURED` in turn).
 The **sealed** family (:mod:`.sealed`, ``forms="sealed"``) is one more form per effect, kept
 out of all tuning and run only at the end of a piece of work (the present one written in
-session 27, sealed: not run; session 26's, run once on <COMMIT>, <TOP1> top-1, is
+session 27, sealed: not run; session 26's, run once on 72892bf, 48.9 % top-1, is
 :mod:`.seen22`, session 25's (50.0 %) :mod:`.seen21`, session 24's other (50.0 %)
 :mod:`.seen20`, session 24's first (43.8 %) :mod:`.seen19`, session 23's (53.4 %)
 :mod:`.seen18`, session 22's (47.2 %) :mod:`.seen17`,

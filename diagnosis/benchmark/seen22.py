@@ -1,8 +1,17 @@
 """The twenty-second seen truth family: one more mechanism per effect, sealed until run once.
 
 Written 2026-11-30 (session 26) by another hand, once, without running the diagnosis on it;
-run once, sealed, on the code of <COMMIT>:
-RUN FIGURES: TO BE FILLED
+run once, sealed, at the start of session 27 on the code of 72892bf:
+176 cases, 0 skipped, 645 s wall on 2 workers. Top-1 48.9 % (86;
+51.2 % of the 168 detectable; the other 8: 6 delays below a sample, 2 Stribeck-shape cases an
+oracle cannot tell from the base); mean |shrink error| 0.305; wrong names on 15 (8.5 %):
+position -> asymmetry 4, gms -> delay 3, backlash -> gms 2, acceleration -> position 2,
+acceleration -> drift 2, asymmetry -> backlash 1, drift -> load 1. By form: load/ball_spin
+19/20, inertia/rolling_payload 15/20, acceleration/inertia_valve_damper 14/20,
+drift/spall_growth 14/20, delay/quartz_counter 11/20, gms/grease_yield 5/12,
+position/crank_transmission 4/16, asymmetry/elliptic_vibration 2/20, backlash/side_loaded_pin
+2/12, stribeck_shape/wiping_meniscus 0/16. By plant: valve 67.5 %, isolator 50.0 %, damping
+rig 42.5 %, XML-350 42.5 %, press 39.3 %.
 Seen since, it is part of the open grid, as :mod:`.seen` to :mod:`.seen21` before it
 (figures in ``benchmarks/bench_diagnosis_forms.py``). Each form is a
 mechanism of other physics than every open form of its effect before it (:mod:`.truths`,

@@ -115,6 +115,15 @@ ACROSS_GAIN = 0.8
 GAP_SPAN = (0.2, 1.5)
 GAP_STEP = (GAP_SPAN[1] / GAP_SPAN[0]) ** (1.0 / (GAP_GRID - 1))
 REFINE_EVALS = 20
+#: stiffest spring across the play, x the contact's bristle stiffness ``sigma0`` [-]. The
+#: law lets the contact stand still while the drive crosses the play; a spring across it
+#: pushes the contact, whose bristle then deflects by ``gap_stiffness`` p / ``sigma0``: a
+#: stiffer spring moves the contact further than the drive moved in the play, so the
+#: contact follows the drive and nothing is lost. A fit that draws one has a stiffer
+#: presliding spring, not lost motion (a clean damping-rig record, LuGre truth sampled as
+#: the interval's mean: a free play of 6 counts with 28 x ``sigma0`` across it closed 0.48
+#: of the gap above the floor, z 5.8)
+GAP_STIFFNESS_SHARE = 1.0
 
 
 class Backlash(LawCandidate):
@@ -206,7 +215,9 @@ class Backlash(LawCandidate):
         """Why a fitted gap (``p["delta"]`` [m] or ``p["backlash_gap"]``) is too small to name
         ('' when it is large enough; see :data:`MIN_SAMPLES`), or why its forces across the
         play (:func:`across_force`) are not a play's: beyond the contact's break-away level
-        max(``Fc``, ``Fs``) the contact could not stand in the gap.
+        max(``Fc``, ``Fs``) the contact could not stand in the gap, and through a spring
+        stiffer than its bristles (:data:`GAP_STIFFNESS_SHARE` x ``sigma0``) it would
+        follow the drive.
 
         Parameters
         ----------
@@ -229,6 +240,12 @@ class Backlash(LawCandidate):
                 return (f"what bridges its play pushes the contact with up to {held:.3g} N, "
                         f"beyond its break-away level {level:.3g} N: the contact would not "
                         f"stand in the gap, so the fit draws a presliding spring, not a play")
+        k, s0 = float(p.get("gap_stiffness", 0.0)), float(p.get("sigma0", math.inf))
+        if k > GAP_STIFFNESS_SHARE * s0:
+            return (f"the spring across its play ({k:.3g} N/m) is stiffer than the contact's "
+                    f"bristles (sigma0 {s0:.3g} N/m): pushed through it the contact would "
+                    f"follow the drive, so the fit draws a stiffer presliding spring, not "
+                    f"lost motion")
         q = getattr(ctx, "x_q", 0.0)
         if q > 0.0 and gap < self.MIN_COUNTS * q:
             return (f"its lost motion of {gap:.3g} m is {gap / q:.1f} counts of the position's "
@@ -389,7 +406,8 @@ def gap_start(law, names, fit, ctx: Context) -> dict:
         if not bridged:
             return float(r @ r), start
         # what bridges the play is linear in its forces given the play's motion
-        sse, c = _across_fit(fit, Z[:, 1], 0.5 * g, r, across, _break_away(law_g.params))
+        sse, c = _across_fit(fit, Z[:, 1], 0.5 * g, r, across, _break_away(law_g.params),
+                             GAP_STIFFNESS_SHARE * law_g.params.sigma0)
         start.update(zip(across, c))
         return sse, start
 
@@ -443,13 +461,14 @@ def across_force(p) -> float:
             * float(get("delta", 0.0)) + float(get("gap_drag", 0.0)))
 
 
-def _across_fit(fit, p, delta: float, r, names, level: float):
+def _across_fit(fit, p, delta: float, r, names, level: float, stiff: float = math.inf):
     """Least-squares forces of what bridges a play of half-width ``delta`` [m] (the law's
     ``gap_bias`` [N], ``gap_stiffness`` [N/m], ``gap_drag`` [N], those in ``names``) on the
     residual ``r`` [N] of the law without them, along the play offsets ``p`` [m]; each
     within the contact's break-away ``level`` [N] (the contact stands still in the gap: a
-    stiff spring across a tiny play is a presliding spring, not a play), the stiffness and
-    drag >= 0. Returns (squared residual left [N^2], the forces)."""
+    stiff spring across a tiny play is a presliding spring, not a play), the stiffness
+    within ``stiff`` [N/m] too (:data:`GAP_STIFFNESS_SHARE`), the stiffness and drag >= 0.
+    Returns (squared residual left [N^2], the forces)."""
     from scipy.optimize import lsq_linear
     from friction.backlash import ENGAGE_BAND
     eps = ENGAGE_BAND * delta
@@ -460,7 +479,8 @@ def _across_fit(fit, p, delta: float, r, names, level: float):
     if not np.any(A):
         return float(r @ r), np.zeros(len(names))
     scale = np.maximum(np.max(np.abs(A), axis=0), 1e-300)
-    cap = {"gap_bias": level, "gap_stiffness": level / max(delta, 1e-300), "gap_drag": level}
+    cap = {"gap_bias": level, "gap_stiffness": min(level / max(delta, 1e-300), stiff),
+           "gap_drag": level}
     lo = np.array([-level if n == "gap_bias" else 0.0 for n in names]) * scale
     hi = np.array([cap[n] for n in names]) * scale
     sol = lsq_linear(A / scale, r, bounds=(lo, hi))

@@ -358,3 +358,32 @@ def test_forces_across_the_play_beyond_the_break_away_are_no_play():
     assert "break-away" in why and "4.7 N" in why
     law = BACKLASH.law_for(make_model("lugre", **BASE), 2e-3).with_values(gap_stiffness=2e3)
     assert eb.across_force(law.params) == pytest.approx(4.0)
+
+
+def test_a_spring_across_the_play_stiffer_than_the_bristles_is_no_play():
+    """A spring across the play pushes the standing contact, whose bristle deflects by
+    gap_stiffness p / sigma0: stiffer than the bristles, the contact follows the drive and
+    nothing is lost (a clean damping-rig record, LuGre truth sampled as each interval's mean,
+    drew a free play of 6 counts with 28 x sigma0 across it). Not named; the start's least
+    squares keeps the spring within sigma0."""
+    ctx = _ctx()
+    ok = {"delta": 2e-3, "Fc": 2.0, "Fs": 2.8, "gap_stiffness": 300.0, "sigma0": 1e4}
+    assert BACKLASH.practical(ok, ctx) == ""
+    # within the break-away (0.6 N across 2.8 N) but 1.5 x the bristles' stiffness
+    stiff = dict(ok, delta=2e-5, gap_stiffness=1.5e4)
+    assert eb.across_force(stiff) < eb._break_away(stiff)
+    why = BACKLASH.practical(stiff, ctx)
+    assert "stiffer than the contact's bristles" in why and "1e+04 N/m" in why
+    assert BACKLASH.practical(dict(stiff, gap_stiffness=0.9e4), ctx) == ""
+    # the start's fit of the forces across the play: a residual that ramps across the play
+    # at 5e4 N/m is met at the cap (sigma0) when one is given, in full without it
+    t = np.linspace(0.0, 1.0, 401)
+    fit = Dataset.from_arrays(t, np.zeros_like(t), x=np.sin(2 * np.pi * t),
+                              v=np.cos(2 * np.pi * t))
+    delta = 1e-3
+    p = 0.9 * delta * np.sin(6 * np.pi * t)  # inside the flanks: the forces act in full
+    r = 5e4 * p
+    _, free = eb._across_fit(fit, p, delta, r, ["gap_stiffness"], 1e3)
+    _, capped = eb._across_fit(fit, p, delta, r, ["gap_stiffness"], 1e3, 1e4)
+    assert free[0] == pytest.approx(5e4, rel=1e-6)
+    assert capped[0] == pytest.approx(1e4, rel=1e-6)

@@ -92,16 +92,20 @@ def run_emps(protocols=("pulses", "pulses-steady", "time-split")):
 
 
 def run_pneumatic(seals=("O-ring", "NAPN", "KDN")):
-    """Fit at 1 bar, hold out 5 and 7 bar; the load candidate's transfer coefficients
-    ``k_L`` [-] (friction level per unit of load above the fit record's, calibrated at
-    either held-out pressure)."""
+    """Fit at 1 bar, hold out 5 and 7 bar; the load candidate's transfer coefficients,
+    calibrated at either held-out pressure: ``k_L`` [-] (the levels' slope over the
+    relative load inside the bristle) and ``k_L+k_Lo`` [-] (with the output's slope
+    beside it: the friction's whole growth with the load,
+    :class:`diagnosis.effects_load.LoadInside`)."""
     rows = []
     for seal in seals:
         t0 = time.perf_counter()
         rep = diagnose(load_pneumatic(seal, 1), "lugre",
                        validation=[load_pneumatic(seal, 5), load_pneumatic(seal, 7)])
         load = rep["effect_details"].get("load", {})
-        params = {"k_L": [p.get("k_L") for p in load.get("transfer_params", [])],
+        fold = load.get("transfer_params", [])
+        params = {"k_L": [p.get("k_L") for p in fold],
+                  "k_L+k_Lo": [p.get("k_L", 0.0) + p.get("k_Lo", 0.0) for p in fold],
                   "Fc": rep["base"]["params"]["Fc"]}
         rows.append(_row(f"pneumatic {seal}", "1 bar -> 5, 7 bar", rep, params,
                          time.perf_counter() - t0))

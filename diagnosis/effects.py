@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen22`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen23`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -258,6 +258,7 @@ _S19 = "diagnosis.benchmark.seen19:"
 _S20 = "diagnosis.benchmark.seen20:"
 _S21 = "diagnosis.benchmark.seen21:"
 _S22 = "diagnosis.benchmark.seen22:"
+_S23 = "diagnosis.benchmark.seen23:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -317,7 +318,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "current_ripple": _S19 + "current_ripple_truth",
                    "rack_flank_sliding": _S20 + "rack_flank_sliding_truth",
                    "cone_sensor_brake": _S21 + "cone_sensor_brake_truth",
-                   "inertia_valve_damper": _S22 + "inertia_valve_damper_truth"},
+                   "inertia_valve_damper": _S22 + "inertia_valve_damper_truth",
+                   "belt_creep": _S23 + "belt_creep_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -347,7 +349,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "viscoelastic_rolling": _S19 + "viscoelastic_rolling_truth",
                    "heathcote_slip": _S20 + "heathcote_slip_truth",
                    "pin_in_bore": _S21 + "pin_in_bore_truth",
-                   "ball_spin": _S22 + "ball_spin_truth"},
+                   "ball_spin": _S22 + "ball_spin_truth",
+                   "disc_spring_pad": _S23 + "disc_spring_pad_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -377,7 +380,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "leaning_brush": _S19 + "leaning_brush_truth",
                    "sealing_band": _S20 + "sealing_band_truth",
                    "counterbalance_valve": _S21 + "counterbalance_valve_truth",
-                   "elliptic_vibration": _S22 + "elliptic_vibration_truth"},
+                   "elliptic_vibration": _S22 + "elliptic_vibration_truth",
+                   "fluidic_diode": _S23 + "fluidic_diode_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -407,7 +411,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "eddy_brake": _S19 + "eddy_brake_truth",
                    "shear_thinning_oil": _S20 + "shear_thinning_oil_truth",
                    "flying_pad": _S21 + "flying_pad_truth",
-                   "wiping_meniscus": _S22 + "wiping_meniscus_truth"},
+                   "wiping_meniscus": _S22 + "wiping_meniscus_truth",
+                   "sommerfeld_journal": _S23 + "sommerfeld_journal_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -441,7 +446,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "rail_joint": _S19 + "rail_joint_truth",
                    "rail_misalignment": _S20 + "rail_misalignment_truth",
                    "spool_flow_force": _S21 + "spool_flow_force_truth",
-                   "crank_transmission": _S22 + "crank_transmission_truth"},
+                   "crank_transmission": _S22 + "crank_transmission_truth",
+                   "drawer_overhang": _S23 + "drawer_overhang_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -470,7 +476,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "abbe_pitch": _S19 + "abbe_pitch_truth",
                    "friction_damped_mount": _S20 + "friction_damped_mount_truth",
                    "spring_surge": _S21 + "spring_surge_truth",
-                   "rolling_payload": _S22 + "rolling_payload_truth"},
+                   "rolling_payload": _S22 + "rolling_payload_truth",
+                   "rocking_block": _S23 + "rocking_block_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -503,7 +510,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "gauge_snubber": _S19 + "gauge_snubber_truth",
                    "magnetostrictive_wire": _S20 + "magnetostrictive_wire_truth",
                    "magnetoelastic_cell": _S21 + "magnetoelastic_cell_truth",
-                   "quartz_counter": _S22 + "quartz_counter_truth"},
+                   "quartz_counter": _S22 + "quartz_counter_truth",
+                   "swept_grating": _S23 + "swept_grating_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -534,7 +542,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "film_dewetting": _S19 + "film_dewetting_truth",
                    "grease_channelling": _S20 + "grease_channelling_truth",
                    "receiver_pressure": _S21 + "receiver_pressure_truth",
-                   "spall_growth": _S22 + "spall_growth_truth"},
+                   "spall_growth": _S22 + "spall_growth_truth",
+                   "oil_evaporation": _S23 + "oil_evaporation_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -563,7 +572,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "grease_packed_gap": _S19 + "grease_packed_gap_truth",
                    "wedge_flank": _S20 + "wedge_flank_truth",
                    "overlapped_servo": _S21 + "overlapped_servo_truth",
-                   "side_loaded_pin": _S22 + "side_loaded_pin_truth"},
+                   "side_loaded_pin": _S22 + "side_loaded_pin_truth",
+                   "toggle_spring": _S23 + "toggle_spring_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -592,7 +602,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "slip_weakening": _S19 + "slip_weakening_truth",
                    "microslip_bar": _S20 + "microslip_bar_truth",
                    "contact_renewal": _S21 + "contact_renewal_truth",
-                   "grease_yield": _S22 + "grease_yield_truth"},
+                   "grease_yield": _S22 + "grease_yield_truth",
+                   "superelastic_flexure": _S23 + "superelastic_flexure_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

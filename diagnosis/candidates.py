@@ -255,6 +255,13 @@ class Candidate:
     #: fit_composite`); ``None``: no such start
     undo = None
 
+    #: ``penalty(p, ctx) -> ndarray``: a prior on the effect's own extras ``p``, as rows [-]
+    #: appended to the joint fit's residual (each weighted by the square root of the fit
+    #: record's length, so a row of size ``e`` costs what a misfit of ``e`` standard
+    #: deviations of the force on every sample does; :func:`diagnosis.composite.
+    #: fit_composite`); the fit scores it reports leave the rows out. ``None``: no prior
+    penalty = None
+
     def practical(self, p: dict, ctx: Context) -> str:
         """Why the fitted parameters ``p`` are too small to be this effect in practice,
         whatever the held-out scores ('' when they are not; see

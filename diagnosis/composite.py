@@ -416,6 +416,9 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
             memo[key] = (F, trial)
         return memo[key]
 
+    penalties = [eff.penalty for eff in effects if getattr(eff, "penalty", None) is not None]
+    n_pen = sum(np.size(pen({e.name: e.x0 for e in ex}, ctx)) for pen in penalties)
+
     def residual(u):
         xl, extras = unpack(u)
         F, trial = law_force(xl, extras)
@@ -424,7 +427,13 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
                            if elastic else None)
         r = (fit.F - F) / sd
         if not np.all(np.isfinite(r)):
-            return np.full(r.size, 1e3)
+            return np.full(r.size + n_pen, 1e3)
+        if n_pen:
+            # an effect's prior on its own parameters (a smoothness of a map's knots), as
+            # rows weighted by the record's length: it counts as a misfit of that size on
+            # every sample
+            r = np.concatenate([r] + [np.sqrt(r.size) * np.asarray(pen(extras, ctx), float)
+                                      for pen in penalties])
         return r
 
     def gridded(u0):
@@ -520,8 +529,11 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     xl, extras = unpack(sol.x)
     fitted = law.with_values(**{n: float(val) for n, val in zip(base_names, xl)})
     comp = Composite(fitted, list(base_names), list(effects), extras, ctx)
-    nr = float(np.sqrt(2.0 * sol.cost / fit.F.size)) if long_record \
-        else float(np.sqrt(np.mean(sol.fun ** 2)))
+    if n_pen:  # the record's own misfit, without the prior's rows
+        nr = float(np.sqrt(np.mean(residual(sol.x)[:fit.F.size] ** 2)))
+    else:
+        nr = float(np.sqrt(2.0 * sol.cost / fit.F.size)) if long_record \
+            else float(np.sqrt(np.mean(sol.fun ** 2)))
     return comp, nr
 
 

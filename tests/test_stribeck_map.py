@@ -199,3 +199,48 @@ def test_greedy_stacking_skips_an_inside_effect_on_a_law_that_cannot_carry_it():
     assert rep["verdict"]["cause"] == "load", rep.summary()
     added = [s["add"] for s in rep["greedy"]["sequence"]]
     assert added[0] == "load" and "backlash" not in added
+
+
+def _two_speed_record(law, rise, n_fine=24001, step=8):
+    """A record that dwells at two speeds (a slow and a fast constant-speed stroke, both
+    ways) and crosses the speeds between only while accelerating - the knots there are
+    pinned by few samples - with a level that rises above 40 % of the top speed (a starved
+    film), inside the bristle dynamics, integrated ``step`` x finer than sampled, 1 %
+    noise."""
+    tf = np.linspace(0.0, 3.0, n_fine)
+    ph = 2 * np.pi * tf / 1.5
+    # a trapezoid-like speed profile: flat tops at 0.05 and 0.4 m/s, fast ramps between
+    v_slow = 0.05 * np.tanh(8 * np.sin(ph))
+    v_fast = 0.4 * np.tanh(8 * np.sin(2 * ph))
+    vf = np.where(tf < 1.5, v_slow, v_fast)
+    q = np.clip((np.abs(vf) - 0.16) / 0.24, 0.0, None)
+    Ff = law.simulate_level(tf, vf, 1.0 + rise * q ** 2)
+    rng = np.random.default_rng(3)
+    F = Ff[::step] + 0.01 * np.std(Ff) * rng.standard_normal(Ff[::step].size)
+    return Dataset.from_arrays(tf[::step], F, v=vf[::step])
+
+
+def test_the_knots_prior_keeps_the_map_smooth_and_is_not_counted_in_the_fit_score(monkeypatch):
+    law = _law()
+    data = _two_speed_record(law, 0.3)
+    ctx = make_context(data)
+    spec = CANDIDATES["stribeck_shape"].specialise(law)
+    names = ["sigma0", "sigma1", "sigma2"]
+
+    def fitted(smooth):
+        monkeypatch.setattr(StribeckMap, "SMOOTH", smooth)
+        comp, nr = fit_composite(law, names, [spec], data, ctx)
+        knots = np.array([0.0] + [comp.extras[n] for n in spec._names()])
+        return comp, nr, knots
+    default = StribeckMap.SMOOTH
+    assert default > 0.0
+    comp, nr, knots = fitted(default)
+    free_comp, free_nr, free_knots = fitted(0.0)
+    # the score is the record's own misfit, the prior's rows left out
+    own = np.sqrt(np.mean((comp.predict(data) - data.F) ** 2)) / np.std(data.F)
+    assert nr == pytest.approx(own, rel=1e-6)
+    assert nr >= free_nr * (1 - 1e-6)   # the prior costs fit, never gains it
+    # the map's second differences: far smaller with the prior
+    rough = np.sum(np.diff(knots, 2) ** 2)
+    free_rough = np.sum(np.diff(free_knots, 2) ** 2)
+    assert rough < 0.25 * free_rough, (knots, free_knots)

@@ -13,6 +13,7 @@ that figure gets a wider band. Measured here: 11.82 %, 8.55 %, 6.53 mm, 9.09 mm.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -146,7 +147,17 @@ def test_identification_through_the_simulation_reproduces_the_stored_models(reco
         assert abs(got["closed_loop"]["force_error"]
                    - stored["closed_loop"]["force_error"]) < 0.005
         for n, v in studies.IDENTIFIED[name]["plant"].items():
-            assert abs(r["params"][n] - v) <= 0.02 * abs(v) + 2e-5
+            if n != "delay":
+                assert abs(r["params"][n] - v) <= 0.02 * abs(v) + 2e-5
+                continue
+            # a sub-sample delay the closed loop pins to about 5 % of a sample: the stored
+            # "lugre" scores 0.03708 on DATA_EMPS at its 0.2253 ms and at 0.2516 ms (a fit
+            # of session 28), 0.03748 at 0.35 ms, 0.03892 at 0
+            assert abs(r["params"][n] - v) <= 0.05 * E.Ts, (name, r["params"][n], v)
+            model = studies.stored_model(name)
+            moved = replace(model, params=replace(model.params, delay=r["params"][n]))
+            assert abs(studies.scores(moved, E)["closed_loop"]["force_error"]
+                       - studies.scores(model, E)["closed_loop"]["force_error"]) < 1e-4
 
 
 @pytest.mark.slow

@@ -59,8 +59,7 @@ def _plain(o):
 #: keys of each ranked effect in the report
 EFFECT_KEYS = ("name", "validation_before", "validation_after", "gap_closed", "excess_closed",
                "significance_z", "improvement_z", "noise_z", "imprint", "size_reason",
-               "defers_to",
-               "defer_reason", "protocol")
+               "defers_to", "defer_reason", "deferral_overruled", "protocol")
 
 
 def report_sections(where, bands, freq, effects, verdict, sequence, before, final_val,

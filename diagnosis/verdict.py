@@ -238,7 +238,9 @@ def overrule_deferrals(effects: list) -> None:
     closed = {e["name"]: e["excess_closed"] for e in effects}
     for e in effects:
         to = e.get("defers_to")
-        if not to or to not in closed or closed[to] >= DEFER_SHARE * e["excess_closed"]:
+        # (a candidate that closes nothing has nothing for its simpler form to fall short of)
+        if (not to or to not in closed or e["excess_closed"] <= 0.0
+                or closed[to] >= DEFER_SHARE * e["excess_closed"]):
             continue
         e["deferral_overruled"] = (
             f"{e.get('defer_reason') or 'its fitted form is ' + to + chr(39) + 's'}; but {to} "

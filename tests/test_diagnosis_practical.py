@@ -336,6 +336,10 @@ def test_a_deferral_the_held_out_records_contradict_is_overruled():
     rank(kept)
     assert kept[0]["name"] == "inertia" and kept[1]["defers_to"] == "inertia"
     assert decide(kept, before, floor)["cause"] == "inertia"
+    # a deferring candidate that closes nothing keeps its deferral
+    worse = [dict(ine, excess_closed=-0.9), dict(acc, excess_closed=-0.1)]
+    rank(worse)
+    assert worse[1]["defers_to"] == "inertia" and "deferral_overruled" not in worse[1]
 
 
 @pytest.mark.slow  # 21 s: the suite's budget; inertia against acceleration is also test_diagnosis's

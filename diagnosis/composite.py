@@ -529,11 +529,13 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     xl, extras = unpack(sol.x)
     fitted = law.with_values(**{n: float(val) for n, val in zip(base_names, xl)})
     comp = Composite(fitted, list(base_names), list(effects), extras, ctx)
-    if n_pen:  # the record's own misfit, without the prior's rows
-        nr = float(np.sqrt(np.mean(residual(sol.x)[:fit.F.size] ** 2)))
+    if long_record and not n_pen:
+        nr = float(np.sqrt(2.0 * sol.cost / fit.F.size))
     else:
-        nr = float(np.sqrt(2.0 * sol.cost / fit.F.size)) if long_record \
-            else float(np.sqrt(np.mean(sol.fun ** 2)))
+        # the record's own misfit, without a prior's rows (the long records' solver keeps
+        # no residual)
+        r = residual(sol.x) if long_record else sol.fun
+        nr = float(np.sqrt(np.mean(r[:fit.F.size] ** 2)))
     return comp, nr
 
 

@@ -242,10 +242,10 @@ def overrule_deferrals(effects: list) -> None:
         if (not to or to not in closed or e["excess_closed"] <= 0.0
                 or closed[to] >= DEFER_SHARE * e["excess_closed"]):
             continue
+        why = e.get("defer_reason") or f"its fitted form is {to}'s"
         e["deferral_overruled"] = (
-            f"{e.get('defer_reason') or 'its fitted form is ' + to + chr(39) + 's'}; but {to} "
-            f"closes {100 * closed[to]:.0f} % of the gap above the floor against its "
-            f"{100 * e['excess_closed']:.0f} % (< {DEFER_SHARE:g} of it)")
+            f"{why}; but {to} closes {100 * closed[to]:.0f} % of the gap above the floor "
+            f"against its {100 * e['excess_closed']:.0f} % (< {DEFER_SHARE:g} of it)")
         e.pop("defers_to")
         e.pop("defer_reason", None)
 

@@ -386,8 +386,29 @@ def _subsample(n, most: int = 6000) -> np.ndarray:
     return np.arange(0, n, max(1, -(-n // most)))
 
 
+#: smallest eigenvalue ratio of the normal equations :func:`_lsq` solves directly: a
+#: condition number of the columns below 1e5, far from where the SVD solve's ``rcond``
+#: (1e-10 of the largest singular value) drops a direction, so both give the full solution
+#: (the coefficients to about 1e-6, the sum of squares, flat there, far finer)
+NORMAL_EQ_RATIO = 1e-10
+
+
 def _lsq(A, b):
-    """Least squares of ``A c ~ b``: (sum of squared residuals, c)."""
+    """Least squares of ``A c ~ b``: (sum of squared residuals, c).
+
+    The data starts solve thousands of these on tall, thin columns (14,000 x 3-12): the
+    normal equations take a fifth to an eighth of the time of LAPACK's SVD solve
+    (``gelsd``) and give its solution where the columns are well conditioned
+    (:data:`NORMAL_EQ_RATIO`); elsewhere the SVD solve with ``rcond`` 1e-10 runs as
+    before (it drops the directions below that)."""
+    n, k = A.shape
+    if n >= 4 * k and k:
+        G = A.T @ A
+        w, V = np.linalg.eigh(G)
+        if w[0] > NORMAL_EQ_RATIO * w[-1] and np.isfinite(w[-1]):
+            c = V @ ((V.T @ (A.T @ b)) / w)
+            res = b - A @ c
+            return float(res @ res), c
     c, *_ = np.linalg.lstsq(A, b, rcond=1e-10)
     res = b - A @ c
     return float(res @ res), c

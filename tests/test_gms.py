@@ -220,6 +220,15 @@ def test_steady_start_and_the_force_family_of_a_record_start():
     assert m.force(s, 0.0) == pytest.approx(0.3, rel=1e-12)
     s = m.record_start_state(t[:50], np.zeros(50), F=np.full(50, 1e9))
     np.testing.assert_allclose(s, m.params.Fs / (N_ELEMENTS * m.element_stiffness()))
+    # with the micro-damping, in motion: the compiled bisection still meets the first force
+    # within the family's reach (at 2e-2 m/s the sticking blocks' damping, sigma1 v = 2 N,
+    # lifts its whole range to [1.0, g(v0)]: its end is the start)
+    m = make_model("gms", sigma1=float(m.params.sigma0) * 1e-3, **FAST)
+    s = m.record_start_state(t[:50], np.full(50, 2e-2), F=np.full(50, 0.4))
+    assert m.force(s, 2e-2) == pytest.approx(1.0, rel=1e-9)
+    for v0, F0 in ((-1e-3, -0.7), (5e-3, -0.2)):
+        s = m.record_start_state(t[:50], np.full(50, v0), F=np.full(50, F0))
+        assert m.force(s, v0) == pytest.approx(F0, rel=1e-9)
 
 
 def test_micro_damping_is_lugres_sigma1_after_a_reversal_and_vanishes_in_sliding():

@@ -50,6 +50,10 @@ DIFF_STEP = 1e-6
 #: :func:`_stacked_jacobian` (False: scipy's "2-point" differences of the whole residual,
 #: one evaluation a column; the same columns to ~1e-8, the position fit 1.6 x as slow)
 STRUCTURED_JACOBIAN = True
+#: the joint fits' stop on the cost's relative fall (scipy's ``ftol``), unless every effect
+#: of a fit allows a looser one (a candidate's ``FTOL``: :class:`diagnosis.effects_drift.
+#: Drift`)
+FTOL = 1e-8
 
 #: static (break-away) levels of the LuGre family and how far above the data's force scale
 #: (99th percentile of |F|) their box reaches [-]. The identification box stops at 2 x that
@@ -470,6 +474,10 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
                                      unpack(u)[1], lambda uj: unpack(uj)[1],
                                      [e.name for e in ex], hi - lo, fit, ctx, sd, residual)
 
+    # the relative fall of the cost at which a fit stops (scipy's ftol; the strictest of
+    # the effects', each its ``FTOL`` or :data:`FTOL`)
+    ftol = min((getattr(eff, "FTOL", FTOL) for eff in effects), default=FTOL)
+
     def solve(u):
         # the parts a data start pinned (no span) stay out of the solved vector: their zero
         # columns leave the float32 normal equations singular, and in scipy's trust region
@@ -479,22 +487,23 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         free = np.concatenate([np.ones(nb, bool), hi > lo])
         if free.all():
             if long_record:
-                return _solve_normal(residual, u, max_nfev)
+                return _solve_normal(residual, u, max_nfev, ftol=ftol)
             return least_squares(residual, u, jac=jac, bounds=(0.0, 1.0), x_scale=1.0,
-                                 max_nfev=max_nfev, diff_step=DIFF_STEP, method="trf")
+                                 max_nfev=max_nfev, diff_step=DIFF_STEP, method="trf",
+                                 ftol=ftol)
 
         def on_free(uf):
             full = u.copy()
             full[free] = uf
             return residual(full)
         if long_record:
-            sol_f = _solve_normal(on_free, u[free], max_nfev)
+            sol_f = _solve_normal(on_free, u[free], max_nfev, ftol=ftol)
         else:
             jac_f = jac if jac == "2-point" else (lambda uf: jac(np.where(
                 free, 0.0, u) + _scatter(uf, free))[:, free])
             sol_f = least_squares(on_free, u[free], jac=jac_f, bounds=(0.0, 1.0),
                                   x_scale=1.0, max_nfev=max_nfev, diff_step=DIFF_STEP,
-                                  method="trf")
+                                  method="trf", ftol=ftol)
         full = u.copy()
         full[free] = sol_f.x
         sol_f.x = full
@@ -703,7 +712,7 @@ def _counted(residual, progress, label):
     return wrapped
 
 
-def _solve_normal(residual, u0, max_nfev, diff_step=1e-6):
+def _solve_normal(residual, u0, max_nfev, diff_step=1e-6, ftol=1e-8):
     """``least_squares(residual, u0, bounds=(0, 1), x_scale=1.0, max_nfev=max_nfev,
     diff_step=diff_step, method="trf")`` (a 2-point Jacobian, the exact trust-region
     subproblem) without an N x D float64 Jacobian or scipy's copies of it.
@@ -754,5 +763,5 @@ def _solve_normal(residual, u0, max_nfev, diff_step=1e-6):
 
     x0 = np.clip(u0, 0.0, 1.0)
     D = u0.size
-    return trf_exact(fun_jac, x0, np.zeros(D), np.ones(D), ftol=1e-8, xtol=1e-8,
+    return trf_exact(fun_jac, x0, np.zeros(D), np.ones(D), ftol=ftol, xtol=1e-8,
                      gtol=1e-8, max_nfev=max_nfev, cost_of=cost_of)

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen23`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen24`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -259,6 +259,7 @@ _S20 = "diagnosis.benchmark.seen20:"
 _S21 = "diagnosis.benchmark.seen21:"
 _S22 = "diagnosis.benchmark.seen22:"
 _S23 = "diagnosis.benchmark.seen23:"
+_S24 = "diagnosis.benchmark.seen24:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -319,7 +320,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "rack_flank_sliding": _S20 + "rack_flank_sliding_truth",
                    "cone_sensor_brake": _S21 + "cone_sensor_brake_truth",
                    "inertia_valve_damper": _S22 + "inertia_valve_damper_truth",
-                   "belt_creep": _S23 + "belt_creep_truth"},
+                   "belt_creep": _S23 + "belt_creep_truth",
+                   "gantry_racking": _S24 + "gantry_racking_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -350,7 +352,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "heathcote_slip": _S20 + "heathcote_slip_truth",
                    "pin_in_bore": _S21 + "pin_in_bore_truth",
                    "ball_spin": _S22 + "ball_spin_truth",
-                   "disc_spring_pad": _S23 + "disc_spring_pad_truth"},
+                   "disc_spring_pad": _S23 + "disc_spring_pad_truth",
+                   "light_load_skid": _S24 + "light_load_skid_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -381,7 +384,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "sealing_band": _S20 + "sealing_band_truth",
                    "counterbalance_valve": _S21 + "counterbalance_valve_truth",
                    "elliptic_vibration": _S22 + "elliptic_vibration_truth",
-                   "fluidic_diode": _S23 + "fluidic_diode_truth"},
+                   "fluidic_diode": _S23 + "fluidic_diode_truth",
+                   "pitching_pads": _S24 + "pitching_pads_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -412,7 +416,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "shear_thinning_oil": _S20 + "shear_thinning_oil_truth",
                    "flying_pad": _S21 + "flying_pad_truth",
                    "wiping_meniscus": _S22 + "wiping_meniscus_truth",
-                   "sommerfeld_journal": _S23 + "sommerfeld_journal_truth"},
+                   "sommerfeld_journal": _S23 + "sommerfeld_journal_truth",
+                   "wall_slip": _S24 + "wall_slip_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -447,7 +452,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "rail_misalignment": _S20 + "rail_misalignment_truth",
                    "spool_flow_force": _S21 + "spool_flow_force_truth",
                    "crank_transmission": _S22 + "crank_transmission_truth",
-                   "drawer_overhang": _S23 + "drawer_overhang_truth"},
+                   "drawer_overhang": _S23 + "drawer_overhang_truth",
+                   "track_end": _S24 + "track_end_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -477,7 +483,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "friction_damped_mount": _S20 + "friction_damped_mount_truth",
                    "spring_surge": _S21 + "spring_surge_truth",
                    "rolling_payload": _S22 + "rolling_payload_truth",
-                   "rocking_block": _S23 + "rocking_block_truth"},
+                   "rocking_block": _S23 + "rocking_block_truth",
+                   "qzs_isolator": _S24 + "qzs_isolator_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -511,7 +518,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "magnetostrictive_wire": _S20 + "magnetostrictive_wire_truth",
                    "magnetoelastic_cell": _S21 + "magnetoelastic_cell_truth",
                    "quartz_counter": _S22 + "quartz_counter_truth",
-                   "swept_grating": _S23 + "swept_grating_truth"},
+                   "swept_grating": _S23 + "swept_grating_truth",
+                   "force_restoration": _S24 + "force_restoration_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -543,7 +551,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "grease_channelling": _S20 + "grease_channelling_truth",
                    "receiver_pressure": _S21 + "receiver_pressure_truth",
                    "spall_growth": _S22 + "spall_growth_truth",
-                   "oil_evaporation": _S23 + "oil_evaporation_truth"},
+                   "oil_evaporation": _S23 + "oil_evaporation_truth",
+                   "pump_down": _S24 + "pump_down_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -573,7 +582,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "wedge_flank": _S20 + "wedge_flank_truth",
                    "overlapped_servo": _S21 + "overlapped_servo_truth",
                    "side_loaded_pin": _S22 + "side_loaded_pin_truth",
-                   "toggle_spring": _S23 + "toggle_spring_truth"},
+                   "toggle_spring": _S23 + "toggle_spring_truth",
+                   "graded_clearance": _S24 + "graded_clearance_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -603,7 +613,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "microslip_bar": _S20 + "microslip_bar_truth",
                    "contact_renewal": _S21 + "contact_renewal_truth",
                    "grease_yield": _S22 + "grease_yield_truth",
-                   "superelastic_flexure": _S23 + "superelastic_flexure_truth"},
+                   "superelastic_flexure": _S23 + "superelastic_flexure_truth",
+                   "eyring_film": _S24 + "eyring_film_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

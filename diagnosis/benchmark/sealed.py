@@ -1,12 +1,12 @@
-"""The twenty-fourth sealed truth family: one more mechanism per effect, kept out of all tuning.
+"""The twenty-fifth sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-11-30 (session 28) by another hand, once, without running the diagnosis on it;
+Written 2026-11-30 (session 29) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 27's, was run once and is :mod:`.seen23`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen23`
+sealed before it, session 28's, was run once and is :mod:`.seen24`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen24`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen23`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen24`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`, ``diagnosis.effects_<name>``), taken from the friction
 literature or from real machines, integrated along the plant's continuous motion on the grid
@@ -18,59 +18,54 @@ each effect's amplitude monotonically from the base law at ``s`` = 0 (its calibr
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``gantry_racking``: the axis is a gantry driven on both sides by
-                   two servo loops of unequal bandwidth: each lags the command by its
-                   type-2 loop's following error, ~ the acceleration over its
-                   bandwidth squared, so the bridge racks by their difference and binds
-                   in its guides: levels rising with the lagged |a|
-load               ``light_load_skid``: the contact's rolling elements are driven by
-                   their traction, ~ the load, against the drag of their cage and
-                   lubricant: below the bearing's minimum load they skid, and the
-                   sliding at the skid's speed adds a friction ~ W (1 - W / W_min),
-                   greatest at half the minimum load and none above it
-asymmetry          ``pitching_pads``: the carriage slides on a leading and a trailing
-                   pad of different materials (a bronze falling with the speed, a
-                   polymer rising with it); the friction's moment about the pads'
-                   plane shifts the weight onto the leading pad: the levels differ by
-                   direction, the one way at low speed and the other at speed
-stribeck_shape     ``wall_slip``: a lubricant film that sticks to the walls below a
-                   critical shear stress and slips along them above it (Navier slip):
-                   a viscous drag that grows linearly up to the critical speed and far
-                   more slowly beyond it
-position           ``track_end``: an iron-core linear motor whose forcer runs off the
-                   end of its magnet track within the stroke: its magnetic pull on the
-                   guides, and their friction, fall with the overlap, and the track's
-                   end pulls the forcer back (a reluctance force)
-inertia            ``qzs_isolator``: a payload on a quasi-zero-stiffness isolator
-                   (a spring balanced by negative-stiffness springs): a cubic spring and
-                   a damper transmit its inertia, whole for large strokes and hardly at
-                   all for small or slow relative motions
-delay              ``force_restoration``: the force is read by an electromagnetic
-                   force-restoration cell: a PID loop holds its lever at null with a
-                   coil, and the coil's current is the reading: a lag set by the lever
-                   pivot's stiffness over the loop's bandwidth, with the loop's overshoot
-drift              ``pump_down``: the machine runs in a chamber being pumped down: the
-                   adsorbed gas layer on the contact desorbs as the pressure falls
-                   (Langmuir kinetics), and the bare surfaces' adhesion raises the
-                   levels once the pressure passes the layer's: a late, sigmoid rise
-backlash           ``graded_clearance``: drive and contact are joined by several pins
-                   (a cycloid or pin-gear mesh) whose clearances are spread by the
-                   machining tolerances: after a reversal one pin engages after the
-                   other, and the stiffness of the take-up grows stepwise until all
-                   carry
-gms                ``eyring_film``: part of the contact is carried through an
-                   elastohydrodynamic film that is an elastic solid for fast changes and
-                   an Eyring fluid in steady shear (Johnson and Tevaarwerk): after a
-                   reversal the stress unloads elastically, then flows at a rate
-                   growing as sinh of the stress, and it relaxes at rest; at ``s`` = 0
-                   the base itself
+acceleration       ``band_capstan``: the carriage is pulled by a steel band wrapped over
+                   a fixed guide shoe; the band also accelerates a driven mass behind
+                   the shoe, so its tension there, and the shoe's capstan friction
+                   (Euler-Eytelwein), rise when the motion speeds up and fall, down to a
+                   slack band, when it slows
+load               ``constant_flow_pad``: the carriage rides on hydrostatic pads fed a
+                   constant flow each: the gap at which the flow carries the load
+                   narrows as its cube root, and the film's shear drag grows with the
+                   load as the gap narrows, with no solid contact
+asymmetry          ``roller_skew``: the way's rollers skew in their cage as they roll,
+                   towards an angle that differs by direction (a guiding flange on one
+                   side); their skew slides them across the track: levels that settle
+                   over a travel after each reversal to a different value each way
+stribeck_shape     ``thermal_closure``: the carriage's plain bushings run with a small
+                   clearance that their own viscous heat closes (the shaft expands more
+                   than its housing): Petroff's drag over a clearance that shrinks with
+                   the friction power, a rise steeper than linear with the speed
+position           ``cable_reel``: a spring-driven reel keeps the carriage's cable taut;
+                   its spiral spring's pull grows with the cable paid out along the stroke
+                   and the reel's bearings drag in proportion to it
+inertia            ``oil_column``: the carriage drags the oil column of a hydraulic hose
+                   connected to it; the column rides on the hose wall's compliance and is
+                   damped by the turbulent loss of its flow: a missed mass that follows
+                   slow motions wholly and lags and rings in quick ones
+delay              ``interleaved_adc``: the force is digitised by two time-interleaved
+                   converters taking alternate samples; the second lane's clock is
+                   skewed and its words misaligned in the merge: every other force
+                   sample is read late
+drift              ``additive_settling``: the way's lubricant carries a solid additive
+                   that settles out of its reservoir (Stokes settling of a log-normal
+                   size spread): the supply at the pick-up loses it as the settling
+                   front passes, and the levels rise late and slowly
+backlash           ``adhesive_flank``: drive and contact are joined across a play whose
+                   flanks are lined with a tacky (adhesive) layer: after a reversal the
+                   contact is held at the flank it last touched until the pull reaches
+                   the layer's pull-off force, then it snaps free and crosses the play
+gms                ``viscoplastic_overstress``: part of the contact is carried through a
+                   soft interface layer that is viscoplastic (Perzyna): elastic with no
+                   flow below its yield stress, and above it a flow growing as a power of
+                   the overstress, so the sliding stress overshoots the yield the more the
+                   faster it slides; at ``s`` = 0 the base itself
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``wall_slip`` needs a
-Stribeck curve (not the isolator's mre_lugre), ``track_end`` a record that revisits its
-positions (not the press), ``light_load_skid`` a load that changes, ``graded_clearance``
-and ``eyring_film`` a classic LuGre base (valve, damping rig, XML-350); each raises a
-``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
+Where a form applies: as its effect's record (``truth_applies``); ``thermal_closure`` needs
+a Stribeck curve (not the isolator's mre_lugre), ``cable_reel`` a record that revisits its
+positions (not the press), ``constant_flow_pad`` a load that changes, ``adhesive_flank`` and
+``viscoplastic_overstress`` a classic LuGre base (valve, damping rig, XML-350); each raises
+a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
 
@@ -78,7 +73,7 @@ import math
 
 import numpy as np
 from numba import njit
-from scipy.signal import cont2discrete, lfilter, lfilter_zi
+from scipy.special import ndtr
 
 from friction.shapes import SHAPES
 
@@ -87,80 +82,56 @@ from .truths import (_base_parts, _bump_centre, _contact_constants, _level,
                      _light_contact_step, _lugre_params, _motion_time, _presliding_path,
                      _smooth_max0, _substeps, has_stribeck_curve, level_inside, on_fine_grid)
 
-__all__ = ["FORMS", "gantry_racking_truth", "light_load_skid_truth", "pitching_pads_truth",
-           "wall_slip_truth", "track_end_truth", "qzs_isolator_truth",
-           "force_restoration_truth", "pump_down_truth", "graded_clearance_truth",
-           "eyring_film_truth"]
+__all__ = ["FORMS", "band_capstan_truth", "constant_flow_pad_truth", "roller_skew_truth",
+           "thermal_closure_truth", "cable_reel_truth", "oil_column_truth",
+           "interleaved_adc_truth", "additive_settling_truth", "adhesive_flank_truth",
+           "viscoplastic_overstress_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "gantry_racking", "load": "light_load_skid",
-         "asymmetry": "pitching_pads", "stribeck_shape": "wall_slip",
-         "position": "track_end", "inertia": "qzs_isolator",
-         "delay": "force_restoration", "drift": "pump_down",
-         "backlash": "graded_clearance", "gms": "eyring_film"}
+FORMS = {"acceleration": "band_capstan", "load": "constant_flow_pad",
+         "asymmetry": "roller_skew", "stribeck_shape": "thermal_closure",
+         "position": "cable_reel", "inertia": "oil_column",
+         "delay": "interleaved_adc", "drift": "additive_settling",
+         "backlash": "adhesive_flank", "gms": "viscoplastic_overstress"}
 
 
 # -- acceleration ----------------------------------------------------------------------------
-#: ``gantry_racking``'s rise of the levels at the record's top racking, at strength 1 [-];
-#: the slower side's closed-loop period, x the motion's time scale [-], the faster side's
-#: bandwidth over it [-] and the loops' damping ratio [-]; the racking's rounding at zero,
-#: x its top value [-]
-RACK_RISE, RACK_PERIOD, RACK_RATIO, RACK_DAMPING, RACK_ROUND = 0.4, 0.4, 1.6, 0.7, 0.05
+#: ``band_capstan``'s rise of the levels per unit of the band's tension change (the driven
+#: mass's inertial force at the top acceleration), at strength 1 [-]; the band's pretension
+#: behind the shoe, in that unit [-]; the rounding of the slack band and of the direction,
+#: in that unit and x the top speed [-]
+BAND_RISE, BAND_PRE, BAND_ROUND = 0.4, 0.5, 0.05
 
 
-@njit(cache=True)
-def _following_error(a, h, w, zeta):
-    """The following error e [m] of a type-2 servo loop (closed loop (2 zeta w s + w^2) /
-    (s^2 + 2 zeta w s + w^2)) along the commanded accelerations ``a`` [m/s^2] (steps ``h``
-    [s]): e'' + 2 zeta w e' + w^2 e = a, from rest (its static value a / w^2).
-    Semi-implicit Euler on sub-steps of at most 0.05 / ``w``, the acceleration
-    interpolated."""
-    n = a.size
-    out = np.empty(n)
-    m = max(1, int(math.ceil(w * h / 0.05)))
-    hs = h / m
-    e = 0.0
-    ed = 0.0
-    out[0] = 0.0
-    for k in range(1, n):
-        for i in range(m):
-            u = a[k - 1] + (a[k] - a[k - 1]) * (i + 1.0) / m
-            ed += hs * (u - 2.0 * zeta * w * ed - w * w * e)
-            e += hs * ed
-        out[k] = e
-    return out
-
-
-def _racking(a, h, w, ratio, zeta):
-    """The gantry's racking [m] (the two sides' following errors' difference) along the
-    accelerations ``a`` [m/s^2] (steps ``h`` [s]): the slow side's loop of bandwidth ``w``
-    [rad/s], the fast side's ``ratio`` x ``w``, both of damping ``zeta``
-    (:func:`_following_error`)."""
-    a = np.ascontiguousarray(a, dtype=float)
-    return _following_error(a, h, w, zeta) - _following_error(a, h, ratio * w, zeta)
+def _band_tension(a, direction, pre, rounding):
+    """The band's tension behind the guide shoe [-] (in the driven mass's inertial force at
+    the top acceleration) at the accelerations ``a`` [-] (over the top acceleration) along
+    the motion's ``direction`` [-] (+-1, rounded): the pretension ``pre`` plus the force
+    that accelerates the driven mass along the motion, and never below a slack band's 0
+    (rounded over ``rounding``)."""
+    return _smooth_max0(pre + np.asarray(a, float) * np.asarray(direction, float), rounding)
 
 
 @on_fine_grid
-def gantry_racking_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The axis is a gantry (an H-frame) whose bridge is driven on both sides by its own
-    motor and servo loop, the loops' bandwidths unequal (the sides' masses, the cable
-    chain's side, the tuning): a type-2 loop follows a ramp without error but lags an
-    acceleration by ~ a / w^2 (:func:`_following_error`), so the bridge racks by the two
-    sides' difference (:func:`_racking`; the slow side's closed-loop period
-    :data:`RACK_PERIOD` x the motion's time scale, the fast side :data:`RACK_RATIO` x
-    quicker). The racked bridge is stiff in yaw and binds in its guides, pressing their
-    carriages diagonally with a force ~ the racking: the Coulomb and Stribeck levels are
-    the base's times 1 + ``s`` :data:`RACK_RISE` x |racking| over its top value (99th
-    percentile; rounded at zero over :data:`RACK_ROUND` of it), inside the bristle
-    dynamics; the viscous term is the base's.
+def band_capstan_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage is pulled by a steel band (a band or tape drive, as in plotters, pick
+    and place heads and cable-driven devices) that wraps a fixed, lubricated guide shoe on
+    its way to the drive drum; behind the shoe the band also pulls a driven mass (a
+    counter-carriage, the tensioner's slide). By the capstan law the band slides over the
+    shoe with a friction (e^(mu theta) - 1) T, T the tension behind the shoe: the
+    pretension (:data:`BAND_PRE`) plus the driven mass's inertial force along the motion,
+    never below zero, where the band goes slack (:func:`_band_tension`). The base law,
+    identified at the steady pretension, carries its friction; the Coulomb and Stribeck
+    levels are the base's times 1 + ``s`` :data:`BAND_RISE` (T - T_0), T_0 the steady
+    pretension's (rounded), inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (a [m/s^2]) and its base law.
+        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the bridge's yaw stiffness times the guides' friction
-        coefficient, / its value at strength 1.
+        Amplitude factor [-]: the shoe's capstan factor e^(mu theta) - 1 times the driven
+        mass, / its value at strength 1.
 
     Returns
     -------
@@ -169,65 +140,65 @@ def gantry_racking_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Dual-drive gantry stages and their racking (Teo, Tan, Lim, Huang and Tay 2007, Dynamic
-    modeling and adaptive control of a H-type gantry stage, Mechatronics 17;
-    Garcia-Herreros, Kestelyn, Gomand, Coleman and Barre 2013, Model-based decoupling
-    control method for dual-drive gantry stages, Control Eng. Pract. 21) and the following
-    error of type-2 servo loops (Ellis 2012, Control System Design Guide, 4th ed., ch. on
-    following error). The candidate raises the levels with |a|, lagged, tilts them with a
+    The capstan (Euler-Eytelwein) equation and band drives (Euler 1762; Eytelwein 1808;
+    Johnson 1985, Contact Mechanics, ch. on belt friction; Jung, Pan and Kang 2008,
+    Capstan equation including bending rigidity and non-linear frictional behavior, Mech.
+    Mach. Theory 43). The candidate raises the levels with |a|, lagged, tilts them with a
     and adds a force odd in a; the open forms lag, age, heat, skid, load, press, attract,
     squeeze, transfer weight, slosh, dilate, wedge, spring a gib, soften rubber, swing
     arms, unload by the jerk, tilt pads, push ball trains, ripple the current, slide rack
-    flanks, set a shoe by a ball in a cone, shut a damper's bypass by an inertia valve or
-    creep a belt. Here the two drives' servo lags differ: the structure racks, and binds.
+    flanks, set a shoe by a ball in a cone, shut a damper's bypass, creep a belt or rack a
+    gantry. Here a band slides over a fixed shoe: its friction follows the tension the
+    acceleration puts in the band, up to where the band goes slack.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    w = 2.0 * math.pi / (RACK_PERIOD * max(_motion_time(kin), 1e-12))
-    r = _racking(kin.a, float(kin.dt), w, RACK_RATIO, RACK_DAMPING)
-    top = max(float(np.percentile(np.abs(r), 99)), 1e-300)
-    eps = RACK_ROUND * top
-    mag = (np.sqrt(r * r + eps * eps) - eps) / top
-    lev = 1.0 + float(s) * RACK_RISE * mag
+    a99 = max(kin.scales["a99"], 1e-12)
+    v99 = max(kin.scales["v99"], 1e-12)
+    direction = np.tanh(np.asarray(kin.v, float) / (BAND_ROUND * v99))
+    T = _band_tension(np.asarray(kin.a, float) / a99, direction, BAND_PRE, BAND_ROUND)
+    T0 = float(_band_tension(0.0, 1.0, BAND_PRE, BAND_ROUND))      # the steady pretension
+    lev = np.maximum(1.0 + float(s) * BAND_RISE * (T - T0), 0.05)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- load ------------------------------------------------------------------------------------
-#: ``light_load_skid``'s rise of the levels at half the minimum load, at strength 1 [-]; the
-#: bearing's minimum load as a quantile of the record's |load| [-]; the rounding of the
-#: skid's end, x the minimum load [-]
-SKID_RISE, SKID_QUANTILE, SKID_ROUND = 0.5, 70.0, 0.05
+#: ``constant_flow_pad``'s change of the drag at the top speed between the record's mean
+#: load and its loads farthest from it (the 99th percentile of the change), x the friction
+#: level, at strength 1 [-]; the floor of the load in the gap's law (the pad's lift limit),
+#: x the mean load [-]
+FLOW_DRAG, FLOW_FLOOR = 1.0, 0.05
 
 
-def _skid_drag(q, q_min, rounding):
-    """The skidding elements' sliding friction [-] (1 at half the minimum load) at the loads
-    ``q`` [-] for the minimum load ``q_min`` [-] (same unit): the traction that drives
-    them, ~ q, falls short of their drag, ~ q_min, by 1 - q / q_min, their skid's share;
-    the sliding it leaves, ~ traction x skid, is 4 (q / q_min) (1 - q / q_min), none above
-    the minimum load (rounded over ``rounding`` of it)."""
-    r = np.abs(np.asarray(q, float)) / q_min
-    return 4.0 * r * _smooth_max0(1.0 - r, rounding)
+def _pad_gap_drag(q, floor):
+    """The pad's Couette drag per unit speed [-] (1 at the mean load) at the loads ``q``
+    [-] (over the mean |load|): a pad fed a constant flow Q runs at the gap where Q
+    passes its lands at the pressure that carries the load, Q ~ h^3 p, so h ~ (1 / W)^(1/3)
+    and the drag ~ 1 / h ~ W^(1/3) (the load floored at ``floor``: the gap's limit)."""
+    r = np.abs(np.asarray(q, float))
+    return np.cbrt(np.sqrt(r * r + floor * floor))
 
 
 @on_fine_grid
-def light_load_skid_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The contact is a rolling guide (or a roller bearing) whose elements must be driven
-    round by their traction at the raceways, ~ the load, against the drag of their cage,
-    seals and lubricant. Above the bearing's minimum load the traction suffices and they
-    roll; below it they skid, and a share 1 - W / W_min of their speed slides under the
-    traction ~ W: a sliding friction ~ W (1 - W / W_min) (:func:`_skid_drag`), none at no
-    load, greatest at half the minimum load and none above it (the minimum load the
-    record's :data:`SKID_QUANTILE` th percentile of |load|). The Coulomb and Stribeck levels
-    are the base's times 1 + ``s`` :data:`SKID_RISE` x that friction, inside the bristle
-    dynamics; the viscous term is the base's.
+def constant_flow_pad_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage rides on hydrostatic pads each fed a constant flow (a pump per pad or a
+    flow divider), not a constant pressure through a restrictor: the pad's pressure is the
+    load over its effective area, and its gap settles where the constant flow passes its
+    lands at that pressure, Q ~ h^3 p: h ~ W^(-1/3). The film's Couette (shear) drag
+    ~ v / h therefore grows as the cube root of the load (:func:`_pad_gap_drag`), and it
+    carries the load at every load without touching down. The base law, identified at the
+    mean load, carries the drag there; the truth adds ``s`` :data:`FLOW_DRAG` x the friction
+    level x v / v99 x the drag factor's change from the mean load (over its 99th percentile
+    along the record) to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (load [N]) and its base law.
+        The motion on the fine grid (v [m/s], load [N]) and its base law.
     s : float
-        Amplitude factor [-]: the elements' drag, / its value at strength 1.
+        Amplitude factor [-]: the oil's viscosity times the pads' area over the gap at the
+        mean load, / its value at strength 1.
 
     Returns
     -------
@@ -236,74 +207,76 @@ def light_load_skid_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Skidding of lightly loaded rolling elements and the minimum load of rolling bearings
-    (Harris and Kotzalas 2007, Rolling Bearing Analysis, ch. on high-speed operation and
-    skidding; Palmgren 1959, Ball and Roller Bearing Engineering; SKF 2018, Rolling
-    bearings catalogue, 'minimum load'; Selvaraj and Marappan 2011, Experimental analysis
-    of factors influencing the cage slip in cylindrical roller bearing, Int. J. Adv.
-    Manuf. Technol. 53). The candidate makes the levels affine in the load, with a memory
-    over the travel; the open forms scale the friction with a Hertz contact's area, a
-    seal's, a film's, a junction's, a pivot's, an adhesive contact's or a pin's arc, break,
-    squeeze or desorb films, plough, creep, vibrate, overload a pad, heal scuffs, relieve a
-    preload, roll on a lossy track, slip differentially in conforming grooves, spin balls
-    or press a disc spring. Here the friction comes from too little load: it rises as the
-    load falls below the minimum, then falls again towards no load.
+    Constant-flow (pump-per-pad) hydrostatic bearings and their gap's law (Rowe 1983,
+    Hydrostatic and Hybrid Bearing Design, ch. on constant-flow bearings; Stansfield 1970,
+    Hydrostatic Bearings for Machine Tools; Bassani and Piccigallo 1992, Hydrostatic
+    Lubrication). The candidate makes the levels affine in the load, with a memory over the
+    travel; the open forms scale the friction with a Hertz contact's area, a seal's, a
+    film's, a junction's, a pivot's, an adhesive contact's or a pin's arc, break, squeeze
+    or desorb films, plough, creep, vibrate, overload a constant-pressure pad, heal
+    scuffs, relieve a preload, roll on a lossy track, slip differentially in conforming
+    grooves, spin balls, press a disc spring or skid lightly loaded rollers. Here no solid
+    touches: the load sets the film's gap, and the gap the film's shear.
     """
     L = np.asarray(kin.load, float)
     Lm = float(np.mean(np.abs(L))) or 1.0
     if not np.ptp(L) > 1e-9 * Lm:
-        raise ValueError(f"load (light_load_skid): the {kin.plant} record's load does not "
-                         f"change")
+        raise ValueError(f"load (constant_flow_pad): the {kin.plant} record's load does "
+                         f"not change")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    q_min = max(float(np.percentile(np.abs(L), SKID_QUANTILE)), 1e-12 * Lm)
-    lev = 1.0 + float(s) * SKID_RISE * _skid_drag(L, q_min, SKID_ROUND)
-    return level_inside(kin, lev, np.ones_like(lev))
+    v99 = max(kin.scales["v99"], 1e-12)
+    d = _pad_gap_drag(L / Lm, FLOW_FLOOR) - _pad_gap_drag(1.0, FLOW_FLOOR)
+    d = d / max(float(np.percentile(np.abs(d), 99)), 1e-12)
+    return F + float(s) * FLOW_DRAG * _level(kin) * np.asarray(kin.v, float) / v99 * d
 
 
 # -- asymmetry -------------------------------------------------------------------------------
-#: ``pitching_pads``'s mean friction coefficient times the friction's height over the pads'
-#: spacing, at strength 1 [-]; the bronze pad's friction at rest over its value at speed,
-#: and the speed its excess falls over, x the top speed [-]; the polymer pad's friction at
-#: rest and its rise to the top speed, x the bronze's at speed [-]; the direction's
-#: rounding, x the top speed [-]
-PAD_PITCH, BRONZE_REST, BRONZE_FALL = 0.4, 1.3, 0.1
-POLYMER_REST, POLYMER_RISE, PAD_ROUND = 0.9, 0.8, 0.02
+#: ``roller_skew``'s rise of the levels at the full skew, at strength 1 [-]; the skew's
+#: equilibrium moving -x, x its equilibrium moving +x [-]; the travel the skew settles
+#: over, x the stroke [-]; the direction's rounding, x the top speed [-]
+SKEW_RISE, SKEW_BACK, SKEW_TRAVEL, SKEW_ROUND = 0.5, -0.25, 0.05, 0.02
 
 
-def _pad_difference(u):
-    """The leading (bronze) pad's friction minus the trailing (polymer) pad's [-] at the
-    speeds ``u`` [-] (over the top speed; in the bronze's friction at speed): the bronze's
-    falls from :data:`BRONZE_REST` to 1 over :data:`BRONZE_FALL` (boundary to mixed
-    lubrication), the polymer's rises linearly from :data:`POLYMER_REST` by
-    :data:`POLYMER_RISE` at the top speed (a polymer's velocity strengthening)."""
-    au = np.abs(np.asarray(u, float))
-    bronze = 1.0 + (BRONZE_REST - 1.0) * np.exp(-au / BRONZE_FALL)
-    polymer = POLYMER_REST + POLYMER_RISE * au
-    return bronze - polymer
+@njit(cache=True)
+def _skew(dx, direction, back, travel):
+    """The rollers' skew angle [-] (1 the equilibrium moving +x) along the travel steps
+    ``dx`` [m] with the motion's ``direction`` [-] (+-1, rounded): it settles towards 1
+    moving +x and ``back`` moving -x over the travel ``travel`` [m] (first order in the
+    distance rolled, exact on each step), from the +x equilibrium."""
+    n = dx.size
+    out = np.empty(n)
+    psi = 1.0
+    out[0] = psi
+    for k in range(1, n):
+        d = direction[k]
+        eq = 0.5 * (1.0 + d) + 0.5 * (1.0 - d) * back
+        e = math.exp(-abs(dx[k]) / travel)
+        psi = eq + (psi - eq) * e
+        out[k] = psi
+    return out
 
 
 @on_fine_grid
-def pitching_pads_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage slides on two pads, one before the other along the motion, of
-    different materials: a bronze pad at the +x end, whose friction falls with the speed,
-    and a filled-polymer pad at the -x end, whose friction rises with it
-    (:func:`_pad_difference`). The friction acts in the pads' plane, the drive a height h
-    above it: their moment pitches the carriage and shifts the weight onto the leading pad
-    (N_lead = W / 2 + F h / l). Solved for the friction F = F_sym / (1 - (mu_lead -
-    mu_trail) h / l): moving +x the bronze pad leads, moving -x the polymer one. The
-    Coulomb and Stribeck levels are the base's times 1 / (1 - ``s`` :data:`PAD_PITCH` x
-    d(v) x the direction), d the pads' difference (rounded over :data:`PAD_ROUND` x the top
-    speed), inside the bristle dynamics; the viscous term is the base's.
+def roller_skew_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage runs on cylindrical rollers in a cage (a crossed-roller or flat roller
+    way). Rolling, each roller skews about the load's axis until the moments of its end
+    and flange friction balance: the skew angle settles over a travel of a few roller
+    diameters (:data:`SKEW_TRAVEL` x the stroke) after each reversal, towards an angle that
+    differs by direction, for the rollers are guided by a flange on one side of the track
+    only (:data:`SKEW_BACK` of the +x skew moving -x; :func:`_skew`). A skewed roller
+    slides across the track as it rolls, a friction ~ its skew: the Coulomb and Stribeck
+    levels are the base's times 1 + ``s`` :data:`SKEW_RISE` |skew|, inside the bristle
+    dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the drive's height over the pads' spacing, / its value at
-        strength 1.
+        Amplitude factor [-]: the friction coefficient of the rollers' cross sliding, /
+        its value at strength 1.
 
     Returns
     -------
@@ -312,71 +285,67 @@ def pitching_pads_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The friction moment's load transfer between the pads of a slider (the self-energising
-    and de-energising shoes of drum brakes: Limpert 2011, Brake Design and Safety, 3rd ed.,
-    ch. 2; Slocum 1992, Precision Machine Design, ch. 8 on the pitching of carriages by
-    friction and drive height) and the opposite speed dependences of bronze and filled
-    PTFE slideway linings (Bowden and Tabor 1950; Unal, Mimaroglu, Kadioglu and Ekiz 2004,
-    Sliding friction and wear behaviour of polytetrafluoroethylene and its composites,
-    Mater. Des. 25). The candidate frees the levels (and the Stribeck velocity and viscous
-    term) of each direction and an offset; the open forms twin levels, curves or viscous
-    terms, roll lips, load thrust bearings, pump films, ratchet, spring back, tilt pads,
-    strut, throttle with a check valve, differ in areas, pump along grooves, buckle,
-    scrape chips, commutate, tension idlers, free-wheel, wick felts, run belts, lean
-    brushes, pull sealing bands, hold by a counterbalance valve, vibrate the way or pass a
-    fluidic diode. Here the friction's own moment weighs two unlike pads: the asymmetry
-    turns over with the speed.
+    Roller skewing in roller bearings and ways (Harris and Kotzalas 2007, Advanced Concepts
+    of Bearing Technology, ch. on roller skewing; Kalker 1990, Three-Dimensional Elastic
+    Bodies in Rolling Contact, on the lateral creep of a yawed roller; Slocum 1992,
+    Precision Machine Design, ch. 8 on roller ways). The candidate frees the levels (and
+    the Stribeck velocity and viscous term) of each direction and an offset; the open
+    forms twin levels, curves or viscous terms, roll lips, load thrust bearings, pump
+    films, ratchet, spring back, tilt pads, strut, throttle with a check valve, differ in
+    areas, pump along grooves, buckle, scrape chips, commutate, tension idlers,
+    free-wheel, wick felts, run belts, lean brushes, pull sealing bands, hold by a
+    counterbalance valve, vibrate the way, pass a fluidic diode or pitch unlike pads. Here
+    the rollers steer themselves: each direction's level is reached over a travel.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     v99 = max(kin.scales["v99"], 1e-12)
-    u = np.asarray(kin.v, float) / v99
-    shift = float(s) * PAD_PITCH * _pad_difference(u) * np.tanh(u / PAD_ROUND)
-    lev = 1.0 / (1.0 - np.clip(shift, -0.9, 0.9))
+    x = np.asarray(kin.x, float)
+    dx = np.concatenate(([0.0], np.diff(x)))
+    direction = np.tanh(np.asarray(kin.v, float) / (SKEW_ROUND * v99))
+    span = max(float(np.ptp(x)), 1e-12)
+    psi = _skew(dx, direction, SKEW_BACK, SKEW_TRAVEL * span)
+    lev = 1.0 + float(s) * SKEW_RISE * np.abs(psi)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- stribeck_shape --------------------------------------------------------------------------
-#: ``wall_slip``'s drag at the top speed, x the friction level, at strength 1 [-]; the speed
-#: the wall shear reaches the critical stress at, x the top speed [-]; the film's share of
-#: its shear above it, h / (h + b) (b the slip length) [-]; the kink's rounding, x the
-#: critical speed [-]
-SLIP_DRAG, SLIP_ONSET, SLIP_SHARE, SLIP_ROUND = 0.5, 0.25, 0.15, 0.1
+#: ``thermal_closure``'s drag at the top speed, x the friction level, at strength 1 [-]; the
+#: clearance's closure at the top speed's friction power, as a share that closes the
+#: clearance (4 kappa, at most 0.95 anywhere) [-]
+CLOSE_DRAG, CLOSE_KAPPA = 0.5, 0.15
 
 
-def _slip_shear(u, onset, share, rounding):
-    """The film's wall shear stress [-] (1 at the top speed) at the speeds ``u`` [-] (over
-    the top speed): Couette flow, ~ u, below the critical stress (at ``onset``); above it
-    the walls slip and only the film's ``share`` h / (h + b) of the further speed shears
-    it (rounded over ``rounding`` x the critical speed, the rounding's offset at rest
-    taken off); odd in u."""
+def _closure_drag(u, kappa):
+    """The bushing's viscous drag [-] (1 at the top speed) at the speeds ``u`` [-] (over
+    the top speed): Petroff's drag ~ u / c over the clearance c = 1 - kappa' D u closed by
+    the friction power D u: D (1 - kappa D u) = u, the root that starts at D = u; odd in u
+    (4 kappa u^2 held below 0.95)."""
     u = np.asarray(u, float)
 
-    def tau(x):
-        r = x / onset
-        return r - (1.0 - share) * _smooth_max0(r - 1.0, rounding)
-    t0 = tau(0.0)
-    return np.sign(u) * (tau(np.abs(u)) - t0) / (tau(1.0) - t0)
+    def drag(x):
+        q = np.minimum(4.0 * kappa * x * x, 0.95)
+        return 2.0 * x / (1.0 + np.sqrt(1.0 - q))
+    return np.sign(u) * drag(np.abs(u)) / drag(1.0)
 
 
 @on_fine_grid
-def wall_slip_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The way's lubricant film (a thin boundary-additive or polymer-thickened oil on a
-    smooth, oleophobic coating) sticks to the walls below a critical wall shear stress and
-    slips along them above it, with a slip length b several times the film's thickness h
-    (Navier's partial slip, the 'half-slip' of smooth surfaces): its drag grows as
-    Couette's, ~ v, up to the critical speed (:data:`SLIP_ONSET` x the top speed), and
-    beyond it only h / (h + b) (:data:`SLIP_SHARE`) of the further speed shears the film
-    (:func:`_slip_shear`). The truth adds ``s`` :data:`SLIP_DRAG` x the friction level x
-    that drag (1 at the top speed) to the base.
+def thermal_closure_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage's slide rods run in plain bushings of small clearance, filled with
+    oil. Their viscous (Petroff) drag ~ v / c heats them, and the rod, hotter and of a
+    larger expansion coefficient than its housing, expands into the clearance: in the
+    steady state of each speed the clearance shrinks by ~ the friction power D v, so the
+    drag solves D (1 - kappa D v) = v (:func:`_closure_drag`; :data:`CLOSE_KAPPA`): linear
+    at low speed and steeper than linear towards the top speed. The truth adds ``s``
+    :data:`CLOSE_DRAG` x the friction level x that drag (1 at the top speed) to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s]) and its base law (with a Stribeck curve).
     s : float
-        Amplitude factor [-]: the film's viscosity over its thickness (its drag), / its
+        Amplitude factor [-]: the oil's viscosity over the clearance (its drag), / its
         value at strength 1.
 
     Returns
@@ -386,67 +355,61 @@ def wall_slip_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Boundary slip of liquids (Navier 1823; Spikes and Granick 2003, Equation for slip of
-    simple liquids at smooth solid surfaces, Langmuir 19; Spikes 2003, The half-wetted
-    bearing, Proc. Inst. Mech. Eng. J 217; Neto, Evans, Bonaccurso, Butt and Craig 2005,
-    Boundary slip in Newtonian liquids: a review of experimental studies, Rep. Prog. Phys.
-    68). The candidate reshapes the Stribeck curve; the open forms add a tail, a rational
-    drop, a hydrodynamic rise, a spike, a lift-off, two roughness scales, a logarithmic or
-    Eyring law, starve a film, add rubber hysteresis, resonate, dither, melt, flow grains,
-    readsorb, heat the film, make it turbulent, thixotropic, churned or shear-thinning, add
-    core losses, breathe a bellows, brake by eddy currents, fly a pad, wipe a meniscus or
-    lift a journal. Here the film's bulk is Newtonian: its walls let go, and the drag
-    bends at a critical stress.
+    Petroff's law of lightly loaded journal bearings and the thermal closure of their
+    clearance, the route to thermal seizure (Petroff 1883; Khonsari and Booser 2017,
+    Applied Tribology, 3rd ed., ch. on thermally induced seizure; Hazlett and Khonsari
+    1992, Finite element model of journal bearings undergoing rapid thermally induced
+    seizure, Tribol. Int. 25). The candidate reshapes the Stribeck curve; the open forms
+    add a tail, a rational drop, a hydrodynamic rise, a spike, a lift-off, two roughness
+    scales, a logarithmic or Eyring law, starve a film, add rubber hysteresis, resonate,
+    dither, melt, flow grains, readsorb, heat the film, make it turbulent, thixotropic,
+    churned or shear-thinning, add core losses, breathe a bellows, brake by eddy currents,
+    fly a pad, wipe a meniscus, lift a journal or let the walls slip. Here the film's heat
+    acts on the solids: the gap it shears closes as the speed rises.
     """
     if not has_stribeck_curve(kin):
-        raise ValueError("stribeck_shape (wall_slip): the mre_lugre base has no Stribeck "
-                         "curve")
+        raise ValueError("stribeck_shape (thermal_closure): the mre_lugre base has no "
+                         "Stribeck curve")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     v99 = max(kin.scales["v99"], 1e-12)
-    d = _slip_shear(np.asarray(kin.v, float) / v99, SLIP_ONSET, SLIP_SHARE, SLIP_ROUND)
-    return F + float(s) * SLIP_DRAG * _level(kin) * d
+    d = _closure_drag(np.asarray(kin.v, float) / v99, CLOSE_KAPPA)
+    return F + float(s) * CLOSE_DRAG * _level(kin) * d
 
 
 # -- position --------------------------------------------------------------------------------
-#: ``track_end``'s drop of the levels with the forcer wholly off the track, at strength 1
-#: [-]; the end's reluctance pull, x the friction level, at strength 1 [-]; the forcer's
-#: length and where the track ends, x the visited stroke (from its low end) [-]; the
-#: fringing field's reach, x the forcer's length [-]
-TRACK_DROP, TRACK_PULL, FORCER_LENGTH, TRACK_END, TRACK_FRINGE = 0.4, 0.4, 0.4, 0.9, 0.08
+#: ``cable_reel``'s spring pull at the far end of the stroke, x the friction level, at
+#: strength 1 [-]; the reel bearings' drag, x the pull [-]; the direction's rounding, x the
+#: top speed [-]
+REEL_PULL, REEL_DRAG, REEL_ROUND = 0.4, 0.3, 0.02
 
 
-def _overlap(x, length, end, fringe):
-    """The forcer's overlap with the magnet track [-] (1 wholly over it) at the forcer's
-    centres ``x`` [-] (over the stroke), the forcer ``length`` long, the track ending at
-    ``end``: (end - (x - length / 2)) / length clipped to 0..1, its corners rounded over
-    ``fringe`` x ``length`` (the fringing field)."""
-    r = (end - (np.asarray(x, float) - 0.5 * length)) / length
-    e = fringe
-    lo = _smooth_max0(r, e)
-    return lo - _smooth_max0(lo - 1.0, e)
+def _reel_pull(xr):
+    """The reel's pull [-] (1 at the stroke's far end) at the positions ``xr`` [-] (over
+    the visited stroke, from its low end): a spiral spring wound by the cable paid out,
+    its torque ~ the turns, so its pull ~ the payout; none at the low end (where the
+    base law, fitted, takes up its pretension)."""
+    return np.asarray(xr, float)
 
 
 @on_fine_grid
-def track_end_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The axis is driven by an iron-core linear motor whose magnet track ends within the
-    stroke (a short track, a gap between its plates): the forcer (:data:`FORCER_LENGTH` x
-    the stroke long) runs off the track's end (at :data:`TRACK_END` of the stroke). Its
-    magnetic pull on the guides is ~ its overlap with the track (:func:`_overlap`); the base
-    law, identified over the track, carries the whole pull, and the Coulomb and Stribeck
-    levels are the base's times 1 - ``s`` :data:`TRACK_DROP` (1 - overlap), inside the
-    bristle dynamics. The magnetic energy ~ the overlap also pulls the forcer back onto the
-    track along its run-off (a reluctance force ~ -d overlap / dx, :data:`TRACK_PULL` x the
-    friction level x ``s`` there), which the drive carries: added to the force, the same
-    in both directions.
+def cable_reel_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage's cable (power, signal or a hose) is kept taut by a spring-driven reel
+    fixed at the low end of the stroke: the cable pays out as the carriage moves away, and
+    the reel's spiral spring winds up, its pull growing with the payout
+    (:func:`_reel_pull`); the drive carries that pull, ``s`` :data:`REEL_PULL` x the
+    friction level at the far end, the same in both directions. The reel's drum turns on
+    bearings loaded by the cable's pull, whose friction (:data:`REEL_DRAG` x the pull)
+    opposes the cable's motion, and so the carriage's: F = base + P (1 + REEL_DRAG
+    sign(v)) (the direction rounded over :data:`REEL_ROUND` x the top speed).
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the magnets' pull, / its value at strength 1.
+        Amplitude factor [-]: the reel spring's rate, / its value at strength 1.
 
     Returns
     -------
@@ -455,89 +418,82 @@ def track_end_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The normal (attraction) force of iron-core permanent-magnet linear motors and its end
-    effects (Gieras, Piech and Tomczuk 2011, Linear Synchronous Motors, 2nd ed., ch. on
-    forces and end effects; Boldea and Nasar 1997, Linear Electric Actuators and
-    Generators). The candidate scales the friction along the stroke and adds a force of the
-    position; the open forms put a defect, a waviness, a worn section, runout, a bent rail,
-    a transfer film, cogging, a taper, a pocket, a cushion, a cover, an air spring, bolt
-    holes, a plunger, a sag, a festoon, a curve, a chain, a cam, a heated zone, brinelled
-    dents, a rail joint, misaligned rails, a spool's flow force, a crank or an overhang on
-    the stroke. Here the preload itself ends with the magnets: the friction falls, and a
-    pull appears, where the forcer leaves its track.
+    Spring-driven cable reels (Wahl 1963, Mechanical Springs, 2nd ed., ch. on spiral
+    springs; manufacturers' spring reel data, e.g. Conductix-Wampfler, the reel's pull
+    rising with the cable paid out) and the friction of a drum's bearings under a rope's
+    pull (Shigley, Mischke and Budynas 2004, Mechanical Engineering Design, ch. on rolling
+    bearings' friction). The candidate scales the friction along the stroke and adds a
+    force of the position; the open forms put a defect, a waviness, a worn section, runout,
+    a bent rail, a transfer film, cogging, a taper, a pocket, a cushion, a cover, an air
+    spring, bolt holes, a plunger, a sag, a festoon, a curve, a chain, a cam, a heated
+    zone, brinelled dents, a rail joint, misaligned rails, a spool's flow force, a crank,
+    an overhang or a track's end on the stroke. Here a wound spring pulls the carriage home
+    and drags through its own reel, more the farther the carriage goes.
     """
     if _bump_centre(kin) is None:
-        raise ValueError(f"position (track_end): the held-out part of the {kin.plant} "
+        raise ValueError(f"position (cable_reel): the held-out part of the {kin.plant} "
                          f"record never revisits the positions of its fit part")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     sc = kin.scales
     span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
-    xr = (np.asarray(kin.x, float) - sc["x_lo"]) / span
-    o = _overlap(xr, FORCER_LENGTH, TRACK_END, TRACK_FRINGE)
-    h = 1e-4
-    slope = (_overlap(xr + h, FORCER_LENGTH, TRACK_END, TRACK_FRINGE)
-             - _overlap(xr - h, FORCER_LENGTH, TRACK_END, TRACK_FRINGE)) / (2.0 * h)
-    lev = np.maximum(1.0 - float(s) * TRACK_DROP * (1.0 - o), 0.05)
-    pull = -float(s) * TRACK_PULL * _level(kin) * slope * FORCER_LENGTH
-    return level_inside(kin, lev, np.ones_like(lev)) + pull
+    xr = np.clip((np.asarray(kin.x, float) - sc["x_lo"]) / span, 0.0, None)
+    v99 = max(sc["v99"], 1e-12)
+    P = float(s) * REEL_PULL * _level(kin) * _reel_pull(xr)
+    return F + P * (1.0 + REEL_DRAG * np.tanh(np.asarray(kin.v, float) / (REEL_ROUND * v99)))
 
 
 # -- inertia ---------------------------------------------------------------------------------
-#: ``qzs_isolator``'s payload mass at strength 1, x the friction level / a99 [kg per N s^2/m];
-#: the period of its mode at the top acceleration's deflection, x the motion's time scale
-#: [-]; the damper's ratio to that mode's critical damping [-]
-QZS_MASS, QZS_PERIOD, QZS_DAMPING = 0.5, 0.5, 0.3
+#: ``oil_column``'s column mass at strength 1, x the friction level / a99 [kg per N s^2/m];
+#: the column's period on the hose's compliance, x the motion's time scale [-]; its
+#: turbulent loss, as the damping ratio it gives at the top acceleration's deflection [-]
+COLUMN_MASS, COLUMN_PERIOD, COLUMN_LOSS = 0.5, 0.3, 0.3
 
 
 @njit(cache=True)
-def _qzs_force(a, h, k3, c, w_top):
-    """The force [N per kg] a payload on a quasi-zero-stiffness mount (a cubic spring
-    ``k3`` y^3 [m/s^2 per m^3] and a damper ``c`` [1/s] in parallel, y the payload's
-    deflection from the carriage) exerts on the carriage under its accelerations ``a``
-    [m/s^2] (steps ``h`` [s]): y'' = -a - k3 y^3 - c y', the force -(k3 y^3 + c y') = a +
-    y''. Semi-implicit Euler on sub-steps of at most 0.05 / (2 ``w_top``) (the mode's
-    rate at twice the top acceleration's deflection), the acceleration interpolated, from
-    rest."""
+def _column_force(a, h, w, cq):
+    """The force [N per kg] the oil column exerts on the carriage under its accelerations
+    ``a`` [m/s^2] (steps ``h`` [s]): the column's displacement y from the carriage obeys
+    y'' = -a - w^2 y - ``cq`` |y'| y' (the hose wall's compliance, mode ``w`` [rad/s], and a
+    turbulent loss ~ the flow's square), the force -(w^2 y + cq |y'| y') = a + y''.
+    Semi-implicit Euler on sub-steps of at most 0.05 / w, the acceleration interpolated,
+    from rest."""
     n = a.size
     out = np.empty(n)
-    m = max(1, int(math.ceil(2.0 * w_top * h / 0.05)), int(math.ceil(c * h / 0.5)))
+    m = max(1, int(math.ceil(w * h / 0.05)))
     hs = h / m
     y = 0.0
     yd = 0.0
     out[0] = 0.0
     for k in range(1, n):
-        f = 0.0
         for i in range(m):
             u = a[k - 1] + (a[k] - a[k - 1]) * (i + 1.0) / m
-            f = -(k3 * y * y * y + c * yd)
+            f = -(w * w * y + cq * abs(yd) * yd)
             yd += hs * (f - u)
             y += hs * yd
-        out[k] = -(k3 * y * y * y + c * yd)
+        out[k] = -(w * w * y + cq * abs(yd) * yd)
     return out
 
 
 @on_fine_grid
-def qzs_isolator_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A payload (an instrument, an optical table top) rides on the carriage on a
-    quasi-zero-stiffness isolator: a vertical spring balanced by oblique springs'
-    negative stiffness about its working point, which leaves a cubic stiffness k3 y^3,
-    in the direction of travel here, with a damper c y' in parallel. The inverse dynamics
-    misses it. The carriage carries the force that accelerates it, k3 y^3 + c y'
-    (:func:`_qzs_force`): for strokes that deflect the mount far it follows, its whole
-    mass; for small or slow relative motions its spring hardly holds it and only the
-    damper drags it along. The mount deflects by y_top under the top acceleration (its mode
-    there of period :data:`QZS_PERIOD` x the motion's time scale, w_top^2 = 3 k3 y_top^2),
-    the damper :data:`QZS_DAMPING` of that mode's critical. The truth adds ``s``
-    :data:`QZS_MASS` x the friction level / a99 x that force per unit mass to the base.
+def oil_column_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage carries a hydraulic actuator (a clamp, a tool's cylinder) fed by a
+    hose; when it accelerates, it drags along the oil column in the hose, whose mass the
+    inverse dynamics misses. The column rides on the compliance of the hose's wall (its
+    mode of period :data:`COLUMN_PERIOD` x the motion's time scale) and is damped by its
+    flow's turbulent loss, ~ the flow's square (:func:`_column_force`; the loss such that
+    it damps the mode by :data:`COLUMN_LOSS` of critical at the top acceleration's
+    deflection): the carriage carries the whole column in slow motions, and less, lagging
+    and ringing, in quick ones. The truth adds ``s`` :data:`COLUMN_MASS` x the friction
+    level / a99 x that force per unit mass to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the payload's mass, / its value at strength 1.
+        Amplitude factor [-]: the column's mass, / its value at strength 1.
 
     Returns
     -------
@@ -546,68 +502,67 @@ def qzs_isolator_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Quasi-zero-stiffness isolators (Alabuzhev, Gritchin, Kim, Migirenko, Chon and Stepanov
-    1989, Vibration Protecting and Measuring Systems with Quasi-Zero Stiffness; Carrella,
-    Brennan and Waters 2007, Static analysis of a passive vibration isolator with
-    quasi-zero-stiffness characteristic, J. Sound Vib. 301; Kovacic, Brennan and Waters
-    2008, A study of a nonlinear vibration isolator with a quasi-zero stiffness
-    characteristic, J. Sound Vib. 315). The candidate misses a constant mass; the open
-    forms filter it, reflect it through gearing, a chain's polygon or a pinion, hang it on
-    a spring, a cable, a fluid, a clutch, a coupling, a flyweight, a screw, a
-    friction-damped mount or a surging spring, add a fluid's mass and its history, pick it
-    up, drop it, empty it, slide it, rattle it, telescope it, roll it in a cradle, rock it
-    on its edges, recoil the frame, saturate the motor, lead it by the feedforward or pitch
-    the scale head. Here the mass hangs on a spring with no linear stiffness: how much of
-    it the carriage carries depends on how far the motion deflects its mount.
+    Fluid line dynamics: a line's inertance, its wall compliance and turbulent resistance
+    (Merritt 1967, Hydraulic Control Systems, ch. on fluid lines; Watton 2009, Fundamentals
+    of Fluid Power Control, ch. on line dynamics; Beater 2007, Pneumatic Drives, on the
+    lumped line model). The candidate misses a constant mass; the open forms filter it,
+    reflect it through gearing, a chain's polygon or a pinion, hang it on a spring, a
+    cable, a fluid, a clutch, a coupling, a flyweight, a screw, a friction-damped mount, a
+    surging spring or a quasi-zero-stiffness mount, add a fluid's mass around a body and
+    its history, pick it up, drop it, empty it, slide it, rattle it, telescope it, roll it
+    in a cradle, rock it on its edges, recoil the frame, saturate the motor, lead it by the
+    feedforward or pitch the scale head. Here the mass is oil inside a hose: held by the
+    hose's wall and damped by a loss that grows with its own flow's square.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     a99 = max(kin.scales["a99"], 1e-12)
-    w_top = 2.0 * math.pi / (QZS_PERIOD * max(_motion_time(kin), 1e-12))
-    y_top = 3.0 * a99 / (w_top * w_top)
-    k3 = a99 / y_top ** 3
-    c = 2.0 * QZS_DAMPING * w_top
-    f = _qzs_force(np.ascontiguousarray(kin.a, dtype=float), float(kin.dt), k3, c, w_top)
-    return F + float(s) * QZS_MASS * _level(kin) / a99 * f
+    w = 2.0 * math.pi / (COLUMN_PERIOD * max(_motion_time(kin), 1e-12))
+    y_top = a99 / (w * w)
+    cq = 2.0 * COLUMN_LOSS / max(y_top, 1e-300)
+    f = _column_force(np.ascontiguousarray(kin.a, dtype=float), float(kin.dt), w, cq)
+    return F + float(s) * COLUMN_MASS * _level(kin) / a99 * f
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: ``force_restoration``'s lag (the lever pivot's stiffness over the loop's cube of
-#: bandwidth) at strength 1 [data samples]; the pivot's stiffness over the square of the
-#: loop's bandwidth (per unit lever mass) [-]
-RESTORE_SAMPLES, PIVOT_SHARE = 5.0, 1.0
+#: ``interleaved_adc``'s clock skew of the second converter at strength 1 [data samples]
+SKEW_SAMPLES = 2.0
 
 
-def _restoring_coefficients(kappa):
-    """(numerator, denominator) of the coil's force over the applied force, per unit lever
-    mass and in the loop's time unit 1 / w (S = s / w), for a PID loop that places the
-    closed loop's three poles at S = -1 against a lever pivot of stiffness ``kappa`` w^2:
-    (3 S^2 + (3 - kappa) S + 1) / (S + 1)^3; its static gain 1 and its low-frequency lag
-    kappa / w."""
-    return np.array([3.0, 3.0 - kappa, 1.0]), np.array([1.0, 3.0, 3.0, 1.0])
+def _interleave(t, F, step, skew):
+    """The force ``F`` [N] on the grid ``t`` [s] read by two interleaved converters: the
+    data samples (every ``step`` th grid point, and the grid points around them) of even
+    index on time, those of odd index ``skew`` [s] late (the force at t - skew,
+    interpolated; the record's first force before it starts)."""
+    t = np.asarray(t, float)
+    F = np.asarray(F, float)
+    j = np.rint(np.arange(t.size) / step).astype(np.int64)
+    late = (j % 2) == 1
+    out = F.copy()
+    out[late] = np.interp(t[late] - skew, t, F)
+    return out
 
 
 @on_fine_grid
-def force_restoration_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force is read by an electromagnetic force-restoration (force-compensation)
-    cell, as in precision balances: the force acts on a lever on a flexure pivot, a
-    position sensor sees its deflection, and a PID loop drives a coil in a magnet that
-    pushes the lever back to its null; the coil's current, ~ its force, is the reading.
-    While the loop works the lever's inertia and the pivot's spring take part of the
-    force, so the coil's force lags it: the loop's poles placed at -w (a triple pole;
-    :func:`_restoring_coefficients`), the pivot's stiffness :data:`PIVOT_SHARE` x w^2 per
-    unit mass, the reading lags by PIVOT_SHARE / w = ``s`` :data:`RESTORE_SAMPLES` data
-    samples at low frequencies and rings through the loop's zeros at high ones (the
-    bilinear transform on the fine grid, from the record's first force). The motion
-    channels are on time.
+def interleaved_adc_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force is digitised by a time-interleaved converter: two ADCs take alternate
+    samples, each at half the data rate, on clocks half a sample period apart, and their
+    words are merged into one stream. The second lane is late: its clock is skewed from
+    its ideal phase (a trace length, a clock buffer's delay) and, where its pipeline is
+    deeper than the first's, the merge aligns its words from earlier conversions (a lane
+    misalignment): every other force sample is taken ``s`` :data:`SKEW_SAMPLES` data
+    samples late (:func:`_interleave`), the others on time. The motion channels are on
+    time.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s]) and its base law.
+        The motion on the fine grid (t [s]; ``step`` grid points per data sample) and its
+        base law.
     s : float
-        Amplitude factor [-]: the loop's time constant 1 / w, / its value at strength 1.
+        Amplitude factor [-]: the second converter's clock skew, / its value at strength
+        1.
 
     Returns
     -------
@@ -616,82 +571,60 @@ def force_restoration_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Electromagnetic force compensation (EMFC) weighing cells (Kochsiek and Glaser 2000,
-    Comprehensive Mass Metrology, ch. on weighing cells; Diethold, Kuehnel, Hilbrunner,
-    Froehlich and Manske 2014, Determination of force to displacement curves using a
-    nanopositioning system based on electromagnetic force compensated balances,
-    Measurement 51). The candidate shifts the force by a constant time, low-passes it,
-    reads it through a transducer's resonance and leaks it; the open forms sample, filter,
-    average, hold, skew, jitter, rate-limit, transmit, median, report by deadband, trigger
-    on positions, run a belt, aerate, drop telegrams, leak, creep, notch, track, snub,
-    time a waveguide's pulse, diffuse eddy currents, count a resonator's frequency over a
-    gate or sweep a grating. Here the sensor is itself a servo: the reading is the force a
-    loop needs to hold a sprung lever still.
+    Time-interleaved ADCs and their timing mismatch (Black and Hodges 1980, Time
+    interleaved converter arrays, IEEE J. Solid-State Circuits 15; Kurosawa, Kobayashi,
+    Maruyama, Sugawara and Kobayashi 2001, Explicit analysis of channel mismatch effects in
+    time-interleaved ADC systems, IEEE Trans. Circuits Syst. I 48). The candidate shifts
+    the force by a constant time, low-passes it, reads it through a transducer's
+    resonance and leaks it; the open forms sample, filter, average, hold, skew, jitter,
+    rate-limit, transmit, median, report by deadband, trigger on positions, run a belt,
+    aerate, drop telegrams, leak, creep, notch, track, snub, time a waveguide's pulse,
+    diffuse eddy currents, count a resonator's frequency over a gate, sweep a grating or
+    restore a force by a servo. Here the sampling instants themselves alternate: half the
+    samples are on time and half are late by the same skew.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    lag = float(s) * RESTORE_SAMPLES * kin.sample_dt
-    w = PIVOT_SHARE / max(lag, 1e-300)
-    num, den = _restoring_coefficients(PIVOT_SHARE)
-    numd, dend, _ = cont2discrete((num, den), float(kin.dt) * w, method="bilinear")
-    b = np.ravel(numd)
-    zi = lfilter_zi(b, dend) * F[0]
-    return lfilter(b, dend, F, zi=zi)[0]
+    skew = float(s) * SKEW_SAMPLES * kin.sample_dt
+    return _interleave(kin.t, F, int(kin.step), skew)
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: ``pump_down``'s rise of the levels by the record's end, at strength 1 [-]; the pressure's
-#: e-folding time of the pump-down, x the record's length [-]; the layer's Langmuir
-#: constant times the starting pressure [-]; the chamber's base pressure over the starting
-#: one [-]; the layer's desorption rate, x 1 / the record's length [-]
-PUMP_RISE, PUMP_TIME, PUMP_AFFINITY, PUMP_FLOOR, PUMP_DESORB = 0.4, 0.08, 1e3, 1e-5, 12.0
+#: ``additive_settling``'s rise of the levels by the record's end, at strength 1 [-]; the
+#: median particle's settling time to the pick-up, x the record's length [-]; the log
+#: standard deviation of the particles' diameters [-]
+SETTLE_RISE, SETTLE_TIME, SETTLE_SPREAD = 0.4, 0.6, 0.35
 
 
-@njit(cache=True)
-def _coverage(tau, pressure, affinity, rate):
-    """The adsorbed layer's coverage theta [-] along the times ``tau`` [-] (over the
-    record's length) at the pressures ``pressure`` [-] (over the starting one): Langmuir's
-    kinetics d theta / d tau = ``rate`` (``affinity`` p (1 - theta) - theta), implicit
-    Euler, from its equilibrium at the first pressure."""
-    n = tau.size
-    out = np.empty(n)
-    th = affinity * pressure[0] / (1.0 + affinity * pressure[0])
-    out[0] = th
-    for k in range(1, n):
-        h = (tau[k] - tau[k - 1]) * rate
-        bp = affinity * pressure[k]
-        th = (th + h * bp) / (1.0 + h * (bp + 1.0))
-        out[k] = th
-    return out
-
-
-def _pressure(tau, time, floor):
-    """The chamber's pressure over its starting one [-] at the times ``tau`` [-] (over the
-    record's length): a pump-down exp(-tau / ``time``) to the base pressure ``floor``."""
-    return np.exp(-np.asarray(tau, float) / time) + floor
+def _suspended(tau, median, spread):
+    """The additive's concentration at the pick-up [-] (1 at the start) at the times
+    ``tau`` [-] (over the record's length): a particle of diameter d settles past it at
+    time ~ 1 / d^2 (Stokes), so what remains at tau is the share of diameters below
+    sqrt(``median`` / tau) x the median's, for log-normal diameters of log standard
+    deviation ``spread``: Phi(ln(median / tau) / (2 spread))."""
+    tau = np.maximum(np.asarray(tau, float), 1e-12)
+    return ndtr(np.log(median / tau) / (2.0 * spread))
 
 
 @on_fine_grid
-def pump_down_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The machine runs in a vacuum chamber being pumped down (a load lock, a coating or
-    space-simulation chamber): the pressure falls as exp(-t / tau) (:data:`PUMP_TIME` x
-    the record's length) to the base pressure :data:`PUMP_FLOOR` (:func:`_pressure`). The
-    contact's surfaces carry an adsorbed gas layer (water, oxygen) that lubricates them;
-    its coverage follows Langmuir's kinetics (:func:`_coverage`; affinity
-    :data:`PUMP_AFFINITY` at the starting pressure, desorption rate :data:`PUMP_DESORB`
-    per record): it hardly changes while b p >> 1, then desorbs, late and fast, as the
-    pressure passes 1 / b, lagging it by its desorption time. As the layer goes, the bare
-    surfaces' adhesion raises the friction: the Coulomb and Stribeck levels are the base's
-    times 1 + ``s`` :data:`PUMP_RISE` x the coverage's loss over its loss by the record's
-    end, inside the bristle dynamics; the viscous term is the base's.
+def additive_settling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The way's lubricant is an oil with a suspended solid additive (graphite, MoS2 or
+    PTFE particles), fed from a reservoir left standing before the record: the particles
+    settle by Stokes's law, a particle of diameter d in a time ~ 1 / d^2 past the pump's
+    pick-up; their diameters spread log-normally (:data:`SETTLE_SPREAD`), the median's
+    time :data:`SETTLE_TIME` x the record's length, so the supply loses its additive as
+    the settling front passes (:func:`_suspended`), slowly and late. The contact's solid
+    lubricant thins with its supply: the Coulomb and Stribeck levels are the base's times
+    1 + ``s`` :data:`SETTLE_RISE` x the additive lost over its loss by the record's end,
+    inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the bare surfaces' friction over the covered ones', / its
+        Amplitude factor [-]: the friction without the additive over with it, less 1, / its
         value at strength 1.
 
     Returns
@@ -701,75 +634,76 @@ def pump_down_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Friction in vacuum and the loss of adsorbed films (Bowden and Tabor 1964, The Friction
-    and Lubrication of Solids, part II, ch. on clean surfaces; Buckley 1981, Surface
-    Effects in Adhesion, Friction, Wear and Lubrication, ch. 5; Langmuir 1918, The
-    adsorption of gases on plane surfaces of glass, mica and platinum, J. Am. Chem. Soc.
-    40; O'Hanlon 2003, A User's Guide to Vacuum Technology, ch. on pump-down). The
-    candidate is a trend, a saturating change, a step, a cycle, a resetting change or the
-    friction power's heat; the open forms warm up, wear in, change the lubricant, heat,
-    wear, follow the humidity, grind a third body, relubricate, relax a seal, oxidise,
-    deplete, wear through, swell, build a tribofilm, take in particles, expand, shear down,
-    heat magnets, charge, creep a cage, loosen a screw, dewet a film, channel grease, drain
-    a receiver, grow a spall or evaporate an oil. Here the ambient gas is taken away: a
-    change that waits for the pressure to pass the layer's, then runs its course.
+    Sedimentation of suspended particles (Stokes 1851; Richardson and Zaki 1954,
+    Sedimentation and fluidisation, Trans. Inst. Chem. Eng. 32) and solid additives in
+    lubricating oils and their settling (Bartz 1971, Solid lubricant additives - effect
+    of concentration and other additives on anti-wear and extreme pressure performance,
+    Wear 17; Mang and Dresel 2007, Lubricants and Lubrication, ch. on solid lubricants).
+    The candidate is a trend, a saturating change, a step, a cycle, a resetting change or
+    the friction power's heat; the open forms warm up, wear in, change the lubricant,
+    heat, wear, follow the humidity, grind a third body, relubricate, relax a seal,
+    oxidise, deplete, wear through, swell, build a tribofilm, take in particles, expand,
+    shear down, heat magnets, charge, creep a cage, loosen a screw, dewet a film, channel
+    grease, drain a receiver, grow a spall, evaporate an oil or pump a chamber down. Here
+    the supply loses a suspension by gravity: a change that waits for its particles to
+    fall.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     t = np.asarray(kin.t, float)
     tau = (t - t[0]) / max(t[-1] - t[0], 1e-12)
-    th = _coverage(np.ascontiguousarray(tau), _pressure(tau, PUMP_TIME, PUMP_FLOOR),
-                   PUMP_AFFINITY, PUMP_DESORB)
-    loss = max(float(th[0] - th[-1]), 1e-12)
-    lev = 1.0 + float(s) * PUMP_RISE * (th[0] - th) / loss
+    c = _suspended(tau, SETTLE_TIME, SETTLE_SPREAD)
+    loss = max(float(c[0] - c[-1]), 1e-12)
+    lev = 1.0 + float(s) * SETTLE_RISE * (c[0] - c) / loss
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: ``graded_clearance``'s play at strength 1, as a share of the stroke (its full width, both
-#: sides, to the last pin) [-]; the number of pins [-]; the clearances' spread, x the play's
-#: half-width (the first pin engages at 1 - that) [-]; the pins' force when the last one
-#: engages, x the Coulomb level [-]
-GRADED_CLEAR, GRADED_PINS, GRADED_SPREAD, GRADED_LOAD = 0.01, 8, 0.6, 1.5
+#: ``adhesive_flank``'s play at strength 1, as a share of the stroke (its full width, both
+#: sides) [-]; the flanks' pull-off force, x the Coulomb level [-]
+ADHESIVE_CLEAR, ADHESIVE_PULL = 0.01, 0.5
 
 
 @njit(cache=True)
-def _pin_force(e, ed, first, step, pins, kp, m):
-    """The pins' force [N] on the contact at the offset ``e`` [m] (drive minus contact) and
-    its rate ``ed`` [m/s]: pin j (0 .. ``pins`` - 1) engages at |e| = ``first`` + j
-    ``step`` [m] and pushes with its stiffness ``kp`` [N/m] (compressive only), damped at
-    the ratio 0.5 of the engaged pins' stiffness for the contact's mass ``m`` [kg]."""
-    ae = abs(e)
-    f = 0.0
-    n = 0
-    for j in range(pins):
-        d = ae - (first + j * step)
-        if d > 0.0:
-            f += kp * d
-            n += 1
-    if n == 0:
-        return 0.0
-    sg = 1.0 if e > 0.0 else -1.0
-    c = 2.0 * 0.5 * math.sqrt(n * kp * m)
-    f2 = f + c * ed * sg
-    if f2 < 0.0:
-        f2 = 0.0
-    return sg * f2
+def _flank_force(e, ed, half, kh, ch, pull, held):
+    """(force [N], the flank held after the step) of a play of half-width ``half`` [m]
+    between drive and contact at the offset ``e`` [m] (drive minus contact) and its rate
+    ``ed`` [m/s]: the flanks a spring ``kh`` [N/m] and damper ``ch`` [N s/m]; the flank
+    ``held`` (+1, -1; 0 none) holds the contact by its adhesive layer, in tension up to
+    ``pull`` [N], and lets it go past it; a flank the contact touches holds it."""
+    if held == 0:
+        if e > half:
+            held = 1
+        elif e < -half:
+            held = -1
+        else:
+            return 0.0, 0
+    if held == 1:
+        f = kh * (e - half) + ch * ed
+        if f < -pull:
+            return 0.0, 0
+        return f, 1
+    f = kh * (e + half) + ch * ed
+    if f > pull:
+        return 0.0, 0
+    return f, -1
 
 
 @njit(cache=True)
-def _pinned_contact(h, xd, first, step, pins, kp, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
+def _adhesive_contact(h, xd, half, kh, ch, pull, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
     """LuGre friction [N] of a light contact of mass ``m`` [kg] driven by the drive
-    positions ``xd`` [m] (steps ``h`` [s]) through the pins of :func:`_pin_force`."""
+    positions ``xd`` [m] (steps ``h`` [s]) across the adhesive play of
+    :func:`_flank_force`, starting at rest against (and held by) the +x flank."""
     n = xd.size
     F = np.empty(n)
-    x = xd[0] - first - (pins - 1) * step
+    x = xd[0] - half
     v = 0.0
     z = 0.0
+    held = 1
     for j in range(n):
         vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
-        fc = _pin_force(xd[j] - x, vd - v, first, step, pins, kp, m)
+        fc, held = _flank_force(xd[j] - x, vd - v, half, kh, ch, pull, held)
         F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha,
                                          shape)
         x = x + h * v
@@ -777,26 +711,25 @@ def _pinned_contact(h, xd, first, step, pins, kp, m, s0, s1, s2, Fc, Fs, vs, alp
 
 
 @on_fine_grid
-def graded_clearance_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact are joined by :data:`GRADED_PINS` pins (a cycloid drive's ring
-    pins, a pin gear, a multi-key coupling) whose clearances the machining tolerances
-    spread: the play's half-width (``s``^2 :data:`GRADED_CLEAR` / 2 x the stroke) is the
-    last pin's clearance, the first engages :data:`GRADED_SPREAD` of it earlier, the
-    others evenly between. After a reversal the drive crosses the play, the first pin
-    takes up the contact alone, then the next joins, and so on: a take-up whose stiffness
-    grows stepwise with the number of pins carrying (each pin's stiffness such that the
-    pins push with :data:`GRADED_LOAD` x the Coulomb level when the last engages; at most
-    the flank stiffness of the other plays in all). The contact is light (its inertial
-    force at the top acceleration 1 % of the Coulomb level) with the base's LuGre friction
-    (:func:`_pinned_contact`).
+def adhesive_flank_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact are joined across a play (``s``^2 :data:`ADHESIVE_CLEAR` x the
+    stroke wide) whose flanks are lined with a tacky layer (an elastomer's or a grease's
+    adhesion, a damping pad's): a flank the contact touches holds it, in tension up to its
+    pull-off force (:data:`ADHESIVE_PULL` x the Coulomb level, below the contact's
+    friction, so it does not drag the contact back). After a reversal the drive first pulls
+    the contact, held by the flank it left, up to the pull-off force, then the layer lets
+    go and the drive crosses the play to the other flank (:func:`_flank_force`). The flanks
+    and the light contact are the other plays' (:func:`.truths._contact_constants`; its
+    inertial force at the top acceleration 1 % of the Coulomb level) with the base's LuGre
+    friction (:func:`_adhesive_contact`).
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], x [m]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the square root of the clearance, / its value at strength 1
-        (as the open plays').
+        Amplitude factor [-]: the square root of the play, / its value at strength 1 (as
+        the open plays').
 
     Returns
     -------
@@ -805,66 +738,65 @@ def graded_clearance_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Load sharing among the pins of cycloid drives with machining tolerances (Blanche and
-    Yang 1989, Cycloid drives with machining tolerances, J. Mech. Transm. Autom. Des. 111;
-    Gorla, Davoli, Rosa, Longoni, Chiozzi and Samarani 2008, Theoretical and experimental
-    analysis of a cycloidal speed reducer, J. Mech. Des. 130; Li, Wu, Wang and Liu 2017 on
-    lost motion of RV reducers). The candidate holds or frees the contact across a rigid
+    Adhesive contact and its pull-off force (Johnson, Kendall and Roberts 1971, Surface
+    energy and the contact of elastic solids, Proc. R. Soc. Lond. A 324; Israelachvili
+    2011, Intermolecular and Surface Forces, 3rd ed., ch. on adhesion) and the tacky
+    damping pads of backlash stops. The candidate holds or frees the contact across a rigid
     play; the open forms take it up rigidly, compliantly, by impact, against a spring,
     eccentrically, through oil, worn, with a dragging idler, biased, slack, magnetic,
     preloaded, through a flexspline, a rope, a spider, a fluid link, a cable, a clutch, a
-    varying mesh, a polymer gear, grease, a wedge, an overlapped spool, a side loaded pin
-    or a toggle spring. Here the play ends not at one flank but at many, one after the
-    other.
+    varying mesh, a polymer gear, grease, a wedge, an overlapped spool, a side loaded pin,
+    a toggle spring or graded pins. Here the flank the contact leaves pulls it back: the
+    force turns over before the play opens.
     """
-    p = _lugre_params(kin, "backlash (graded_clearance)")
+    p = _lugre_params(kin, "backlash (adhesive_flank)")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    half = 0.5 * float(s) ** 2 * GRADED_CLEAR * float(np.ptp(kin.x))
-    pins = int(GRADED_PINS)
-    first = (1.0 - GRADED_SPREAD) * half
-    step = GRADED_SPREAD * half / (pins - 1)
-    m, kh, _ = _contact_constants(kin, p)
-    kp = min(2.0 * GRADED_LOAD * float(p.Fc) / max(step * pins * (pins - 1), 1e-300),
-             kh / pins)
-    rate = max(math.sqrt(pins * kp / m), (float(p.sigma1) + float(p.sigma2)
-                                           + math.sqrt(pins * kp * m)) / m)
+    half = 0.5 * float(s) ** 2 * ADHESIVE_CLEAR * float(np.ptp(kin.x))
+    m, kh, ch = _contact_constants(kin, p)
+    pull = ADHESIVE_PULL * float(p.Fc)
+    rate = max(math.sqrt(kh / m), (float(p.sigma1) + float(p.sigma2) + ch) / m)
     h, xd, n_sub = _substeps(kin, rate)
-    Fr = _pinned_contact(h, xd, first, step, pins, kp, m, float(p.sigma0), float(p.sigma1),
-                         float(p.sigma2), float(p.Fc), float(p.Fs), float(p.vs),
-                         float(p.alpha), SHAPES[p.shape])
+    Fr = _adhesive_contact(h, xd, half, kh, ch, pull, m, float(p.sigma0), float(p.sigma1),
+                           float(p.sigma2), float(p.Fc), float(p.Fs), float(p.vs),
+                           float(p.alpha), SHAPES[p.shape])
     return Fr[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: the film's elastic path to its stress at the top speed at strength 1, beyond the base
-#: bristle's path, as a share of the stroke / 3 [-]; its share of the friction at strength
-#: 1 [-]; its Eyring speed (where its flow turns from linear to exponential in the
-#: stress), x the top speed [-]
-EF_PATH, EF_SHARE, EF_EYRING = 0.1, 0.6, 1e-3
+#: the layer's elastic path to its yield stress at strength 1, beyond the base bristle's
+#: path, as a share of the stroke / 3 [-]; its share of the friction at strength 1 [-]; its
+#: overstress at the top speed, over the yield stress [-]; the overstress law's exponent [-]
+VP_PATH, VP_SHARE, VP_OVER, VP_EXPONENT = 0.1, 0.6, 0.3, 2.0
 
 
 @njit(cache=True)
-def _eyring_film(t, v, path, v_top, v_eyring):
-    """The film's shear stress u [-] (1 in steady sliding at ``v_top`` [m/s]) along the
-    velocities ``v`` [m/s] at the times ``t`` [s]: a nonlinear Maxwell element, its elastic
-    path ``path`` [m] to u = 1, its flow speed v_E sinh(A u) (v_E = ``v_eyring``, A =
-    asinh(v_top / v_E)): du/dt = (v - v_E sinh(A u)) / path, implicit Euler (Newton on
-    each step, the velocity at the step's end), from no stress."""
+def _overstress_layer(t, v, path, v_top, over, expo):
+    """The layer's shear stress u [-] (1 its yield stress) along the velocities ``v`` [m/s]
+    at the times ``t`` [s]: elastic, du/dt = (v - v_p) / ``path`` [m], with no flow below
+    the yield stress and above it Perzyna's viscoplastic flow v_p = ``v_top`` sgn(u)
+    ((|u| - 1) / ``over``)^``expo`` (so a steady ``v_top`` holds u = 1 + ``over``);
+    implicit Euler (Newton on each step, the velocity at the step's end), from no
+    stress."""
     n = t.size
     out = np.zeros(n)
-    A = math.asinh(v_top / v_eyring)
     u = 0.0
     for k in range(1, n):
         h = (t[k] - t[k - 1]) / path
         vk = v[k]
         x = u
         for _ in range(60):
-            ax = min(max(A * x, -60.0), 60.0)
-            g = x - u - h * (vk - v_eyring * math.sinh(ax))
-            dg = 1.0 + h * v_eyring * A * math.cosh(ax)
-            dx = g / dg
+            ex = abs(x) - 1.0
+            if ex > 0.0:
+                sg = 1.0 if x > 0.0 else -1.0
+                phi = sg * v_top * (ex / over) ** expo
+                dphi = v_top * expo * (ex / over) ** (expo - 1.0) / over
+            else:
+                phi = 0.0
+                dphi = 0.0
+            g = x - u - h * (vk - phi)
+            dx = g / (1.0 + h * dphi)
             x -= dx
             if abs(dx) < 1e-12 * (1.0 + abs(x)):
                 break
@@ -874,26 +806,26 @@ def _eyring_film(t, v, path, v_top, v_eyring):
 
 
 @on_fine_grid
-def eyring_film_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Part of the contact is carried through an elastohydrodynamic film (a traction
-    fluid's, a highly loaded rolling-sliding contact's), whose shear follows Johnson and
-    Tevaarwerk's nonlinear Maxwell model: elastic (the film's shear modulus) for quick
-    changes of strain and an Eyring fluid in steady shear, its flow rate ~ sinh of the
-    stress: du/dt = (v - v_E sinh(A u)) / path (:func:`_eyring_film`; its elastic path the
-    base bristle's Fs / sigma0 plus ``s`` :data:`EF_PATH` x the stroke / 3, v_E
-    :data:`EF_EYRING` x the top speed, u = 1 in steady sliding at the top speed). After a
-    reversal the stress unloads elastically and then flows, at rest it relaxes (no static
-    hold), and in steady sliding it follows the speed logarithmically. Its share w = ``s``
-    :data:`EF_SHARE` (up to ``s`` = 1) of the friction is its stress times the Stribeck
-    level, the viscous term the base's: F = (1 - w) F_lugre + w (g(v) u + sigma2 v). At
-    ``s`` = 0 the base itself.
+def viscoplastic_overstress_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Part of the contact is carried through a soft metallic (or polymer) interface layer
+    whose shear is viscoplastic in Perzyna's sense: elastic below its yield stress, with
+    no flow at all there (at rest the overstress relaxes to the yield stress, which then
+    holds), and above it a flow whose rate grows as a power of the overstress
+    (:func:`_overstress_layer`; the overstress :data:`VP_OVER` of the yield at the top
+    speed, exponent :data:`VP_EXPONENT`). After a
+    reversal the stress unloads elastically through zero to the other yield, and while
+    sliding it overshoots the yield the more the faster it slides. Its elastic path is the
+    base bristle's Fs / sigma0 plus ``s`` :data:`VP_PATH` x the stroke / 3; its share w =
+    ``s`` :data:`VP_SHARE` (up to ``s`` = 1) of the friction is its stress over its value
+    at the top speed times the Stribeck level, the viscous term the base's: F = (1 - w)
+    F_lugre + w (g(v) u / (1 + VP_OVER) + sigma2 v). At ``s`` = 0 the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], v [m/s]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the film's share (up to ``s`` = 1) and its elastic path (as
+        Amplitude factor [-]: the layer's share (up to ``s`` = 1) and its elastic path (as
         the open presliding forms' path).
 
     Returns
@@ -903,26 +835,27 @@ def eyring_film_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The viscoelastic shear of elastohydrodynamic films (Johnson and Tevaarwerk 1977, Shear
-    behaviour of elastohydrodynamic oil films, Proc. R. Soc. Lond. A 356; Evans and Johnson
-    1986, The rheological properties of elastohydrodynamic lubricants, Proc. Inst. Mech.
-    Eng. C 200; Eyring 1936). The candidate's presliding is a generalized Maxwell-slip (GMS)
+    Overstress viscoplasticity (Perzyna 1966, Fundamental problems in viscoplasticity, Adv.
+    Appl. Mech. 9; Lemaitre and Chaboche 1990, Mechanics of Solid Materials, ch. 6) and
+    the shear of soft interface layers (Bowden and Tabor 1950, on thin metallic films on
+    hard substrates). The candidate's presliding is a generalized Maxwell-slip (GMS)
     element set; the open forms are Maxwell-slip sets, Dahl, elasto-plastic,
     Bliman-Sorine, Bouc-Wen, Zener junctions, Mindlin contacts, rate-and-state, Tomlinson
     asperities, bond rupture, gouge, kinematic hardening, interlocking, capillary bridges,
     cyclic hardening, peeling, unloading microslip, a power-law joint, junction growth,
-    avalanches, slip weakening, a microslip bar, contact renewal, a grease's yield and a
-    superelastic flexure. Here the presliding is a liquid's elasticity: no yield, no
-    sticking, and a relaxation at rest.
+    avalanches, slip weakening, a microslip bar, contact renewal, a grease's yield, a
+    superelastic flexure and an Eyring film. Here the presliding has a yield surface and
+    a rate beyond it: nothing flows below the yield, and the overstress grows with the
+    speed above it.
     """
-    p = _lugre_params(kin, "gms (eyring_film)")
+    p = _lugre_params(kin, "gms (viscoplastic_overstress)")
     F, _ = _base_parts(kin)
     if s <= 0.0:
         return F
-    e0, extra = _presliding_path(kin, s, EF_PATH)
-    w = EF_SHARE * min(float(s), 1.0)
+    e0, extra = _presliding_path(kin, s, VP_PATH)
+    w = VP_SHARE * min(float(s), 1.0)
     v = np.ascontiguousarray(kin.v, dtype=float)
     v99 = max(kin.scales["v99"], 1e-12)
-    u = _eyring_film(np.ascontiguousarray(kin.t, dtype=float), v, e0 + extra, v99,
-                     EF_EYRING * v99)
-    return (1.0 - w) * F + w * (kin.base.g(v) * u + float(p.sigma2) * v)
+    u = _overstress_layer(np.ascontiguousarray(kin.t, dtype=float), v, e0 + extra, v99,
+                          VP_OVER, VP_EXPONENT)
+    return (1.0 - w) * F + w * (kin.base.g(v) * u / (1.0 + VP_OVER) + float(p.sigma2) * v)

@@ -86,6 +86,23 @@ drift 0.089. Before the 12-knot position map (a 4th-order Legendre series) posit
 before the acceleration part lagged as a whole (seed 000's "lag" form; the lag acted on the
 acceleration only) acceleration was 0.129; overall 0.082 with both.
 
+Session 29 (``--speed-only --repeats 5``, one BLAS thread, 2026-11-30 21:22-21:27 UTC, load
+0.9-1.4, nothing else running), the session's first code (1c7014e) and its last (bc1436d)
+alternated, two runs each: 1c7014e best 4.06 / 4.13 s, median 4.26 / 4.18 s (20.0-20.7 x
+one base identification, 0.20 s); bc1436d best **3.24 / 3.09 s**, median **3.32 / 3.35 s**
+(15.6-16.2 x); on 2 threads 5.17-5.41 -> 3.57-3.68 s best, on one 6.60-6.68 -> 4.97-4.98 s.
+Three changes: the data starts' thousands of thin least squares solve the normal equations
+where the columns are well conditioned (:func:`diagnosis.candidates._lsq`, 2-4 x each; the
+starts' 1.7 s of LAPACK's SVD solves in a profiled one-thread diagnosis became 0.6 s), the GMS law's
+record start state is a compiled bisection (the same states; 0.46 s of the GMS fit's
+Python), and the drift's fit stops once a step lowers its cost by less than 1e-4 of it
+(:attr:`diagnosis.effects_drift.Drift.FTOL`; it ran out its 60 trial points while the cost
+fell 0.24 %, 2.3 s, and now stops after 7). The 272-case open grid gives the same 137 right
+before and after, every verdict the same but one wrong name (a Stribeck case, drift ->
+acceleration). With a helper's tests running beside it (load 1.5-2.0), before the drift's
+stop: 1c7014e 5.36 / 5.22 s best, 8.02 / 5.96 s median; the new code 4.25 / 4.35 s, 4.94 /
+5.60 s.
+
 Session 26 (``--speed-only --repeats 5``, one BLAS thread, 2 forked processes): on cead57e
 (the drift's time-scale parts kept; 11:45 UTC, load 0.74-1.31) best 4.50 s, median 4.76 s (19.6 /
 18.8 x one base identification); on aa2e19d (the delay's shift along the stroke) best 4.66 s,

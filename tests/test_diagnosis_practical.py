@@ -132,6 +132,36 @@ def test_saturating_warm_up_is_drift():
     assert rep["verdict"]["gap_closed"] > 0.6  # measured 0.79
 
 
+def test_drift_fit_stops_once_its_cost_crawls(monkeypatch):
+    # Drift.FTOL = 1e-4 (the other fits 1e-8): on the warm-up record the fit stops within a
+    # few steps of scipy's tight stop, at a cost within 0.1 % of it
+    from diagnosis import composite
+    from diagnosis.core import fit_base
+    data, _ = level_truth_record(lambda x, t, lo, hi, T: 1 + 0.6 * (1 - np.exp(-t / (T / 3))),
+                                 noise=0.02)
+    fit = data.split(0.7)[0]
+    ctx = make_context(fit)
+    base, names, _ = fit_base(fit, "lugre", ctx)
+    drift = CANDIDATES["drift"]
+    runs = []
+    real = composite.least_squares
+
+    def counted(*a, **kw):
+        sol = real(*a, **kw)
+        runs.append((kw["ftol"], sol.nfev))
+        return sol
+    monkeypatch.setattr(composite, "least_squares", counted)
+    loose = composite.fit_composite(base.law, names, [drift], fit, ctx)
+    n_loose = sum(n for _, n in runs)
+    assert {f for f, _ in runs} == {drift.FTOL} and drift.FTOL == 1e-4
+    runs.clear()
+    monkeypatch.setattr(type(drift), "FTOL", composite.FTOL)
+    tight = composite.fit_composite(base.law, names, [drift], fit, ctx)
+    assert {f for f, _ in runs} == {1e-8}
+    assert sum(n for _, n in runs) > n_loose
+    assert loose[1] == pytest.approx(tight[1], rel=1e-3)
+
+
 def test_step_change_of_the_level_is_drift():
     # +30 % within 10 ms at 45 % of the record (a lubricant change): linear drift closed 0.33
     rep = _diag(lambda x, t, lo, hi, T: 1 + 0.15 * (1 + np.tanh((t - 0.45 * T) / 0.005)),

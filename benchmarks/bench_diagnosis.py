@@ -93,7 +93,7 @@ one base identification, 0.20 s); bc1436d best **3.24 / 3.09 s**, median **3.32 
 (15.6-16.2 x); on 2 threads 5.17-5.41 -> 3.57-3.68 s best, on one 6.60-6.68 -> 4.97-4.98 s.
 Three changes: the data starts' thousands of thin least squares solve the normal equations
 where the columns are well conditioned (:func:`diagnosis.candidates._lsq`, 2-4 x each; the
-starts' 1.7 s of LAPACK's SVD solves in a profiled one-thread diagnosis became 0.6 s), the GMS law's
+starts' 1.7 s of LAPACK's SVD solves in a profiled one-thread run became 0.6 s), the GMS law's
 record start state is a compiled bisection (the same states; 0.46 s of the GMS fit's
 Python), and the drift's fit stops once a step lowers its cost by less than 1e-4 of it
 (:attr:`diagnosis.effects_drift.Drift.FTOL`; it ran out its 60 trial points while the cost

@@ -404,8 +404,9 @@ def _lsq(A, b):
     n, k = A.shape
     if n >= 4 * k and k:
         G = A.T @ A
-        w, V = np.linalg.eigh(G)
-        if w[0] > NORMAL_EQ_RATIO * w[-1] and np.isfinite(w[-1]):
+        # (columns with a NaN or an inf take the SVD solve, and its error)
+        w, V = np.linalg.eigh(G) if np.all(np.isfinite(G)) else (np.zeros(1), None)
+        if w[0] > NORMAL_EQ_RATIO * w[-1]:
             c = V @ ((V.T @ (A.T @ b)) / w)
             res = b - A @ c
             return float(res @ res), c

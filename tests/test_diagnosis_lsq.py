@@ -47,3 +47,10 @@ def test_ill_conditioned_or_degenerate_columns_fall_back_to_the_svd_solve():
         sse0, c0 = _reference(A, bb)
         np.testing.assert_array_equal(c, c0, err_msg=name)  # the same LAPACK call
         assert sse == sse0, name
+
+
+def test_a_column_with_nan_raises_as_the_svd_solve_does():
+    A = np.random.default_rng(5).random((100, 3))
+    A[5, 1] = np.nan
+    with pytest.raises(np.linalg.LinAlgError, match="SVD did not converge"):
+        _lsq(A, np.ones(100))

@@ -200,7 +200,8 @@ def test_candidate_fit_on_the_normal_equations(effect, monkeypatch):
     ref, cost_ref = composite.fit_composite(law_v, names_v, [cand], data, ctx)
     solved, ticks = [], []
     solve = composite._solve_normal
-    monkeypatch.setattr(composite, "_solve_normal", lambda *a: solved.append(1) or solve(*a))
+    monkeypatch.setattr(composite, "_solve_normal",
+                        lambda *a, **k: solved.append(1) or solve(*a, **k))
     monkeypatch.setattr(composite, "LONG_JACOBIAN_BYTES", 0)
     monkeypatch.setattr(composite, "TICK_EVERY", 0.0)
     with composite.reporting(lambda n, info: ticks.append((n, info))):

@@ -210,7 +210,6 @@ def noise_floor(data, r) -> float:
     return est / sd
 
 
-
 #: a candidate defers to the simpler one its fitted form reduces to (``defers_to``) only
 #: where that one closes at least this share of what it closes of the held-out gap above
 #: the floor [-]: the fit record says the forms look alike, the held-out record whether

@@ -504,13 +504,14 @@ class GMS(FrictionModel):
             sgn, lo, hi = 1.0, -float(np.max(d)), float(np.max(d))
         else:
             # the blocks' break-away deflections at v0 (what :meth:`derivatives` reads too)
-            d = float(self.g(v0)) * (self.element_shares() / k)
+            g0 = float(self.g(v0))
+            d = g0 * (self.element_shares() / k)
             sgn, lo, hi = math.copysign(1.0, v0), 0.0, 2.0 * float(np.max(d))
         # the micro-damping's part of the force (increasing in u all the same: it falls as
         # blocks start slipping, by less than their springs' part grows)
         damped = bool(p.sigma1) and v0 != 0.0
         damp = p.sigma1 / float(np.sum(k)) if damped else 0.0
-        lam = p.C / float(self.g(v0)) if damped else 0.0
+        lam = p.C / g0 if damped else 0.0
         # a compiled bisection: in Python it was a third of the gms candidate's joint fit
         return _start_bisect(np.ascontiguousarray(d, dtype=float), k, sgn, v0 != 0.0, damp,
                              v0, lam, lo, hi, target * sgn)

@@ -301,15 +301,16 @@ class LawCandidate(Candidate):
     #: the law parameters that are this candidate's own
     OWN: ClassVar[tuple] = ()
 
-    def start_values(self, law, names, fit, ctx: Context) -> dict:
-        """Start values of the variant ``law`` chosen on the fit record (see
-        :meth:`start_law`)."""
+    def start_values(self, law, names, fit, ctx: Context) -> dict | list:
+        """Start values of the variant ``law`` chosen on the fit record, or a list of such
+        starts (see :meth:`start_law`)."""
         raise NotImplementedError
 
     def start_law(self, law, names, fit, ctx: Context):
         """``law`` (a :meth:`modify_law` variant) started on the data (:meth:`start_values`);
         ``(law, pinned)`` when the start pinned some of its values (:class:`Fixed`: the
-        joint fit keeps them).
+        joint fit keeps them); a list of them where :meth:`start_values` gives several
+        starts (the joint fit runs from each and keeps the best on the fit record).
 
         Parameters
         ----------
@@ -323,6 +324,14 @@ class LawCandidate(Candidate):
             Scales of the fit record (:func:`diagnosis.candidates.make_context`).
         """
         vals = self.start_values(law, names, fit, ctx)
+        if isinstance(vals, list):
+            # several starts: the joint fit runs from each (:func:`diagnosis.composite.
+            # fit_composite`)
+            return [self._started(law, v) for v in vals]
+        return self._started(law, vals)
+
+    @staticmethod
+    def _started(law, vals: dict):
         pinned = tuple(n for n, x in vals.items() if isinstance(x, Fixed))
         law = law.with_values(**vals)
         # values the start pinned (:class:`Fixed`) stay out of the joint fit

@@ -328,26 +328,37 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     equations, a float32 Jacobian): memory O(N D / 2) instead of scipy's several N x D
     float64 copies.
     """
+    # a candidate that changes the law (backlash's gap, gms's stiffness split) may start
+    # its new parameters on the data, where a least squares from the base's values stays
+    # (``start_law(law, names, fit, ctx) -> law``, :mod:`diagnosis.effects_backlash`); a
+    # warm start (greedy stacking) keeps its values
+    law_starts = []
     if extras0 is None:
-        # a candidate that changes the law (backlash's gap, gms's stiffness split) may start
-        # its new parameters on the data, where a least squares from the base's values
-        # stays (``start_law(law, names, fit, ctx) -> law``, :mod:`diagnosis.
-        # effects_backlash`); a warm start (greedy stacking) keeps its values
         for eff in effects:
             start_law = getattr(eff, "start_law", None)
             if start_law is not None:
                 started = start_law(law, base_names, fit, ctx)
                 # ``(law, pinned)``: law parameters the start pinned (a part of the
                 # candidate the data do not ask for) stay at their values, out of the
-                # solved vector
-                law, pinned = started if isinstance(started, tuple) else (started, ())
+                # solved vector; a list: several starts, the joint fit runs from each
+                # (their pins alike) and keeps the best on the fit record
+                starts = [s if isinstance(s, tuple) else (s, ())
+                          for s in (started if isinstance(started, list) else [started])]
+                if any(set(pin) != set(starts[0][1]) for _, pin in starts):
+                    raise ValueError(f"{eff.name}'s law starts pin different parameters")
+                law, pinned = starts[0]
+                law_starts = [s for s, _ in starts[1:]]
                 base_names = [n for n in base_names if n not in pinned]
     nb = len(base_names)
     # no law parameter to fit (the transfer scores calibrate only a candidate's own): the
     # law stays at its values
     space = law_space(law, base_names, fit) if nb else None
-    u_law0 = (np.clip(space.to_unit(np.array([getattr(law.params, n) for n in base_names])),
-                      0.0, 1.0) if nb else np.zeros(0))
+
+    def law_unit(start):
+        return (np.clip(space.to_unit(np.array([getattr(start.params, n)
+                                                for n in base_names])), 0.0, 1.0)
+                if nb else np.zeros(0))
+    u_law0 = law_unit(law)
     ex = [e for eff in effects for e in eff.force_extras(ctx)]
     lo = np.array([e.lo for e in ex])
     hi = np.array([e.hi for e in ex])
@@ -355,7 +366,7 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     alts = _data_starts(law, base_names, effects, ex, x_ex0, extras0, fit, ctx)
     box = (lo.copy(), hi.copy())
 
-    def start_point(x_ex0, pinned):
+    def start_point(x_ex0, pinned, u_law):
         # the box of this start (lo, hi are the closures' arrays, set in place): a part the
         # data start found unsupported stays at its value
         lo[:], hi[:] = box
@@ -365,7 +376,7 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         span = hi - lo
         u_ex0 = (np.divide(x_ex0 - lo, span, out=np.zeros_like(x_ex0), where=span > 0)
                  if ex else np.zeros(0))
-        return np.concatenate([u_law0, np.clip(u_ex0, 0.0, 1.0)])
+        return np.concatenate([u_law, np.clip(u_ex0, 0.0, 1.0)])
     # kernel inputs validated once; each evaluation only repacks theta
     t, v, a, load, x = law._inputs(fit.t, fit.v, **_law_inputs(law, fit))
     # simulated with a sample at each reversal inside a step (as Composite.predict)
@@ -513,10 +524,11 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     # coupled part that fits the fit record's residual can hold the base's own parameters
     # in the basin where they absorbed the effect, which the plain form leaves
     sol, best_box = None, None
-    for x_ex0, pinned in alts:
-        sol_a = solve(gridded(start_point(x_ex0, pinned)))
-        if sol is None or sol_a.cost < sol.cost:
-            sol, best_box = sol_a, (lo.copy(), hi.copy())
+    for u_law in [u_law0] + [law_unit(s) for s in law_starts]:
+        for x_ex0, pinned in alts:
+            sol_a = solve(gridded(start_point(x_ex0, pinned, u_law)))
+            if sol is None or sol_a.cost < sol.cost:
+                sol, best_box = sol_a, (lo.copy(), hi.copy())
     lo[:], hi[:] = best_box
     undo = [eff for eff in effects if eff.undo is not None]
     if undo and nb:

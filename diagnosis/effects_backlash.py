@@ -271,9 +271,9 @@ def reversal_travel_floor(ctx: Context, samples: float) -> float:
     return 0.5 * ctx.sa * (samples * ctx.dt) ** 2
 
 
-def reversal_travels(fit, ctx: Context) -> np.ndarray:
-    """Drive travel [m] from each reversal of ``fit`` until the force has gone
-    :data:`REVERSAL_SHARE` of the way from its value at the turn to its sliding level in the
+def reversal_travels(fit, ctx: Context, share: float = REVERSAL_SHARE) -> np.ndarray:
+    """Drive travel [m] from each reversal of ``fit`` until the force has gone ``share``
+    (default :data:`REVERSAL_SHARE`) of the way from its value at the turn to its sliding level in the
     new direction (model-free: the lost motion plus the contact's presliding travel; with a
     play the ``hold`` contact keeps its force and the ``free`` one drops to about half way,
     the offset, until the play is crossed).
@@ -288,7 +288,12 @@ def reversal_travels(fit, ctx: Context) -> np.ndarray:
         The record (t [s], x [m], v [m/s], F [N]).
     ctx : diagnosis.candidates.Context
         Scales of the fit record (:func:`diagnosis.candidates.make_context`).
+    share : float
+        Share of the force swing at which the travel ends [-], in (0, 1).
     """
+    if not 0.0 < share < 1.0:
+        raise ValueError(f"share = {share!r} is out of bounds: the share of the force swing "
+                         f"must lie in (0, 1) [-]")
     v, x, F = fit.v, fit.x, fit.F
     band = 0.02 * ctx.sv
     sgn = np.sign(v) * (np.abs(v) > band)
@@ -311,7 +316,7 @@ def reversal_travels(fit, ctx: Context) -> np.ndarray:
         if slide.sum() < 3:
             continue
         level = float(np.median(F[nxt][slide]))
-        mid = F[turn] + REVERSAL_SHARE * (level - F[turn])
+        mid = F[turn] + share * (level - F[turn])
         if not (level - F[turn]) * new > 0:
             continue
         past = np.flatnonzero(new * (F[turn:k1] - mid) > 0)

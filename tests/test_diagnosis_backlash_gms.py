@@ -14,6 +14,7 @@ from friction import make_model
 from friction.dataset import Dataset
 from friction.metrics import nrmse
 from diagnosis.benchmark import BASE, _motion as benchmark_motion
+from diagnosis.candidates import Fixed
 
 BACKLASH = CANDIDATES["backlash"]
 GMS = CANDIDATES["gms"]
@@ -105,6 +106,79 @@ def test_reversal_travels_measure_the_lost_motion_without_a_model(form):
     assert 2e-3 <= np.median(tr) < 2.25e-3
     clean = _record(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng)
     assert np.median(eb.reversal_travels(clean, make_context(clean))) < 2e-4
+
+
+def test_reversal_travels_refuse_a_share_outside_0_1():
+    t, x, v, rng = _motion(2000, 1e-3, 0)
+    data = _record(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng)
+    with pytest.raises(ValueError, match="share = 1.0 is out of bounds"):
+        eb.reversal_travels(data, make_context(data), 1.0)
+
+
+@pytest.mark.parametrize("form", ["maxwell10", "dahl"])
+def test_gms_start_reaches_a_long_presliding_tail_of_a_stiff_contact(form, monkeypatch):
+    """A stiff contact (sigma0 2e6 N/m: one bristle deflects 1.4 um) whose presliding runs
+    over 0.2 mm: the second start sets the presliding distance from the record's travel to
+    90 % of the force swing after its reversals; the first (the stiffness scaled around the
+    base's) stays below a quarter of the truth's and fits the record far worse."""
+    t, x, v, rng = _motion(8000, 1e-3, 3)
+    stiff = dict(BASE, sigma0=2e6)
+    data = _record(eg.gms_truth(form, t, v, stiff, 2e-4), t, x, v, rng, noise=0.01)
+    ctx = make_context(data)
+    law = GMS.law_for(make_model("lugre", **stiff))
+    names = GMS.names_for(["sigma0", "sigma1", "sigma2", "Fc", "Fs", "vs", "b"])
+
+    def run(vals):
+        trial = law.with_values(**vals)
+        F = trial.simulate(t, v, state0=trial.record_start_state(t, v, F=data.F))
+        return float(np.sum((data.F - F) ** 2)), trial.presliding_distance()
+
+    grid, tail = eg.gms_start(law, names, data, ctx)
+    sse, pre = run(tail)
+    assert 1e-4 <= pre <= 4e-4
+    sse_grid, pre_grid = run(grid)
+    assert pre_grid < 5e-5 and sse < 0.2 * sse_grid
+    # without reversals to measure, the first grid's start alone
+    monkeypatch.setattr(eb, "reversal_travels", lambda *a, **k: np.zeros(0))
+    assert eg.gms_start(law, names, data, ctx) == [grid]
+
+
+def test_joint_fit_runs_from_each_law_start_and_keeps_the_best():
+    """A law candidate whose start gives two starts (a play of a fifth of the truth's, and
+    the truth's): the joint fit is the better of the fits from each alone."""
+    from diagnosis.composite import fit_composite
+    t, x, v, rng = _motion(6000, 1e-3, 2)
+    data = _record(eb.backlash_truth("rigid", t, v, 2e-3, BASE), t, x, v, rng)
+    ctx = make_context(data)
+    (law, names), = BACKLASH.modify_law(make_model("lugre", **BASE), ["Fc", "sigma0"], ctx)
+    off = {n: Fixed(0.0) for n in eb.ACROSS}
+
+    def fitted(*deltas):
+        class Starts(type(BACKLASH)):
+            def start_values(self, law, names, fit, ctx):
+                return [{"delta": d, **off} for d in deltas]
+        cand = Starts(BACKLASH.name, BACKLASH.description, BACKLASH.stage, BACKLASH.tags)
+        comp, nr = fit_composite(law, names, [cand], data, ctx, max_nfev=8)
+        return nr, 2.0 * comp.law.params.delta
+
+    short, right = fitted(2e-4), fitted(1e-3)
+    assert right[0] < 0.5 * short[0]
+    assert fitted(2e-4, 1e-3) == right and fitted(1e-3, 2e-4) == right
+
+
+def test_law_starts_that_pin_different_parameters_are_refused():
+    from diagnosis.composite import fit_composite
+    t, x, v, rng = _motion(2000, 1e-3, 0)
+    data = _record(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng)
+    ctx = make_context(data)
+    (law, names), = BACKLASH.modify_law(make_model("lugre", **BASE), ["Fc"], ctx)
+
+    class TwoStarts(type(BACKLASH)):
+        def start_values(self, law, names, fit, ctx):
+            return [{"delta": 1e-4}, {"delta": 2e-4, "gap_bias": Fixed(0.0)}]
+    two = TwoStarts(BACKLASH.name, BACKLASH.description, BACKLASH.stage, BACKLASH.tags)
+    with pytest.raises(ValueError, match="law starts pin different parameters"):
+        fit_composite(law, names, [two], data, ctx, max_nfev=2)
 
 
 def test_contact_record_takes_the_play_out():

@@ -353,6 +353,12 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     # no law parameter to fit (the transfer scores calibrate only a candidate's own): the
     # law stays at its values
     space = law_space(law, base_names, fit) if nb else None
+    for other in (law_starts if nb else ()):
+        # the box holds every start (each widens its own to its values)
+        alt = law_space(other, base_names, fit)
+        space.lower = np.minimum(space.lower, alt.lower)
+        space.upper = np.maximum(space.upper, alt.upper)
+        space.log = space.log & alt.log & (space.lower > 0)
 
     def law_unit(start):
         return (np.clip(space.to_unit(np.array([getattr(start.params, n)

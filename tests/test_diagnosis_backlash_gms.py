@@ -166,6 +166,32 @@ def test_joint_fit_runs_from_each_law_start_and_keeps_the_best():
     assert fitted(2e-4, 1e-3) == right and fitted(1e-3, 2e-4) == right
 
 
+def test_every_law_start_lies_inside_the_joint_fits_box():
+    """A second start far below the first's box (a play of 1 nm beside one of 1 mm, on a
+    record without play): the box is widened to it, not the start clipped, so the joint
+    fit from both is the fit from the tiny play alone."""
+    from diagnosis.composite import fit_composite, law_space
+    t, x, v, rng = _motion(4000, 1e-3, 4)
+    data = _record(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng)
+    ctx = make_context(data)
+    (law, names), = BACKLASH.modify_law(make_model("lugre", **BASE), ["Fc", "sigma0"], ctx)
+    off = {n: Fixed(0.0) for n in eb.ACROSS}
+    box = law_space(law.with_values(delta=1e-3), ["Fc", "sigma0", "delta"], data)
+    assert box.lower[2] > 1e-8              # the first start's box alone would clip 1 nm
+
+    def fitted(*deltas):
+        class Starts(type(BACKLASH)):
+            def start_values(self, law, names, fit, ctx):
+                return [{"delta": d, **off} for d in deltas]
+        cand = Starts(BACKLASH.name, BACKLASH.description, BACKLASH.stage, BACKLASH.tags)
+        comp, nr = fit_composite(law, names, [cand], data, ctx, max_nfev=8)
+        return nr, comp.law.params.delta
+
+    tiny = fitted(1e-9)
+    assert tiny[1] < 1e-8 and tiny[0] < fitted(1e-3)[0]
+    assert fitted(1e-3, 1e-9) == tiny
+
+
 def test_law_starts_that_pin_different_parameters_are_refused():
     from diagnosis.composite import fit_composite
     t, x, v, rng = _motion(2000, 1e-3, 0)

@@ -145,6 +145,14 @@ class Fixed(float):
     then moves nothing, where it is)."""
 
 
+class Fallback(dict):
+    """Start values of a law candidate (:meth:`LawCandidate.start_values`, in a list after
+    the first start) that the joint fit runs from only where they fit the record better
+    than its best fit so far (:func:`diagnosis.composite.fit_composite`): a start that
+    guards against a poor basin of the others (the base itself inside the candidate's law)
+    costs one simulation where it is not needed."""
+
+
 @dataclass
 class Extra:
     """One extra parameter of a candidate: name, start value and box (physical units).
@@ -310,7 +318,8 @@ class LawCandidate(Candidate):
         """``law`` (a :meth:`modify_law` variant) started on the data (:meth:`start_values`);
         ``(law, pinned)`` when the start pinned some of its values (:class:`Fixed`: the
         joint fit keeps them); a list of them where :meth:`start_values` gives several
-        starts (the joint fit runs from each and keeps the best on the fit record).
+        starts (the joint fit runs from each and keeps the best on the fit record), a
+        :class:`Fallback` start as ``(law, pinned, True)``.
 
         Parameters
         ----------
@@ -326,8 +335,9 @@ class LawCandidate(Candidate):
         vals = self.start_values(law, names, fit, ctx)
         if isinstance(vals, list):
             # several starts: the joint fit runs from each (:func:`diagnosis.composite.
-            # fit_composite`)
-            return [self._started(law, v) for v in vals]
+            # fit_composite`), from a Fallback only where it starts below the best fit
+            return [(*self._started(law, v), True) if isinstance(v, Fallback)
+                    else self._started(law, v) for v in vals]
         return self._started(law, vals)
 
     @staticmethod
@@ -335,7 +345,7 @@ class LawCandidate(Candidate):
         pinned = tuple(n for n, x in vals.items() if isinstance(x, Fixed))
         law = law.with_values(**vals)
         # values the start pinned (:class:`Fixed`) stay out of the joint fit
-        return (law, pinned) if pinned else law
+        return (law, pinned) if pinned or isinstance(vals, Fallback) else law
 
     def own_law_names(self, law):
         """The law parameters that are this candidate's own, :attr:`OWN` (a transfer

@@ -342,18 +342,20 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
                 # candidate the data do not ask for) stay at their values, out of the
                 # solved vector; a list: several starts, the joint fit runs from each
                 # (their pins alike) and keeps the best on the fit record
-                starts = [s if isinstance(s, tuple) else (s, ())
+                # (``(law, pinned, True)``: a fallback start, run only where it starts
+                # below the best fit so far)
+                starts = [(s + (False,))[:3] if isinstance(s, tuple) else (s, (), False)
                           for s in (started if isinstance(started, list) else [started])]
-                if any(set(pin) != set(starts[0][1]) for _, pin in starts):
+                if any(set(pin) != set(starts[0][1]) for _, pin, _ in starts):
                     raise ValueError(f"{eff.name}'s law starts pin different parameters")
-                law, pinned = starts[0]
-                law_starts = [s for s, _ in starts[1:]]
+                law, pinned, _ = starts[0]
+                law_starts = [(s, fb) for s, _, fb in starts[1:]]
                 base_names = [n for n in base_names if n not in pinned]
     nb = len(base_names)
     # no law parameter to fit (the transfer scores calibrate only a candidate's own): the
     # law stays at its values
     space = law_space(law, base_names, fit) if nb else None
-    for other in (law_starts if nb else ()):
+    for other, _ in (law_starts if nb else ()):
         # the box holds every start (each widens its own to its values)
         alt = law_space(other, base_names, fit)
         space.lower = np.minimum(space.lower, alt.lower)
@@ -530,9 +532,13 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     # coupled part that fits the fit record's residual can hold the base's own parameters
     # in the basin where they absorbed the effect, which the plain form leaves
     sol, best_box = None, None
-    for u_law in [u_law0] + [law_unit(s) for s in law_starts]:
+    for u_law, fallback in [(u_law0, False)] + [(law_unit(s), fb) for s, fb in law_starts]:
         for x_ex0, pinned in alts:
-            sol_a = solve(gridded(start_point(x_ex0, pinned, u_law)))
+            u0 = gridded(start_point(x_ex0, pinned, u_law))
+            if fallback and sol is not None and 0.5 * float(np.sum(residual(u0) ** 2)) \
+                    >= sol.cost:
+                continue
+            sol_a = solve(u0)
             if sol is None or sol_a.cost < sol.cost:
                 sol, best_box = sol_a, (lo.copy(), hi.copy())
     lo[:], hi[:] = best_box

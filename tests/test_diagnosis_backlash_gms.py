@@ -14,7 +14,7 @@ from friction import make_model
 from friction.dataset import Dataset
 from friction.metrics import nrmse
 from diagnosis.benchmark import BASE, _motion as benchmark_motion
-from diagnosis.candidates import Fixed
+from diagnosis.candidates import Fallback, Fixed
 
 BACKLASH = CANDIDATES["backlash"]
 GMS = CANDIDATES["gms"]
@@ -190,6 +190,40 @@ def test_every_law_start_lies_inside_the_joint_fits_box():
     tiny = fitted(1e-9)
     assert tiny[1] < 1e-8 and tiny[0] < fitted(1e-3)[0]
     assert fitted(1e-3, 1e-9) == tiny
+
+
+def test_a_fallback_law_start_runs_only_where_it_starts_below_the_best_fit(monkeypatch):
+    """The base-like fallback start (a play of 1 nm) after a start at the true play of a
+    rigid-play record is skipped (one least squares); after a 1 mm play on a record
+    without play it is run and kept."""
+    import diagnosis.composite as comp_mod
+    from diagnosis.composite import fit_composite
+    runs = []
+    real = comp_mod.least_squares
+    monkeypatch.setattr(comp_mod, "least_squares",
+                        lambda *a, **k: runs.append(1) or real(*a, **k))
+    t, x, v, rng = _motion(4000, 1e-3, 4)
+    off = {n: Fixed(0.0) for n in eb.ACROSS}
+
+    def fitted(data, first, fallback):
+        ctx = make_context(data)
+        (law, names), = BACKLASH.modify_law(make_model("lugre", **BASE), ["Fc", "sigma0"],
+                                            ctx)
+
+        class Starts(type(BACKLASH)):
+            def start_values(self, law, names, fit, ctx):
+                return [{"delta": first, **off}, Fallback(delta=fallback, **off)]
+        cand = Starts(BACKLASH.name, BACKLASH.description, BACKLASH.stage, BACKLASH.tags)
+        runs.clear()
+        comp, _ = fit_composite(law, names, [cand], data, ctx, max_nfev=8)
+        return len(runs), comp.law.params.delta
+
+    rigid = _record(eb.backlash_truth("rigid", t, v, 2e-3, BASE), t, x, v, rng)
+    n, delta = fitted(rigid, 1e-3, 1e-9)
+    assert n == 1 and delta > 5e-4
+    clean = _record(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng)
+    n, delta = fitted(clean, 1e-3, 1e-9)
+    assert n == 2 and delta < 1e-8
 
 
 def test_law_starts_that_pin_different_parameters_are_refused():
@@ -428,16 +462,25 @@ def test_the_start_keeps_what_bridges_the_play_only_where_the_data_ask():
     base = make_model("lugre", **BASE)
     (law, names), = BACKLASH.modify_law(base, ["Fc", "Fs", "sigma2"], _ctx())
     rigid = _record(eb.backlash_truth("rigid", t, v, 2e-3, BASE), t, x, v, rng)
-    p = eb.gap_start(law, names, rigid, make_context(rigid))
+    p, null = eb.gap_start(law, names, rigid, make_context(rigid))
     assert all(isinstance(p[n], Fixed) and p[n] == 0.0 for n in eb.ACROSS)
     assert p["delta"] == pytest.approx(1e-3, rel=0.25)
-    _, pinned = BACKLASH.start_law(law, names, rigid, make_context(rigid))
-    assert set(pinned) == set(eb.ACROSS)
+    # the second start: the base behind a play of a thousandth of its bristle's deflection
+    assert null["delta"] == pytest.approx(1e-3 * BASE["Fs"] / BASE["sigma0"])
+    assert {n: null[n] for n in ("Fc", "Fs", "sigma2")} == {
+        n: getattr(law.params, n) for n in ("Fc", "Fs", "sigma2")}
+    assert all(null[n] is p[n] for n in eb.ACROSS) and null["gap"] == p["gap"]
+    assert isinstance(null, Fallback)
+    first, second = BACKLASH.start_law(law, names, rigid, make_context(rigid))
+    assert set(first[1]) == set(eb.ACROSS) and len(first) == 2
+    # the base-like start is a fallback, run only where it starts below the first's fit
+    assert set(second[1]) == set(eb.ACROSS) and second[2] is True
     truth = BACKLASH.law_for(base, 1e-3).with_values(gap="free", gap_stiffness=400.0,
                                                     gap_drag=0.3)
     bridged = _record(truth.simulate(t, v), t, x, v, rng, noise=0.01)
-    p = eb.gap_start(law, names, bridged, make_context(bridged))
+    p, null = eb.gap_start(law, names, bridged, make_context(bridged))
     assert p["gap"] == "free" and p["delta"] == pytest.approx(1e-3, rel=0.25)
+    assert all(null[n] == 0.0 and not isinstance(null[n], Fixed) for n in eb.ACROSS)
     assert not isinstance(p["gap_drag"], Fixed)
     assert p["gap_drag"] == pytest.approx(0.3, rel=0.3)
     assert p["gap_stiffness"] == pytest.approx(400.0, rel=0.3)

@@ -86,6 +86,14 @@ drift 0.089. Before the 12-knot position map (a 4th-order Legendre series) posit
 before the acceleration part lagged as a whole (seed 000's "lag" form; the lag acted on the
 acceleration only) acceleration was 0.129; overall 0.082 with both.
 
+Session 30 (``--speed-only --repeats 5``, one BLAS thread, 2026-11-30 23:29-23:58 UTC,
+each line's codes alternated, nothing else running): f2f5ab8 best 3.87, 3.47, 3.77 s; with
+the GMS candidate's second start (3c7e4aa; a second joint fit where the two starts'
+presliding distances lie 4 x apart, not on this case) 3.72 / 4.01 s; with backlash's
+fallback start as well (de40d49) 3.90 s, median 4.34 s (f2f5ab8 beside it: 4.25 s). Fitting
+both GMS starts always had cost 1 s (4.27 / 4.34 s best), the backlash fallback run always
+0.9 s.
+
 Session 29 (``--speed-only --repeats 5``, one BLAS thread, 2026-11-30 21:22-21:27 UTC, load
 0.9-1.4, nothing else running), the session's first code (1c7014e) and its last (bc1436d)
 alternated, two runs each: 1c7014e best 4.06 / 4.13 s, median 4.26 / 4.18 s (20.0-20.7 x

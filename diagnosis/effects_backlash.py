@@ -276,10 +276,10 @@ def reversal_travel_floor(ctx: Context, samples: float) -> float:
 
 def reversal_travels(fit, ctx: Context, share: float = REVERSAL_SHARE) -> np.ndarray:
     """Drive travel [m] from each reversal of ``fit`` until the force has gone ``share``
-    (default :data:`REVERSAL_SHARE`) of the way from its value at the turn to its sliding level in the
-    new direction (model-free: the lost motion plus the contact's presliding travel; with a
-    play the ``hold`` contact keeps its force and the ``free`` one drops to about half way,
-    the offset, until the play is crossed).
+    (default :data:`REVERSAL_SHARE`) of the way from its value at the turn to its sliding
+    level in the new direction (model-free: the lost motion plus the contact's presliding
+    travel; with a play the ``hold`` contact keeps its force and the ``free`` one drops to
+    about half way, the offset, until the play is crossed).
 
     Reversals are sign changes of the velocity outside a dead band of 2 % of the top speed
     (a noisy velocity near rest does not chatter), measured from the turning point of the

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen24`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen25`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -260,6 +260,7 @@ _S21 = "diagnosis.benchmark.seen21:"
 _S22 = "diagnosis.benchmark.seen22:"
 _S23 = "diagnosis.benchmark.seen23:"
 _S24 = "diagnosis.benchmark.seen24:"
+_S25 = "diagnosis.benchmark.seen25:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -321,7 +322,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "cone_sensor_brake": _S21 + "cone_sensor_brake_truth",
                    "inertia_valve_damper": _S22 + "inertia_valve_damper_truth",
                    "belt_creep": _S23 + "belt_creep_truth",
-                   "gantry_racking": _S24 + "gantry_racking_truth"},
+                   "gantry_racking": _S24 + "gantry_racking_truth",
+                   "band_capstan": _S25 + "band_capstan_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -353,7 +355,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "pin_in_bore": _S21 + "pin_in_bore_truth",
                    "ball_spin": _S22 + "ball_spin_truth",
                    "disc_spring_pad": _S23 + "disc_spring_pad_truth",
-                   "light_load_skid": _S24 + "light_load_skid_truth"},
+                   "light_load_skid": _S24 + "light_load_skid_truth",
+                   "constant_flow_pad": _S25 + "constant_flow_pad_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -385,7 +388,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "counterbalance_valve": _S21 + "counterbalance_valve_truth",
                    "elliptic_vibration": _S22 + "elliptic_vibration_truth",
                    "fluidic_diode": _S23 + "fluidic_diode_truth",
-                   "pitching_pads": _S24 + "pitching_pads_truth"},
+                   "pitching_pads": _S24 + "pitching_pads_truth",
+                   "roller_skew": _S25 + "roller_skew_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -417,7 +421,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "flying_pad": _S21 + "flying_pad_truth",
                    "wiping_meniscus": _S22 + "wiping_meniscus_truth",
                    "sommerfeld_journal": _S23 + "sommerfeld_journal_truth",
-                   "wall_slip": _S24 + "wall_slip_truth"},
+                   "wall_slip": _S24 + "wall_slip_truth",
+                   "thermal_closure": _S25 + "thermal_closure_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -453,7 +458,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "spool_flow_force": _S21 + "spool_flow_force_truth",
                    "crank_transmission": _S22 + "crank_transmission_truth",
                    "drawer_overhang": _S23 + "drawer_overhang_truth",
-                   "track_end": _S24 + "track_end_truth"},
+                   "track_end": _S24 + "track_end_truth",
+                   "cable_reel": _S25 + "cable_reel_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -484,7 +490,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "spring_surge": _S21 + "spring_surge_truth",
                    "rolling_payload": _S22 + "rolling_payload_truth",
                    "rocking_block": _S23 + "rocking_block_truth",
-                   "qzs_isolator": _S24 + "qzs_isolator_truth"},
+                   "qzs_isolator": _S24 + "qzs_isolator_truth",
+                   "oil_column": _S25 + "oil_column_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -519,7 +526,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "magnetoelastic_cell": _S21 + "magnetoelastic_cell_truth",
                    "quartz_counter": _S22 + "quartz_counter_truth",
                    "swept_grating": _S23 + "swept_grating_truth",
-                   "force_restoration": _S24 + "force_restoration_truth"},
+                   "force_restoration": _S24 + "force_restoration_truth",
+                   "interleaved_adc": _S25 + "interleaved_adc_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -552,7 +560,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "receiver_pressure": _S21 + "receiver_pressure_truth",
                    "spall_growth": _S22 + "spall_growth_truth",
                    "oil_evaporation": _S23 + "oil_evaporation_truth",
-                   "pump_down": _S24 + "pump_down_truth"},
+                   "pump_down": _S24 + "pump_down_truth",
+                   "additive_settling": _S25 + "additive_settling_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -583,7 +592,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "overlapped_servo": _S21 + "overlapped_servo_truth",
                    "side_loaded_pin": _S22 + "side_loaded_pin_truth",
                    "toggle_spring": _S23 + "toggle_spring_truth",
-                   "graded_clearance": _S24 + "graded_clearance_truth"},
+                   "graded_clearance": _S24 + "graded_clearance_truth",
+                   "adhesive_flank": _S25 + "adhesive_flank_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -614,7 +624,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "contact_renewal": _S21 + "contact_renewal_truth",
                    "grease_yield": _S22 + "grease_yield_truth",
                    "superelastic_flexure": _S23 + "superelastic_flexure_truth",
-                   "eyring_film": _S24 + "eyring_film_truth"},
+                   "eyring_film": _S24 + "eyring_film_truth",
+                   "viscoplastic_overstress": _S25 + "viscoplastic_overstress_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

@@ -335,16 +335,17 @@ def gms_start(law, names, fit, ctx: Context) -> list:
     # from the first grid alone, 0.72 and 0.42 with this one)
     damping = [float(p.sigma1)] + ([0.0] if "sigma1" in names and p.sigma1 > 0 else [])
 
+    # each split's presliding distance at the base's stiffness (it scales as 1 / sigma0)
+    at_base = {(spread, tilt): law.with_values(spread=spread, tilt=tilt).presliding_distance()
+               for spread in PRESLIDING_SPREADS for tilt in TILTS}
+
     def tails():
         for scale in PRESLIDING_SCALES:
             want = scale * float(np.median(travel))
-            for spread in PRESLIDING_SPREADS:
-                for tilt in TILTS:
-                    probe = law.with_values(spread=spread, tilt=tilt)
-                    sigma0 = float(p.sigma0) * probe.presliding_distance() / want
-                    for s1 in damping:
-                        yield {"spread": spread, "tilt": tilt, "sigma0": sigma0,
-                               "sigma1": s1, "C": grid.get("C", level / ctx.dt)}
+            for (spread, tilt), pre in at_base.items():
+                for s1 in damping:
+                    yield {"spread": spread, "tilt": tilt, "sigma0": float(p.sigma0) * pre / want,
+                           "sigma1": s1, "C": grid.get("C", level / ctx.dt)}
     tail = best_of(tails())
     if not tail:
         return [grid]

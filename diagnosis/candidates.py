@@ -38,7 +38,7 @@ from friction.alignment import velocity_lag
 
 __all__ = ["Candidate", "LawCandidate", "Context", "Extra", "make_context", "velocity_lag",
            "Fixed", "Asymmetry", "AsymmetryTwins", "friction_heat", "position_quantum",
-           "Presliding", "MAX_FILTER_SAMPLES", "missing_columns"]
+           "Presliding", "MAX_FILTER_SAMPLES", "missing_columns", "law_variants"]
 
 
 
@@ -186,7 +186,9 @@ class Candidate:
         return True, ""
 
     def modify_law(self, law, base_names, ctx: Context):
-        """Return the list of (law, base_names) variants to try (best on fit is kept)."""
+        """Return the list of (law, base_names) variants to try (best on fit is kept); a
+        variant may carry a third item, the form of the candidate fitted with it (a
+        :class:`Candidate` of the same name; :func:`law_variants`)."""
         return [(law, list(base_names))]
 
     def extras(self, ctx: Context) -> list[Extra]:
@@ -373,6 +375,28 @@ class LawCandidate(Candidate):
         units = {i.name: i.unit for i in law.Params.info()}
         box = default_bounds(law, list(self.OWN))
         return [Extra(n, float(getattr(law.params, n)), *box[n], units[n]) for n in self.OWN]
+
+def law_variants(cand: Candidate, law, base_names, ctx: Context) -> list:
+    """``cand``'s law variants (:meth:`Candidate.modify_law`) as ``(law, names, form)``:
+    ``form`` is the candidate fitted with that variant, ``cand`` itself unless the variant
+    names another form of it (a speed map inside the law's levels with the curve kept, or
+    one beside the law with the curve freed: :class:`diagnosis.effects_stribeck.
+    StribeckMap`).
+
+    Parameters
+    ----------
+    cand : Candidate
+        The candidate (specialised to ``law``).
+    law : FrictionModel
+        The base law.
+    base_names : list of str
+        Its free parameters.
+    ctx : Context
+        Scales of the fit record.
+    """
+    return [(v[0], v[1], v[2] if len(v) > 2 else cand)
+            for v in cand.modify_law(law, base_names, ctx)]
+
 
 def _sig_neg(v, ctx):
     # smooth indicator of the negative direction: a sign change is not a step in measured data

@@ -86,12 +86,13 @@ def as_client(executor):
 def _fit_one(name, *, law, base_names, fit, ctx):
     """Best (composite, fit NRMSE) of candidate ``name`` over its law variants, or None
     when it does not apply (the client decides what to report)."""
+    from .candidates import law_variants
     from .composite import fit_composite
     from .effects import CANDIDATES  # the registry diagnose() uses
     cand = CANDIDATES[name].specialise(law)
     best = None
-    for law_v, names_v in cand.modify_law(law, base_names, ctx):
-        comp, cost = fit_composite(law_v, names_v, [cand], fit, ctx)
+    for law_v, names_v, form in law_variants(cand, law, base_names, ctx):
+        comp, cost = fit_composite(law_v, names_v, [form], fit, ctx)
         if best is None or cost < best[1]:
             best = (comp, cost)
     return best
@@ -198,12 +199,13 @@ def _bound_fit(law, base_names, fit, ctx):
 def _widest_first(names, law, base_names, ctx) -> list:
     """``names`` with the widest fits first (most Jacobian columns, the cost's first
     order), so that no long one starts last and runs alone."""
+    from .candidates import law_variants
     from .effects import CANDIDATES
     width = {}
     for name in names:
         cand = CANDIDATES[name].specialise(law)
-        width[name] = len(cand.force_extras(ctx)) + max(
-            (len(nv) for _, nv in cand.modify_law(law, base_names, ctx)), default=0)
+        width[name] = max((len(form.force_extras(ctx)) + len(nv) for _, nv, form
+                           in law_variants(cand, law, base_names, ctx)), default=0)
     return sorted(names, key=lambda nm: -width[nm])
 
 

@@ -31,7 +31,7 @@ from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
 from friction.progress import status_lines
 
-from .candidates import missing_columns as _missing_columns
+from .candidates import law_variants, missing_columns as _missing_columns
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
@@ -458,11 +458,14 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
             continue
         say(f"[diagnose] candidate {k}/{len(names)}: {name}")
         best = remote.get(name)
-        for law_v, names_v in (() if best else cand.modify_law(base.law, base_names, ctx)):
-            comp, cost = fit_composite(law_v, names_v, [cand], fit, ctx)
+        for law_v, names_v, form in (() if best else
+                                     law_variants(cand, base.law, base_names, ctx)):
+            comp, cost = fit_composite(law_v, names_v, [form], fit, ctx)
             if best is None or cost < best[1]:
                 best = (comp, cost)
         comp, cost = best
+        # the form that fitted best (a variant may carry its own: law_variants)
+        cand = comp.effects[0] if comp.effects else cand
         after = val_score(comp, name)
         fitted[name] = comp
         # the law's fitted values too: a law-changing candidate's size is a law parameter
@@ -549,7 +552,7 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
             cand = CANDIDATES[e["name"]].specialise(current.law)
             if cand.stage == "modify_law" and any(c.stage == "modify_law" for c in current.effects):
                 continue
-            law_v, names_v = cand.modify_law(current.law, current.base_names, ctx)[0]
+            law_v, names_v, cand = law_variants(cand, current.law, current.base_names, ctx)[0]
             if not hasattr(law_v, "simulate_level") and any(
                     getattr(c, "inside", None) is not None for c in current.effects + [cand]):
                 continue  # an effect inside the law, on a law that cannot carry it

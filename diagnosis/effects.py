@@ -393,7 +393,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
-                         "Stribeck curve shape: exponent, Lorentzian, a speed map",
+                         "Stribeck curve shape: exponent, Lorentzian, a speed map, a drag beside "
+                         "the contact",
                          "modify_law"),
            plant_entry="law", fmu=True, families=("|v|", "pre-sliding"),
            truths={"exponential_tail": _T + "stribeck_shape_truth",

@@ -29,6 +29,7 @@ import numpy as np
 
 from friction.metrics import nrmse
 
+from .candidates import law_variants
 from .composite import Composite, fit_composite
 
 __all__ = ["transfer_applicable", "transfer_scores"]
@@ -85,11 +86,11 @@ def transfer_scores(base: Composite, base_names, candidates: dict, val_sets, ctx
         for name, cand in candidates.items():
             best = None
             own = cand.own_law_names(base.law)
-            for law_v, names_v in cand.modify_law(base.law, base_names, ctx):
+            for law_v, names_v, form in law_variants(cand, base.law, base_names, ctx):
                 new = [m for m in names_v if m not in base_names or m in own]
-                comp, cost = fit_composite(law_v, new, [cand], val_sets[i], ctx)
+                comp, cost = fit_composite(law_v, new, [form], val_sets[i], ctx)
                 if best is None or cost < best[1]:
-                    best = (comp, cost, len(cand.force_extras(ctx)) + len(new))
+                    best = (comp, cost, len(form.force_extras(ctx)) + len(new))
             comp = best[0]
             n_params[name] = best[2]
             P_c = np.concatenate([comp.predict(val_sets[j])[skip[j]:] for j in others])

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from diagnosis.candidates import make_context
+from diagnosis.candidates import law_variants, make_context
 from diagnosis.effects_stribeck import StribeckMap, StribeckShape, speed_map
 from diagnosis.composite import fit_composite
 from diagnosis.effects import CANDIDATES
@@ -131,10 +131,12 @@ def test_speed_map_reaches_a_stribeck_curve_the_family_cannot():
     names = ["Fc", "Fs", "vs", "sigma2"]
     _, base_nr = fit_composite(law, names, [], data, ctx)
     spec = CANDIDATES["stribeck_shape"].specialise(law)
-    family = [fit_composite(lv, nv, [StribeckShape("stribeck_shape", "")], data, ctx)
-              for lv, nv in spec.modify_law(law, names, ctx)]
-    mapped = [fit_composite(lv, nv, [spec], data, ctx)
-              for lv, nv in spec.modify_law(law, names, ctx)]
+    fam_form = StribeckShape("stribeck_shape", "")
+    family = [fit_composite(lv, nv, [fam_form], data, ctx)
+              for lv, nv, _ in law_variants(fam_form, law, names, ctx)]
+    # both forms of the map (inside the levels, and the drag beside the contact)
+    mapped = [fit_composite(lv, nv, [form], data, ctx)
+              for lv, nv, form in law_variants(spec, law, names, ctx)]
     fam, fam_nr = min(family, key=lambda r: r[1])
     comp, map_nr = min(mapped, key=lambda r: r[1])
     assert fam_nr > 0.6 * base_nr, (base_nr, fam_nr)   # the family hardly bends this way

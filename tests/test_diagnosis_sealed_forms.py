@@ -1,10 +1,10 @@
-"""The twenty-sixth sealed truth family (diagnosis.benchmark.sealed, written in session 30 by
-another hand, sealed: not run): each form builds a finite case of the requested size on every
+"""The twenty-seventh sealed truth family (diagnosis.benchmark.sealed, written in session 31
+by another hand, sealed: not run): each form builds a finite case of the requested size on every
 plant it applies to, is the base law at s = 0, grows with its amplitude factor and refuses
 the plants it does not apply to. No diagnosis is run on these forms: the family stays unseen
 until the end of a piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS`
-names it as its ``sealed`` form (the twenty-fifth family, sealed before it, is
-:mod:`diagnosis.benchmark.seen25` since its run)."""
+names it as its ``sealed`` form (the twenty-sixth family, sealed before it, is
+:mod:`diagnosis.benchmark.seen26` since its run)."""
 import dataclasses
 import importlib
 
@@ -20,11 +20,11 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "feed_line_surge", "load": "bedded_rail",
-        "asymmetry": "lifting_screw", "stribeck_shape": "dwell_squeeze",
-        "position": "air_film_flatness", "inertia": "elastomer_mount",
-        "delay": "pneumatic_balance", "drift": "wax_crystallisation",
-        "backlash": "powder_packed_gap", "gms": "poroelastic_layer"}
+FORM = {"acceleration": "self_loading_drive", "load": "pv_heated_liner",
+        "asymmetry": "coriolis_slide", "stribeck_shape": "suction_pocket",
+        "position": "conductive_strips", "inertia": "wave_radiation",
+        "delay": "dual_slope_adc", "drift": "grease_oil_bleed",
+        "backlash": "floating_coupling", "gms": "wire_mesh_backing"}
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
@@ -42,8 +42,8 @@ _FORM_MODULES = ("diagnosis.benchmark.truths", "diagnosis.benchmark.forms",
                  "diagnosis.benchmark.seen19", "diagnosis.benchmark.seen20",
                  "diagnosis.benchmark.seen21", "diagnosis.benchmark.seen22",
                  "diagnosis.benchmark.seen23", "diagnosis.benchmark.seen24",
-                 "diagnosis.benchmark.seen25", "diagnosis.benchmark.sealed",
-                 "diagnosis.effects_backlash",
+                 "diagnosis.benchmark.seen25", "diagnosis.benchmark.seen26",
+                 "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
                  "diagnosis.effects_gms")
 
 
@@ -66,9 +66,9 @@ def test_the_family_has_one_new_form_per_effect():
         assert not names & set(vars(mod)), name
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
-    assert doc.startswith("The twenty-sixth sealed truth family")
-    assert "sealed: not run" in doc and "2026-12-01 (session 30)" in doc
-    assert "session 29's, was run once and is :mod:`.seen25`" in doc
+    assert doc.startswith("The twenty-seventh sealed truth family")
+    assert "sealed: not run" in doc and "2026-12-01 (session 31)" in doc
+    assert "session 30's, was run once and is :mod:`.seen26`" in doc
 
 
 def test_registered_forms_resolve():
@@ -109,72 +109,91 @@ def test_sealed_forms_reach_their_size_on_two_plants(plant):
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        family.dwell_squeeze_truth(iso, 1.0)
+        family.suction_pocket_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.poroelastic_layer_truth(iso, 1.0)
+        family.wire_mesh_backing_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.powder_packed_gap_truth(iso, 1.0)
+        family.floating_coupling_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
     # a one-way stroke (the press's) never comes back over the positions the fit part saw
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        family.air_film_flatness_truth.__wrapped__(one_way, 1.0)
-    # a load that never changes digs no changing bowl
+        family.conductive_strips_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes heats the liners as the base law's
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        family.bedded_rail_truth.__wrapped__(still, 1.0)
+        family.pv_heated_liner_truth.__wrapped__(still, 1.0)
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
-def test_the_thread_grips_harder_raising_than_lowering():
-    lev = family._thread_levels(np.array([1.0, -1.0, 0.0]), 0.25)
-    assert np.isclose(lev[0], 1.0 / 0.75) and np.isclose(lev[1], 1.0 / 1.25)
-    assert np.allclose(family._thread_levels(np.array([1.0, -1.0]), 0.0), 1.0)
+def test_the_cam_presses_harder_speeding_up_than_slowing_down():
+    n = family._cam_load(np.array([0.0, 0.5, -0.5, 0.5]), np.array([1.0, 1.0, 1.0, -1.0]),
+                         1.0, 1e-9)
+    assert np.allclose(n, [1.0, 1.5, 0.5, 0.5])
 
 
-def test_the_bowl_resists_most_at_the_beds_relaxation_speed():
-    r = family._bed_resistance(np.array([-1.0, 0.0, 0.5, 1.0, 2.0]))
-    assert np.allclose(r, [-1.0, 0.0, 0.8, 1.0, 0.8])
-
-
-def test_the_dry_share_falls_straight_to_the_squeeze_out_speed():
-    d = family._dry_share(np.array([0.0, 0.5, -0.5, 2.0]), 1e-9)
-    assert np.allclose(d, [1.0, 0.5, 0.5, 0.0], atol=1e-9)
-
-
-def test_the_wax_waits_for_its_cloud_point_then_crystallises():
-    x = family._crystallised(np.linspace(0.0, 1.0, 101), 0.2, 0.45, 3.0)
-    assert np.all(x[:21] == 0.0) and np.all(np.diff(x[20:]) > 0.0) and x[-1] < 1.0
-
-
-def test_the_balance_fills_slower_than_it_vents_near_the_top():
+def test_the_liners_heat_follows_the_load_times_the_speed_lagged():
     t = np.linspace(0.0, 1.0, 1001)
-    up = family._balance_pressure(t, np.r_[0.85, np.full(1000, 0.95)], 0.05)
-    down = family._balance_pressure(t, np.r_[0.95, np.full(1000, 0.85)], 0.05)
-    assert 0.95 - up[50] > down[50] - 0.85 > 0.0
+    q = np.where(t < 0.5, 1.0, 2.0)                 # the load doubles half way
+    h = family._liner_heat(t, q, np.full(t.size, 0.5), 0.1)
+    assert np.allclose(h[:500], 0.0) and np.all(np.diff(h[500:]) > -1e-12)
+    assert np.isclose(h[-1], 0.5 * (1.0 - np.exp(-5.0)), rtol=1e-2)
 
 
-def test_the_mount_carries_the_payload_whole_in_steady_acceleration():
-    f = family._mount_force(np.full(20001, 2.0), 1e-3, 10.0, 14.0, 0.06)
-    assert np.isclose(f[-1], 2.0, rtol=1e-3)
+def test_the_coriolis_force_loads_the_two_faces_by_direction():
+    lev = family._face_levels(np.array([1.0, -1.0, 0.0]), 0.5, 0.5, 1e-9)
+    assert np.allclose(lev, [1.25, 0.75, 1.0])
+    assert np.allclose(family._face_levels(np.array([1.0, -1.0]), 0.0, 0.5, 1e-9), 1.0)
 
 
-def test_the_packed_powder_resists_only_while_crushed():
-    # moving towards +x the resistance grows towards the flank; moving back none pushes
-    f0 = family._powder_force(-0.9, 1.0, 1.0, 1e3, 1.0, 2.0, 4.0, 1e-6)
-    f1 = family._powder_force(0.9, 1.0, 1.0, 1e3, 1.0, 2.0, 4.0, 1e-6)
-    assert 0.0 < f0 < f1 < 2.0
-    assert family._powder_force(0.9, -1.0, 1.0, 1e3, 1.0, 2.0, 4.0, 1e-6) > -0.01
+def test_the_pockets_suction_saturates():
+    u = np.array([0.0, 1.0, -1.0, 1e6])
+    assert np.allclose(family._suction(u), [0.0, 0.5, 0.5, 1.0], atol=1e-5)
 
 
-def test_the_layers_fluid_stress_drains_at_rest():
-    t = np.linspace(0.0, 2.0, 2001)
-    v = np.where(t < 1.0, 1.0, 0.0)
-    u, q = family._poro_layer(t, v, 0.1, 0.3, 0.1)
-    assert np.isclose(u[900], 1.0) and np.isclose(q[999], 0.03, rtol=1e-3)
-    assert q[-1] < 1e-5 and np.isclose(u[-1], 1.0)          # e^-10 of it left
+def test_the_strips_cover_and_drag():
+    # over a strip's centre, between two strips, over the next strip's centre
+    c = family._strip_cover(np.array([0.2, 0.7, 1.2]) * 0.37, 0.37, 0.45, 1e-3)
+    assert np.allclose(c, [1.0, 0.0, 1.0])
+    assert np.allclose(family._eddy_drag(np.array([-1.0, 0.0, 1.0, 3.0])),
+                       [-1.0, 0.0, 1.0, 0.6])
+
+
+def test_the_radiation_carries_no_force_in_steady_motion():
+    t = np.linspace(0.0, 20.0, 200001)
+    r = family._retardation(t, np.ones(t.size), 2.0 * np.pi, 0.5)
+    assert abs(r[-1]) < 1e-4 and np.max(np.abs(r)) > 0.05
+
+
+def test_the_converter_releases_a_larger_reading_later():
+    t = np.linspace(0.0, 1.0, 10001)
+    rel, val = family._conversions(t, 3.0 * t, 0.0, 4.0, 0.1, 1.0, 0.5)
+    assert np.allclose(val, 3.0) and np.isclose(rel[0], 0.1 + 0.075)
+    rel2, _ = family._conversions(t, 1.0 * t, 0.0, 4.0, 0.1, 1.0, 0.5)
+    assert rel2[0] < rel[0]
+    out = family._dual_slope(t, np.full(t.size, 3.0), 0.0, 4.0, 0.1, 1.0, 0.5)
+    assert np.allclose(out, 3.0)
+
+
+def test_the_grease_bleeds_as_the_square_root_of_time():
+    b = family._bled(np.array([0.0, 0.5, 2.0, 8.0]), 2.0)
+    assert np.allclose(b, [0.0, 0.5, 1.0, 1.0])
+
+
+def test_the_floating_part_takes_the_play_up_and_rattles():
+    # the flanks push only when the play is closed
+    assert family._flank(0.5, 1.0, 1.0, 1e3, 1.0) == 0.0
+    assert family._flank(1.5, 0.0, 1.0, 1e3, 1.0) > 0.0 > family._flank(-1.5, 0.0, 1.0,
+                                                                          1e3, 1.0)
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.poroelastic_layer_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.floating_coupling_truth(kin, 1.0)))
+
+
+def test_the_mesh_stiffens_as_it_deflects():
+    f = [family._mesh_force(e, 0.0, 10.0, 1.0, 0.0) for e in (0.5, 1.0, 2.0)]
+    assert np.allclose(f, [6.25, 20.0, 100.0])
+    kin = plant_kinematics("valve", quick=True)
+    assert np.all(np.isfinite(family.wire_mesh_backing_truth(kin, 1.0)))
 
 
 @pytest.mark.slow

@@ -394,8 +394,13 @@ def law_variants(cand: Candidate, law, base_names, ctx: Context) -> list:
     ctx : Context
         Scales of the fit record.
     """
-    return [(v[0], v[1], v[2] if len(v) > 2 else cand)
-            for v in cand.modify_law(law, base_names, ctx)]
+    out = []
+    for v in cand.modify_law(law, base_names, ctx):
+        if len(v) not in (2, 3) or (len(v) == 3 and not isinstance(v[2], Candidate)):
+            raise ValueError(f"{cand.name}.modify_law gave the variant {v!r}: each must be "
+                             f"(law, names) or (law, names, form), form a Candidate")
+        out.append((v[0], v[1], v[2] if len(v) == 3 else cand))
+    return out
 
 
 def _sig_neg(v, ctx):

@@ -4,6 +4,7 @@
 either kind (a film drag in parallel with the contact, a level inside the bristle
 dynamics), integrated finer than sampled, with noise, scored on a motion not fitted."""
 import numpy as np
+import pytest
 
 from diagnosis.candidates import Candidate, law_variants, make_context
 from diagnosis.composite import fit_composite
@@ -89,6 +90,11 @@ def test_the_map_has_two_forms_the_curve_kept_inside_and_freed_beside():
     # a candidate without forms of its own: each variant with the candidate itself
     plain = Candidate("x", "")
     assert law_variants(plain, law, NAMES, ctx) == [(law, NAMES, plain)]
+    # a malformed variant is named, not unpacked into the wrong places
+    bad = Candidate("bad", "")
+    bad.modify_law = lambda law, names, ctx: [(law, names, "inside")]
+    with pytest.raises(ValueError, match="bad.modify_law gave the variant"):
+        law_variants(bad, law, NAMES, ctx)
 
 
 def test_the_drag_is_odd_in_the_velocity_and_nothing_at_its_zero_knots():

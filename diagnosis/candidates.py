@@ -376,6 +376,7 @@ class LawCandidate(Candidate):
         box = default_bounds(law, list(self.OWN))
         return [Extra(n, float(getattr(law.params, n)), *box[n], units[n]) for n in self.OWN]
 
+
 def law_variants(cand: Candidate, law, base_names, ctx: Context) -> list:
     """``cand``'s law variants (:meth:`Candidate.modify_law`) as ``(law, names, form)``:
     ``form`` is the candidate fitted with that variant, ``cand`` itself unless the variant

@@ -76,6 +76,12 @@ def speed_map(speed, v_hi, knots, decades) -> np.ndarray:
     return np.interp(u, np.linspace(0.0, decades, vals.size), vals, left=0.0)
 
 
+def _curvature_rows(knots, smooth) -> np.ndarray:
+    """The rows of a prior on a speed map's curvature [-]: ``sqrt(smooth)`` x the second
+    differences of the knot values ``knots`` [-] after the pinned 0 (:func:`speed_map`)."""
+    return np.sqrt(smooth) * np.diff(np.concatenate([[0.0], np.asarray(knots, float)]), 2)
+
+
 class StribeckMap(StribeckShape):
     """``stribeck_shape`` of a classic LuGre law at the force level: the base's curve bent
     by a speed map *inside* the bristle dynamics - its levels (Stribeck curve and viscous
@@ -138,8 +144,7 @@ class StribeckMap(StribeckShape):
     SMOOTH = 0.001
 
     def penalty(self, p, ctx):
-        c = np.concatenate([[0.0], [p[n] for n in self._names()]])
-        return np.sqrt(self.SMOOTH) * np.diff(c, 2)
+        return _curvature_rows([p[n] for n in self._names()], self.SMOOTH)
 
     def inside(self, p, data, ctx):
         knots = [p[n] for n in self._names()]
@@ -184,8 +189,7 @@ class StribeckDrag(StribeckShape):
         return [Extra(n, 0.0, -ctx.sF, ctx.sF, "N") for n in self._names()]
 
     def penalty(self, p, ctx):
-        c = np.concatenate([[0.0], [p[n] for n in self._names()]]) / ctx.sF
-        return np.sqrt(self.SMOOTH) * np.diff(c, 2)
+        return _curvature_rows([p[n] / ctx.sF for n in self._names()], self.SMOOTH)
 
     def apply(self, F, p, data, ctx):
         knots = [p[n] for n in self._names()]

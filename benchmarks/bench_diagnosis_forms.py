@@ -42,7 +42,7 @@ and seen26.
 
     python benchmarks/bench_diagnosis_forms.py [--sealed] [--workers N] [--quick]
                                                [--full-protocols] [--checkpoint FILE]
-                                               [--json OUT]
+                                               [--sample N [--sample-seed S]] [--json OUT]
 
 Figures: top-1 over all cases and over the detectable ones (an oracle that knows the truth
 can tell it from the base fit), clean and out-of-library cases, the mean |shrink error|
@@ -687,6 +687,11 @@ def main(argv=None):
     ap.add_argument("--effects", default=None, help="comma-separated effects (default: all)")
     ap.add_argument("--checkpoint", default=None,
                     help="JSON-lines file of finished cases; run again with it to resume")
+    ap.add_argument("--sample", type=int, default=None,
+                    help="a uniform random SAMPLE of the grid's cases only (the same cases "
+                         "for the same --sample-seed: two versions of the code compared "
+                         "case by case)")
+    ap.add_argument("--sample-seed", type=int, default=0)
     ap.add_argument("--json", default=None)
     args = ap.parse_args(argv)
     strengths = (1.0,) if args.quick else (0.5, 1.0)
@@ -698,7 +703,8 @@ def main(argv=None):
                         quick=not args.full_protocols, workers=args.workers, forms=family,
                         measured=True,
                         progress=lambda n, info: print(info, flush=True),
-                        checkpoint=args.checkpoint, **kw)
+                        checkpoint=args.checkpoint, sample=args.sample,
+                        sample_seed=args.sample_seed, **kw)
     wall = time.perf_counter() - t0
     print(format_summary(res, f"{family} truth forms, measured motion: strengths {strengths}, "
                               f"noise {noises} x std(F), {len(res['rows'])} cases, "

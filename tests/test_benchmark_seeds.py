@@ -39,3 +39,18 @@ def test_the_generic_cases_keep_their_numbered_seeds():
     jobs = grid_jobs([None], ["drift", "delay"], "first", (1.0,), (0.02,), 1, False, False, 7)
     assert [j[4] for j in jobs] == [8, 9]
     assert all(j[8] is None for j in jobs)
+
+
+def test_a_sample_of_the_grid_is_the_same_cases_for_the_same_seed():
+    from diagnosis.benchmark.runner import sample_jobs
+    jobs = _grid(["delay"], plants=("valve",))
+    a, b = sample_jobs(jobs, 5, seed=3), sample_jobs(jobs, 5, seed=3)
+    assert a == b and len(a) == 5 and len(set(a)) == 5
+    # in the grid's order, drawn from it
+    idx = [jobs.index(j) for j in a]
+    assert idx == sorted(idx)
+    assert sample_jobs(jobs, 5, seed=4) != a
+    assert sample_jobs(jobs, len(jobs) + 3) == jobs
+    for bad in (0, -2, 2.5, True):
+        with pytest.raises(ValueError, match="sample"):
+            sample_jobs(jobs, bad)

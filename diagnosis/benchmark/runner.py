@@ -3,6 +3,8 @@ from __future__ import annotations
 
 import time
 
+import numpy as np
+
 from friction.progress import status_lines
 
 from ..core import BaseFitError, diagnose
@@ -180,10 +182,29 @@ def grid_jobs(plist, effects, forms, strengths, noises, clean_repeats, measured,
     return jobs
 
 
+def sample_jobs(jobs, n, seed=0) -> list:
+    """A uniform random ``n`` of ``jobs`` (all of them if fewer), drawn with ``seed``, in
+    the grid's order.
+
+    Raises
+    ------
+    ValueError
+        ``n`` is not a positive whole number.
+    """
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"sample = {n!r}: the number of cases to draw must be a whole "
+                         f"number >= 1")
+    if n >= len(jobs):
+        return list(jobs)
+    pick = np.random.default_rng(seed).choice(len(jobs), size=int(n), replace=False)
+    return [jobs[i] for i in sorted(pick)]
+
+
 def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed=0,
                   progress=None, plants=None, quick: bool = False, workers: int = 1,
                   clean_repeats: int = 1, checkpoint=None, forms: str = "first",
-                  measured: bool = False) -> dict:
+                  measured: bool = False, sample: int | None = None,
+                  sample_seed: int = 0) -> dict:
     """Run every case and score it.
 
     Parameters
@@ -219,6 +240,12 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
     measured : bool
         Per-plant cases with the motion channels a user records (positions quantised and
         differentiated, :data:`MEASURED` in turn) instead of the exact sampled motion.
+    sample : int, optional
+        Run a uniform random ``sample`` of the grid's cases only, drawn with
+        ``sample_seed`` (:func:`sample_jobs`: the same cases for the same grid and seed, so
+        two versions of the code are compared case by case).
+    sample_seed : int
+        Seed of the draw.
 
     Returns
     -------
@@ -239,6 +266,8 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
             plant_kinematics(plant, quick)
     jobs = grid_jobs(plist, effects, forms, strengths, noises, clean_repeats, measured,
                      quick, seed)
+    if sample is not None:
+        jobs = sample_jobs(jobs, sample, sample_seed)
     say = status_lines(progress)
     rows, skipped = [], []
     keys = [_job_key(j) for j in jobs]

@@ -7,7 +7,7 @@ import numpy as np
 from friction.extensions import (POSITION_FORM_NAMES, POSITION_NAMES, pack_extensions,
                                  position_change)
 
-from .candidates import Candidate, Extra, _basis_rows, _lsq, _subsample, _with
+from .candidates import Candidate, Extra, Fixed, _basis_rows, _lsq, _subsample, _with
 
 __all__ = ["Position"]
 
@@ -38,6 +38,16 @@ class Position(Candidate):
     #: beyond it): a spring, a counterweight or a cable along the stroke, a carriage on a
     #: sagging beam, gravity along an axis whose tilt changes with the position
     POLY_NAMES = ("q_x1", "q_x2", "q_x3")
+    #: amplitudes of a viscous drag that changes along the stroke [N at the record's top
+    #: speed] (the same Legendre polynomials of the position, times ``v / sv``): a squeeze
+    #: film or an air bearing whose gap changes with the position, a lubricant bed thicker
+    #: at one end. A level scale cannot draw it: it grows with the speed
+    VISC_NAMES = ("q_v1", "q_v2", "q_v3")
+    #: the drag is kept only where the start's least squares with its columns leaves less
+    #: than this share of the squared residual it leaves without them [-] (else it stays
+    #: off, :class:`Fixed`): unguarded, a delay and a drift truth of the grid were named
+    #: `position` through it
+    VISC_GAIN = 0.7
     #: shortest wavelength and narrowest defect, in samples of travel at the top speed:
     #: finer than this along the motion the data cannot tell a map from noise
     MIN_SAMPLES = 8.0
@@ -81,7 +91,8 @@ class Position(Candidate):
 
     def force_extras(self, ctx):
         return self.extras(ctx) + [Extra(n, 0.0, -ctx.sF, ctx.sF, "N")
-                                   for n in self.ADD_NAMES + self.POLY_NAMES]
+                                   for n in self.ADD_NAMES + self.POLY_NAMES
+                                   + self.VISC_NAMES]
 
     def _poly(self, x, ctx):
         """The smooth additive force's columns at positions ``x`` [m]: P1, P2, P3 of the
@@ -89,6 +100,11 @@ class Position(Candidate):
         u = np.clip(2.0 * (np.asarray(x, float) - ctx.x_lo) / self._span(ctx) - 1.0,
                     -1.0, 1.0)
         return u, 0.5 * (3.0 * u * u - 1.0), 0.5 * (5.0 * u ** 3 - 3.0 * u)
+
+    def _visc(self, x, v, ctx):
+        """The stroke-dependent drag's columns [-]: :meth:`_poly` times ``v / sv``."""
+        w = np.asarray(v, float) / ctx.sv
+        return tuple(c * w for c in self._poly(x, ctx))
 
     def _packed(self, p, ctx):
         return pack_extensions({"position": {n: p[n] for n in self.NAMES if n in p}},
@@ -100,12 +116,16 @@ class Position(Candidate):
         ph = 2.0 * np.pi * (x - x_lo) / lam
         return np.cos(ph), np.sin(ph), np.cos(2.0 * ph), np.sin(2.0 * ph)
 
-    def _additive(self, p, x, ctx):
+    def _additive(self, p, x, ctx, v=None):
         """The force of the position alone [N] (zero without its amplitudes): periodic and
-        smooth along the stroke."""
+        smooth along the stroke; with the velocity ``v`` [m/s], the drag that changes along
+        the stroke."""
         out = 0.0
         if any(p.get(n, 0.0) for n in self.POLY_NAMES):
             out = sum(p.get(n, 0.0) * c for n, c in zip(self.POLY_NAMES, self._poly(x, ctx)))
+        if v is not None and any(p.get(n, 0.0) for n in self.VISC_NAMES):
+            out = out + sum(p.get(n, 0.0) * c
+                            for n, c in zip(self.VISC_NAMES, self._visc(x, v, ctx)))
         if not any(p.get(n, 0.0) for n in self.ADD_NAMES):
             return out
         if not (np.isfinite(p["lambda_x"]) and p["lambda_x"] > 0):
@@ -119,12 +139,12 @@ class Position(Candidate):
         # stroke (a worn section, guide waviness or screw pitch, a local defect); and a
         # force of the position alone (cogging), the same in both directions
         return (F * (1.0 + position_change(data.x, self._packed(p, ctx)))
-                + self._additive(p, data.x, ctx))
+                + self._additive(p, data.x, ctx, data.v))
 
     #: the map is linear in the knot values, the waviness' amplitudes and the defect's
     #: height, the additive force in its amplitudes
     exact_extras = (POSITION_NAMES + ("p_c1", "p_s1", "p_c2", "p_s2", "d_x") + ADD_NAMES
-                    + POLY_NAMES)
+                    + POLY_NAMES + VISC_NAMES)
 
     def jac(self, F, p, data, ctx):
         """``d apply / dF = 1 + m(x)``; the columns of :attr:`exact_extras` exactly, ``F``
@@ -141,6 +161,7 @@ class Position(Candidate):
         cols.update({n: F * h for n, h in zip(("p_c1", "p_s1", "p_c2", "p_s2"), harm)})
         cols.update({n: h for n, h in zip(self.ADD_NAMES, harm)})
         cols.update({n: c for n, c in zip(self.POLY_NAMES, self._poly(x, ctx))})
+        cols.update({n: c for n, c in zip(self.VISC_NAMES, self._visc(x, data.v, ctx))})
         cols["d_x"] = F * np.exp(-0.5 * ((x - p["x_d"]) / p["w_d"]) ** 2)
         return 1.0 + position_change(x, self._packed(p, ctx)), cols
 
@@ -185,7 +206,15 @@ class Position(Candidate):
         G = (f * np.exp(-0.5 * ((x - xd) / w) ** 2))[:, None]
         Q = np.column_stack(self._poly(x, ctx))
         HPG = np.column_stack([H, P, G, Q])
-        _, allc = _lsq(_with(HPG, B), rr)
+        e0, allc = _lsq(_with(HPG, B), rr)
+        V = np.column_stack(self._visc(x, fit.v[sub], ctx))
+        e1, allv = _lsq(_with(np.column_stack([HPG, V]), B), rr)
+        drag = e1 < self.VISC_GAIN * e0
+        if drag:
+            # the drag along the stroke pays for itself: its start beside the others
+            allc = allv
+        nv = len(self.VISC_NAMES)
+        cv = allc[HPG.shape[1]:HPG.shape[1] + nv] if drag else None
         allc = allc[:HPG.shape[1]]
         nk, nq = len(POSITION_NAMES), len(self.POLY_NAMES)
         out = dict(zip(POSITION_NAMES, allc[:nk]))
@@ -194,4 +223,7 @@ class Position(Candidate):
         out.update(zip(self.POLY_NAMES, allc[-nq:]))
         out.update(lambda_x=lam, d_x=allc[-1 - nq], x_d=xd, w_d=w)
         ex.update({e.name: e for e in self.force_extras(ctx)})
-        return {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
+        out = {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
+        out.update({n: (float(np.clip(c, ex[n].lo, ex[n].hi)) if drag else Fixed(0.0))
+                    for n, c in zip(self.VISC_NAMES, cv if drag else [0.0] * nv)})
+        return out

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from diagnosis.benchmark import make_case
+from diagnosis.candidates import Fixed
 
 
 def test_acceleration_weight_peaks_where_its_exponent_says_and_the_start_finds_it():
@@ -832,3 +833,87 @@ def test_drift_heated_by_the_friction_power_is_named_drift():
     assert rep["verdict"]["cause"] == "drift"
     assert rep["verdict"]["excess_closed"] > 0.8
     assert rep["effect_details"]["drift"]["extras"]["k_heat"] < 0.0
+
+
+def _stroke_record():
+    # two frequencies: every position is passed at many speeds, in both directions
+    t = np.linspace(0.0, 6.0, 6001)
+    x = 0.05 * np.sin(2 * np.pi * 0.4 * t) + 0.015 * np.sin(2 * np.pi * 1.3 * t)
+    v = np.gradient(x, t)
+    return t, x, v
+
+
+def test_position_draws_a_viscous_drag_that_changes_along_the_stroke():
+    """An air film whose gap opens along the stroke: its drag ~ v / gap(x), not a polynomial
+    of x, added to the contact. The start keeps the drag along the stroke (it pays for
+    itself, VISC_GAIN) and leaves a fifth of it; its columns are exact derivatives."""
+    from diagnosis.effects import CANDIDATES, make_context
+    from friction.dataset import Dataset
+    t, x, v = _stroke_record()
+    Ff = np.tanh(v / 0.01)
+    a = (x - x.min()) / np.ptp(x)
+    gap = 1.0 + 2.0 * a                                   # the gap triples along the stroke
+    drag = 5.0 * v / gap
+    rng = np.random.default_rng(5)
+    F = Ff + drag + 0.01 * rng.standard_normal(t.size)
+    data = Dataset.from_arrays(t=t, x=x, v=v, F=F)
+    ctx = make_context(data)
+    pos = CANDIDATES["position"]
+    assert set(pos.VISC_NAMES) <= {e.name for e in pos.force_extras(ctx)}
+    assert not set(pos.VISC_NAMES) & {e.name for e in pos.trajectory_extras(ctx)}
+    # the drag's mean over the stroke is the base's viscous term: beside it, as the
+    # diagnosis gives the start the base's own changes
+    basis = np.column_stack([v])
+    p = pos.start(data, Ff, F - Ff, ctx, basis=basis)
+    assert not any(isinstance(p[n], Fixed) for n in pos.VISC_NAMES)
+    vary = drag - v * (np.dot(drag, v) / np.dot(v, v))    # what the base's drag leaves
+    left = Ff + drag - pos.apply(Ff, p, data, ctx)    # against the noiseless force
+    left = left - v * (np.dot(left, v) / np.dot(v, v))
+    assert np.std(left) < 0.2 * np.std(vary)
+    assert np.std(vary) > 5 * 0.01                        # well above the noise
+    # the drag's sign follows the motion: at one position, opposite in the two directions
+    q = {n: p[n] for n in pos.VISC_NAMES}
+    xs = np.full(2, x.mean())
+    there = pos._additive(q, xs, ctx, np.array([0.1, -0.1]))
+    assert there[0] == pytest.approx(-there[1])
+    out = pos.apply(Ff, p, data, ctx)
+    _, cols = pos.jac(Ff, p, data, ctx)
+    for n in pos.VISC_NAMES:
+        h = 1e-6
+        num = (pos.apply(Ff, dict(p, **{n: p[n] + h}), data, ctx) - out) / h
+        assert np.allclose(cols[n], num, atol=1e-6)
+
+
+def test_position_keeps_its_drag_off_where_it_does_not_pay():
+    """A force of the position alone (a spring): the drag's columns buy nothing, so the
+    start pins them at 0 (Fixed, out of the joint fit)."""
+    from diagnosis.effects import CANDIDATES, make_context
+    from friction.dataset import Dataset
+    t, x, v = _stroke_record()
+    Ff = np.tanh(v / 0.01)
+    rng = np.random.default_rng(6)
+    F = Ff - 40.0 * (x - x.mean()) + 0.01 * rng.standard_normal(t.size)
+    data = Dataset.from_arrays(t=t, x=x, v=v, F=F)
+    ctx = make_context(data)
+    pos = CANDIDATES["position"]
+    p = pos.start(data, Ff, F - Ff, ctx, basis=np.column_stack([v]))
+    assert all(isinstance(p[n], Fixed) and p[n] == 0.0 for n in pos.VISC_NAMES)
+    assert np.allclose(pos.apply(Ff, p, data, ctx), pos.apply(Ff, dict(p, q_v1=0.0), data, ctx))
+
+
+@pytest.mark.parametrize("drag", [True, False])
+def test_air_film_flatness_is_named_position_by_its_drag_along_the_stroke(drag, monkeypatch):
+    """The twenty-sixth family's air-bearing pads on the isolator (seen26; its grid case,
+    strength 0.5, noise 1 %): the film's drag changes with the gap along the stroke. With
+    the drag along the stroke ``position`` is named; without it (VISC_GAIN 0: never kept)
+    the same record is not."""
+    from diagnosis import diagnose
+    from diagnosis.benchmark.cases import make_plant_case
+    from diagnosis.benchmark.runner import MEASURED
+    from diagnosis.effects import CANDIDATES
+    if not drag:
+        monkeypatch.setattr(type(CANDIDATES["position"]), "VISC_GAIN", 0.0)
+    case = make_plant_case("mre_isolator", "position", 0.5, 0.01, seed=342822, quick=True,
+                           form="air_film_flatness", measured=MEASURED[1])
+    rep = diagnose(case.data, case.base, seed=0)
+    assert (rep["verdict"]["cause"] == "position") == drag

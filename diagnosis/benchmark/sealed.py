@@ -1,12 +1,12 @@
-"""The twenty-seventh sealed truth family: one more mechanism per effect, kept out of all tuning.
+"""The twenty-eighth sealed truth family: one more mechanism per effect, kept out of all tuning.
 
-Written 2026-12-01 (session 31) by another hand, once, without running the diagnosis on it;
+Written 2026-12-01 (session 32) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 30's, was run once and is :mod:`.seen26`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen26`
+sealed before it, session 31's, was run once and is :mod:`.seen27`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen27`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen26`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen27`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`, ``diagnosis.effects_<name>``), taken from the friction
 literature or from real machines, integrated along the plant's continuous motion on the grid
@@ -18,52 +18,59 @@ each effect's amplitude monotonically from the base law at ``s`` = 0 (its calibr
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``self_loading_drive``: the carriage is pushed by a friction (traction)
-                   roller drive whose loading cam presses the roller onto its bar in
-                   proportion to the force it transmits, the carriage's inertial force
-                   with the friction: the drive's rolling losses rise when the motion
-                   speeds up and fall when it slows
-load               ``pv_heated_liner``: the carriage slides on thermoplastic liners heated
-                   by their pressure times speed (PV): the liners' temperature follows the
-                   load's friction power over their thermal time and softens them, their
-                   friction rising with it
-asymmetry          ``coriolis_slide``: the slide runs radially on a rotating head; the
-                   Coriolis force 2 m Omega v presses it on one guide face moving out and
-                   on the other moving in, and the faces' friction differs: levels that
-                   differ by direction, the more the faster it moves
-stribeck_shape     ``suction_pocket``: the carriage's flat underside has a pocket open at
-                   its trailing edge; the air the bed drags through it leaves it below
-                   ambient (a reversed Rayleigh step), a suction growing with the speed
-                   to its cavitation limit that presses the carriage on its contacts
-position           ``conductive_strips``: the carriage's magnets pass over a bed with
-                   conductive strips set in it along the stroke: an eddy-current drag,
-                   peaking at the strips' critical speed, where the strips are
-inertia            ``wave_radiation``: the carriage carries a blade through a free liquid
-                   surface; it drags an added mass and radiates waves (Cummins' equation):
-                   a retardation memory of the velocity that carries no force in steady
-                   motion
-delay              ``dual_slope_adc``: the force is digitised by a dual-slope integrating
-                   converter: each reading is the force's mean over the run-up, released
-                   after a run-down whose length grows with the reading, and held until
-                   the next
-drift              ``grease_oil_bleed``: a fresh grease fill bleeds its base oil from the
-                   thickener to the contact (Higuchi's square-root release): the levels
-                   fall and the viscous term rises, fast at first and ever more slowly
-backlash           ``floating_coupling``: drive and contact are joined by a floating
-                   intermediate part (an Oldham disc, a floating sleeve) with a play on
-                   each side: after a reversal the drive throws the part across its
-                   plays, and it rattles between them before the contact is taken up
-gms                ``wire_mesh_backing``: the contact's shoe is carried on a knitted wire-
-                   mesh pad in series with it, whose wires close up as it deflects: a
-                   stiffening, damped compliance in series with the contact, so the
-                   presliding is longer, soft at first and stiffer as the wires close
-                   up; at ``s`` = 0 the base
+acceleration       ``winding_heat``: the axis is driven by a linear motor whose winding
+                   sits on the carriage over the bearings; its copper loss ~ the square
+                   of the thrust, the friction plus the inertial force, heats the
+                   carriage over its thermal time and the bearings' preload grows with
+                   the expansion: levels that follow the lagged square of the drive's
+                   force, up after speeding up, down after slowing and in dwells
+load               ``soft_film_pressure``: the contact runs through a thin soft film
+                   (a plated or sputtered soft metal, a polymer or a soap layer) on
+                   hard bodies; the hard bodies set the contact area (~ the load^(2/3))
+                   and the film's shear strength rises with the contact pressure
+                   (tau0 + alpha p): a friction tau0 A + alpha W of the load
+asymmetry          ``angled_pull``: the carriage is pulled each way by a cable or tape
+                   whose two ends are anchored at different heights; the front pull
+                   lifts the carriage off its ways, the rear pull presses it on: the
+                   friction mu N / (1 + mu tan) one way and mu N / (1 - mu tan) the
+                   other, with unequal angles
+stribeck_shape     ``capillary_condensation``: in humid air water condenses into the
+                   gaps around each junction while it lives; slower sliding lives
+                   longer and fills more menisci, whose Laplace pressure adds to the
+                   load: an extra friction ~ 1 - exp(-v_k / |v|), full at rest and
+                   gone at speed
+position           ``ball_passage``: the carriage's recirculating balls enter and leave
+                   the loaded zone as it travels; each entry over the end seal's
+                   crowning lifts the rolling resistance, a peaked ripple that repeats
+                   every two ball pitches of travel, locked to the position
+inertia            ``hanging_pendulum``: a payload hangs under the carriage on a rod (an
+                   overhead conveyor's carrier, a gantry crane's hook, a probe on a
+                   stem); it swings as a damped, nonlinear gravity pendulum and pulls on
+                   the carriage with its own horizontal acceleration
+delay              ``adaptive_filter``: the force is read by a weighing indicator with
+                   an adaptive digital filter: a long time constant while the reading
+                   stays near the input, shortened as the input leaves it: a lag that
+                   changes with how fast the force changes
+drift              ``thermostat_cycling``: the machine's oil (or its bed's coolant) is
+                   held by an on-off chiller with a switching band: the temperature
+                   rises and falls along exponential arcs between the band's edges, and
+                   the levels and the viscous term fall and rise with it: a cycle with
+                   no trend
+backlash           ``air_cushion_gap``: the play is a closed chamber: the drive's piston
+                   moves in a bore of the contact's link with air trapped on each side,
+                   compressed polytropically as the play closes: a soft, then steeply
+                   stiffening cushion, before the flank is reached
+gms                ``shear_melting_film``: part of the contact is carried through a
+                   confined lubricant film a few molecules thick, solid at rest (an
+                   elastic layer that yields) and melted by its own slip; it freezes
+                   again over a time when it stops: stiff presliding after a dwell,
+                   a liquid's rounded one after a quick reversal
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``suction_pocket`` needs
-a Stribeck curve (not the isolator's mre_lugre), ``conductive_strips`` a record that revisits
-its positions (not the press), ``pv_heated_liner`` a load that changes,
-``floating_coupling`` and ``wire_mesh_backing`` a classic LuGre base (valve, damping rig,
+Where a form applies: as its effect's record (``truth_applies``); ``capillary_condensation``
+needs a Stribeck curve (not the isolator's mre_lugre), ``ball_passage`` a record that
+revisits its positions (not the press), ``soft_film_pressure`` a load that changes,
+``air_cushion_gap`` and ``shear_melting_film`` a classic LuGre base (valve, damping rig,
 XML-350); each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
@@ -77,425 +84,63 @@ from friction.shapes import SHAPES
 
 from .kinematics import PlantKinematics
 from .truths import (_base_parts, _bump_centre, _contact_constants, _lag, _level,
-                     _light_contact_step, _lugre_params, _motion_time, _smooth_max0,
+                     _light_contact_step, _lugre_params, _motion_time, _presliding_path,
                      _substeps, has_stribeck_curve, level_inside, lugre_with_curve,
                      on_fine_grid)
 
-__all__ = ["FORMS", "self_loading_drive_truth", "pv_heated_liner_truth",
-           "coriolis_slide_truth", "suction_pocket_truth", "conductive_strips_truth",
-           "wave_radiation_truth", "dual_slope_adc_truth", "grease_oil_bleed_truth",
-           "floating_coupling_truth", "wire_mesh_backing_truth"]
+__all__ = ["FORMS", "winding_heat_truth", "soft_film_pressure_truth", "angled_pull_truth",
+           "capillary_condensation_truth", "ball_passage_truth", "hanging_pendulum_truth",
+           "adaptive_filter_truth", "thermostat_cycling_truth", "air_cushion_gap_truth",
+           "shear_melting_film_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "self_loading_drive", "load": "pv_heated_liner",
-         "asymmetry": "coriolis_slide", "stribeck_shape": "suction_pocket",
-         "position": "conductive_strips", "inertia": "wave_radiation",
-         "delay": "dual_slope_adc", "drift": "grease_oil_bleed",
-         "backlash": "floating_coupling", "gms": "wire_mesh_backing"}
+FORMS = {"acceleration": "winding_heat", "load": "soft_film_pressure",
+         "asymmetry": "angled_pull", "stribeck_shape": "capillary_condensation",
+         "position": "ball_passage", "inertia": "hanging_pendulum",
+         "delay": "adaptive_filter", "drift": "thermostat_cycling",
+         "backlash": "air_cushion_gap", "gms": "shear_melting_film"}
 
 
 # -- acceleration ----------------------------------------------------------------------------
-#: ``self_loading_drive``'s rise of the levels per unit of the cam's extra normal load (the
-#: transmitted force's change, in the friction level), at strength 1 [-]; the carriage's
-#: inertial force at the top acceleration, x the friction level [-]; the rounding of the
-#: transmitted force's magnitude and of the direction, in those units and x the top speed [-]
-CAM_RISE, CAM_INERTIA, CAM_ROUND = 0.4, 1.0, 0.05
+#: ``winding_heat``'s change of the levels at the record's largest excess of the winding's
+#: heat over steady motion's (its 99th percentile), at strength 1 [-]; the carriage's
+#: inertial force at the top acceleration, x the friction level [-]; the carriage's thermal
+#: time, x the motion's time scale [-]; the rounding of the direction, x the top speed [-]
+WIND_RISE, WIND_INERTIA, WIND_TIME, WIND_ROUND = 0.5, 1.0, 2.0, 0.05
 
 
-def _cam_load(a, direction, inertia, rounding):
-    """The loading cam's normal load [-] (1 in steady motion) at the accelerations ``a``
-    [-] (over the top acceleration) along the motion's ``direction`` [-] (+-1, rounded):
-    the magnitude of the force the drive transmits, the friction (1 along the motion) plus
-    the carriage's inertial force ``inertia`` a (rounded over ``rounding``)."""
+def _copper_loss(a, direction, inertia):
+    """The winding's copper loss [-] over its value in steady motion, less 1, at the
+    accelerations ``a`` [-] (over the top acceleration) along the motion's ``direction``
+    [-] (+-1, rounded): the square of the thrust, the friction (``direction``) plus the
+    inertial force ``inertia`` a, less the steady motion's 1 (I^2 R with I ~ the
+    thrust)."""
     q = np.asarray(direction, float) + inertia * np.asarray(a, float)
-    return np.sqrt(q * q + rounding * rounding)
+    return q * q - 1.0
 
 
 @on_fine_grid
-def self_loading_drive_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage is pushed by a friction (traction) drive, a driven roller pressed onto
-    a bar fixed to the carriage (as in precision stages' capstan and friction-bar drives
-    and in traction drives), whose normal load is set by a self-loading cam (a ball ramp):
-    the cam presses the roller in proportion to the tangential force it transmits, so
-    that it never slips. That force is the carriage's friction plus its inertial force
-    (:func:`_cam_load`; the inertial force at the top acceleration :data:`CAM_INERTIA`
-    x the friction level): accelerating along the motion the cam presses harder,
-    decelerating it relaxes. The drive's rolling and spin losses, felt as friction by the
-    axis, follow the normal load: the Coulomb and Stribeck levels are the base's (at the
-    steady load) times 1 + ``s`` :data:`CAM_RISE` x the load's change from the steady
-    one, inside the bristle dynamics; the viscous term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
-    s : float
-        Amplitude factor [-]: the drive's loss per unit of its normal load times the
-        cam's gain, / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Traction drives and their self-loading cams (Heilich and Shube 1983, Traction Drives:
-    Selection and Application; Loewenthal, Anderson and Rohn 1981, Evaluation of a high
-    performance fixed-ratio traction drive, J. Mech. Des. 103) and the rolling contact's
-    creep and spin losses (Johnson 1985, Contact Mechanics, ch. on rolling contacts). The
-    candidate raises the levels with |a|, lagged, tilts them with a and adds a force odd
-    in a; the open forms lag, age, heat, skid, load, press, attract, squeeze, transfer
-    weight, slosh, dilate, wedge, spring a gib, soften rubber, swing arms, unload by the
-    jerk, tilt pads, push ball trains, ripple the current, slide rack flanks, set a shoe by
-    a ball in a cone, shut a damper's bypass, creep a belt, rack a gantry, tighten a band
-    or surge a feed line. Here the drive's own normal load follows the force it transmits:
-    up when speeding up, down when slowing, whatever the direction.
-    """
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    a99 = max(kin.scales["a99"], 1e-12)
-    v99 = max(kin.scales["v99"], 1e-12)
-    direction = np.tanh(np.asarray(kin.v, float) / (CAM_ROUND * v99))
-    N = _cam_load(np.asarray(kin.a, float) / a99, direction, CAM_INERTIA, CAM_ROUND)
-    N0 = float(_cam_load(0.0, 1.0, CAM_INERTIA, CAM_ROUND))    # steady motion
-    lev = np.maximum(1.0 + float(s) * CAM_RISE * (N - N0), 0.05)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- load ------------------------------------------------------------------------------------
-#: ``pv_heated_liner``'s change of the levels at the record's largest change of the liners'
-#: temperature from the mean load's (its 99th percentile), at strength 1 [-]; the liners'
-#: thermal time, x the record's length [-]
-LINER_RISE, LINER_TIME = 0.5, 0.03
-
-
-def _liner_heat(t, q, u, time):
-    """The liners' temperature rise over the mean load's [-] along the loads ``q`` [-]
-    (over the mean |load|) and speeds ``u`` [-] (over the top speed) at the times ``t``
-    [s]: the friction power's excess (|q| - 1) |u| (PV at the load, over PV at the mean
-    load) through the liner's first-order thermal lag ``time`` [s]."""
-    return _lag(np.asarray(t, float),
-                (np.abs(np.asarray(q, float)) - 1.0) * np.abs(np.asarray(u, float)), time)
-
-
-@on_fine_grid
-def pv_heated_liner_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage slides on thermoplastic liners (acetal, a filled PTFE or a polyamide
-    slideway lining, as on many machine-tool ways and linear plain bearings). Their
-    friction heats them by the pressure times the speed, PV, and they cool over their
-    thermal time (:data:`LINER_TIME` x the record's length): their temperature follows the
-    friction power, and the polymer softens as it warms, its real contact area and its
-    friction growing with it. The base law, identified at the mean load, carries the
-    heating there; the truth's Coulomb and Stribeck levels are the base's times 1 + ``s``
-    :data:`LINER_RISE` x the temperature's excess over the mean load's
-    (:func:`_liner_heat`, over its 99th percentile along the record), inside the bristle
-    dynamics; the viscous term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (t [s], v [m/s], load [N]) and its base law.
-    s : float
-        Amplitude factor [-]: the liner's friction change per degree times its thermal
-        resistance, / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Polymers' PV limits and frictional heating (Lancaster 1972, Estimation of the limiting
-    PV relationships for thermoplastic bearing materials, Tribology 4; Archard 1959, The
-    temperature of rubbing surfaces, Wear 2; Unal, Mimaroglu, Kadioglu and Ekiz 2004,
-    Sliding friction and wear behaviour of polytetrafluoroethylene and its composites under
-    dry conditions, Mater. Des. 25). The candidate makes the levels affine in the load,
-    with a memory over the travel; the open forms scale the friction with a Hertz
-    contact's area, a seal's, a film's, a junction's, a pivot's, an adhesive contact's or
-    a pin's arc, break, squeeze or desorb films, plough, creep, vibrate, overload or feed
-    a constant flow to a pad, heal scuffs, relieve a preload, roll on a lossy track, slip
-    differentially, spin balls, press a disc spring, skid lightly loaded rollers or bed a
-    rail. Here the load acts through the heat it makes with the speed, and with the
-    liner's thermal lag.
-    """
-    L = np.asarray(kin.load, float)
-    Lm = float(np.mean(np.abs(L))) or 1.0
-    if not np.ptp(L) > 1e-9 * Lm:
-        raise ValueError(f"load (pv_heated_liner): the {kin.plant} record's load does not "
-                         f"change")
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    t = np.asarray(kin.t, float)
-    v99 = max(kin.scales["v99"], 1e-12)
-    time = LINER_TIME * max(float(t[-1] - t[0]), 1e-12)
-    T = _liner_heat(t, L / Lm, np.asarray(kin.v, float) / v99, time)
-    T = T / max(float(np.percentile(np.abs(T), 99)), 1e-12)
-    lev = np.maximum(1.0 + float(s) * LINER_RISE * T, 0.05)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- asymmetry -------------------------------------------------------------------------------
-#: ``coriolis_slide``'s Coriolis force at the top speed, x the guides' preload, at strength
-#: 1 [-]; the difference of the two faces' friction coefficients over their sum [-]; the
-#: rounding of a face's unloading, x the preload [-]
-CORIOLIS_Q, CORIOLIS_FACES, CORIOLIS_ROUND = 0.5, 0.5, 0.05
-
-
-def _face_levels(u, q, faces, rounding):
-    """The guides' friction factor [-] (1 at rest) at the speeds ``u`` [-] (over the top
-    speed) for the Coriolis force ``q`` u (x the preload): the outer face (its friction
-    coefficient 1 + ``faces``) pressed by 1 + q u, the inner (1 - ``faces``) by 1 - q u,
-    neither below 0 (rounded over ``rounding``)."""
-    w = q * np.asarray(u, float)
-    return 0.5 * ((1.0 + faces) * _smooth_max0(1.0 + w, rounding)
-                  + (1.0 - faces) * _smooth_max0(1.0 - w, rounding)) / float(
-        _smooth_max0(1.0, rounding))
-
-
-@on_fine_grid
-def coriolis_slide_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The axis is a slide running radially on a rotating head (a facing head's U-axis, a
-    radial slide on a turntable or a centrifuge's arm), the head turning at a steady rate
-    Omega. In the head's frame the moving slide feels the Coriolis force 2 m Omega v,
-    across its guides: moving out it presses the slide on one guide face, moving in on the
-    other, against the guides' preload. The faces differ (a hardened steel strip on one
-    side, a bronze or polymer gib on the other: friction coefficients (1 +- :data:`
-    CORIOLIS_FACES`) x their mean), so the guides' friction (:func:`_face_levels`) is
-    larger one way than the other, the more the faster the slide moves; the centrifugal
-    force, along the slide, is the drive's. The Coulomb and Stribeck levels are the
-    base's times that factor, the Coriolis force at the top speed ``s``
-    :data:`CORIOLIS_Q` x the preload, inside the bristle dynamics; the viscous term is the
-    base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law.
-    s : float
-        Amplitude factor [-]: the head's rate times the slide's mass over the preload, /
-        its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    The Coriolis force on a body moving in a rotating frame (Goldstein, Poole and Safko
-    2002, Classical Mechanics, ch. on rigid body motion in rotating frames; Meriam and
-    Kraige 2012, Engineering Mechanics: Dynamics, ch. on relative motion in rotating axes)
-    and on radial slides and facing heads (Slocum 1992, Precision Machine Design, ch. on
-    rotary axes). The candidate gives each direction its levels and an offset; the open
-    forms twin the levels, the curves or the viscous term, bend a curve, roll a lip, load
-    a thrust bearing, film a rod seal, texture a ratchet, return a spring, tilt a pad,
-    strut a sprag, throttle a meter-out, differ a cylinder's areas, groove chevrons,
-    buckle a helix, scrape chips, commutate, idle a belt, free a roller, wick a felt, run a
-    belt, lean a brush, band a seal, counterbalance a valve, vibrate elliptically, diode a
-    flow, pitch pads, skew rollers or lift through a screw. Here the frame turns: the
-    velocity itself loads the guides sideways, one face going out, the other coming in.
-    """
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    v99 = max(kin.scales["v99"], 1e-12)
-    lev = _face_levels(np.asarray(kin.v, float) / v99, float(s) * CORIOLIS_Q,
-                       CORIOLIS_FACES, CORIOLIS_ROUND)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- stribeck_shape --------------------------------------------------------------------------
-#: ``suction_pocket``'s suction at its cavitation limit, x the bearing contacts' load share
-#: of the Coulomb level, at strength 1 [-]; the speed at which the suction is half its
-#: limit, x the top speed [-]
-POCKET_RISE, POCKET_SPEED = 0.6, 0.3
-
-
-def _suction(u):
-    """The pocket's suction [-] (1 at its cavitation limit) at the speeds ``u`` [-] (over
-    the speed of half the limit): the Couette-driven sub-ambient pressure ~ |u|, bounded
-    by the vacuum the film cavitates at: |u| / (1 + |u|)."""
-    r = np.abs(np.asarray(u, float))
-    return r / (1.0 + r)
-
-
-@on_fine_grid
-def suction_pocket_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage's underside is a flat plate close over a flat bed (a linear motor's
-    forcer, a wafer stage's base, a flat carriage on a lapped way) with a recessed pocket
-    open at its trailing edge. The air (or oil mist) the moving bed drags into the pocket
-    expands over its step: a diverging (reversed Rayleigh) step sets a pressure below
-    ambient, proportional to the speed until the film cavitates (:func:`_suction`, half
-    its limit at :data:`POCKET_SPEED` x the top speed), and the suction presses the
-    carriage onto its bearing contacts. The truth's Stribeck curve is the base's times 1 +
-    ``s`` :data:`POCKET_RISE` x the suction, inside the bristle dynamics: a friction that
-    rises with the speed, steeply at first, to a plateau.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law (with a Stribeck curve).
-    s : float
-        Amplitude factor [-]: the pocket's area over the contacts' load, / its value at
-        strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Sub-ambient-pressure (negative pressure) air bearing sliders and the Rayleigh step
-    (White 1983, Flying characteristics of the zero-load slider bearing, J. Lubr. Technol.
-    105; Hamrock, Schmid and Jacobson 2004, Fundamentals of Fluid Film Lubrication, ch. on
-    the Rayleigh step bearing and on gas bearings; Gross 1962, Gas Film Lubrication). The
-    candidate's curve is Gaussian, Lorentzian or an exponential tail; the open forms add
-    tails, rationals, films that lift, spikes, bimodal roughness, logs, Eyring, starvation,
-    rubber hysteresis, resonances, dither, melting, grains, readsorption, thermoviscous,
-    turbulent and thixotropic films, churning, core losses, breathing bellows, eddy
-    brakes, shear thinning, flying pads, wiping menisci, journals, wall slip, a closing
-    clearance or a dwell's squeeze. Here a film pulls instead of lifting: the speed loads
-    the contact.
-    """
-    law = kin.base
-    if not has_stribeck_curve(kin):
-        raise ValueError("stribeck_shape (suction_pocket): the mre_lugre base has no "
-                         "Stribeck curve")
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    vc = POCKET_SPEED * max(kin.scales["v99"], 1e-12)
-    k = float(s) * POCKET_RISE
-    return lugre_with_curve(kin, lambda vv: law.g(vv) * (1.0 + k * _suction(vv / vc)))
-
-
-# -- position --------------------------------------------------------------------------------
-#: ``conductive_strips``' drag at the strips' critical speed over a strip's middle, x the
-#: friction level, at strength 1 [-]; the critical speed, x the top speed [-]; the strips'
-#: pitch, x the visited stroke [-]; a strip's width, x the pitch [-]; the rounding of a
-#: strip's edges (the field's fringe), x the pitch [-]
-STRIP_DRAG, STRIP_SPEED, STRIP_PITCH, STRIP_WIDTH, STRIP_EDGE = 0.6, 0.5, 0.37, 0.45, 0.06
-
-
-def _strip_cover(xr, pitch, width, edge):
-    """The share of the magnets' field over conductive strip [-] (0 to 1) at the positions
-    ``xr`` [-] (over the visited stroke, from its low end): strips of ``width`` x
-    ``pitch`` every ``pitch``, the first centred 0.2 pitch in, their edges rounded over
-    ``edge`` x ``pitch`` (the field's fringe)."""
-    ph = (np.asarray(xr, float) / pitch - 0.2) % 1.0
-    d = np.minimum(ph, 1.0 - ph)                       # distance to a strip's centre
-    return 0.5 * (1.0 + np.tanh((0.5 * width - d) / edge))
-
-
-def _eddy_drag(u):
-    """The eddy-current drag factor [-] (1 at its peak, odd in the speed) at the speeds
-    ``u`` [-] (over the critical speed): a thin plate's 2 u / (1 + u^2), rising as the
-    induced currents grow, falling as their own field pushes the magnets' out (skin
-    effect)."""
-    u = np.asarray(u, float)
-    return 2.0 * u / (1.0 + u * u)
-
-
-@on_fine_grid
-def conductive_strips_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage carries permanent magnets (a magnetic preload, a linear motor's mover,
-    a magnetic scale's reader) close over a bed in which conductive strips are set along
-    the stroke (aluminium or copper filler strips between steel segments, cooling tubes,
-    earthing bars), :data:`STRIP_PITCH` x the visited stroke apart
-    (:func:`_strip_cover`). Where the magnets pass over a strip their moving field induces
-    eddy currents in it, and a drag ~ the strip's conductance x the thin plate's 2 u / (1
-    + u^2) (:func:`_eddy_drag`; u the speed over the critical speed, :data:`STRIP_SPEED`
-    x the top speed); over the steel nothing. The truth adds ``s`` :data:`STRIP_DRAG` x
-    the friction level x that drag to the base: a speed-shaped drag that is there only
-    over the strips.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law.
-    s : float
-        Amplitude factor [-]: the strips' conductance times the magnets' field squared,
-        / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Eddy-current forces on magnets moving over conducting plates (Reitz 1970, Forces on
-    moving magnets due to eddy currents, J. Appl. Phys. 41; Thompson 2000, Electrodynamic
-    magnetic suspension - models, scaling laws and experimental results, IEEE Trans. Educ.
-    43; Sodano and Bae 2004, Eddy current damping in structures, Shock Vib. Dig. 36). The
-    candidate scales the friction along the stroke and adds a force of the position; the
-    open forms put defects, waviness, wear, runout, bends, films, cogging, tapers, pockets,
-    cushions, covers, springs, holes, plungers, sags, festoons, curves, chains, cams,
-    heat, dents, joints, misalignment, flow forces, cranks, overhangs, a track's end, a
-    reel or a way's flatness on the stroke. Here the bed's material changes along it: an
-    induced drag, rising and then falling with the speed, switched on and off by the
-    position.
-    """
-    if _bump_centre(kin) is None:
-        raise ValueError(f"position (conductive_strips): the held-out part of the "
-                         f"{kin.plant} record never revisits the positions of its fit part")
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    sc = kin.scales
-    span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
-    xr = (np.asarray(kin.x, float) - sc["x_lo"]) / span
-    c = _strip_cover(xr, STRIP_PITCH, STRIP_WIDTH, STRIP_EDGE)
-    u = np.asarray(kin.v, float) / (STRIP_SPEED * max(sc["v99"], 1e-12))
-    return F + float(s) * STRIP_DRAG * _level(kin) * c * _eddy_drag(u)
-
-
-# -- inertia ---------------------------------------------------------------------------------
-#: ``wave_radiation``'s added mass at infinite frequency at strength 1, x the friction level
-#: / a99 [kg per N s^2/m]; the radiation's damping rate at its peak, x the added mass and
-#: its frequency [-]; the period of the waves it radiates most, x the motion's time scale
-#: [-]; the retardation's decay time, x that period [-]
-WAVE_MASS, WAVE_DAMP, WAVE_PERIOD, WAVE_DECAY = 0.5, 0.5, 0.6, 0.3
-
-
-def _retardation(t, v, omega, tau):
-    """Cummins' memory integral [m] along the velocities ``v`` [m/s] at the times ``t``
-    [s]: int K(t - t') v(t') dt' with the retardation kernel K(t) = e^(-t / ``tau``)
-    (cos(``omega`` t) - sin(``omega`` t) / (``omega`` ``tau``)), whose integral is 0 (no
-    radiation at zero frequency: none in steady motion); exact for a velocity constant over
-    each step, from rest."""
-    from scipy.signal import lfilter
-    h = float(t[1] - t[0])
-    lam = complex(-1.0 / tau, omega)
-    e = np.exp(lam * h)
-    I = lfilter([(e - 1.0) / lam], [1.0, -e], np.asarray(v, float).astype(complex))
-    return np.real((1.0 + 1j / (omega * tau)) * I)
-
-
-@on_fine_grid
-def wave_radiation_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage carries a blade, a paddle or a probe through the free surface of a
-    liquid (a towing or wave tank's carriage, a coating or cleaning machine's wiper, a
-    mixer's stage), which the inverse dynamics misses. The blade drags the liquid's added
-    mass (its value at infinite frequency, ``s`` :data:`WAVE_MASS` x the friction level /
-    a99) and radiates surface waves, whose force is a memory of the velocity (Cummins'
-    equation): the retardation kernel of :func:`_retardation`, ringing at the period of
-    the waves it radiates most (:data:`WAVE_PERIOD` x the motion's time scale) and decaying
-    over :data:`WAVE_DECAY` x that period, its damping rate :data:`WAVE_DAMP` x the added
-    mass and that frequency. Its integral is nothing: steady motion radiates no force. The
-    truth adds the added mass's inertial force and the radiation's to the base.
+def winding_heat_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The axis is driven by an iron-core linear motor whose winding is fixed to the
+    carriage, over its bearings (as in many machine-tool and pick-and-place axes). The
+    winding's current follows the thrust, the friction plus the carriage's inertial force
+    (at the top acceleration :data:`WIND_INERTIA` x the friction level), and its copper
+    loss I^2 R the thrust's square (:func:`_copper_loss`). The heat warms the carriage
+    over its thermal time (:data:`WIND_TIME` x the motion's time scale, a first-order
+    lag), and the carriage's expansion across its bearing rows raises their preload: the
+    Coulomb and Stribeck levels are the base's (at the heat of steady motion) times 1 +
+    ``s`` :data:`WIND_RISE` x the lagged heat's excess over it (over its 99th percentile
+    along the record), inside the bristle dynamics; the viscous term is the base's.
+    Speeding up heats more than steady motion; slowing down (the friction helping) and
+    dwells heat less.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the blade's immersed area, / its value at strength 1.
+        Amplitude factor [-]: the winding's resistance times the preload's change per
+        degree, / its value at strength 1.
 
     Returns
     -------
@@ -504,116 +149,68 @@ def wave_radiation_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The impulse response of floating and immersed bodies' radiation (Cummins 1962, The
-    impulse response function and ship motions, Schiffstechnik 9; Ogilvie 1964, Recent
-    progress toward the understanding and prediction of ship motions, 5th Symp. Naval
-    Hydrodyn.; Falnes 2002, Ocean Waves and Oscillating Systems, ch. on radiation). The
-    candidate misses a constant mass; the open forms filter it, reflect it through
-    gearing, a chain, a pinion or a screw, hang it on a spring, a cable, a fluid, a
-    clutch, a coupling, a flyweight, a friction-damped, quasi-zero-stiffness, hose's or
-    elastomer mount, surge a spring, add a fluid's mass, pick, drop, empty, slide, rattle,
-    telescope, roll or rock it, recoil a frame, saturate a motor, lead a feedforward or
-    pitch a scale. Here the mass radiates its momentum away as waves: a memory with no
-    stiffness and no steady drag.
+    Linear motors' copper losses and the thermal behaviour of their axes (Gieras, Piech
+    and Tomczuk 2011, Linear Synchronous Motors, ch. on losses and heat transfer; Mayr et
+    al. 2012, Thermal issues in machine tools, CIRP Ann. 61) and the thermally induced
+    preload of rolling bearings (Harris and Kotzalas 2007, Rolling Bearing Analysis, ch.
+    on preload and on thermal effects). The candidate raises the levels with |a|, lagged,
+    tilts them with a and adds a force odd in a; the open forms lag, age, heat, skid,
+    load, press, attract, squeeze, transfer weight, slosh, dilate, wedge, spring a gib,
+    soften rubber, swing arms, unload by the jerk, tilt pads, push ball trains, ripple the
+    current, slide rack flanks, set a shoe by a ball in a cone, shut a damper's bypass,
+    creep a belt, rack a gantry, tighten a band, surge a feed line or load a traction
+    drive's cam. Here the drive's own losses heat the carriage: the square of the thrust,
+    integrated over a thermal time, expands it onto its bearings.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     a99 = max(kin.scales["a99"], 1e-12)
-    m = float(s) * WAVE_MASS * _level(kin) / a99
-    T = WAVE_PERIOD * max(_motion_time(kin), 1e-12)
-    omega = 2.0 * math.pi / T
-    rad = _retardation(np.asarray(kin.t, float), np.asarray(kin.v, float), omega,
-                       WAVE_DECAY * T)
-    return F + m * (np.asarray(kin.a, float) + WAVE_DAMP * omega * omega * rad)
+    v99 = max(kin.scales["v99"], 1e-12)
+    direction = np.tanh(np.asarray(kin.v, float) / (WIND_ROUND * v99))
+    P = _copper_loss(np.asarray(kin.a, float) / a99, direction, WIND_INERTIA)
+    H = _lag(np.asarray(kin.t, float), P, WIND_TIME * max(_motion_time(kin), 1e-12))
+    H = H / max(float(np.percentile(np.abs(H), 99)), 1e-12)
+    lev = np.maximum(1.0 + float(s) * WIND_RISE * H, 0.05)
+    return level_inside(kin, lev, np.ones_like(lev))
 
 
-# -- delay -----------------------------------------------------------------------------------
-#: ``dual_slope_adc``'s run-up (integration) time at strength 1 [data samples]; the
-#: run-down's length at full scale, x the run-up [-]; the auto-zero phase, x the run-up [-]
-DUAL_SAMPLES, DUAL_RUNDOWN, DUAL_ZERO = 1.5, 1.0, 0.5
+# -- load ------------------------------------------------------------------------------------
+#: ``soft_film_pressure``'s rise of the levels per unit of the film's friction change from
+#: the mean load's, at strength 1 [-]; the share of the film's friction at the mean load
+#: that its pressure term (alpha W) makes [-]
+SOFT_RISE, SOFT_PRESSURE = 1.0, 0.5
 
 
-@njit(cache=True)
-def _conversions(t, C, mid, full, runup, rundown, zero):
-    """(release times [s], readings [N]) of a dual-slope converter along the times ``t``
-    [s] of the force's running integral ``C`` [N s] (linear between the grid's points):
-    each conversion integrates the force over ``runup`` [s] (its mean the reading), runs
-    down for ``rundown`` x the run-up x |mean - ``mid``| / ``full`` [s], releases the
-    reading and auto-zeroes for ``zero`` x the run-up before the next."""
-    n = t.size
-    cap = int((t[-1] - t[0]) / (runup * (1.0 + zero))) + 2
-    rel = np.empty(cap)
-    val = np.empty(cap)
-    m = 0
-    start = t[0]
-    j = 0
-    c0 = C[0]
-    while m < cap:
-        end = start + runup
-        if end > t[-1]:
-            break
-        while j + 1 < n - 1 and t[j + 1] < end:
-            j += 1
-        w = (end - t[j]) / (t[j + 1] - t[j])
-        c1 = C[j] + w * (C[j + 1] - C[j])
-        reading = (c1 - c0) / runup
-        release = end + rundown * runup * min(abs(reading - mid) / full, 1.0)
-        rel[m] = release
-        val[m] = reading
-        m += 1
-        start = release + zero * runup
-        if start > t[-1]:
-            break
-        while j + 1 < n - 1 and t[j + 1] < start:
-            j += 1
-        w = (start - t[j]) / (t[j + 1] - t[j])
-        c0 = C[j] + w * (C[j + 1] - C[j])
-    return rel[:m], val[:m]
-
-
-def _dual_slope(t, f, mid, full, runup, rundown, zero):
-    """The readings [N] of a dual-slope converter (:func:`_conversions`) of the force ``f``
-    [N] along the times ``t`` [s], each held until the next is released (the first force
-    until the first), seen through each grid step's mean (a release inside a step counts
-    for its share of it)."""
-    t = np.asarray(t, float)
-    f = np.asarray(f, float)
-    C = np.concatenate(([0.0], np.cumsum(0.5 * (f[1:] + f[:-1]) * np.diff(t))))
-    rel, val = _conversions(t, C, mid, full, runup, rundown, zero)
-    if rel.size == 0:
-        return f.copy()
-    # the held reading H(t) and its running integral G(t) at the releases and the grid
-    r = np.concatenate(([t[0]], rel))
-    y = np.concatenate(([f[0]], val))
-    Gr = np.concatenate(([0.0], np.cumsum(y[:-1] * np.diff(r))))
-    i = np.searchsorted(r, t, side="right") - 1
-    G = Gr[i] + y[i] * (t - r[i])
-    out = np.empty_like(f)
-    out[0] = f[0]
-    out[1:] = np.diff(G) / np.diff(t)
-    return out
+def _soft_film_friction(q, pressure):
+    """The soft film's friction [-] (1 at the mean load) at the loads ``q`` [-] (over the
+    mean |load|): tau0 A + alpha W with the hard bodies' Hertz area A ~ |q|^(2/3), the
+    pressure term the share ``pressure`` of it at the mean load."""
+    r = np.abs(np.asarray(q, float))
+    return (1.0 - pressure) * r ** (2.0 / 3.0) + pressure * r
 
 
 @on_fine_grid
-def dual_slope_adc_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force is digitised by a dual-slope integrating converter (a bench multimeter's,
-    a panel meter's or a weighing indicator's: ICL7106-type converters): each conversion
-    integrates the force over a run-up of ``s`` :data:`DUAL_SAMPLES` data samples, then
-    runs the integrator down at a fixed reference rate, counting until it crosses zero,
-    which takes :data:`DUAL_RUNDOWN` x the run-up at full scale, and releases the count
-    (the run-up's mean); an auto-zero phase (:data:`DUAL_ZERO` x the run-up) follows
-    before the next conversion (:func:`_conversions`, :func:`_dual_slope`; the force's
-    range its full scale each way from its middle). The reading is held until the next:
-    a mean over a window that is released the later the larger the reading, and the
-    conversion rate itself follows the force's size. The motion channels are on time.
+def soft_film_pressure_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The contact runs through a thin soft film on hard bodies (a plated or sputtered
+    soft metal, lead, indium, silver, a polymer or a metal soap layer, as on bearing
+    shells, space mechanisms and drawing dies). The hard bodies carry the load and set
+    the contact area, elastically ~ the load^(2/3) (Hertz); the film, too thin to add
+    area, shears at its own strength, which rises with the contact pressure: tau = tau0 +
+    alpha p. The friction is then tau0 A + alpha W (:func:`_soft_film_friction`; the
+    pressure term :data:`SOFT_PRESSURE` of it at the mean load), a sum of a part that
+    grows slower than the load and one that grows as the load. The base law, identified
+    at the mean load, carries the film's friction there; the truth's Coulomb and Stribeck
+    levels are the base's times 1 + ``s`` :data:`SOFT_RISE` x the film's friction's change
+    from the mean load's, inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s]) and its base law.
+        The motion on the fine grid (v [m/s], load [N]) and its base law.
     s : float
-        Amplitude factor [-]: the converter's run-up time, / its value at strength 1.
+        Amplitude factor [-]: the share of the contact's friction the film carries, / its
+        value at strength 1.
 
     Returns
     -------
@@ -622,58 +219,69 @@ def dual_slope_adc_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Dual-slope integrating converters (Sheingold 1986, Analog-Digital Conversion Handbook,
-    ch. on integrating converters; Kester 2005, Data Conversion Handbook, ch. on
-    integrating ADCs; the Intersil ICL7106/ICL7107 data sheet). The candidate shifts the
-    force by a constant time, low-passes it, reads it through a transducer's resonance and
-    leaks it; the open forms sample, filter, average, hold, skew, jitter, rate-limit,
-    transmit, median, report by deadband, trigger on positions, run a belt, aerate, drop
-    telegrams, leak, creep, notch, track, snub, time a waveguide's pulse, diffuse eddy
-    currents, count a resonator, sweep a grating, restore a force by a servo, interleave
-    converters or balance a pneumatic cell. Here the latency is counted out: it grows with
-    the reading, and so does the time between readings.
+    The pressure dependence of thin films' shear strength and the friction of soft films
+    on hard substrates (Bowden and Tabor 1950, The Friction and Lubrication of Solids, ch.
+    on thin metallic films; Briscoe and Tabor 1978, Shear properties of thin polymeric
+    films, J. Adhes. 9; Bridgman 1935, Effects of high shearing stress combined with high
+    hydrostatic pressure, Phys. Rev. 48). The candidate makes the levels affine in the
+    load, with a memory over the travel; the open forms scale the friction with a Hertz
+    contact's area, a seal's, a film's, a junction's, a pivot's, an adhesive contact's or
+    a pin's arc, break, squeeze or desorb films, plough, creep, vibrate, overload or feed
+    a constant flow to a pad, heal scuffs, relieve a preload, roll on a lossy track, slip
+    differentially, spin balls, press a disc spring, skid lightly loaded rollers, bed a
+    rail or heat a liner by PV. Here the interface's own shear strength depends on the
+    pressure, beside an area that grows slower than the load.
     """
+    L = np.asarray(kin.load, float)
+    Lm = float(np.mean(np.abs(L))) or 1.0
+    if not np.ptp(L) > 1e-9 * Lm:
+        raise ValueError(f"load (soft_film_pressure): the {kin.plant} record's load does "
+                         f"not change")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    lo, hi = float(np.min(F)), float(np.max(F))
-    mid, full = 0.5 * (lo + hi), max(0.5 * (hi - lo), 1e-12)
-    runup = float(s) * DUAL_SAMPLES * kin.sample_dt
-    return _dual_slope(kin.t, F, mid, full, runup, DUAL_RUNDOWN, DUAL_ZERO)
+    g = _soft_film_friction(L / Lm, SOFT_PRESSURE)
+    lev = np.maximum(1.0 + float(s) * SOFT_RISE * (g - 1.0), 0.05)
+    return level_inside(kin, lev, np.ones_like(lev))
 
 
-# -- drift -----------------------------------------------------------------------------------
-#: ``grease_oil_bleed``'s fall of the levels by the record's end, at strength 1 [-]; the
-#: viscous term's rise by then [-]; the bleed's time scale (Higuchi's, the oil in the fill's
-#: contact zone released), x the record's length [-]
-BLEED_FALL, BLEED_VISC, BLEED_TIME = 0.3, 0.4, 2.0
+# -- asymmetry -------------------------------------------------------------------------------
+#: ``angled_pull``'s mu tan(theta) of the front pull (lifting the carriage, moving +x) and
+#: of the rear pull (pressing it on, moving -x), at strength 1 [-]; the rounding of the
+#: direction, x the top speed [-]
+PULL_FRONT, PULL_REAR, PULL_ROUND = 0.3, 0.15, 0.05
 
 
-def _bled(tau, time):
-    """The share of the fill's releasable oil bled [-] at the times ``tau`` [-] (over the
-    record's length): Higuchi's sqrt(tau / ``time``), up to all of it."""
-    return np.minimum(np.sqrt(np.maximum(np.asarray(tau, float), 0.0) / time), 1.0)
+def _pull_levels(direction, front, rear):
+    """The guides' friction factor [-] (1 with a level pull) along the motion's
+    ``direction`` [-] (+-1, rounded): moving +x the front pull, rising at mu tan =
+    ``front``, lifts the carriage: F = mu (N - F tan) = mu N / (1 + ``front``); moving -x
+    the rear pull, falling at mu tan = ``rear`` (at most 0.9), presses it on: mu N / (1 -
+    ``rear``)."""
+    d = np.asarray(direction, float)
+    up = 1.0 / (1.0 + front)
+    down = 1.0 / (1.0 - min(rear, 0.9))
+    return 0.5 * (1.0 + d) * up + 0.5 * (1.0 - d) * down
 
 
 @on_fine_grid
-def grease_oil_bleed_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The way (or the guide's bearings) has just been filled with a fresh grease: its base
-    oil is held in the thickener's fibre network and bleeds out of it to the contact,
-    diffusing through the depleting matrix: Higuchi's release, ~ the square root of the
-    time (:func:`_bled`, time scale :data:`BLEED_TIME` x the record's length). The bled oil
-    floods the boundary contact, lowering its friction, and thickens the film the contact
-    shears. The Coulomb and Stribeck levels are the base's times 1 - ``s``
-    :data:`BLEED_FALL` x the bled share over its value at the record's end, the viscous
-    term the base's times 1 + ``s`` :data:`BLEED_VISC` x it, inside the bristle dynamics:
-    a change fastest at the start and ever slower, the levels and the viscous term going
-    opposite ways.
+def angled_pull_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage is pulled each way by a cable or a steel tape (a cable-driven stage, a
+    plotter's or a sliding door's drive, a hoist's trolley) whose ends leave the carriage
+    at angles to its ways: the front run rises to its pulley, the rear one falls to its
+    own. The pull is the friction it overcomes; its component across the ways lifts the
+    carriage moving +x, against its weight, and presses it on moving -x, so the friction
+    is mu (N -+ F tan theta): mu N / (1 + mu tan theta1) one way and mu N / (1 - mu tan
+    theta2) the other (:func:`_pull_levels`; mu tan theta ``s`` :data:`PULL_FRONT` and
+    ``s`` :data:`PULL_REAR`). The Coulomb and Stribeck levels are the base's times that
+    factor, inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s]) and its base law.
+        The motion on the fine grid (v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the grease's oil content that bleeds, / its value at strength
+        Amplitude factor [-]: the tangents of the runs' angles, / their values at strength
         1.
 
     Returns
@@ -683,98 +291,479 @@ def grease_oil_bleed_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Grease's oil bleeding and its lubrication of rolling and sliding contacts (Lugt 2009, A
-    review on grease lubrication in rolling bearings, Tribol. Trans. 52; Lugt 2013, Grease
-    Lubrication in Rolling Bearings, ch. on oil bleeding) and the square-root-of-time
-    release from a matrix (Higuchi 1961, Rate of release of medicaments from ointment
-    bases containing drugs in suspension, J. Pharm. Sci. 50). The candidate is a trend, a
-    saturating change, a step, a cycle, a resetting change or the friction power's heat;
-    the open forms warm up, wear in, change, heat, wear, follow the humidity, grind,
-    relubricate, relax, oxidise, deplete, wear through, swell, build films, take in
-    particles, expand, shear down, heat magnets, charge, creep, loosen, dewet, channel,
-    drain, spall, evaporate, pump down, settle an additive or crystallise wax. Here oil
-    diffuses out of a matrix: a square root of the time, the boundary and the film going
-    opposite ways.
+    Friction with a pull inclined to the sliding plane (Meriam and Kraige 2012,
+    Engineering Mechanics: Statics, ch. on friction; Beer and Johnston 2010, Vector
+    Mechanics for Engineers, ch. on the angle of friction) and cable drives' geometry
+    (Slocum 1992, Precision Machine Design, ch. on cable and belt drives). The candidate
+    gives each direction its levels and an offset; the open forms twin the levels, the
+    curves or the viscous term, bend a curve, roll a lip, load a thrust bearing, film a
+    rod seal, texture a ratchet, return a spring, tilt a pad, strut a sprag, throttle a
+    meter-out, differ a cylinder's areas, groove chevrons, buckle a helix, scrape chips,
+    commutate, idle a belt, free a roller, wick a felt, run a belt, lean a brush, band a
+    seal, counterbalance a valve, vibrate elliptically, diode a flow, pitch pads, skew
+    rollers, lift through a screw or turn the frame. Here the drive's own line of pull
+    sets the normal load: lifted one way, pressed the other.
+    """
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    v99 = max(kin.scales["v99"], 1e-12)
+    d = np.tanh(np.asarray(kin.v, float) / (PULL_ROUND * v99))
+    lev = _pull_levels(d, float(s) * PULL_FRONT, float(s) * PULL_REAR)
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- stribeck_shape --------------------------------------------------------------------------
+#: ``capillary_condensation``'s meniscus force with every junction's gaps filled, x the
+#: Stribeck curve, at strength 1 [-]; the speed at which a junction lives the condensation's
+#: time, x the top speed [-]
+CAP_RISE, CAP_SPEED = 0.5, 0.1
+
+
+def _condensed(u):
+    """The share of a junction's gaps filled by condensed water [-] at the speeds ``u`` [-]
+    (over the speed at which the junction lives the condensation's time): first-order
+    filling over the junction's lifetime, 1 - exp(-1 / |u|) (1 at rest)."""
+    r = np.abs(np.asarray(u, float))
+    return -np.expm1(-1.0 / np.maximum(r, 1e-12))
+
+
+@on_fine_grid
+def capillary_condensation_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The contact works in humid air (or a solvent's vapour) and its junctions are
+    hydrophilic: while a junction lives, water condenses into the narrow gaps around it
+    (Kelvin's equation) and the menisci's Laplace pressure pulls the surfaces together,
+    adding to the load. A junction lives its size over the speed; the gaps fill over a
+    condensation time, so the filled share is 1 - exp(-v_k / |v|) (:func:`_condensed`;
+    v_k :data:`CAP_SPEED` x the top speed, the speed at which a junction lives that time).
+    The truth's Stribeck curve is the base's times 1 + ``s`` :data:`CAP_RISE` x that
+    share, inside the bristle dynamics: an extra friction that is whole at rest and
+    fades, as exp(-v_k / v), with the speed; no film, no tail in log v.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (v [m/s]) and its base law (with a Stribeck curve).
+    s : float
+        Amplitude factor [-]: the relative humidity's share of the menisci's force, / its
+        value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Capillary condensation in contacts and its kinetics in sliding friction (Bocquet,
+    Charlaix, Ciliberto and Crassous 1998, Moisture-induced ageing in granular media and
+    the kinetics of capillary condensation, Nature 396; Riedo, Levy and Brune 2002,
+    Kinetics of capillary condensation in nanoscopic sliding friction, Phys. Rev. Lett.
+    88; Israelachvili 2011, Intermolecular and Surface Forces, ch. on capillary forces).
+    The candidate's curve is Gaussian, Lorentzian or an exponential tail; the open forms
+    add tails, rationals, films that lift, spikes, bimodal roughness, logs, Eyring,
+    starvation, rubber hysteresis, resonances, dither, melting, grains, readsorption,
+    thermoviscous, turbulent and thixotropic films, churning, core losses, breathing
+    bellows, eddy brakes, shear thinning, flying pads, wiping menisci, journals, wall
+    slip, a closing clearance, a dwell's squeeze or a pocket's suction. Here water
+    condenses out of the air into each junction for as long as it lives.
+    """
+    law = kin.base
+    if not has_stribeck_curve(kin):
+        raise ValueError("stribeck_shape (capillary_condensation): the mre_lugre base has "
+                         "no Stribeck curve")
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    vk = CAP_SPEED * max(kin.scales["v99"], 1e-12)
+    k = float(s) * CAP_RISE
+    return lugre_with_curve(kin, lambda vv: law.g(vv) * (1.0 + k * _condensed(vv / vk)))
+
+
+# -- position --------------------------------------------------------------------------------
+#: ``ball_passage``'s rise of the levels at an entry's peak over the ripple's mean, at
+#: strength 1 [-]; the ripple's period (two ball pitches of travel), x the visited stroke
+#: [-]; the peak's sharpness (the seal's crowning over the pitch) [-]
+BALL_RISE, BALL_PERIOD, BALL_PEAK = 0.5, 0.09, 3.0
+
+
+def _ball_entry(xr, period, peak):
+    """The rolling resistance's ripple [-] (0 on average over a period, 1 at its peak) at
+    the positions ``xr`` [-] (over the visited stroke): a ball entering the loaded zone
+    every ``period`` of travel, exp(``peak`` (cos(2 pi xr / period) - 1)), less its mean
+    e^-peak I0(peak), over its peak's excess."""
+    w = np.exp(peak * (np.cos(2.0 * np.pi * np.asarray(xr, float) / period) - 1.0))
+    m = math.exp(-peak) * float(np.i0(peak))
+    return (w - m) / (1.0 - m)
+
+
+@on_fine_grid
+def ball_passage_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage runs on a recirculating-ball linear guide: its balls roll through the
+    loaded zone at half its speed and return through its end caps. Each ball entering the
+    loaded zone is squeezed over the crowning at the zone's end, and its entry raises the
+    rolling resistance; rolling without slip, the balls' places follow the travel, so the
+    entries repeat every two ball pitches of the carriage's travel (:data:`BALL_PERIOD` x
+    the visited stroke) at the same positions (:func:`_ball_entry`, a peaked ripple). The
+    Coulomb and Stribeck levels are the base's times 1 + ``s`` :data:`BALL_RISE` x the
+    ripple, inside the bristle dynamics; the viscous term is the base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (x [m], v [m/s]) and its base law.
+    s : float
+        Amplitude factor [-]: the balls' preload at the entry over their mean, / its value
+        at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Ball passage in linear rolling guides and its friction and force ripple (Ohta and
+    Tanaka 2010, Vibration characteristics of a linear guideway type recirculating ball
+    bearing, J. Vib. Acoust. 132; Harris and Kotzalas 2007, Rolling Bearing Analysis, ch.
+    on the load distribution among the rolling elements; Slocum 1992, Precision Machine
+    Design, ch. on rolling element bearings). The candidate scales the friction
+    along the stroke and adds a force of the position; the open forms put defects,
+    waviness, wear, runout, bends, films, cogging, tapers, pockets, cushions, covers,
+    springs, holes, plungers, sags, festoons, curves, chains, cams, heat, dents, joints,
+    misalignment, flow forces, cranks, overhangs, a track's end, a reel, a way's flatness
+    or conductive strips on the stroke. Here the bearing's own balls set the ripple, their
+    places a function of the travel.
+    """
+    if _bump_centre(kin) is None:
+        raise ValueError(f"position (ball_passage): the held-out part of the {kin.plant} "
+                         f"record never revisits the positions of its fit part")
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    sc = kin.scales
+    span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
+    xr = (np.asarray(kin.x, float) - sc["x_lo"]) / span
+    lev = np.maximum(1.0 + float(s) * BALL_RISE * _ball_entry(xr, BALL_PERIOD, BALL_PEAK),
+                     0.05)
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- inertia ---------------------------------------------------------------------------------
+#: ``hanging_pendulum``'s payload mass at strength 1, x the friction level / a99 [kg per
+#: N s^2/m]; its small swings' period, x the motion's time scale [-]; their damping ratio
+#: [-]; the gravity the payload hangs in [m/s^2]
+PEND_MASS, PEND_PERIOD, PEND_DAMPING, PEND_G = 0.5, 1.5, 0.1, 9.81
+
+
+@njit(cache=True)
+def _pendulum(t, a, omega, zeta, g):
+    """The horizontal acceleration [m/s^2] of a pendulum's bob hung from a pivot that
+    accelerates by ``a`` [m/s^2] at the times ``t`` [s] (uniform), from rest hanging
+    straight: its angle theta from the vertical follows theta'' = -omega^2 (sin theta +
+    a cos theta / ``g``) - 2 ``zeta`` ``omega`` theta' (the length g / omega^2), and the
+    bob's acceleration is a + L (theta'' cos theta - theta'^2 sin theta); semi-implicit
+    Euler on sub-steps of at most 0.02 / omega, the pivot's acceleration held over each."""
+    n = t.size
+    out = np.empty(n)
+    L = g / (omega * omega)
+    dt = t[1] - t[0] if n > 1 else 0.0
+    n_sub = max(1, int(math.ceil(omega * dt / 0.02)))
+    h = dt / n_sub
+    th = 0.0
+    w = 0.0
+    for k in range(n):
+        acc = -omega * omega * (math.sin(th) + a[k] * math.cos(th) / g) - 2.0 * zeta * omega * w
+        out[k] = a[k] + L * (acc * math.cos(th) - w * w * math.sin(th))
+        if k + 1 < n:
+            am = 0.5 * (a[k] + a[k + 1])
+            for _ in range(n_sub):
+                acc = (-omega * omega * (math.sin(th) + am * math.cos(th) / g)
+                       - 2.0 * zeta * omega * w)
+                w = w + h * acc
+                th = th + h * w
+    return out
+
+
+@on_fine_grid
+def hanging_pendulum_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A payload hangs under the carriage on a rod or a cable (an overhead conveyor's
+    carrier, a gantry crane's hook and load, a probe or a tool on a long stem), which the
+    inverse dynamics misses. It swings as a gravity pendulum (:func:`_pendulum`; its small
+    swings' period :data:`PEND_PERIOD` x the motion's time scale, so its length is g /
+    omega^2; damped at :data:`PEND_DAMPING` by its pivot and the air), large swings
+    nonlinear (sin theta, the centripetal term), and it pulls on the carriage with its own
+    horizontal acceleration: the truth adds its mass (``s`` :data:`PEND_MASS` x the
+    friction level / a99) times that acceleration to the base. Slow motions carry it whole;
+    quicker ones leave it behind, swinging.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s], a [m/s^2]) and its base law.
+    s : float
+        Amplitude factor [-]: the payload's mass, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    The pendulum on an accelerating pivot and the sway of suspended loads (Abdel-Rahman,
+    Nayfeh and Masoud 2003, Dynamics and control of cranes: a review, J. Vib. Control 9;
+    Singhose, Porter, Kenison and Kriikku 2000, Effects of hoisting on the input shaping
+    control of gantry cranes, Control Eng. Pract. 8; Thomson and Dahleh 1998, Theory of
+    Vibration with Applications, ch. on nonlinear vibrations). The candidate misses a
+    constant mass; the open forms filter it, reflect it through gearing, a chain, a pinion
+    or a screw, hang it on a spring, a cable, a fluid, a clutch, a coupling, a flyweight, a
+    friction-damped, quasi-zero-stiffness, hose's or elastomer mount, surge a spring, add a
+    fluid's mass, pick, drop, empty, slide, rattle, telescope, roll or rock it, recoil a
+    frame, saturate a motor, lead a feedforward, pitch a scale or radiate waves. Here
+    gravity is the spring: the payload swings below its pivot, a pendulum, not a mount.
+    """
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    a99 = max(kin.scales["a99"], 1e-12)
+    m = float(s) * PEND_MASS * _level(kin) / a99
+    omega = 2.0 * math.pi / (PEND_PERIOD * max(_motion_time(kin), 1e-12))
+    bob = _pendulum(np.asarray(kin.t, float), np.asarray(kin.a, float), omega,
+                    PEND_DAMPING, PEND_G)
+    return F + m * bob
+
+
+# -- delay -----------------------------------------------------------------------------------
+#: ``adaptive_filter``'s time constant while the reading is steady, at strength 1 [data
+#: samples]; the band the input may leave the reading by before the filter speeds up, x
+#: the force's range [-]; the filter's speed-up far outside the band [-]
+ADAPT_SAMPLES, ADAPT_BAND, ADAPT_FAST = 3.0, 0.05, 8.0
+
+
+@njit(cache=True)
+def _adaptive_lowpass(t, u, tau, band, fast):
+    """The output [N] of an adaptive first-order low-pass of the input ``u`` [N] at the
+    times ``t`` [s], from the first input: its time constant ``tau`` [s] while the input
+    stays within ``band`` [N] of the output, shortened to tau / (1 + (``fast`` - 1) r^2 /
+    (1 + r^2)) as it leaves it (r the departure over the band); each step exact for the
+    step's mean input and its time constant at the step's start."""
+    n = u.size
+    y = np.empty(n)
+    y[0] = u[0]
+    for k in range(n - 1):
+        um = 0.5 * (u[k] + u[k + 1])
+        r = (um - y[k]) / band
+        r2 = r * r
+        tk = tau / (1.0 + (fast - 1.0) * r2 / (1.0 + r2))
+        y[k + 1] = um + (y[k] - um) * math.exp(-(t[k + 1] - t[k]) / tk)
+    return y
+
+
+@on_fine_grid
+def adaptive_filter_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force is read by a weighing indicator (a load cell's digital amplifier) with an
+    adaptive filter, as such indicators damp vibration yet settle quickly: a first-order
+    digital low-pass whose time constant is long (``s`` :data:`ADAPT_SAMPLES` data samples)
+    while the input stays within a band of the reading (:data:`ADAPT_BAND` x the force's
+    range) and shortens, down to 1 / :data:`ADAPT_FAST` of it, as the input leaves the
+    band (:func:`_adaptive_lowpass`). Its lag changes with the force's own changes: long
+    where the force creeps, short where it jumps, as at a reversal. The motion channels
+    are on time.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s]) and its base law.
+    s : float
+        Amplitude factor [-]: the filter's steady time constant, / its value at strength
+        1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Adaptive and time-varying filters for load cells and weighing (Piskorowski and
+    Barcinski 2008, Dynamic compensation of load cell response: a time-varying approach,
+    Mech. Syst. Signal Process. 22; Shu 1993, Dynamic weighing under nonzero initial
+    conditions, IEEE Trans. Instrum. Meas. 42; OIML R 76-1 2006, Non-automatic weighing
+    instruments, on stability of equilibrium). The candidate shifts the force by a
+    constant time, low-passes it, reads it through a transducer's resonance and leaks it;
+    the open forms sample, filter, average, hold, skew, jitter, rate-limit, transmit,
+    median, report by deadband, trigger on positions, run a belt, aerate, drop telegrams,
+    leak, creep, notch, track, snub, time a waveguide's pulse, diffuse eddy currents,
+    count a resonator, sweep a grating, restore a force by a servo, interleave converters,
+    balance a pneumatic cell or count out a dual slope. Here the filter's own time
+    constant follows the signal: the lag is set by how far the force runs from the
+    reading.
+    """
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    band = ADAPT_BAND * max(float(np.ptp(F)), 1e-12)
+    tau = float(s) * ADAPT_SAMPLES * kin.sample_dt
+    return _adaptive_lowpass(np.asarray(kin.t, float), np.asarray(F, float), tau, band,
+                             ADAPT_FAST)
+
+
+# -- drift -----------------------------------------------------------------------------------
+#: ``thermostat_cycling``'s fall of the levels per unit of the band's half-width, at
+#: strength 1 [-]; the viscous term's fall per unit of it [-]; the chiller's cycle, x the
+#: record's length [-]; the temperatures it heats and cools towards, x the band's
+#: half-width [-]
+CHILL_LEVEL, CHILL_VISC, CHILL_PERIOD, CHILL_REACH = 0.15, 0.4, 0.4, 3.0
+
+
+@njit(cache=True)
+def _thermostat(tau, period, reach):
+    """The oil's temperature [-] (over the band's half-width, from its middle) at the times
+    ``tau`` [-] (over the record's length) under an on-off chiller: off, it rises towards
+    ``reach`` and switches on at +1; on, it falls towards -``reach`` and switches off at
+    -1; from -1, off. Exponential arcs with the time constant that makes a cycle
+    ``period`` long."""
+    n = tau.size
+    out = np.empty(n)
+    tc = 0.5 * period / math.log((reach + 1.0) / (reach - 1.0))
+    T = -1.0
+    on = False
+    out[0] = T
+    for k in range(1, n):
+        target = -reach if on else reach
+        T = target + (T - target) * math.exp(-(tau[k] - tau[k - 1]) / tc)
+        if not on and T >= 1.0:
+            on = True
+        elif on and T <= -1.0:
+            on = False
+        out[k] = T
+    return out
+
+
+@on_fine_grid
+def thermostat_cycling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The machine's oil (or the coolant of its bed and ways) is held by an on-off chiller
+    with a switching band, as the simplest oil coolers are: off, the machine's heat warms
+    the oil towards its uncooled temperature until the band's top switches the chiller
+    on; on, it cools towards the chiller's until the band's bottom switches it off
+    (:func:`_thermostat`, a cycle of :data:`CHILL_PERIOD` x the record's length). The
+    temperature runs along exponential arcs, a rounded sawtooth with no trend, and the
+    oil's viscosity (exponential in the temperature over the band, Reynolds' law) and the
+    boundary film's friction follow it: the Coulomb and Stribeck levels are the base's
+    times exp(-``s`` :data:`CHILL_LEVEL` T), the viscous term exp(-``s``
+    :data:`CHILL_VISC` T), T the temperature over the band's half-width, inside the
+    bristle dynamics.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s]) and its base law.
+    s : float
+        Amplitude factor [-]: the band's width, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    On-off (relay) temperature control and its limit cycle (Seborg, Edgar, Mellichamp and
+    Doyle 2011, Process Dynamics and Control, ch. on on-off control; Astrom and Murray
+    2008, Feedback Systems, ch. on relay feedback), machine tools' oil and coolant
+    temperature (Bryan 1990, International status of thermal error research, CIRP Ann.
+    39) and the viscosity's dependence on the temperature (Reynolds 1886, On the theory of
+    lubrication, Philos. Trans. R. Soc. 177). The candidate is a trend, a saturating
+    change, a step, a cycle, a resetting change or the friction power's heat; the open
+    forms warm up, wear in, change, heat, wear, follow the humidity, grind, relubricate,
+    relax, oxidise, deplete, wear through, swell, build films, take in particles, expand,
+    shear down, heat magnets, charge, creep, loosen, dewet, channel, drain, spall,
+    evaporate, pump down, settle an additive, crystallise wax or bleed a grease's oil.
+    Here a relay's limit cycle sets the temperature: arcs between two switching points.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     t = np.asarray(kin.t, float)
     tau = (t - t[0]) / max(t[-1] - t[0], 1e-12)
-    B = _bled(tau, BLEED_TIME)
-    B = B / max(float(B[-1]), 1e-12)
-    lev = np.maximum(1.0 - float(s) * BLEED_FALL * B, 0.05)
-    return level_inside(kin, lev, 1.0 + float(s) * BLEED_VISC * B)
+    T = _thermostat(tau, CHILL_PERIOD, CHILL_REACH)
+    lev = np.exp(-float(s) * CHILL_LEVEL * T)
+    return level_inside(kin, lev, np.exp(-float(s) * CHILL_VISC * T))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: ``floating_coupling``'s two plays together at strength 1, as a share of the stroke (their
-#: full widths) [-]; the floating part's mass, x the contact's [-]; its drag in the
-#: coupling's oil, x the flanks' damping [-]
-FLOAT_CLEAR, FLOAT_MASS, FLOAT_DRAG = 0.01, 0.25, 0.05
+#: ``air_cushion_gap``'s play at strength 1, as a share of the stroke (its full width) [-];
+#: the chambers' precharge pressure times the piston's area, x the Coulomb level [-]; the
+#: chambers' ends beyond the flanks, x the play's half-width [-]; the polytropic index [-]
+CUSH_CLEAR, CUSH_PRESS, CUSH_END, CUSH_INDEX = 0.01, 0.05, 0.15, 1.4
 
 
 @njit(cache=True)
-def _flank(e, ed, half, kh, ch):
-    """The force [N] across a play of half-width ``half`` [m] at the offset ``e`` [m] and
-    its rate ``ed`` [m/s]: nothing inside it, beyond it a spring ``kh`` [N/m] and damper
-    ``ch`` [N s/m], compressive only."""
-    if e > half:
-        f = kh * (e - half) + ch * ed
-        return f if f > 0.0 else 0.0
-    if e < -half:
-        f = kh * (e + half) + ch * ed
-        return f if f < 0.0 else 0.0
-    return 0.0
+def _air_force(e, half, p, end, n):
+    """The trapped air's force [N] on the piston at its offset ``e`` [m] from the play's
+    middle (half-width ``half`` [m]): each chamber ``half`` (1 + ``end``) long at the
+    middle, precharged to the force ``p`` [N], compressed polytropically (index ``n``):
+    p ((L / (L - e))^n - (L / (L + e))^n); the offset held within the flanks' overshoot
+    (half the ends)."""
+    L = half * (1.0 + end)
+    lim = half * (1.0 + 0.5 * end)
+    ee = min(max(e, -lim), lim)
+    return p * ((L / (L - ee)) ** n - (L / (L + ee)) ** n)
 
 
 @njit(cache=True)
-def _floating_contact(h, xd, half, mf, cf, kh, ch, m, s0, s1, s2, Fc, Fs, vs, alpha,
-                      shape):
-    """LuGre friction [N] of a light contact of mass ``m`` [kg] driven by the drive
-    positions ``xd`` [m] (steps ``h`` [s]) through a floating part of mass ``mf`` [kg],
-    with a play of half-width ``half`` [m] between the drive and the part and another
-    between the part and the contact (the flanks of :func:`_flank`), the part dragged
-    towards the contact's speed by ``cf`` [N s/m]; starting at rest, both plays closed
-    towards -x. Semi-implicit Euler of both masses, the contact's bristle exact."""
-    n = xd.size
-    F = np.empty(n)
-    xf = xd[0] - half
-    x = xf - half
-    vf = 0.0
+def _cushioned_contact(h, xd, half, p, end, n_idx, kh, ch, m, s0, s1, s2, Fc, Fs, vs,
+                       alpha, shape):
+    """LuGre friction [N] of a light contact of mass ``m`` [kg] driven by the drive positions
+    ``xd`` [m] (steps ``h`` [s]) through a play of half-width ``half`` [m] closed at the
+    flanks by a spring ``kh`` [N/m] and damper ``ch`` [N s/m] (compressive only) and
+    bridged by the trapped air of :func:`_air_force`; from rest, the piston in the play's
+    middle. Semi-implicit Euler of the contact, its bristle exact."""
+    nn = xd.size
+    F = np.empty(nn)
+    x = xd[0]
     v = 0.0
     z = 0.0
-    for j in range(n):
+    for j in range(nn):
         vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
-        f1 = _flank(xd[j] - xf, vd - vf, half, kh, ch)
-        f2 = _flank(xf - x, vf - v, half, kh, ch) + cf * (vf - v)
-        F[j], v, z = _light_contact_step(v, z, f2, h, m, s0, s1, s2, Fc, Fs, vs, alpha,
+        e = xd[j] - x
+        ed = vd - v
+        fc = _air_force(e, half, p, end, n_idx)
+        if e > half:
+            f2 = kh * (e - half) + ch * ed
+            if f2 > 0.0:
+                fc += f2
+        elif e < -half:
+            f2 = kh * (e + half) + ch * ed
+            if f2 < 0.0:
+                fc += f2
+        F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha,
                                          shape)
-        vf = vf + h * (f1 - f2) / mf
-        xf = xf + h * vf
         x = x + h * v
     return F
 
 
 @on_fine_grid
-def floating_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact are joined by a floating intermediate part (an Oldham coupling's
-    centre disc, a gear coupling's floating sleeve, a spline's loose intermediate shaft)
-    with a play on each side: two plays in series, each half of ``s``^2
-    :data:`FLOAT_CLEAR` x the stroke wide. After a reversal the drive crosses its play and
-    strikes the part, which flies across the second play and strikes the contact's flank,
-    bounces and rattles between the flanks until the drive's push settles it: the contact
-    is taken up in steps of impacts rather than once (:func:`_floating_contact`; the part
-    :data:`FLOAT_MASS` x the contact's mass, dragged by the coupling's oil, the flanks as
-    the open plays'). The contact is light (its inertial force at the top acceleration
-    1 % of the Coulomb level) with the base's LuGre friction.
+def air_cushion_gap_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact are joined through a closed chamber: the drive's piston (a pin
+    with a seal, a plunger) moves in a bore of the contact's link with a play of ``s``^2
+    :data:`CUSH_CLEAR` x the stroke, and air is trapped on each side of it (a pneumatic
+    lost-motion link, an air-cushioned stop). Crossing the play the piston compresses the
+    air ahead and expands the air behind, polytropically (index :data:`CUSH_INDEX`):
+    p ((L / (L - e))^n - (L / (L + e))^n) (:func:`_air_force`; precharged to
+    :data:`CUSH_PRESS` x the Coulomb level, the chambers' ends :data:`CUSH_END` x the
+    half-play beyond the flanks), soft in the play's middle and steeply stiffer towards
+    its end, where the flanks (as the open plays') take the drive up
+    (:func:`_cushioned_contact`). The contact is light (its inertial force at the top
+    acceleration 1 % of the Coulomb level) with the base's LuGre friction.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s], x [m]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the square root of the plays' width, / its value at strength
+        Amplitude factor [-]: the square root of the play's width, / its value at strength
         1 (as the open plays').
 
     Returns
@@ -784,90 +773,97 @@ def floating_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Couplings with floating members and the rattle of free masses between clearances
-    (Piotrowski 2006, Shaft Alignment Handbook, ch. on flexible couplings; Mann 2005,
-    Flexible couplings, in Machinery's Handbook; Karagiannis and Pfeiffer 1991,
-    Theoretical and experimental investigations of gear-rattling, Nonlinear Dyn. 2). The
-    candidate holds or frees the contact across a rigid play; the open forms take it up
-    rigidly, compliantly, by impact, against a spring, eccentrically, through oil, worn,
-    with a dragging idler, biased, slack, magnetic, preloaded, through a flexspline, a
-    rope, a spider, a fluid link, a cable, a clutch, a varying mesh, a polymer gear,
-    grease, a wedge, an overlapped spool, a side loaded pin, a toggle spring, graded pins,
-    an adhesive flank or packed powder. Here a free body sits between two plays: the
-    take-up is a chain of impacts through it.
+    Pneumatic cushioning and the polytropic compression of trapped air (Beater 2007,
+    Pneumatic Drives, ch. on cylinders and end-position cushioning; Cengel and Boles 2015,
+    Thermodynamics: An Engineering Approach, ch. on polytropic processes) and lost motion
+    in mechanisms (Nordin and Gutman 2002, Controlling mechanical systems with backlash -
+    a survey, Automatica 38). The candidate holds or frees the contact across a rigid play;
+    the open forms take it up rigidly, compliantly, by impact, against a spring,
+    eccentrically, through oil, worn, with a dragging idler, biased, slack, magnetic,
+    preloaded, through a flexspline, a rope, a spider, a fluid link, a cable, a clutch, a
+    varying mesh, a polymer gear, grease, a wedge, an overlapped spool, a side loaded pin,
+    a toggle spring, graded pins, an adhesive flank, packed powder or a floating part
+    between two plays. Here a gas bridges the play: a cushion that stiffens as it closes,
+    with no leak and no drag.
     """
-    p = _lugre_params(kin, "backlash (floating_coupling)")
+    p = _lugre_params(kin, "backlash (air_cushion_gap)")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    half = 0.25 * float(s) ** 2 * FLOAT_CLEAR * float(np.ptp(kin.x))
+    half = 0.5 * float(s) ** 2 * CUSH_CLEAR * float(np.ptp(kin.x))
     m, kh, ch = _contact_constants(kin, p)
-    kh, ch = 2.0 * kh, math.sqrt(2.0) * ch           # two flanks in series: the open plays'
-    mf = FLOAT_MASS * m
-    cf = FLOAT_DRAG * ch
-    rate = max(math.sqrt(kh / mf), (ch + cf) / mf,
-               (float(p.sigma1) + float(p.sigma2) + ch + cf) / m)
+    pa = CUSH_PRESS * float(p.Fc)
+    rate = max(math.sqrt(kh / m), (float(p.sigma1) + float(p.sigma2) + ch) / m)
     h, xd, n_sub = _substeps(kin, rate)
-    Fr = _floating_contact(h, xd, half, mf, cf, kh, ch, m, float(p.sigma0),
-                           float(p.sigma1), float(p.sigma2), float(p.Fc), float(p.Fs),
-                           float(p.vs), float(p.alpha), SHAPES[p.shape])
+    Fr = _cushioned_contact(h, xd, half, pa, CUSH_END, CUSH_INDEX, kh, ch, m,
+                            float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
+                            float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
     return Fr[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: the pad's deflection at the sliding level at strength 1, x the base bristle's path at
-#: the Coulomb level (Fc / sigma0) [-]; its damping ratio with the contact's mass [-]
-MESH_PATH, MESH_DAMPING = 3.0, 0.7
+#: ``shear_melting_film``'s share of the friction the film carries, at strength 1 (at most
+#: 0.95) [-]; the solid film's path to its yield beyond the base bristle's Fs / sigma0, at
+#: strength 1, x the stroke / 3 [-]; the slip that melts it, x that path [-]; its freezing
+#: time, x the motion's time scale [-]; the melt's speed of full stress, x the top speed [-]
+MELT_SHARE, MELT_PATH, MELT_SLIP, MELT_FREEZE, MELT_SPEED = 0.3, 0.1, 3.0, 1.0, 0.05
 
 
 @njit(cache=True)
-def _mesh_force(e, ed, k1, e0, c):
-    """The wire-mesh pad's force [N] at its deflection ``e`` [m] and rate ``ed`` [m/s]: a
-    stiffening spring k1 e (1 + (e / e0)^2) (``k1`` [N/m], ``e0`` [m]: the wires closing
-    up) and the wires' rubbing as a damper ``c`` [N s/m]."""
-    r = e / e0
-    return k1 * e * (1.0 + r * r) + c * ed
-
-
-@njit(cache=True)
-def _mesh_contact(h, xd, k1, e0, c, m, s0, s1, s2, Fc, Fs, vs, alpha, shape):
-    """LuGre friction [N] of a light shoe of mass ``m`` [kg] carried by the drive positions
-    ``xd`` [m] (steps ``h`` [s]) through the pad of :func:`_mesh_force`, from rest."""
-    n = xd.size
-    F = np.empty(n)
-    x = xd[0]
-    v = 0.0
-    z = 0.0
-    for j in range(n):
-        vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
-        fc = _mesh_force(xd[j] - x, vd - v, k1, e0, c)
-        F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha,
-                                         shape)
-        x = x + h * v
-    return F
+def _film_state(t, v, path, slip, freeze):
+    """(elastic strain [m], solid share [-]) of a confined film along the velocities ``v``
+    [m/s] at the times ``t`` [s], from rest, solid and unstrained: the solid strains with
+    the motion up to its yield path ``path`` [m], beyond it slips; the slip melts it
+    (the solid share times exp(-slip / ``slip``)), and it freezes again towards all solid
+    over ``freeze`` [s]."""
+    n = v.size
+    z = np.empty(n)
+    phi = np.empty(n)
+    zz = 0.0
+    ph = 1.0
+    for k in range(n):
+        z[k] = zz
+        phi[k] = ph
+        if k + 1 < n:
+            dt = t[k + 1] - t[k]
+            zt = zz + 0.5 * (v[k] + v[k + 1]) * dt
+            sl = 0.0
+            if zt > path:
+                sl = zt - path
+                zt = path
+            elif zt < -path:
+                sl = -path - zt
+                zt = -path
+            zz = zt
+            ph = 1.0 - (1.0 - ph) * math.exp(-dt / freeze)
+            ph = ph * math.exp(-sl / slip)
+    return z, phi
 
 
 @on_fine_grid
-def wire_mesh_backing_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Part of the contact's compliance is a pad in series with it: the shoe is carried on
-    a knitted wire-mesh (metal rubber) pad, as in dampers and seals for hot or oily
-    places. In shear the pad stiffens as it deflects, its wires closing up (k1 e (1 + (e
-    / e0)^2), its deflection at the static level e0 = ``s`` :data:`MESH_PATH` x the base
-    bristle's path at the Coulomb level, Fc / sigma0), its wires' rubbing a damper
-    (damping ratio :data:`MESH_DAMPING` with the shoe; :func:`_mesh_force`). The shoe
-    (light: its inertial force at the top acceleration 1 % of the Coulomb level) slides
-    with the base's LuGre friction (:func:`_mesh_contact`): after each reversal the drive
-    first deflects the pad, softly and then stiffer, while the contact's bristle takes up
-    its own path, so the presliding is longer than the base's, soft at first and stiffer
-    as the wires close up. The force is the shoe's friction; at ``s`` = 0 the base
-    itself.
+def shear_melting_film_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Part of the contact is carried through a confined lubricant film a few molecular
+    layers thick (a boundary film of a long-chain or a near-spherical lubricant, as in
+    precision slides' and surface-force apparatus' contacts). At rest the confined film is
+    solid-like: it strains elastically, up to its yield path (the base bristle's Fs /
+    sigma0 plus ``s`` :data:`MELT_PATH` x the stroke / 3), and then slips; its slip melts
+    it (shear melting, over :data:`MELT_SLIP` x the path of slip), and at rest it freezes
+    again over a time (:data:`MELT_FREEZE` x the motion's time scale;
+    :func:`_film_state`). The solid part
+    carries its elastic stress, the molten part a liquid's, tanh(v / v_m) (v_m
+    :data:`MELT_SPEED` x the top speed), each times the Stribeck level: its share w = ``s``
+    :data:`MELT_SHARE` of the friction is w g(v) (phi z / path + (1 - phi) tanh(v / v_m)),
+    the rest the base's LuGre (its viscous term whole). After a dwell the presliding is a
+    solid's, stiff; after a quick reversal a melt's, rounded; sliding, the base's. At
+    ``s`` = 0 the base itself.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s], x [m]) and its base law (a classic LuGre).
+        The motion on the fine grid (t [s], v [m/s]) and its base law (a classic LuGre).
     s : float
-        Amplitude factor [-]: the pad's compliance, / its value at strength 1.
+        Amplitude factor [-]: the film's share of the contact (up to ``s`` = 0.95 /
+        :data:`MELT_SHARE`) and its elastic path (as the open presliding forms' path).
 
     Returns
     -------
@@ -876,34 +872,34 @@ def wire_mesh_backing_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Metal-mesh dampers and their stiffening, deflection-dependent stiffness (Al-Khateeb and
-    Vance 2001, Experimental evaluation of a metal mesh bearing damper, J. Eng. Gas
-    Turbines Power 123; Ertas 2009, Compliant hybrid journal bearings using integral wire
-    mesh dampers, J. Eng. Gas Turbines Power 131) and series compliance in presliding
-    (Al-Bender, Lampaert and Swevers 2005, The generalized Maxwell-slip model, IEEE Trans.
-    Autom. Control 50). The candidate's presliding is a generalized Maxwell-slip (GMS)
-    element set; the open forms are Maxwell-slip sets, Dahl, elasto-plastic,
-    Bliman-Sorine, Bouc-Wen, Zener junctions, Mindlin contacts, rate-and-state, Tomlinson
-    asperities, bond rupture, gouge, kinematic hardening, interlocking, capillary bridges,
-    cyclic hardening, peeling, unloading microslip, a power-law joint, junction growth,
-    avalanches, slip weakening, a microslip bar, contact renewal, grease's yield, a
-    superelastic flexure, an Eyring film, a viscoplastic layer or a poroelastic one, each
-    beside the contact. Here the compliance is in series with the whole contact, and it
-    stiffens instead of yielding.
+    Shear melting and freezing of confined films (Thompson and Robbins 1990, Origin of
+    stick-slip motion in boundary lubrication, Science 250; Yoshizawa and Israelachvili
+    1993, Fundamental mechanisms of interfacial friction. 2. Stick-slip friction of
+    spherical and chain molecules, J. Phys. Chem. 97; Persson 2000, Sliding Friction:
+    Physical Principles and Applications, ch. on boundary lubrication). The candidate's
+    presliding is a generalized Maxwell-slip (GMS) element set; the open forms are
+    Maxwell-slip sets, Dahl, elasto-plastic, Bliman-Sorine, Bouc-Wen, Zener junctions,
+    Mindlin contacts, rate-and-state, Tomlinson asperities, bond rupture, gouge, kinematic
+    hardening, interlocking, capillary bridges, cyclic hardening, peeling, unloading
+    microslip, a power-law joint, junction growth, avalanches, slip weakening, a microslip
+    bar, contact renewal, grease's yield, a superelastic flexure, an Eyring film, a
+    viscoplastic layer or a poroelastic one, each beside the contact, or a stiffening wire
+    mesh in series with it. Here the film changes phase: solid after a dwell, melted by
+    its own slip.
     """
-    p = _lugre_params(kin, "gms (wire_mesh_backing)")
+    _lugre_params(kin, "gms (shear_melting_film)")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    e_s = max(float(s) * MESH_PATH * float(p.Fc) / float(p.sigma0), 1e-15)
-    k1 = 0.5 * float(p.Fs) / e_s                      # k1 e_s (1 + 1) = Fs
-    m = _contact_constants(kin, p)[0]
-    kmax = k1 * (1.0 + 3.0 * 4.0)                     # its stiffness at twice e_s
-    c = 2.0 * MESH_DAMPING * math.sqrt(k1 * m)
-    rate = max(math.sqrt(kmax / m), (float(p.sigma1) + float(p.sigma2) + c) / m,
-               math.sqrt(float(p.sigma0) / m))
-    h, xd, n_sub = _substeps(kin, rate)
-    Fr = _mesh_contact(h, xd, k1, e_s, c, m, float(p.sigma0), float(p.sigma1),
-                       float(p.sigma2), float(p.Fc), float(p.Fs), float(p.vs),
-                       float(p.alpha), SHAPES[p.shape])
-    return Fr[::n_sub]
+    w = min(float(s) * MELT_SHARE, 0.95)
+    t = np.asarray(kin.t, float)
+    v = np.asarray(kin.v, float)
+    e0, extra = _presliding_path(kin, s, MELT_PATH)
+    path = e0 + extra
+    z, phi = _film_state(t, v, path, MELT_SLIP * path,
+                         MELT_FREEZE * max(_motion_time(kin), 1e-12))
+    vm = MELT_SPEED * max(kin.scales["v99"], 1e-12)
+    law = kin.base
+    film = law.g(v) * (phi * z / path + (1.0 - phi) * np.tanh(v / vm))
+    rest = lugre_with_curve(kin, law.g, np.full(v.size, 1.0 - w), np.ones(v.size))
+    return rest + w * film

@@ -452,12 +452,15 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         if not np.all(np.isfinite(r)):
             return np.full(r.size + n_pen, 1e3)
         if n_pen:
-            # an effect's prior on its own parameters (a smoothness of a map's knots), as
-            # rows weighted by the record's length: it counts as a misfit of that size on
-            # every sample
-            r = np.concatenate([r] + [np.sqrt(r.size) * np.asarray(pen(extras, ctx), float)
-                                      for pen in penalties])
+            r = np.concatenate([r, prior_rows(extras)])
         return r
+
+    def prior_rows(extras):
+        # an effect's prior on its own parameters (a smoothness of a map's knots), as rows
+        # weighted by the record's length: it counts as a misfit of that size on every
+        # sample
+        return np.concatenate([np.sqrt(fit.F.size) * np.asarray(pen(extras, ctx), float)
+                               for pen in penalties])
 
     def gridded(u0):
         # a time shift or a filter time constant is non-convex (or flat at 0): start from
@@ -489,9 +492,21 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
         # to 1e-2 in gap_closed with the rounding of its columns); nor for an elastic law,
         # whose spring part moves with its parameters under a friction-level effect
         def jac(u):
-            return _stacked_jacobian(u, nb, lambda uj: law_force(unpack(uj)[0])[0], effects,
-                                     unpack(u)[1], lambda uj: unpack(uj)[1],
-                                     [e.name for e in ex], hi - lo, fit, ctx, sd, residual)
+            J = _stacked_jacobian(u, nb, lambda uj: law_force(unpack(uj)[0])[0], effects,
+                                  unpack(u)[1], lambda uj: unpack(uj)[1],
+                                  [e.name for e in ex], hi - lo, fit, ctx, sd, residual)
+            if not n_pen or J.shape[0] == n_pen + fit.F.size:
+                return J
+            # a prior's rows (a drag's knots beside an effect with exact columns): they
+            # read the extras alone, so their differences cost no simulation
+            h, dx = _forward_steps(u, DIFF_STEP)
+            p0 = prior_rows(unpack(u)[1])
+            P = np.zeros((p0.size, u.size))
+            for j in range(nb, u.size):
+                uj = u.copy()
+                uj[j] += h[j]
+                P[:, j] = (prior_rows(unpack(uj)[1]) - p0) / dx[j]
+            return np.vstack([J, P])
 
     # the relative fall of the cost at which a fit stops (scipy's ftol; the strictest of
     # the effects', each its ``FTOL`` or :data:`FTOL`)
@@ -684,8 +699,10 @@ def _stacked_jacobian(u, nb, law_at, effects, extras, extras_at, ex_names, ex_sp
     J = D / -sd
     if np.all(np.isfinite(F)) and np.all(np.isfinite(J)):
         return J
-    # a trial the law or an effect cannot evaluate (NaN cost): scipy's columns
+    # a trial the law or an effect cannot evaluate (NaN cost): scipy's columns (a prior's
+    # rows included)
     r0 = residual(u)
+    J = np.empty((r0.size, u.size))
     for j in range(u.size):
         uj = u.copy()
         uj[j] += h[j]

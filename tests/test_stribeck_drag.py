@@ -156,3 +156,24 @@ def test_the_diagnosis_names_the_drag_and_reports_its_knots():
     assert eff["stribeck_shape"]["excess_closed"] > 0.7
     extras = rep["effect_details"]["stribeck_shape"]["extras"]
     assert sorted(extras) == sorted(StribeckDrag("s", "")._names())
+
+
+def test_the_drag_stacks_beside_an_effect_with_exact_columns(monkeypatch):
+    """The drag's curvature prior adds rows to the joint fit's residual; beside an effect
+    with exact derivative columns (``position``) the structured Jacobian carries them too
+    (it raised a shape error: 980 rows for a residual of 987), and the fit ends where the
+    fit with scipy's own differences ends."""
+    import diagnosis.composite as composite
+    law = _law()
+    fit = _record(_drag_truth)
+    ctx = make_context(fit)
+    spec = CANDIDATES["stribeck_shape"].specialise(law)
+    lv, nv, drag = law_variants(spec, law, NAMES, ctx)[1]
+    assert isinstance(drag, StribeckDrag)
+    pos = CANDIDATES["position"].specialise(law)
+    assert pos.exact_extras
+    comp, cost = fit_composite(lv, nv, [drag, pos], fit, ctx)
+    monkeypatch.setattr(composite, "STRUCTURED_JACOBIAN", False)
+    comp_ref, cost_ref = fit_composite(lv, nv, [drag, pos], fit, ctx)
+    assert np.isfinite(cost) and cost == pytest.approx(cost_ref, rel=0.02)
+    assert cost < 0.0055          # the film and the contact to the noise (0.5 %)

@@ -707,8 +707,10 @@ def main(argv=None):
                     help="JSON-lines file of finished cases; run again with it to resume")
     ap.add_argument("--sample", type=int, default=None,
                     help="a uniform random SAMPLE of the grid's cases only (the same cases "
-                         "for the same --sample-seed: two versions of the code compared "
-                         "case by case)")
+                         "for the same grid and --sample-seed: two versions of the code "
+                         "compared case by case; a family added to the open grid draws "
+                         "other cases, so a comparison across one reruns the checkpoint's "
+                         "keys)")
     ap.add_argument("--sample-seed", type=int, default=0)
     ap.add_argument("--json", default=None)
     args = ap.parse_args(argv)

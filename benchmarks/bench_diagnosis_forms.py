@@ -198,6 +198,20 @@ names 36 -> 40 (six other-effect truths now ``gms``). The XML-350 on cc14a5a (se
 seen10 in the grid): 261/522 (50.0 %; 53.8 % of the detectable, 36 delays below a sample),
 wrong names 38 (gms -> acceleration 17); on session 15's forms 230/442 against its 217/442.
 
+Session 32 (2026-12-01; ``--sample 272 --sample-seed 1`` of the open grid to seen26, 271
+cases and 1 skipped, paired by key; 2 workers): the code of 556a306 145 right (53.5 %; 56.2 %
+of the detectable), wrong names 29, mean |shrink error| 0.290; ``position`` with a viscous
+drag along the stroke (5972ebe) 146 (53.9 %), wrong names 29, 0.289: one verdict changed (an
+XML-350 air-bearing pad, ``unexplained`` -> ``position``). seen26's air-bearing pads (16
+cases) on 5972ebe: 14 named (the sealed run on 00dfbb5: 4). 500 clean records on 5972ebe: 0
+named (246 ``none``, 254 ``unexplained``). Tried on the same 271 and not kept: a Huber loss
+in the joint fits at 3 x the record's noise (the damping rig's base predicts its clean
+held-out sinusoid at 1.1 x the true law's NRMSE instead of 1.5 x: four samples at the
+triangle's reversals carry 70 % of the true law's squared misfit on its measured
+records), 146 -> 145 right, wrong names 29 -> 32; the acceleration candidate's lag started
+also at 0.1, 0.2 and 0.4 x the motion's time scale, no verdict of the 31 acceleration cases
+changed.
+
 Sealed family of session 31's writing (``--sealed`` then, written by another hand without
 running the diagnosis on it, run once at the end of session 32 on the code of 5972ebe):
 52.8 % top-1;

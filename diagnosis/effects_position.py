@@ -172,7 +172,9 @@ class Position(Candidate):
         stroke between neighbours), the defect's centre and width on a grid, each by least
         squares on what the parts before it leave, with the changes the base's own
         parameters can make (``basis``, :func:`diagnosis.composite.base_basis`) fitted
-        beside every part."""
+        beside every part. The drag along the stroke (:attr:`VISC_NAMES`) joins the last
+        least squares only where it leaves less than :attr:`VISC_GAIN` of the squared
+        residual without it; otherwise it is pinned at 0 (:class:`Fixed`)."""
         span = self._span(ctx)
         ex = {e.name: e for e in self.extras(ctx)}
         sub = _subsample(fit.t.size)

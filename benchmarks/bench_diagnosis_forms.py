@@ -43,7 +43,8 @@ seen26 and seen27.
 
     python benchmarks/bench_diagnosis_forms.py [--sealed] [--workers N] [--quick]
                                                [--full-protocols] [--checkpoint FILE]
-                                               [--sample N [--sample-seed S]] [--json OUT]
+                                               [--sample N [--sample-seed S]] [--keys FILE]
+                                               [--json OUT]
 
 Figures: top-1 over all cases and over the detectable ones (an oracle that knows the truth
 can tell it from the base fit), clean and out-of-library cases, the mean |shrink error|
@@ -706,6 +707,18 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 
 from diagnosis.benchmark import PLANT_NAMES, format_summary, run_benchmark  # noqa: E402
+from diagnosis.benchmark.runner import read_keys  # noqa: E402
+
+
+def _run(args, strengths, noises, family, keys, kw):
+    """The benchmark as the command line asks for it (:func:`run_benchmark`)."""
+    return run_benchmark(strengths=strengths, noises=noises, plants=args.plants.split(","),
+                         quick=not args.full_protocols, workers=args.workers, forms=family,
+                         measured=True,
+                         progress=lambda n, info: print(info, flush=True),
+                         checkpoint=args.checkpoint, sample=args.sample,
+                         sample_seed=args.sample_seed,
+                         keys=keys, **kw)
 
 
 def main(argv=None):
@@ -727,8 +740,12 @@ def main(argv=None):
                          "for the same grid and --sample-seed: two versions of the code "
                          "compared case by case; a family added to the open grid draws "
                          "other cases, so a comparison across one reruns the checkpoint's "
-                         "keys)")
+                         "keys, --keys)")
     ap.add_argument("--sample-seed", type=int, default=0)
+    ap.add_argument("--keys", default=None,
+                    help="run only the cases whose keys this file holds (a checkpoint of "
+                         "an earlier run, or one key a line): the same cases again after "
+                         "a family joined the grid")
     ap.add_argument("--json", default=None)
     args = ap.parse_args(argv)
     strengths = (1.0,) if args.quick else (0.5, 1.0)
@@ -736,12 +753,16 @@ def main(argv=None):
     kw = {} if args.effects is None else {"effects": tuple(args.effects.split(","))}
     family = "sealed" if args.sealed else "all"
     t0 = time.perf_counter()
-    res = run_benchmark(strengths=strengths, noises=noises, plants=args.plants.split(","),
-                        quick=not args.full_protocols, workers=args.workers, forms=family,
-                        measured=True,
-                        progress=lambda n, info: print(info, flush=True),
-                        checkpoint=args.checkpoint, sample=args.sample,
-                        sample_seed=args.sample_seed, **kw)
+    try:
+        keys = None if args.keys is None else read_keys(args.keys)
+    except OSError as exc:
+        ap.error(f"--keys: {exc}")
+    try:
+        res = _run(args, strengths, noises, family, keys, kw)
+    except ValueError as exc:
+        if not str(exc).startswith(("keys:", "sample")):
+            raise
+        ap.error(str(exc))      # a bad --keys or --sample: said in one line
     wall = time.perf_counter() - t0
     print(format_summary(res, f"{family} truth forms, measured motion: strengths {strengths}, "
                               f"noise {noises} x std(F), {len(res['rows'])} cases, "

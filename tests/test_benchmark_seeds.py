@@ -54,3 +54,23 @@ def test_a_sample_of_the_grid_is_the_same_cases_for_the_same_seed():
     for bad in (0, -2, 2.5, True):
         with pytest.raises(ValueError, match="sample"):
             sample_jobs(jobs, bad)
+
+
+def test_a_checkpoints_keys_select_the_same_cases(tmp_path):
+    import json
+    from diagnosis.benchmark.runner import _job_key, read_keys, select_jobs
+    jobs = _grid(["delay"], plants=("valve",))
+    picked = [jobs[1], jobs[4]]
+    ck = tmp_path / "run.jsonl"
+    ck.write_text("".join(json.dumps({"key": _job_key(j), "verdict": "x"}) + "\n"
+                          for j in picked) + '{"key": "cut wh')   # a killed run's last line
+    keys = read_keys(ck)
+    assert keys == [_job_key(j) for j in picked]
+    assert select_jobs(jobs, keys) == picked
+    plain = tmp_path / "keys.txt"
+    plain.write_text("\n".join(reversed(keys)) + "\n\n")
+    assert select_jobs(jobs, read_keys(plain)) == picked       # the grid's order
+    with pytest.raises(ValueError, match="1 of 2 keys name no case"):
+        select_jobs(jobs, [keys[0], "valve|delay|9.0|0.01|1|1|0|nope|0"])
+    with pytest.raises(ValueError, match="no case key"):
+        select_jobs(jobs, [])

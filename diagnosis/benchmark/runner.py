@@ -200,11 +200,54 @@ def sample_jobs(jobs, n, seed=0) -> list:
     return [jobs[i] for i in sorted(pick)]
 
 
+def select_jobs(jobs, keys) -> list:
+    """The ``jobs`` whose keys (:func:`_job_key`) are in ``keys``, in the grid's order.
+
+    Raises
+    ------
+    ValueError
+        A key names no case of the grid (another grid's options, or a typing error), or
+        ``keys`` is empty.
+    """
+    want = set(keys)
+    if not want:
+        raise ValueError("keys: no case key given")
+    out = [j for j in jobs if _job_key(j) in want]
+    missing = want - {_job_key(j) for j in out}
+    if missing:
+        raise ValueError(f"keys: {len(missing)} of {len(want)} keys name no case of this "
+                         f"grid (its plants, effects, strengths, noises and protocols), "
+                         f"e.g. {sorted(missing)[0]!r}")
+    return out
+
+
+def read_keys(path) -> list:
+    """Case keys from ``path``: a checkpoint (JSON lines with a ``key``) or one key a
+    line; blank lines and a checkpoint's truncated last line are skipped."""
+    import json
+    out = []
+    with open(path) as fh:
+        for line in fh:
+            line = line.strip()
+            if not line:
+                continue
+            if line.startswith("{"):
+                try:
+                    row = json.loads(line)
+                except ValueError:
+                    continue            # a run killed while writing its last line
+                if "key" in row:
+                    out.append(row["key"])
+            else:
+                out.append(line)
+    return out
+
+
 def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed=0,
                   progress=None, plants=None, quick: bool = False, workers: int = 1,
                   clean_repeats: int = 1, checkpoint=None, forms: str = "first",
                   measured: bool = False, sample: int | None = None,
-                  sample_seed: int = 0) -> dict:
+                  sample_seed: int = 0, keys=None) -> dict:
     """Run every case and score it.
 
     Parameters
@@ -246,6 +289,9 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
         two versions of the code are compared case by case).
     sample_seed : int
         Seed of the draw.
+    keys : iterable of str, optional
+        Run only the grid's cases with these job keys (:func:`select_jobs`: a checkpoint's
+        cases again, after a family joined the grid and changed what ``sample`` draws).
 
     Returns
     -------
@@ -268,6 +314,8 @@ def run_benchmark(effects=CASES, strengths=(0.5, 1.0), noises=(0.01, 0.03), seed
                      quick, seed)
     if sample is not None:
         jobs = sample_jobs(jobs, sample, sample_seed)
+    if keys is not None:
+        jobs = select_jobs(jobs, keys)
     say = status_lines(progress)
     rows, skipped = [], []
     keys = [_job_key(j) for j in jobs]

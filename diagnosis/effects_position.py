@@ -211,13 +211,14 @@ class Position(Candidate):
         e0, allc = _lsq(_with(HPG, B), rr)
         V = np.column_stack(self._visc(x, fit.v[sub], ctx))
         e1, allv = _lsq(_with(np.column_stack([HPG, V]), B), rr)
+        nh = HPG.shape[1]
+        # the drag along the stroke only where it pays for itself (its start beside the
+        # others); else pinned off
         drag = e1 < self.VISC_GAIN * e0
         if drag:
-            # the drag along the stroke pays for itself: its start beside the others
             allc = allv
-        nv = len(self.VISC_NAMES)
-        cv = allc[HPG.shape[1]:HPG.shape[1] + nv] if drag else None
-        allc = allc[:HPG.shape[1]]
+        visc = dict(zip(self.VISC_NAMES, allv[nh:nh + len(self.VISC_NAMES)]))
+        allc = allc[:nh]
         nk, nq = len(POSITION_NAMES), len(self.POLY_NAMES)
         out = dict(zip(POSITION_NAMES, allc[:nk]))
         out.update(zip(("p_c1", "p_s1", "p_c2", "p_s2") + self.ADD_NAMES,
@@ -225,7 +226,9 @@ class Position(Candidate):
         out.update(zip(self.POLY_NAMES, allc[-nq:]))
         out.update(lambda_x=lam, d_x=allc[-1 - nq], x_d=xd, w_d=w)
         ex.update({e.name: e for e in self.force_extras(ctx)})
+        if drag:
+            out.update(visc)
         out = {k: float(np.clip(v, ex[k].lo, ex[k].hi)) for k, v in out.items()}
-        out.update({n: (float(np.clip(c, ex[n].lo, ex[n].hi)) if drag else Fixed(0.0))
-                    for n, c in zip(self.VISC_NAMES, cv if drag else [0.0] * nv)})
+        if not drag:
+            out.update({n: Fixed(0.0) for n in self.VISC_NAMES})
         return out

@@ -86,16 +86,23 @@ from .lugre import _em1
 from .shapes import SHAPES, stribeck_g, stribeck_g_np
 from .steps import split_step
 
-__all__ = ["GMSParams", "GMS", "N_ELEMENTS", "gms_run", "element_stiffness"]
+__all__ = ["GMSParams", "GMS", "N_ELEMENTS", "ELEMENTS", "gms_run", "element_stiffness"]
 
 #: number of slip-blocks (fixed: a native FMU holds at most four continuous states)
 N_ELEMENTS = 4
+#: what each element is: a Maxwell-slip block (``slip``: sticks, then slips attracted to
+#: its share of the curve at the rate C) or a LuGre bristle (``bristle``: dz/dt = v -
+#: |v| z / d, d its break-away deflection; C unused). Four equal bristles (spread and tilt
+#: 1) are exactly the LuGre law, so a base whose damped bristle carries its reversals
+#: (sigma1 dz/dt, up to 2 sigma1 |v| right after one, where a sticking block gives sigma1
+#: |v|) is nested: a presliding beside such a contact is reachable from it
+ELEMENTS = {"slip": 0, "bristle": 1}
 
 
 @dataclass(frozen=True)
 class GMSParams(FrictionParams):
     """Parameters of the GMS law (defaults: a small precision-stage contact like LuGre's)."""
-    OPTIONS: ClassVar[dict] = {"shape": SHAPES}
+    OPTIONS: ClassVar[dict] = {"shape": SHAPES, "element": ELEMENTS}
     sigma0: float = param(1e5, "N/m", "total stiffness of the slip-blocks, the presliding "
                           "stiffness right after a reversal", lower=0, lower_open=True,
                           upper=1e9, search=(1e3, 1e7), log=True)
@@ -122,15 +129,19 @@ class GMSParams(FrictionParams):
     tilt: float = param(1.0, "1", "break-away share of the softest slip-block over the "
                         "stiffest's (geometric; 1: equal shares)", lower=1e-4, upper=1e4,
                         search=(1e-2, 1e2), log=True)
+    element: str = "slip"
 
     def _check_relations(self):
         if self.shape not in SHAPES:
             raise ParameterError(f"shape = {self.shape!r}: must be one of {sorted(SHAPES)}")
+        if self.element not in ELEMENTS:
+            raise ParameterError(f"element = {self.element!r}: must be one of "
+                                 f"{sorted(ELEMENTS)}")
 
 
 _LAYOUT = ("sigma0", "spread", "C", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape",
-           "sigma1", "tilt")
-S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1, TILT = range(len(_LAYOUT))
+           "sigma1", "tilt", "element")
+S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1, TILT, ELEM = range(len(_LAYOUT))
 
 
 @njit(cache=True, inline="always")
@@ -160,10 +171,11 @@ def element_shares(tilt, w):
 
 
 @njit(cache=True, inline="always")
-def _block_piece(z, vp, T, d, lam):
+def _block_piece(z, vp, T, d, lam, bristle):
     """Exact update of one block over a piece of duration T [s] at the frozen velocity
     ``vp`` [m/s], break-away deflection ``d`` [m] and attraction rate ``lam`` = C/g [1/s]:
-    du/dt = min(|vp|, lam (d - u)) for u = sgn(vp) z."""
+    du/dt = min(|vp|, lam (d - u)) for u = sgn(vp) z; a ``bristle`` element (:data:`ELEMENTS`)
+    du/dt = |vp| (1 - u / d), LuGre's exact exponential."""
     if vp > 0.0:
         s = 1.0
     elif vp < 0.0:
@@ -171,6 +183,8 @@ def _block_piece(z, vp, T, d, lam):
     else:
         return z
     u = s * z
+    if bristle:
+        return s * (u + (u - d) * _em1(abs(vp) * T / d))
     sp = s * vp
     ustar = d - sp / lam  # where the attraction becomes the slower rate
     if u < ustar:
@@ -186,9 +200,11 @@ def _block_piece(z, vp, T, d, lam):
 
 
 @njit(cache=True, inline="always")
-def _block_rate(z, v, d, lam):
+def _block_rate(z, v, d, lam, bristle):
     """dz/dt [m/s] of one block at velocity ``v``: sgn(v) min(|v|, lam (d - sgn(v) z)),
-    with d = w g / k [m] and lam = C / g [1/s]."""
+    with d = w g / k [m] and lam = C / g [1/s]; a ``bristle`` element v - |v| z / d."""
+    if bristle:
+        return v - abs(v) * z / d
     if v > 0.0:
         r = lam * (d - z)
         return v if v < r else r
@@ -218,7 +234,7 @@ def _start_force(u, d, k, sgn, moving, damp, v0, lam, z):
     for i in range(N_ELEMENTS):
         f += k[i] * z[i]
         if damp != 0.0:
-            r += k[i] * _block_rate(z[i], v0, d[i], lam)
+            r += k[i] * _block_rate(z[i], v0, d[i], lam, False)
     return (f + damp * r) * sgn
 
 
@@ -244,7 +260,7 @@ def _start_bisect(d, k, sgn, moving, damp, v0, lam, lo, hi, want):
 
 
 @njit(cache=True, inline="always")
-def _damping_rate(z, v, k, wk, C, fc, fs, vs, alpha, shape):
+def _damping_rate(z, v, k, wk, C, fc, fs, vs, alpha, shape, bristle):
     """sum_i (k_i / sigma0) dz_i/dt [m/s]: the blocks' deflection rate the micro-damping
     sigma1 multiplies (v while every block sticks, 0 once they slip at a steady speed)."""
     if v == 0.0:
@@ -255,7 +271,7 @@ def _damping_rate(z, v, k, wk, C, fc, fs, vs, alpha, shape):
     r = 0.0
     for i in range(N_ELEMENTS):
         tot += k[i]
-        r += k[i] * _block_rate(z[i], v, g * wk[i], lam)
+        r += k[i] * _block_rate(z[i], v, g * wk[i], lam, bristle)
     return r / tot
 
 
@@ -274,6 +290,7 @@ def gms_run(t, v, th, method, z0, F, Z):
     b = th[B]
     s1 = th[S1]
     fc, fs, vs, alpha, shape = th[FC], th[FS], th[VS], th[ALPHA], th[SHAPE]
+    bristle = th[ELEM] == 1.0
     z = np.empty(N_ELEMENTS)
     for i in range(N_ELEMENTS):
         z[i] = z0[i]
@@ -284,7 +301,7 @@ def gms_run(t, v, th, method, z0, F, Z):
             f += k[i] * z[i]
             Z[j, i] = z[i]
         if s1 != 0.0:
-            f += s1 * _damping_rate(z, vj, k, wk, C, fc, fs, vs, alpha, shape)
+            f += s1 * _damping_rate(z, vj, k, wk, C, fc, fs, vs, alpha, shape, bristle)
         F[j] = f + s2 * vj + b
         if j + 1 < n:
             h = t[j + 1] - t[j]
@@ -292,7 +309,7 @@ def gms_run(t, v, th, method, z0, F, Z):
                 g = stribeck_g(vj, fc, fs, vs, alpha, shape)
                 lam = C / g
                 for i in range(N_ELEMENTS):
-                    z[i] = z[i] + h * _block_rate(z[i], vj, g * wk[i], lam)
+                    z[i] = z[i] + h * _block_rate(z[i], vj, g * wk[i], lam, bristle)
             else:
                 T1, a1, b1, T2, a2, b2 = split_step(vj, v[j + 1], h)
                 for piece in range(2):
@@ -305,7 +322,7 @@ def gms_run(t, v, th, method, z0, F, Z):
                     g = stribeck_g(vp, fc, fs, vs, alpha, shape)
                     lam = C / g
                     for i in range(N_ELEMENTS):
-                        z[i] = _block_piece(z[i], vp, T, g * wk[i], lam)
+                        z[i] = _block_piece(z[i], vp, T, g * wk[i], lam, bristle)
 
 
 @njit(cache=True, nogil=True)
@@ -348,7 +365,8 @@ class GMS(FrictionModel):
 
     def _pack(self, p: GMSParams) -> np.ndarray:
         return np.array([p.sigma0, p.spread, p.C, p.sigma2, p.Fc, p.Fs, p.vs, p.alpha, p.b,
-                         SHAPES[p.shape], p.sigma1, p.tilt], dtype=np.float64)
+                         SHAPES[p.shape], p.sigma1, p.tilt, ELEMENTS[p.element]],
+                        dtype=np.float64)
 
     # -- pieces of the law --------------------------------------------------------------
     def element_shares(self) -> np.ndarray:
@@ -447,11 +465,12 @@ class GMS(FrictionModel):
         w = self.element_shares()
         lam = p.C / g
         d = [g * (w[i] / k[i]) for i in range(N_ELEMENTS)]
+        bristle = p.element == "bristle"
 
         def rates(state):
             out = np.empty(N_ELEMENTS)
             for i in range(N_ELEMENTS):
-                out[i] = _block_rate(float(state[i]), v, d[i], lam)
+                out[i] = _block_rate(float(state[i]), v, d[i], lam, bristle)
             return out
         return rates
 
@@ -498,6 +517,16 @@ class GMS(FrictionModel):
         p = self.params
         v0 = float(v[0])
         k = self.element_stiffness()
+        if p.element == "bristle":
+            # LuGre's rule (:meth:`FrictionModel._start_from`) for every bristle alike: each
+            # at the same share of its largest deflection, the share at which the force
+            # (affine in it) is F[0], within +-1 (four equal bristles: the LuGre start)
+            top = max(p.Fc, p.Fs) * (self.element_shares() / k)
+            f0 = self.force(np.zeros(N_ELEMENTS), v0)
+            f1 = self.force(top, v0)
+            if not (math.isfinite(f0) and math.isfinite(f1)) or f1 == f0:
+                return s
+            return min(max((F0 - f0) / (f1 - f0), -1.0), 1.0) * top
         target = F0 - p.sigma2 * v0 - p.b
         if v0 == 0.0:
             d = p.Fs * (self.element_shares() / k)

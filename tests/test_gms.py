@@ -283,3 +283,92 @@ def test_tilted_shares_keep_the_steady_curve_and_move_the_presliding():
     bad = dict(kw, tilt=0.0)
     with pytest.raises(ParameterError, match="tilt"):
         make_model("gms", **bad)
+
+
+# -- bristle elements (friction.gms.ELEMENTS) -------------------------------------------------
+#: a heavily damped contact like the damping rig's (its base LuGre values)
+RIG = dict(sigma0=4458.0, sigma1=138.8, sigma2=48.5, Fc=5.27, Fs=34.4, vs=0.021, alpha=2.0)
+
+
+def _rig_motion():
+    """Sinusoids with a square wave on top: velocity jumps through zero inside samples."""
+    t = np.arange(0.0, 2.0, 1e-3)
+    v = 0.05 * np.sin(2 * np.pi * 1.3 * t) + 0.02 * np.sign(np.sin(2 * np.pi * 0.7 * t))
+    return t, v
+
+
+def test_four_equal_bristles_are_the_lugre_law():
+    """element = "bristle" with spread and tilt 1: four equal LuGre bristles, the LuGre law
+    itself (its start from a measured first force included); only the steps that straddle a
+    reversal differ (cut at the reversal here, LuGre's midpoint speed there), and what they
+    leave decays: < 2e-5 of the force's spread."""
+    t, v = _rig_motion()
+    lugre = make_model("lugre", **RIG)
+    four = make_model("gms", spread=1.0, tilt=1.0, element="bristle", C=1.0, **RIG)
+    F0 = np.full(t.size, 3.0)
+    s_l = lugre.record_start_state(t, v, F=F0)
+    s_g = four.record_start_state(t, v, F=F0)
+    np.testing.assert_allclose(s_g, np.full(N_ELEMENTS, s_l[0]), rtol=1e-12)
+    Fl, Fg = lugre.simulate(t, v, state0=s_l), four.simulate(t, v, state0=s_g)
+    assert Fg[0] == pytest.approx(3.0, rel=1e-12)
+    first = int(np.flatnonzero(np.sign(v[1:]) != np.sign(v[:-1]))[0]) + 1
+    np.testing.assert_allclose(Fg[:first], Fl[:first], rtol=1e-12, atol=1e-12 * np.ptp(Fl))
+    assert np.max(np.abs(Fg - Fl)) < 2e-5 * np.ptp(Fl)
+    # slip-blocks with the same values cannot draw it: sticking blocks give sigma1 |v|
+    # right after a reversal where the bristle gives up to 2 sigma1 |v|
+    slip = four.with_values(element="slip", C=1e6)
+    Fs = slip.simulate(t, v, state0=slip.record_start_state(t, v, F=F0))
+    assert np.sqrt(np.mean((Fs - Fl) ** 2)) > 50 * np.sqrt(np.mean((Fg - Fl) ** 2))
+
+
+def test_bristle_virgin_curve_is_a_sum_of_exponentials():
+    """From rest without history at a constant level (Fc = Fs), each bristle approaches its
+    break-away deflection d_i exponentially over the travel: F(x) = sum_i k_i d_i
+    (1 - exp(-x / d_i)); the attraction rate C plays no part."""
+    kw = dict(sigma0=1e5, spread=100.0, tilt=0.3, Fc=1.0, Fs=1.0, sigma2=0.0,
+              element="bristle")
+    m = make_model("gms", C=1e4, **kw)
+    V = 1e-4
+    t = np.linspace(0.0, 0.5, 5001)
+    F = m.simulate(t, np.full(t.size, V))
+    x = V * t
+    k = m.element_stiffness()
+    d = 1.0 * m.element_shares() / k
+    want = np.sum(k * d * (1.0 - np.exp(-x[:, None] / d)), axis=1)
+    np.testing.assert_allclose(F, want, rtol=1e-9, atol=1e-12)
+    np.testing.assert_array_equal(F, make_model("gms", C=3.0, **kw).simulate(t, np.full(t.size, V)))
+
+
+def test_bristle_kernel_converges_to_the_continuous_time_reference():
+    """The bristle variant's kernel against simulate_prescribed (Radau, rtol 1e-10) with
+    damping, unequal shares and reversals: second order in the step."""
+    m = make_model("gms", element="bristle", spread=30.0, tilt=0.3, sigma1=20.0)
+    T = 0.1
+    tr = np.linspace(0.0, T, 201)
+    vr = 3e-3 * np.sin(2 * np.pi * 20 * tr) + 1e-3 * np.sin(2 * np.pi * 73 * tr)
+    Fr = simulate_prescribed(m, tr, vr, rtol=1e-10, atol=1e-10 * m.state_scales())
+    errs = []
+    for n in (201, 801, 3201):
+        t = np.linspace(0.0, T, n)
+        F = m.simulate(t, np.interp(t, tr, vr))[::(n - 1) // 200]
+        errs.append(np.max(np.abs(F - Fr)))
+    assert errs[-1] < 1e-4 * np.max(np.abs(Fr))
+    assert errs[0] / errs[1] > 6 and errs[1] / errs[2] > 6, errs
+
+
+def test_bristle_exact_update_is_stable_at_any_step():
+    """Stiff bristles (sigma0 1e7 N/m) at steps up to 0.1 s: the deflections stay within
+    their saturation and the force within the curve's reach; explicit Euler blows up."""
+    m = make_model("gms", element="bristle", sigma0=1e7, spread=10.0, sigma1=0.0)
+    t = np.arange(0.0, 5.0, 0.1)
+    v = 0.05 * np.sin(2 * np.pi * 0.3 * t)
+    F, S = m.simulate(t, v, return_state=True)
+    assert np.all(np.abs(S) <= m.state_scales() * (1 + 1e-12))
+    assert np.all(np.abs(F) <= max(m.params.Fc, m.params.Fs) + m.params.sigma2 * 0.05 + 1e-9)
+    Fe = m.simulate(t, v, method="euler")
+    assert not np.all(np.isfinite(Fe)) or np.max(np.abs(Fe)) > 1e3 * np.max(np.abs(F))
+
+
+def test_unknown_element_is_refused_by_name():
+    with pytest.raises(ParameterError, match=r"element = 'brush'.*bristle.*slip"):
+        make_model("gms", element="brush")

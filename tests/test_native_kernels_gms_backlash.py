@@ -193,6 +193,8 @@ def test_reversal_inside_a_step_engagement_and_the_limits_bit_for_bit():
     cases_ = [GMS(), GMS(GMS.Params(C=1e12, spread=1.0)), GMS(GMS.Params(C=1.0, alpha=0.5)),
               # unequal break-away shares (the softest block a twentieth of the stiffest's)
               GMS(GMS.Params(spread=1e4, tilt=0.05, sigma1=30.0)),
+              # LuGre bristles in place of slip-blocks, damped, unequal shares
+              GMS(GMS.Params(spread=30.0, tilt=0.3, sigma1=30.0, element="bristle")),
               BacklashLuGre(), BacklashLuGre(BacklashLuGre.Params(delta=0.0)),
               BacklashLuGre(BacklashLuGre.Params(delta=3e-6, gap="free", Fc_neg=2.0)),
               # what bridges the play: a bias, an anti-backlash spring and a drag

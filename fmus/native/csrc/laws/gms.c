@@ -6,6 +6,7 @@
  * softest/stiffest): break-away deflection d_i = w_i g / k_i. With s = sgn(v), u_i = s z_i and lam = C / g:
  *
  *   du_i/dt = min(|v|, lam (d_i - u_i))      (stick: move with the body; slip: attraction)
+ *   du_i/dt = |v| (1 - u_i / d_i)            (element "bristle": a LuGre bristle, C unused)
  *   F       = sum_i (k_i z_i + sigma1 (k_i / sigma0) dz_i/dt) + sigma2 v + b
  *
  * method 0 (exact): the step is cut at a velocity reversal (fl_steps.h); over each piece the
@@ -20,12 +21,17 @@
 
 /* p[] and theta: the fields of friction.gms.GMSParams in declaration order
  * (= friction.gms._LAYOUT) */
-enum { S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1, TILT, TH_N };
+enum { S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1, TILT, ELEM, TH_N };
+
+/* friction.gms.ELEMENTS */
+static const char *const gms_element_names[] = {"slip", "bristle"};
 
 static int gms_pack(const double *p, double *th, char *msg, size_t msglen)
 {
     int i;
     if (fl_check_option("shape", p[SHAPE], fl_shape_names, 2, msg, msglen))
+        return 1;
+    if (fl_check_option("element", p[ELEM], gms_element_names, 2, msg, msglen))
         return 1;
     for (i = 0; i < TH_N; ++i)
         th[i] = p[i];
@@ -56,7 +62,8 @@ static void gms_shares(double tilt, double w[GMS_N])
 }
 
 /* friction.gms._block_piece */
-static double gms_block_piece(double z, double vp, double T, double d, double lam)
+static double gms_block_piece(double z, double vp, double T, double d, double lam,
+                              int bristle)
 {
     double s, u, sp, ustar;
     if (vp > 0.0)
@@ -66,6 +73,8 @@ static double gms_block_piece(double z, double vp, double T, double d, double la
     else
         return z;
     u = s * z;
+    if (bristle)
+        return s * (u + (u - d) * fl_em1(fabs(vp) * T / d));
     sp = s * vp;
     ustar = d - sp / lam;
     if (u < ustar) {
@@ -83,9 +92,11 @@ static double gms_block_piece(double z, double vp, double T, double d, double la
 }
 
 /* friction.gms._block_rate */
-static double gms_block_rate(double z, double v, double d, double lam)
+static double gms_block_rate(double z, double v, double d, double lam, int bristle)
 {
     double r;
+    if (bristle)
+        return v - fabs(v) * z / d;
     if (v > 0.0) {
         r = lam * (d - z);
         return v < r ? v : r;
@@ -110,7 +121,7 @@ static double gms_damping_rate(const double *th, const double z[GMS_N], double v
     gms_shares(th[TILT], w);
     for (i = 0; i < GMS_N; ++i) {
         tot += k[i];
-        r += k[i] * gms_block_rate(z[i], v, g * (w[i] / k[i]), lam);
+        r += k[i] * gms_block_rate(z[i], v, g * (w[i] / k[i]), lam, th[ELEM] == 1.0);
     }
     return r / tot;
 }
@@ -123,6 +134,7 @@ static void gms_kernel(int n, const double *t, const double *v, const double *a,
     double k[GMS_N], wk[GMS_N], z[GMS_N];
     const double C = th[CA], s2 = th[S2], b = th[B];
     const double fc = th[FC], fs = th[FS], vs = th[VS], alpha = th[ALPHA], shape = th[SHAPE];
+    const int bristle = th[ELEM] == 1.0;
     int i, j;
     (void)a;
     (void)load;
@@ -149,7 +161,7 @@ static void gms_kernel(int n, const double *t, const double *v, const double *a,
                 const double g = fl_stribeck_g(vj, fc, fs, vs, alpha, shape);
                 const double lam = C / g;
                 for (i = 0; i < GMS_N; ++i)
-                    z[i] = z[i] + h * gms_block_rate(z[i], vj, g * wk[i], lam);
+                    z[i] = z[i] + h * gms_block_rate(z[i], vj, g * wk[i], lam, bristle);
             } else {
                 double T[2], pa[2], pb[2];
                 int piece;
@@ -162,7 +174,7 @@ static void gms_kernel(int n, const double *t, const double *v, const double *a,
                     g = fl_stribeck_g(vp, fc, fs, vs, alpha, shape);
                     lam = C / g;
                     for (i = 0; i < GMS_N; ++i)
-                        z[i] = gms_block_piece(z[i], vp, T[piece], g * wk[i], lam);
+                        z[i] = gms_block_piece(z[i], vp, T[piece], g * wk[i], lam, bristle);
                 }
             }
         }
@@ -183,7 +195,7 @@ static void gms_derivatives(const double *th, const double *state, double v, dou
     gms_stiffness(th[S0], th[SPREAD], k);
     gms_shares(th[TILT], w);
     for (i = 0; i < GMS_N; ++i)
-        dstate[i] = gms_block_rate(state[i], v, g * (w[i] / k[i]), lam);
+        dstate[i] = gms_block_rate(state[i], v, g * (w[i] / k[i]), lam, th[ELEM] == 1.0);
 }
 
 /* GMS.force */

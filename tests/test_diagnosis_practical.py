@@ -56,6 +56,29 @@ def test_each_part_of_the_rule_names_its_reason():
     assert decide([bare], before, floor)["cause"] == "load"
 
 
+def test_a_dominant_candidate_under_a_third_is_named_and_says_why():
+    """Beyond the noise ratio a candidate that closes a quarter to a third of the excess is
+    named where it closes >= DOMINANCE x every other one (the only form that follows the
+    gap), with practical size; not where another closes a third of it, not under a
+    quarter, not inside the noise ratio, not without significance."""
+    from diagnosis.verdict import DOMINANCE, DOMINANT_EXCESS, dominant
+    floor, before = 0.01, 0.05
+    lone = [_effect("position", 0.23, 0.29, 6.0, 0.02),
+            _effect("stribeck_shape", 0.004, 0.005, 0.5, 0.002)]
+    v = decide(lone, before, floor)
+    assert v["cause"] == "position" and "less than a third" in v["reason"]
+    assert dominant(lone)
+    rival = [lone[0], _effect("delay", 0.08, 0.29 / DOMINANCE + 0.01, 4.0, 0.01)]
+    assert not dominant(rival) and decide(rival, before, floor)["cause"] == "unexplained"
+    small = [_effect("position", 0.2, DOMINANT_EXCESS - 0.01, 6.0, 0.02), lone[1]]
+    assert decide(small, before, floor)["cause"] == "unexplained"
+    # inside the noise ratio only a third (with the paired statistic) names
+    assert decide(lone, 1.1 * floor, floor)["cause"] == "none"
+    weak = [_effect("position", 0.23, 0.29, 1.0, 0.02), lone[1]]
+    v = decide(weak, before, floor)
+    assert v["cause"] == "unexplained" and "not significant" in v["reason"]
+
+
 def test_symmetric_map_case_is_not_named_asymmetry():
     # issue 15: a symmetric map named asymmetry at 53.7 % of the gap with z = 1.1: outside
     # the noise ratio too, a name needs a significant held-out improvement

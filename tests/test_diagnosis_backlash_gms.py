@@ -440,7 +440,9 @@ def test_maxwell_slip_presliding_is_named_gms():
                     ["gms", "backlash", "acceleration"])
     assert rep["verdict"]["cause"] == "gms", rep.summary()
     par = rep["effect_details"]["gms"]["parameters"]
-    assert par["spread"] > 2.0 and par["C"] > 0
+    # either variant may fit it best: slip-blocks (with their attraction rate C) or the
+    # four bristles (no C); both spread their stiffness over a presliding of their own
+    assert par["spread"] > 2.0 and par["presliding"] > 0 and par.get("C", 1.0) > 0
 
 
 def test_a_clean_record_names_neither():

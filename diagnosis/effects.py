@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen27`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen28`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -263,6 +263,7 @@ _S24 = "diagnosis.benchmark.seen24:"
 _S25 = "diagnosis.benchmark.seen25:"
 _S26 = "diagnosis.benchmark.seen26:"
 _S27 = "diagnosis.benchmark.seen27:"
+_S28 = "diagnosis.benchmark.seen28:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -327,7 +328,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "gantry_racking": _S24 + "gantry_racking_truth",
                    "band_capstan": _S25 + "band_capstan_truth",
                    "feed_line_surge": _S26 + "feed_line_surge_truth",
-                   "self_loading_drive": _S27 + "self_loading_drive_truth"},
+                   "self_loading_drive": _S27 + "self_loading_drive_truth",
+                   "winding_heat": _S28 + "winding_heat_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -362,7 +364,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "light_load_skid": _S24 + "light_load_skid_truth",
                    "constant_flow_pad": _S25 + "constant_flow_pad_truth",
                    "bedded_rail": _S26 + "bedded_rail_truth",
-                   "pv_heated_liner": _S27 + "pv_heated_liner_truth"},
+                   "pv_heated_liner": _S27 + "pv_heated_liner_truth",
+                   "soft_film_pressure": _S28 + "soft_film_pressure_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -397,7 +400,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "pitching_pads": _S24 + "pitching_pads_truth",
                    "roller_skew": _S25 + "roller_skew_truth",
                    "lifting_screw": _S26 + "lifting_screw_truth",
-                   "coriolis_slide": _S27 + "coriolis_slide_truth"},
+                   "coriolis_slide": _S27 + "coriolis_slide_truth",
+                   "angled_pull": _S28 + "angled_pull_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -433,7 +437,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "wall_slip": _S24 + "wall_slip_truth",
                    "thermal_closure": _S25 + "thermal_closure_truth",
                    "dwell_squeeze": _S26 + "dwell_squeeze_truth",
-                   "suction_pocket": _S27 + "suction_pocket_truth"},
+                   "suction_pocket": _S27 + "suction_pocket_truth",
+                   "capillary_condensation": _S28 + "capillary_condensation_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -472,7 +477,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "track_end": _S24 + "track_end_truth",
                    "cable_reel": _S25 + "cable_reel_truth",
                    "air_film_flatness": _S26 + "air_film_flatness_truth",
-                   "conductive_strips": _S27 + "conductive_strips_truth"},
+                   "conductive_strips": _S27 + "conductive_strips_truth",
+                   "ball_passage": _S28 + "ball_passage_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -506,7 +512,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "qzs_isolator": _S24 + "qzs_isolator_truth",
                    "oil_column": _S25 + "oil_column_truth",
                    "elastomer_mount": _S26 + "elastomer_mount_truth",
-                   "wave_radiation": _S27 + "wave_radiation_truth"},
+                   "wave_radiation": _S27 + "wave_radiation_truth",
+                   "hanging_pendulum": _S28 + "hanging_pendulum_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -544,7 +551,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "force_restoration": _S24 + "force_restoration_truth",
                    "interleaved_adc": _S25 + "interleaved_adc_truth",
                    "pneumatic_balance": _S26 + "pneumatic_balance_truth",
-                   "dual_slope_adc": _S27 + "dual_slope_adc_truth"},
+                   "dual_slope_adc": _S27 + "dual_slope_adc_truth",
+                   "adaptive_filter": _S28 + "adaptive_filter_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -580,7 +588,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "pump_down": _S24 + "pump_down_truth",
                    "additive_settling": _S25 + "additive_settling_truth",
                    "wax_crystallisation": _S26 + "wax_crystallisation_truth",
-                   "grease_oil_bleed": _S27 + "grease_oil_bleed_truth"},
+                   "grease_oil_bleed": _S27 + "grease_oil_bleed_truth",
+                   "thermostat_cycling": _S28 + "thermostat_cycling_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -614,7 +623,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "graded_clearance": _S24 + "graded_clearance_truth",
                    "adhesive_flank": _S25 + "adhesive_flank_truth",
                    "powder_packed_gap": _S26 + "powder_packed_gap_truth",
-                   "floating_coupling": _S27 + "floating_coupling_truth"},
+                   "floating_coupling": _S27 + "floating_coupling_truth",
+                   "air_cushion_gap": _S28 + "air_cushion_gap_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -648,7 +658,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "eyring_film": _S24 + "eyring_film_truth",
                    "viscoplastic_overstress": _S25 + "viscoplastic_overstress_truth",
                    "poroelastic_layer": _S26 + "poroelastic_layer_truth",
-                   "wire_mesh_backing": _S27 + "wire_mesh_backing_truth"},
+                   "wire_mesh_backing": _S27 + "wire_mesh_backing_truth",
+                   "shear_melting_film": _S28 + "shear_melting_film_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

@@ -217,6 +217,19 @@ the isolator's 113 cases 55 -> 55 right, wrong names 9 -> 12; the acceleration c
 lag started also at 0.1, 0.2 and 0.4 x the motion's time scale, no verdict of the 31
 acceleration cases changed.
 
+Session 33 (2026-12-01; session 32's 271 cases again, ``--keys`` of its checkpoint; 2
+workers): ``gms`` with a second law variant, four LuGre bristles that nest the base
+(5adcaab), 146 -> 147 right, wrong names 29 -> 29, mean |shrink error| 0.291 -> 0.290 (the
+damping rig's poroelastic layer named; the rig's gms truths closed -3.1..+0.24 of the
+excess, now -0.09..+0.45); the dominance rule of the verdict (ebf5c78: a quarter of the
+excess and 3 x every other candidate's, re-decided exactly) 147 -> 151, wrong names 29 ->
+30. Out of sample, ``--sample 272 --sample-seed 2`` of the grid to seen27 on a767d98: 148
+right, wrong names 25, |shrink error| 0.297; with the dominance rule 151, wrong names 26.
+500 clean records on 5adcaab: 0 named (246 ``none``, 254 ``unexplained``); with the rule:
+0. Tried and not kept: a compliant mode in ``inertia`` (a mass on a lightly damped spring;
+the sample's 24 inertia cases: no verdict changed, a flexible load closed 0.56 -> 0.94);
+the acceleration level part through a mode (31 acceleration cases: no verdict changed).
+
 Sealed family of session 32's writing (``--sealed`` then, written by another hand without
 running the diagnosis on it, run once at the end of session 33 on the code of 9f8fda9):
 52.8 % top-1;

@@ -320,21 +320,27 @@ def bristle_start(law, names, fit, ctx: Context) -> dict:
     """
     s0 = float(law.params.sigma0)
     scales = BRISTLE_SCALES if "sigma0" in names else (1.0,)
+    return _best_start(law, ({"spread": spread, "tilt": tilt,
+                              **({"sigma0": s0 * k0} if k0 != 1.0 else {})}
+                             for spread in BRISTLE_SPREADS for tilt in BRISTLE_TILTS
+                             for k0 in scales), fit) or {"spread": BRISTLE_SPREADS[0]}
+
+
+def _best_start(law, trials, fit) -> dict:
+    """The values of ``trials`` (dicts of ``law``'s parameters) whose compiled run from the
+    record's start state fits ``fit`` best ({} where none is admissible: a stiff base times
+    a scale can pass the law's sigma0 bound, and is skipped)."""
     best = (math.inf, {})
-    for spread in BRISTLE_SPREADS:
-        for tilt in BRISTLE_TILTS:
-            for k0 in scales:
-                vals = {"spread": spread, "tilt": tilt, **({"sigma0": s0 * k0} if k0 != 1.0
-                                                          else {})}
-                try:
-                    tr = law.with_values(**vals)
-                except ParameterError:
-                    continue
-                st = tr.record_start_state(fit.t, fit.v, F=fit.F)
-                sse = float(np.sum((fit.F - tr.simulate(fit.t, fit.v, state0=st)) ** 2))
-                if sse < best[0]:
-                    best = (sse, vals)
-    return best[1] or {"spread": BRISTLE_SPREADS[0]}
+    for vals in trials:
+        try:
+            tr = law.with_values(**vals)
+        except ParameterError:
+            continue
+        s0 = tr.record_start_state(fit.t, fit.v, F=fit.F)
+        sse = float(np.sum((fit.F - tr.simulate(fit.t, fit.v, state0=s0)) ** 2))
+        if sse < best[0]:
+            best = (sse, vals)
+    return best[1]
 
 
 def gms_start(law, names, fit, ctx: Context) -> list:
@@ -379,18 +385,7 @@ def gms_start(law, names, fit, ctx: Context) -> list:
     s_free = "sigma0" in names
 
     def best_of(trials):
-        best = (math.inf, {})
-        for vals in trials:
-            try:
-                tr = law.with_values(**vals)
-            except ParameterError:
-                # a stiff base times the scale can pass the law's sigma0 bound: skip
-                continue
-            s0 = tr.record_start_state(fit.t, fit.v, F=fit.F)
-            sse = float(np.sum((fit.F - tr.simulate(fit.t, fit.v, state0=s0)) ** 2))
-            if sse < best[0]:
-                best = (sse, vals)
-        return best[1]
+        return _best_start(law, trials, fit)
 
     grid = best_of({"spread": spread, "C": level / (lag * ctx.dt),
                     **({"sigma0": float(p.sigma0) * k0 * max(spread, 1.0) ** 0.5}

@@ -45,7 +45,7 @@ every start (held-out gaps closed down to -3). So the candidate fits a second va
 LuGre bristles of unequal stiffness and share (``element`` "bristle", :func:`bristle_start`;
 ``C`` unused), which is the base itself at spread and tilt 1, and keeps the better fit. On
 the 271 grid cases of session 32 it moved one verdict, the rig's poroelastic layer to
-``gms`` (right), and no candidate's held-out gap closed below -0.5 on the rig any more.
+``gms`` (right), and on the rig its held-out gap closed nowhere below -0.5 any more.
 
 FMU route
 ---------
@@ -267,9 +267,9 @@ class GMSCandidate(LawCandidate):
 
     def own_parameters(self, law) -> dict:
         """The candidate's own parameters of a fitted GMS ``law``: ``spread`` [-], ``C``
-        [N/s] (slip-blocks only), ``tilt`` [-], the block stiffnesses ``k1..k4`` [N/m], their break-away shares
-        ``w1..w4`` [-] and the presliding distance
-        ``presliding`` [m] (from rest to every block slipping, at Fs).
+        [N/s] (slip-blocks only), ``tilt`` [-], the block stiffnesses ``k1..k4`` [N/m],
+        their break-away shares ``w1..w4`` [-] and the presliding distance ``presliding``
+        [m] (from rest to every block slipping, at Fs).
 
         Parameters
         ----------

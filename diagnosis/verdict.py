@@ -52,7 +52,8 @@ from .significance import z_threshold
 
 __all__ = ["decide", "rank", "overrule_deferrals", "noise_floor", "practical_size",
            "decision_entries", "DEFER_SHARE",
-           "MIN_EXCESS_CLOSED", "DOMINANT_EXCESS", "DOMINANCE", "dominant", "TIE", "TIE_REL", "EVENT_RATIO", "RESOLVED_EXCESS",
+           "MIN_EXCESS_CLOSED", "DOMINANT_EXCESS", "DOMINANCE", "dominant", "TIE", "TIE_REL",
+           "EVENT_RATIO", "RESOLVED_EXCESS",
            "RESOLVED_IMPRINT", "resolved",
            "NOISE_RATIO", "NOISE_CLIP", "IMPRINT_NOISE", "IMPRINT_GAP"]
 

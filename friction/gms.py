@@ -70,6 +70,14 @@ u* = d_i - |v_p| / lam, then u = d_i - (|v_p| / lam) e^{-lam (T - tau)}; from be
 switch u = d_i + (u - d_i) e^{-lam T}. Every update is a translation clipped by a
 contraction, stable at any step and stiffness. Explicit Euler of the same equations is
 ``method="euler"`` (it overshoots the break-away and oscillates once h C / g > 2).
+
+Bristle elements (``element="bristle"``, :data:`ELEMENTS`): each element is a LuGre bristle
+instead, du_i/dt = |v| (1 - u_i / d_i), with the same stiffnesses, shares, damping and
+curve (``C`` unused). Its presliding from rest is a sum of exponentials, sum_i k_i d_i
+(1 - e^{-x / d_i}); right after a reversal a bristle moves at up to twice the body's speed
+(LuGre's), where a sticking block moves with it. Four equal bristles (``spread`` = ``tilt``
+= 1) are the LuGre law; the exact update over a piece is LuGre's exponential,
+u = d_i + (u - d_i) e^{-|v_p| T / d_i}.
 """
 from __future__ import annotations
 

@@ -220,8 +220,8 @@ acceleration cases changed.
 Session 33 (2026-12-01; session 32's 271 cases again, ``--keys`` of its checkpoint; 2
 workers): ``gms`` with a second law variant, four LuGre bristles that nest the base
 (5adcaab), 146 -> 147 right, wrong names 29 -> 29, mean |shrink error| 0.291 -> 0.290 (the
-damping rig's poroelastic layer named; the rig's gms truths closed -3.1..+0.24 of the
-excess, now -0.09..+0.45); the dominance rule of the verdict (ebf5c78: a quarter of the
+damping rig's poroelastic layer named; on the rig's 9 gms truths the candidate closed
+-3.09..+0.59 of the excess, now -0.09..+0.59, and over its 69 cases at least -36, now -0.46); the dominance rule of the verdict (ebf5c78: a quarter of the
 excess and 3 x every other candidate's, re-decided exactly) 147 -> 151, wrong names 29 ->
 30. Out of sample, ``--sample 272 --sample-seed 2`` of the grid to seen27 on a767d98: 148
 right, wrong names 25, |shrink error| 0.297; with the dominance rule 151, wrong names 26.

@@ -40,8 +40,9 @@ them.
 
 Slip-blocks do not nest the base: right after a reversal a sticking block adds sigma1 |v|
 where the LuGre bristle adds up to 2 sigma1 |v|, and on the damping rig, whose reversals its
-damped bristle carries, they fitted the grid's gms records at 1.75 x the base's NRMSE from
-every start (held-out gaps closed down to -3). So the candidate fits a second variant, four
+damped bristle carries, they fitted a bond-rupture record at 1.75 x the base's NRMSE from
+every start (on the rig's gms records they closed down to -3 of the held-out gap above the
+floor). So the candidate fits a second variant, four
 LuGre bristles of unequal stiffness and share (``element`` "bristle", :func:`bristle_start`;
 ``C`` unused), which is the base itself at spread and tilt 1, and keeps the better fit. On
 the 271 grid cases of session 32 it moved one verdict, the rig's poroelastic layer to
@@ -231,8 +232,8 @@ class GMSCandidate(LawCandidate):
         slip = self.law_for(law)
         # four LuGre bristles (friction.gms.ELEMENTS): the base itself at spread and tilt
         # 1, so a presliding beside a heavily damped bristle (the damping rig's, sigma1
-        # 139 N s/m) is reached from it; slip-blocks alone fitted that rig's records at
-        # 1.75 x the base's NRMSE, whatever their start
+        # 139 N s/m) is reached from it; slip-blocks alone fitted a rig record at 1.75 x
+        # the base's NRMSE, whatever their start
         bristle = slip.with_values(element="bristle")
         return [(slip, self.names_for(base_names)),
                 (bristle, [n for n in self.names_for(base_names) if n != "C"])]

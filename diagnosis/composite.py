@@ -412,7 +412,9 @@ def fit_composite(law, base_names, effects: list[Candidate], fit, ctx: Context, 
     # difference Jacobian) reuses the last simulation
     memo = {}
     inside = _inside(effects)
-    inside_names = [e.name for eff in inside for e in eff.force_extras(ctx)]
+    # (an effect may name the extras its level reads: ``inside_names``; else all of them)
+    inside_names = [n for eff in inside for n in (
+        getattr(eff, "inside_names", None) or [e.name for e in eff.force_extras(ctx)])]
     if inside and not hasattr(law, "simulate_level"):
         raise ValueError(f"{', '.join(e.name for e in inside)} scales the levels inside "
                          f"the law, which {law.name} cannot (a classic LuGre can)")

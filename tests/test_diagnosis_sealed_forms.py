@@ -1,10 +1,10 @@
-"""The twenty-ninth sealed truth family (diagnosis.benchmark.sealed, written in session 33
+"""The thirtieth sealed truth family (diagnosis.benchmark.sealed, written in session 34
 by another hand, sealed: not run): each form builds a finite case of the requested size on every
 plant it applies to, is the base law at s = 0, grows with its amplitude factor and refuses
 the plants it does not apply to. No diagnosis is run on these forms: the family stays unseen
 until the end of a piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS`
-names it as its ``sealed`` form (the twenty-eighth family, sealed before it, is
-:mod:`diagnosis.benchmark.seen28` since its run)."""
+names it as its ``sealed`` form (the twenty-ninth family, sealed before it, is
+:mod:`diagnosis.benchmark.seen29` since its run)."""
 import dataclasses
 import importlib
 
@@ -20,11 +20,11 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "elastic_counterweight", "load": "clamping_cylinder",
-        "asymmetry": "gecko_wedges", "stribeck_shape": "flash_weakening",
-        "position": "ferrous_insert", "inertia": "friction_pendulum",
-        "delay": "fixed_point_filter", "drift": "lining_glazing",
-        "backlash": "detent_ball", "gms": "hysteresis_brake"}
+FORM = {"acceleration": "inertia_lubricator", "load": "crowned_rollers",
+        "asymmetry": "charging_generator", "stribeck_shape": "peel_adhesion",
+        "position": "lead_preload", "inertia": "liquid_column",
+        "delay": "polynomial_smoother", "drift": "carbon_tribolayer",
+        "backlash": "magnet_latch", "gms": "fibre_wiper"}
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
@@ -44,7 +44,7 @@ _FORM_MODULES = ("diagnosis.benchmark.truths", "diagnosis.benchmark.forms",
                  "diagnosis.benchmark.seen23", "diagnosis.benchmark.seen24",
                  "diagnosis.benchmark.seen25", "diagnosis.benchmark.seen26",
                  "diagnosis.benchmark.seen27", "diagnosis.benchmark.seen28",
-                 "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
+                 "diagnosis.benchmark.seen29", "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
                  "diagnosis.effects_gms")
 
 
@@ -67,9 +67,9 @@ def test_the_family_has_one_new_form_per_effect():
         assert not names & set(vars(mod)), name
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
-    assert doc.startswith("The twenty-ninth sealed truth family")
-    assert "sealed: not run" in doc and "2026-12-01 (session 33)" in doc
-    assert "session 32's, was run once and is :mod:`.seen28`" in doc
+    assert doc.startswith("The thirtieth sealed truth family")
+    assert "sealed: not run" in doc and "2026-12-01 (session 34)" in doc
+    assert "session 33's, was run once and is :mod:`.seen29`" in doc
 
 
 def test_registered_forms_resolve():
@@ -110,93 +110,97 @@ def test_sealed_forms_reach_their_size_on_two_plants(plant):
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        family.flash_weakening_truth(iso, 1.0)
+        family.peel_adhesion_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.hysteresis_brake_truth(iso, 1.0)
+        family.fibre_wiper_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.detent_ball_truth(iso, 1.0)
+        family.magnet_latch_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
     # a one-way stroke (the press's) never comes back over the positions the fit part saw
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        family.ferrous_insert_truth.__wrapped__(one_way, 1.0)
-    # a load that never changes is passed on as the base law's
+        family.lead_preload_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes never reaches the rollers' ends differently
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        family.clamping_cylinder_truth.__wrapped__(still, 1.0)
+        family.crowned_rollers_truth.__wrapped__(still, 1.0)
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
-def test_the_weight_bounces_on_its_rope_and_then_follows():
+def test_the_pump_delivers_beyond_its_preload_and_the_film_is_used_up():
+    q = family._pump_delivery(np.array([0.0, 0.4, -0.7, 1.0]), 0.4)
+    assert np.allclose(q, [0.0, 0.0, 0.5, 1.0])
+    t = np.linspace(0.0, 20.0, 2001)
+    h = family._oil_film(t, np.r_[np.ones(1000), np.zeros(1001)], 1.0)
+    assert h[0] == 0.0 and np.isclose(h[999], 0.5, rtol=1e-3)   # q / (1 + q)
+    assert h[-1] < 1e-3                                           # used up without supply
+
+
+def test_the_rollers_load_their_ends_past_the_knee():
+    e = family._edge_load(np.array([0.0, 0.5, 1.0, 2.0, 5.0]))
+    assert np.allclose(e, [0.0, 0.0, 0.0, 1.0, 8.0])
+
+
+def test_the_generator_charges_one_way_above_its_knee():
+    i = family._charge_current(np.array([-1.0, 0.0, 0.3, 1.0]), 0.3, 1e-9)
+    assert np.allclose(i, [0.0, 0.0, 0.0, 1.0], atol=1e-8)
+
+
+def test_the_tearing_share_rises_and_levels_off():
+    f = family._tearing_share(np.array([0.0, 1.0, -1.0, 1e6]), 0.6)
+    assert np.allclose(f, [0.0, 0.5, 0.5, 1.0], atol=1e-3)
+
+
+def test_the_preload_follows_the_lead_error_over_the_spacer():
+    xr = np.linspace(0.0, 1.0, 101)
+    p = family._preload_change(xr, 0.15)
+    assert np.isclose(p[50], 0.0) and np.ptp(p) > 0.1
+    assert np.allclose(family._preload_change(xr, 0.0), 0.0)   # no spacer, no change
+
+
+def test_the_column_swings_and_settles_back():
     t = np.linspace(0.0, 40.0, 40001)
-    aw = family._rope_bounce(t, np.full(t.size, 2.0), 2.0 * np.pi, 0.3)
-    assert aw[0] == 0.0 and np.isclose(aw[-1], 2.0, rtol=1e-3)
-    assert aw.max() > 2.5                                   # it overshot on the rope
-    assert np.allclose(family._rope_bounce(t, np.zeros(t.size), 2.0 * np.pi, 0.3), 0.0)
+    acc = family._column_swing(t, np.r_[np.full(5500, 1.0), np.zeros(34501)],
+                               2.0 * np.pi, 0.7, 1.0)
+    assert np.isclose(acc[0], -0.7)                  # the limb's share, the column at rest
+    free = family._column_swing(t, np.r_[np.full(5500, 1.0), np.zeros(34501)],
+                                2.0 * np.pi, 0.7, 0.0)
+    # the orifice's loss takes the swing down; without it the column swings on
+    assert 0.0 < np.abs(acc[-5000:]).max() < 0.5 * np.abs(free[-5000:]).max()
+    assert np.allclose(family._column_swing(t, np.zeros(t.size), 2.0 * np.pi, 0.7, 1.0),
+                       0.0)
 
 
-def test_the_seal_passes_the_load_on_through_a_play():
-    y = family._seal_play(np.array([0.0, 1.0, 0.5, 0.2, 1.0]), 0.2)
-    assert np.allclose(y, [0.0, 0.8, 0.7, 0.4, 0.8])
-    assert np.allclose(family._seal_play(np.array([0.0, 1.0, 0.9, 0.7]), 0.2),
-                       [0.0, 0.8, 0.8, 0.8])                 # held while it turns back
+def test_the_smoother_passes_its_polynomials_and_lags_at_a_bend():
+    w = family._endpoint_weights(9, 2)
+    k = np.arange(9.0)
+    assert np.isclose(w.sum(), 1.0) and np.isclose(w @ (k ** 2), 64.0)
+    u = np.r_[np.zeros(20), np.arange(1.0, 21.0)]
+    y = family._fir_causal(u, w)
+    assert np.allclose(y[:20], 0.0) and np.allclose(y[-5:], u[-5:])
+    assert not np.allclose(y[20:28], u[20:28])       # at the bend
 
 
-def test_the_wedges_adhere_one_way_and_less_at_speed():
-    a = family._wedge_adhesion(np.array([1.0, -1.0, 1.0]), np.array([0.0, 0.0, 1.0]))
-    assert np.allclose(a, [1.0, 0.0, 0.5])
+def test_the_tribolayer_follows_the_distance():
+    c = family._covered(np.array([0.0, 0.4, 1e3]), 0.4, 3.0)
+    assert np.allclose(c, [0.0, 0.5, 1.0])
 
 
-def test_the_asperities_weaken_above_the_weakening_speed():
-    f = family._flash_factor(np.array([0.0, 0.5, 1.0, 2.0, -4.0]), 0.5)
-    assert np.allclose(f, [1.0, 1.0, 1.0, 0.75, 0.625])
-
-
-def test_the_insert_attracts_over_its_length_and_pulls_at_its_edges():
-    xr = np.linspace(0.0, 1.0, 1001)
-    w, dw = family._insert_field(xr, 0.5, 0.3, 0.03)
-    assert np.isclose(w[500], 1.0, atol=1e-3) and w[0] < 1e-6 and w[-1] < 1e-6
-    assert np.isclose(dw[350], 0.5) and np.isclose(dw[650], -0.5)
-    assert np.allclose(w, w[::-1]) and np.allclose(dw, -dw[::-1])
-
-
-def test_the_payload_slides_in_its_dish_and_sticks_again():
-    t = np.linspace(0.0, 40.0, 40001)
-    acc = family._pendulum_slider(t, np.full(t.size, 2.0), 2.0 * np.pi, 0.5)
-    assert acc[0] == 0.5                 # sliding, the slider passes its friction only
-    assert acc[-1] == 2.0                # stuck again, carried whole
-    held = family._pendulum_slider(t, np.full(t.size, 0.3), 2.0 * np.pi, 0.5)
-    assert np.allclose(held, 0.3)        # within the friction: never slides
-    assert np.allclose(family._pendulum_slider(t, np.zeros(t.size), 2.0 * np.pi, 0.5), 0.0)
-
-
-def test_the_integer_filter_stops_short_of_a_rising_force():
-    u = np.r_[np.zeros(10), np.ones(200), np.zeros(200)]
-    y = family._integer_lowpass(u, 0.5, 0.01)
-    assert np.allclose(y[10:14], [0.5, 0.75, 0.87, 0.93])
-    assert np.isclose(y[209], 0.99)      # within count / gain below the input, held there
-    assert abs(y[-1]) < 1e-12            # falling, the floor takes it all the way
-    c = family._integer_lowpass(np.full(20, 1.0), 0.5, 2.0 ** -4)
-    assert np.allclose(c, 1.0)
-
-
-def test_the_glaze_grows_with_the_work_and_saturates():
-    g = family._glaze(np.array([0.0, 0.5, 50.0]), 0.5)
-    assert np.allclose(g, [0.0, 1.0 - np.exp(-1.0), 1.0])
-
-
-def test_the_detent_pulls_inside_its_notch_only():
-    f = [family._detent_force(e, 1.0, 1.0, 0.1) for e in (0.0, 0.5, -0.5, 2.0)]
-    assert f[0] == 0.0 and 0.9 < f[1] < 1.0 and np.isclose(f[2], -f[1]) and abs(f[3]) < 1e-6
+def test_the_latch_pulls_towards_the_nearer_flank():
+    f = [family._latch_force(e, 1.0, 1.0, 0.5) for e in (0.0, 0.5, -0.5, 1.0, 3.0)]
+    assert f[0] == 0.0 and 0.0 < f[1] < 1.0 and np.isclose(f[2], -f[1])
+    assert np.isclose(f[3], 1.0) and np.isclose(f[4], 1.0)
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.detent_ball_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.magnet_latch_truth(kin, 1.0)))
 
 
-def test_the_brake_follows_rayleigh_branches():
-    m = family._rayleigh_loop(np.array([0.0, 0.5, 1.0, 2.0, 1.0, 0.0, -1.0]), 1.0)
-    assert np.allclose(m, [0.0, 0.75, 1.0, 1.0, -0.5, -1.0, -1.0])
+def test_the_wiper_follows_a_hyperbola_and_masings_rule():
+    x = np.array([0.0, 1.0, 3.0, 1.0, -1.0])
+    f = family._masing_hyperbola(x, 1.0)
+    assert np.allclose(f[:3], [0.0, 0.5, 0.75])
+    assert np.isclose(f[3], 0.75 - 1.0) and np.isclose(f[4], 0.75 - 2.0 * 2.0 / 3.0)
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.hysteresis_brake_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.fibre_wiper_truth(kin, 1.0)))
 
 
 @pytest.mark.slow

@@ -50,9 +50,9 @@ class Acceleration(Candidate):
     ``acceleration``, -0.02 -> 0.88 and 0.12 -> 0.88 of the excess closed, a dilatancy
     there 0.06 -> 0.57; a felt lubricator's asymmetry on the valve was named
     ``acceleration``. Another sample's 45 acceleration and inertia cases, out of sample:
-    25 -> 31 right, wrong names 6 -> 6. With the output form's start, which pins a level
-    part the output residual does not ask for, the inside form changed 2 of the first
-    sample's 31 acceleration verdicts' figures and none of the verdicts.)
+    25 -> 31 right, wrong names 6 -> 6. Started as the output form, whose start pins a
+    level part the output residual does not ask for, the inside form changed none of the
+    first sample's 31 acceleration verdicts.)
 
     Tried in session 11 and not kept: a frictional memory *inside* the bristle dynamics
     (Hess and Soom: the level ``(g(v_lagged) / g(v))^k``, ``k`` and the memory time

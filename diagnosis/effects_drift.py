@@ -49,11 +49,12 @@ class Drift(Candidate):
     On a classic LuGre the same level is also fitted *inside* the bristle dynamics
     (:class:`DriftInside`, :meth:`modify_law`), and the form that fits the fit record better
     is kept. (Session 10 put it there in place of the output form: on the valve and the
-    damping rig 1 drift case gained, 6 lost. Session 34, both forms: on the 106
-    acceleration, drift and load cases of a second sample, `--sample 272 --sample-seed 2`,
-    73 -> 75 right and 12 -> 9 wrong names, three of the press's drift truths taken back
-    from `load` and `gms`, one seal relaxation on the damping rig lost; on session 32's
-    271 sample cases no verdict changed; 0.27 s more on the speed case.)"""
+    damping rig 1 drift case gained, 6 lost. Session 34, both forms: on a second sample,
+    ``--sample 272 --sample-seed 2``, 151 -> 153 right and 26 -> 23 wrong names, three
+    of the press's drift truths taken back from ``load`` and ``gms``, one seal relaxation
+    on the damping rig lost; on session 32's 271 sample cases no verdict changed; 500 clean
+    records still none named; 0.29 s more on the speed case of ``benchmarks/
+    bench_diagnosis.py``.)"""
 
     #: the joint fit stops once an accepted step lowers the cost by less than this share
     #: of it (scipy's ``ftol``; the other fits 1e-8, :data:`diagnosis.composite.FTOL`).

@@ -38,7 +38,8 @@ from friction.alignment import velocity_lag
 
 __all__ = ["Candidate", "LawCandidate", "Context", "Extra", "make_context", "velocity_lag",
            "Fixed", "Asymmetry", "AsymmetryTwins", "friction_heat", "position_quantum",
-           "Presliding", "MAX_FILTER_SAMPLES", "missing_columns", "law_variants"]
+           "Presliding", "MAX_FILTER_SAMPLES", "missing_columns", "law_variants",
+           "levels_inside", "with_inside_form"]
 
 
 
@@ -401,6 +402,25 @@ def law_variants(cand: Candidate, law, base_names, ctx: Context) -> list:
             raise ValueError(f"{cand.name}.modify_law gave the variant {v!r}: each must be "
                              f"(law, names) or (law, names, form), form a Candidate")
         out.append((v[0], v[1], v[2] if len(v) == 3 else cand))
+    return out
+
+
+def levels_inside(law) -> bool:
+    """Whether ``law`` can carry friction levels inside its bristle dynamics (a classic
+    LuGre: :meth:`friction.lugre.LuGre.simulate_level`), where the ``inside`` forms of
+    ``load``, ``stribeck_shape``, ``drift`` and ``acceleration`` act."""
+    return type(law).__name__ == "LuGre" and hasattr(law, "simulate_level")
+
+
+def with_inside_form(cand: Candidate, law, base_names, form) -> list:
+    """``cand``'s law variants (:meth:`Candidate.modify_law`) when it also has a form
+    ``form`` (a :class:`Candidate` subclass) that scales its level inside the bristle
+    dynamics: the output form, and where ``law`` can carry it (:func:`levels_inside`) the
+    inside form beside it, the better on the fit record kept (:func:`law_variants`)."""
+    out = [(law, list(base_names))]
+    if levels_inside(law):
+        out.append((law, list(base_names), form(cand.name, cand.description, cand.stage,
+                                                cand.tags)))
     return out
 
 

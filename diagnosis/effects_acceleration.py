@@ -9,7 +9,7 @@ from numba import njit
 from friction.extensions import acceleration_weight
 
 from .candidates import (MAX_FILTER_SAMPLES, Candidate, Extra, Fixed, _basis_rows, _first_order,
-                         _lsq, _subsample, _with)
+                         _lsq, _subsample, _with, with_inside_form)
 
 __all__ = ["Acceleration", "AccelerationInside", "slip_memory"]
 
@@ -258,10 +258,7 @@ class Acceleration(Candidate):
     def modify_law(self, law, base_names, ctx):
         # a classic LuGre may carry the level part inside its bristle dynamics as well:
         # both forms fitted, the better on the fit record kept (:class:`AccelerationInside`)
-        if type(law).__name__ == "LuGre" and hasattr(law, "simulate_level"):
-            inside = AccelerationInside(self.name, self.description, self.stage, self.tags)
-            return [(law, list(base_names)), (law, list(base_names), inside)]
-        return [(law, list(base_names))]
+        return with_inside_form(self, law, base_names, AccelerationInside)
 
 
 class AccelerationInside(Acceleration):

@@ -10,7 +10,7 @@ from friction.extensions import (DRIFT_CYCLE_NAMES, DRIFT_NAMES, DRIFT_RESET_NAM
                                  DRIFT_SCALES, drift_change, drift_parts, pack_extensions)
 
 from .candidates import (Candidate, Extra, Fixed, _basis_rows, _lsq, _residual_after,
-                         _sse_beside, _subsample, _with, friction_heat)
+                         _sse_beside, _subsample, _with, friction_heat, with_inside_form)
 
 __all__ = ["Drift", "DriftInside"]
 
@@ -128,10 +128,7 @@ class Drift(Candidate):
     def modify_law(self, law, base_names, ctx):
         # a classic LuGre may carry the level inside its bristle dynamics as well: both
         # forms fitted, the one that fits the fit record better kept (:class:`DriftInside`)
-        if type(law).__name__ == "LuGre" and hasattr(law, "simulate_level"):
-            inside = DriftInside(self.name, self.description, self.stage, self.tags)
-            return [(law, list(base_names)), (law, list(base_names), inside)]
-        return [(law, list(base_names))]
+        return with_inside_form(self, law, base_names, DriftInside)
 
     #: the last time scales' parts, per thread (:meth:`_parts`), and how many are kept: a
     #: Jacobian's columns that move a time scale (the step's time and width) come back to

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .candidates import Candidate, Extra, Fixed, _basis_rows, _lsq, _sig_neg, _subsample, _with
+from .candidates import (Candidate, Extra, Fixed, _basis_rows, _lsq, _sig_neg, _subsample, _with,
+                         levels_inside)
 from .effects_acceleration import slip_memory
 
 __all__ = ["Load", "LoadInside"]
@@ -98,7 +99,7 @@ class Load(Candidate):
 
     def specialise(self, law):
         # a classic LuGre carries the load's levels inside its bristle dynamics
-        if type(law).__name__ == "LuGre" and hasattr(law, "simulate_level"):
+        if levels_inside(law):
             return LoadInside(self.name, self.description, self.stage, self.tags)
         return self
 

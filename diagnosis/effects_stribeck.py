@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .candidates import Candidate, Extra
+from .candidates import Candidate, Extra, levels_inside
 
 __all__ = ["StribeckShape", "StribeckMap", "StribeckDrag", "speed_map"]
 
@@ -35,7 +35,7 @@ class StribeckShape(Candidate):
 
     def specialise(self, law):
         # a classic LuGre carries a speed map inside its bristle dynamics
-        if type(law).__name__ == "LuGre" and hasattr(law, "simulate_level"):
+        if levels_inside(law):
             return StribeckMap(self.name, self.description, self.stage, self.tags)
         return self
 

@@ -125,7 +125,7 @@ def test_inertia_and_acceleration_filter_the_acceleration_channel():
     np.testing.assert_allclose(inertia.apply(F0, {"dm": 2.0}, data, ctx), 2.0 * data.a)
     assert {e.name for e in inertia.force_extras(ctx)} == {"dm", "tau_af", "dm_t", "dm_x",
                                                            "dm_v", "m_p", "tau_p", "g_up",
-                                                           "g_dn"}
+                                                           "g_dn", "m_r", "w_r", "z_r"}
     assert [e.name for e in inertia.extras(ctx)] == ["dm"]  # the trajectory level's
     # the zero-phase filter removes the chatter and keeps the slow part where it is
     y = inertia.apply(F0, {"dm": 1.0, "tau_af": 2 * data.dt}, data, ctx)

@@ -132,9 +132,24 @@ class Inertia(Candidate):
     The coupled part: a flywheel behind a freewheel, a payload held by its friction, a roll
     behind an induction coupling, a loose part in a pocket - each is a mass the axis
     accelerates only as far as its coupling lets it. The rigid ``dm a`` alone reached 2-7 of
-    20 grid cases of those forms (freewheel, rattling, sliding payload). The coupled part and
-    the variations are measured-force extras (:meth:`force_extras`, zero: the plain mass error);
-    the trajectory level changes the plant's mass by ``dm``.
+    20 grid cases of those forms (freewheel, rattling, sliding payload). The coupled part,
+    the mode and the variations are measured-force extras (:meth:`force_extras`, zero: the
+    plain mass error); the trajectory level changes the plant's mass by ``dm``.
+
+    The mass behind a compliant mode: a frame on soft mounts that the encoder reads
+    against, a carriage on a ball screw's axial spring, a payload on an elastic mount or
+    on a curved dish (a friction pendulum swings on gravity). The inverse dynamics misses
+    the mass times the difference between the acceleration it measures and the one the
+    mass has: nothing well below the mode, ringing at it, all of ``a`` above it. The
+    coupled part's lag cannot ring. Started on a coarse grid of modes and refined around
+    the best (:meth:`_start_mode`). Session 35, paired against main: on session 32's 271
+    sample cases 154 -> 156 right (two frame recoils on the isolator), wrong names 29 ->
+    29; on a second sample (``--sample 272 --sample-seed 2``) 159 -> 160 (a frame recoil
+    on the rig), wrong names 22 -> 22; on the 78 inertia and acceleration cases of both
+    samples and the twenty-ninth family 43 -> 49, wrong names 9 -> 9 (frame recoils and
+    friction pendulums; a flexible load on the press closed 0.56 -> 0.94 of the excess,
+    an oil column on the rig 0.71 -> 0.98); 500 clean records: 0 named; the speed case
+    3.32 -> 3.27 s.
     """
     #: coupling time constants the start tries, x the sample interval [-], and the grips,
     #: x the acceleration scale [-] (inf: the coupling never slips)

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen29`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen30`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -265,6 +265,7 @@ _S26 = "diagnosis.benchmark.seen26:"
 _S27 = "diagnosis.benchmark.seen27:"
 _S28 = "diagnosis.benchmark.seen28:"
 _S29 = "diagnosis.benchmark.seen29:"
+_S30 = "diagnosis.benchmark.seen30:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -331,7 +332,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "feed_line_surge": _S26 + "feed_line_surge_truth",
                    "self_loading_drive": _S27 + "self_loading_drive_truth",
                    "winding_heat": _S28 + "winding_heat_truth",
-                   "elastic_counterweight": _S29 + "elastic_counterweight_truth"},
+                   "elastic_counterweight": _S29 + "elastic_counterweight_truth",
+                   "inertia_lubricator": _S30 + "inertia_lubricator_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -368,7 +370,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "bedded_rail": _S26 + "bedded_rail_truth",
                    "pv_heated_liner": _S27 + "pv_heated_liner_truth",
                    "soft_film_pressure": _S28 + "soft_film_pressure_truth",
-                   "clamping_cylinder": _S29 + "clamping_cylinder_truth"},
+                   "clamping_cylinder": _S29 + "clamping_cylinder_truth",
+                   "crowned_rollers": _S30 + "crowned_rollers_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -405,7 +408,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "lifting_screw": _S26 + "lifting_screw_truth",
                    "coriolis_slide": _S27 + "coriolis_slide_truth",
                    "angled_pull": _S28 + "angled_pull_truth",
-                   "gecko_wedges": _S29 + "gecko_wedges_truth"},
+                   "gecko_wedges": _S29 + "gecko_wedges_truth",
+                   "charging_generator": _S30 + "charging_generator_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -443,7 +447,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "dwell_squeeze": _S26 + "dwell_squeeze_truth",
                    "suction_pocket": _S27 + "suction_pocket_truth",
                    "capillary_condensation": _S28 + "capillary_condensation_truth",
-                   "flash_weakening": _S29 + "flash_weakening_truth"},
+                   "flash_weakening": _S29 + "flash_weakening_truth",
+                   "peel_adhesion": _S30 + "peel_adhesion_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -484,7 +489,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "air_film_flatness": _S26 + "air_film_flatness_truth",
                    "conductive_strips": _S27 + "conductive_strips_truth",
                    "ball_passage": _S28 + "ball_passage_truth",
-                   "ferrous_insert": _S29 + "ferrous_insert_truth"},
+                   "ferrous_insert": _S29 + "ferrous_insert_truth",
+                   "lead_preload": _S30 + "lead_preload_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -520,7 +526,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "elastomer_mount": _S26 + "elastomer_mount_truth",
                    "wave_radiation": _S27 + "wave_radiation_truth",
                    "hanging_pendulum": _S28 + "hanging_pendulum_truth",
-                   "friction_pendulum": _S29 + "friction_pendulum_truth"},
+                   "friction_pendulum": _S29 + "friction_pendulum_truth",
+                   "liquid_column": _S30 + "liquid_column_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -560,7 +567,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "pneumatic_balance": _S26 + "pneumatic_balance_truth",
                    "dual_slope_adc": _S27 + "dual_slope_adc_truth",
                    "adaptive_filter": _S28 + "adaptive_filter_truth",
-                   "fixed_point_filter": _S29 + "fixed_point_filter_truth"},
+                   "fixed_point_filter": _S29 + "fixed_point_filter_truth",
+                   "polynomial_smoother": _S30 + "polynomial_smoother_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -598,7 +606,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "wax_crystallisation": _S26 + "wax_crystallisation_truth",
                    "grease_oil_bleed": _S27 + "grease_oil_bleed_truth",
                    "thermostat_cycling": _S28 + "thermostat_cycling_truth",
-                   "lining_glazing": _S29 + "lining_glazing_truth"},
+                   "lining_glazing": _S29 + "lining_glazing_truth",
+                   "carbon_tribolayer": _S30 + "carbon_tribolayer_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -634,7 +643,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "powder_packed_gap": _S26 + "powder_packed_gap_truth",
                    "floating_coupling": _S27 + "floating_coupling_truth",
                    "air_cushion_gap": _S28 + "air_cushion_gap_truth",
-                   "detent_ball": _S29 + "detent_ball_truth"},
+                   "detent_ball": _S29 + "detent_ball_truth",
+                   "magnet_latch": _S30 + "magnet_latch_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -670,7 +680,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "poroelastic_layer": _S26 + "poroelastic_layer_truth",
                    "wire_mesh_backing": _S27 + "wire_mesh_backing_truth",
                    "shear_melting_film": _S28 + "shear_melting_film_truth",
-                   "hysteresis_brake": _S29 + "hysteresis_brake_truth"},
+                   "hysteresis_brake": _S29 + "hysteresis_brake_truth",
+                   "fibre_wiper": _S30 + "fibre_wiper_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

@@ -232,6 +232,15 @@ right, wrong names 25, |shrink error| 0.297; with the dominance rule 151, wrong 
 the sample's 24 inertia cases: no verdict changed, a flexible load closed 0.56 -> 0.94);
 the acceleration level part through a mode (31 acceleration cases: no verdict changed).
 
+Session 35 (2026-12-01; 2 workers, paired against main on the same keys): ``inertia``'s
+mass behind a compliant mode again, as the high-pass ``a s^2 / (s^2 + 2 z w s + w^2)`` of
+the measured acceleration, started on a coarse grid of modes and refined around its best
+(fe2a59f): session 32's 271 cases 154 -> 156 right (two frame recoils on the isolator,
+unexplained before), wrong names 29 -> 29; ``--sample 272 --sample-seed 2`` 159 -> 160 (a
+frame recoil on the rig), wrong names 22 -> 22; the 78 inertia and acceleration cases of
+both samples and seen29 43 -> 49 (frame recoils and seen29's friction pendulums), wrong
+names 9 -> 9; 500 clean records: 0 named (246 ``none``, 254 ``unexplained``).
+
 Sealed family of session 34's writing (``--sealed`` then, written by another hand without
 running the diagnosis on it, run once at the end of session 35 on the code of fe2a59f):
 59.7 % top-1;

@@ -103,6 +103,10 @@ def compliant_mode(a, dt, w, zeta) -> np.ndarray:
         Its damping ratio [-] (> 0).
     """
     a = np.asarray(a, dtype=float)
+    bad = np.flatnonzero(~np.isfinite(a))
+    if bad.size:
+        raise ValueError(f"a[{bad[0]}] = {float(a[bad[0]])!r} is not finite: the acceleration "
+                         f"must be a number at every sample [m/s^2]")
     for name, val, unit in (("dt", dt, "s"), ("w", w, "rad/s"), ("zeta", zeta, "-")):
         if not (np.isfinite(val) and val > 0):
             raise ValueError(f"{name} = {val!r} is out of bounds: must be > 0 [{unit}]")

@@ -63,6 +63,13 @@ def test_bad_parameters_are_refused_by_name(kw, name):
         compliant_mode(np.zeros(10), **args)
 
 
+def test_an_acceleration_that_is_not_a_number_is_refused_at_its_sample():
+    a = np.zeros(10)
+    a[6] = np.inf
+    with pytest.raises(ValueError, match=r"^a\[6\] = inf is not finite"):
+        compliant_mode(a, 1e-3, 10.0, 0.1)
+
+
 def _frame_record(m_frame_share=0.5, f_mode=6.0, zeta=0.05, seed=1):
     """A carriage of 2 kg read against a frame on soft mounts (mass 2 / ``m_frame_share``
     kg, mode ``f_mode`` Hz, damping ``zeta``) moving back and forth with acceleration

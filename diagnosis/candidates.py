@@ -39,7 +39,7 @@ from friction.alignment import velocity_lag
 __all__ = ["Candidate", "LawCandidate", "Context", "Extra", "make_context", "velocity_lag",
            "Fixed", "Asymmetry", "AsymmetryTwins", "friction_heat", "position_quantum",
            "Presliding", "MAX_FILTER_SAMPLES", "missing_columns", "law_variants",
-           "levels_inside", "with_inside_form"]
+           "levels_inside", "with_inside_form", "inside_level"]
 
 
 
@@ -410,6 +410,17 @@ def levels_inside(law) -> bool:
     LuGre: :meth:`friction.lugre.LuGre.simulate_level`), where the ``inside`` forms of
     ``load``, ``stribeck_shape``, ``drift`` and ``acceleration`` act."""
     return type(law).__name__ == "LuGre" and hasattr(law, "simulate_level")
+
+
+#: smallest relative level an inside form passes to the bristle dynamics [-]: a fit can
+#: then never reverse or null the friction, whatever its extras do
+MIN_INSIDE_LEVEL = 0.05
+
+
+def inside_level(level) -> np.ndarray:
+    """A relative level [-] as an inside form gives it to the law (:meth:`friction.lugre.
+    LuGre.simulate_level`): held at :data:`MIN_INSIDE_LEVEL` or above."""
+    return np.clip(level, MIN_INSIDE_LEVEL, None)
 
 
 def with_inside_form(cand: Candidate, law, base_names, form) -> list:

@@ -9,7 +9,7 @@ from numba import njit
 from friction.extensions import acceleration_weight
 
 from .candidates import (MAX_FILTER_SAMPLES, Candidate, Extra, Fixed, _basis_rows, _first_order,
-                         _lsq, _subsample, _with, with_inside_form)
+                         _lsq, _subsample, _with, inside_level, with_inside_form)
 
 __all__ = ["Acceleration", "AccelerationInside", "slip_memory"]
 
@@ -290,7 +290,7 @@ class AccelerationInside(Acceleration):
         return p
 
     def inside(self, p, data, ctx):
-        return np.clip(self.level(p, data), 0.05, None)
+        return inside_level(self.level(p, data))
 
     def apply(self, F, p, data, ctx):
         return F + self.additive(p, data)

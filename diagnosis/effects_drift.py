@@ -10,7 +10,8 @@ from friction.extensions import (DRIFT_CYCLE_NAMES, DRIFT_NAMES, DRIFT_RESET_NAM
                                  DRIFT_SCALES, drift_change, drift_parts, pack_extensions)
 
 from .candidates import (Candidate, Extra, Fixed, _basis_rows, _lsq, _residual_after,
-                         _sse_beside, _subsample, _with, friction_heat, with_inside_form)
+                         _sse_beside, _subsample, _with, friction_heat, inside_level,
+                         with_inside_form)
 
 __all__ = ["Drift", "DriftInside"]
 
@@ -452,7 +453,7 @@ class DriftInside(Drift):
         return [(law, list(base_names))]
 
     def inside(self, p, data, ctx):
-        return np.clip(self.level(p, data, ctx), 0.05, None)
+        return inside_level(self.level(p, data, ctx))
 
     def apply(self, F, p, data, ctx):
         return F

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from .candidates import (Candidate, Extra, Fixed, _basis_rows, _lsq, _sig_neg, _subsample, _with,
-                         levels_inside)
+                         inside_level, levels_inside)
 from .effects_acceleration import slip_memory
 
 __all__ = ["Load", "LoadInside"]
@@ -117,7 +117,7 @@ class LoadInside(Load):
     level and the ``friction_effects`` FMU block keep the output form (:class:`Load`)."""
 
     def inside(self, p, data, ctx):
-        return np.clip(1.0 + self.slope_rel(p, data, ctx), 0.05, None)
+        return inside_level(1.0 + self.slope_rel(p, data, ctx))
 
     def force_extras(self, ctx):
         k = self.extras(ctx)[0]

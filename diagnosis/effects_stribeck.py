@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .candidates import Candidate, Extra, levels_inside
+from .candidates import Candidate, Extra, inside_level, levels_inside
 
 __all__ = ["StribeckShape", "StribeckMap", "StribeckDrag", "speed_map"]
 
@@ -148,8 +148,7 @@ class StribeckMap(StribeckShape):
 
     def inside(self, p, data, ctx):
         knots = [p[n] for n in self._names()]
-        return np.clip(1.0 + speed_map(np.abs(data.v), ctx.sv, knots, self.DECADES),
-                       0.05, None)
+        return inside_level(1.0 + speed_map(np.abs(data.v), ctx.sv, knots, self.DECADES))
 
 
 class StribeckDrag(StribeckShape):

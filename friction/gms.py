@@ -78,6 +78,16 @@ curve (``C`` unused). Its presliding from rest is a sum of exponentials, sum_i k
 (LuGre's), where a sticking block moves with it. Four equal bristles (``spread`` = ``tilt``
 = 1) are the LuGre law; the exact update over a piece is LuGre's exponential,
 u = d_i + (u - d_i) e^{-|v_p| T / d_i}.
+
+Beside elements (``element="beside"``): the contact's own LuGre bristle (stiffness
+``sigma0``, damping ``sigma1``, share 1 - ``share`` of the curve) and three slip-blocks
+beside it (stiffnesses geometric summing to ``sigma_b`` with the ratio ``spread``, shares
+geometric summing to ``share`` with the ratio ``tilt``, undamped, attracted at ``C``): a
+seal, wiper, cable or second contact in parallel with the sliding one, whose presliding
+spans another scale than the contact's bristle. Four geometric elements cannot draw that:
+one stiff element with most of the level and a tail of soft ones, decades apart. At
+``share`` = 0 the law is the LuGre law (the blocks carry nothing). The force is
+F = sigma0 z_1 + sigma1 dz_1/dt + sum_{i>1} k_i z_i + sigma2 v + b.
 """
 from __future__ import annotations
 
@@ -103,8 +113,12 @@ N_ELEMENTS = 4
 #: |v| z / d, d its break-away deflection; C unused). Four equal bristles (spread and tilt
 #: 1) are exactly the LuGre law, so a base whose damped bristle carries its reversals
 #: (sigma1 dz/dt, up to 2 sigma1 |v| right after one, where a sticking block gives sigma1
-#: |v|) is nested: a presliding beside such a contact is reachable from it
-ELEMENTS = {"slip": 0, "bristle": 1}
+#: |v|) is nested: a presliding beside such a contact is reachable from it. ``beside``: the
+#: contact's own LuGre bristle (stiffness ``sigma0``, damping ``sigma1``, share 1 -
+#: ``share`` of the curve) and, beside it, three slip-blocks (total stiffness ``sigma_b``,
+#: ratio ``spread``, shares ``share`` split by ``tilt``): a seal, wiper or second contact
+#: whose presliding spans another scale than the contact's (at ``share`` 0 the LuGre law)
+ELEMENTS = {"slip": 0, "bristle": 1, "beside": 2}
 
 
 @dataclass(frozen=True)
@@ -138,6 +152,14 @@ class GMSParams(FrictionParams):
                         "stiffest's (geometric; 1: equal shares)", lower=1e-4, upper=1e4,
                         search=(1e-2, 1e2), log=True)
     element: str = "slip"
+    # the two below only act with element "beside" (after ``element``, so that the FMU's
+    # value references of the parameters before them keep theirs)
+    share: float = param(0.0, "1", "share of the Stribeck curve the three slip-blocks beside "
+                         "the contact's bristle carry (element \"beside\")", lower=0.0,
+                         upper=0.95, search=(0.0, 0.9))
+    sigma_b: float = param(1e3, "N/m", "total stiffness of the three slip-blocks beside the "
+                           "contact's bristle (element \"beside\")", lower=0,
+                           lower_open=True, upper=1e9, search=(1.0, 1e7), log=True)
 
     def _check_relations(self):
         if self.shape not in SHAPES:
@@ -148,8 +170,8 @@ class GMSParams(FrictionParams):
 
 
 _LAYOUT = ("sigma0", "spread", "C", "sigma2", "Fc", "Fs", "vs", "alpha", "b", "shape",
-           "sigma1", "tilt", "element")
-S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1, TILT, ELEM = range(len(_LAYOUT))
+           "sigma1", "tilt", "element", "share", "sigma_b")
+S0, SPREAD, CA, S2, FC, FS, VS, ALPHA, B, SHAPE, S1, TILT, ELEM, SHARE, SB = range(len(_LAYOUT))
 
 
 @njit(cache=True, inline="always")
@@ -176,6 +198,51 @@ def element_shares(tilt, w):
     w[1] = r / tot
     w[2] = r * r / tot
     w[3] = r * r * r / tot
+
+
+@njit(cache=True, inline="always")
+def beside_layout(sigma0, spread, tilt, share, sigma_b, k, w):
+    """Fill ``k[0..3]`` [N/m] and ``w[0..3]`` [-] of element ``beside``: the contact's
+    bristle (``sigma0``, 1 - ``share``) first, then three slip-blocks beside it, stiffness
+    geometric summing to ``sigma_b`` (ratio ``spread`` stiffest/softest), shares geometric
+    summing to ``share`` (ratio ``tilt`` softest/stiffest)."""
+    r = spread ** -0.5
+    q = tilt ** 0.5
+    kt = 1.0 + r + r * r
+    wt = 1.0 + q + q * q
+    k[0] = sigma0
+    w[0] = 1.0 - share
+    for i in range(3):
+        k[i + 1] = sigma_b * r ** i / kt
+        w[i + 1] = share * q ** i / wt
+
+
+@njit(cache=True, inline="always")
+def element_layout(th, k, w, dw):
+    """Fill the elements' stiffnesses ``k`` [N/m], break-away shares ``w`` [-] and
+    micro-damping weights ``dw`` [-] (the share of ``sigma1`` dz_i/dt in the force) of
+    the packed parameters ``th``: k_i / sum(k) for slip-blocks and bristles alike, the
+    contact's bristle alone for ``beside`` (LuGre's sigma1 dz/dt; the blocks beside it
+    undamped)."""
+    if th[ELEM] == 2.0:
+        beside_layout(th[S0], th[SPREAD], th[TILT], th[SHARE], th[SB], k, w)
+        for i in range(N_ELEMENTS):
+            dw[i] = 1.0 if i == 0 else 0.0
+        return
+    element_stiffness(th[S0], th[SPREAD], k)
+    element_shares(th[TILT], w)
+    tot = 0.0
+    for i in range(N_ELEMENTS):
+        tot += k[i]
+    for i in range(N_ELEMENTS):
+        dw[i] = k[i] / tot
+
+
+@njit(cache=True, inline="always")
+def is_bristle(elem, i):
+    """Whether element ``i`` of the element mode ``elem`` (:data:`ELEMENTS`' code) is a LuGre
+    bristle: all of ``bristle``'s, the first of ``beside``'s."""
+    return elem == 1.0 or (elem == 2.0 and i == 0)
 
 
 @njit(cache=True, inline="always")
@@ -268,19 +335,19 @@ def _start_bisect(d, k, sgn, moving, damp, v0, lam, lo, hi, want):
 
 
 @njit(cache=True, inline="always")
-def _damping_rate(z, v, k, wk, C, fc, fs, vs, alpha, shape, bristle):
-    """sum_i (k_i / sigma0) dz_i/dt [m/s]: the blocks' deflection rate the micro-damping
-    sigma1 multiplies (v while every block sticks, 0 once they slip at a steady speed)."""
+def _damping_rate(z, v, wk, dw, C, fc, fs, vs, alpha, shape, elem):
+    """sum_i ``dw``_i dz_i/dt [m/s]: the elements' deflection rate the micro-damping sigma1
+    multiplies (:func:`element_layout`; v while every block sticks, 0 once they slip at a
+    steady speed); ``wk`` the shares over the stiffnesses [m/N]."""
     if v == 0.0:
         return 0.0
     g = stribeck_g(v, fc, fs, vs, alpha, shape)
     lam = C / g
-    tot = 0.0
     r = 0.0
     for i in range(N_ELEMENTS):
-        tot += k[i]
-        r += k[i] * _block_rate(z[i], v, g * wk[i], lam, bristle)
-    return r / tot
+        if dw[i] != 0.0:
+            r += dw[i] * _block_rate(z[i], v, g * wk[i], lam, is_bristle(elem, i))
+    return r
 
 
 @njit(cache=True, nogil=True)
@@ -288,9 +355,9 @@ def gms_run(t, v, th, method, z0, F, Z):
     """Simulate one parameter set along (t, v); writes F[k] and Z[k, :] in place."""
     n = t.size
     k = np.empty(N_ELEMENTS)
-    element_stiffness(th[S0], th[SPREAD], k)
     wk = np.empty(N_ELEMENTS)
-    element_shares(th[TILT], wk)
+    dw = np.empty(N_ELEMENTS)
+    element_layout(th, k, wk, dw)
     for i in range(N_ELEMENTS):
         wk[i] = wk[i] / k[i]
     C = th[CA]
@@ -298,7 +365,7 @@ def gms_run(t, v, th, method, z0, F, Z):
     b = th[B]
     s1 = th[S1]
     fc, fs, vs, alpha, shape = th[FC], th[FS], th[VS], th[ALPHA], th[SHAPE]
-    bristle = th[ELEM] == 1.0
+    elem = th[ELEM]
     z = np.empty(N_ELEMENTS)
     for i in range(N_ELEMENTS):
         z[i] = z0[i]
@@ -309,7 +376,7 @@ def gms_run(t, v, th, method, z0, F, Z):
             f += k[i] * z[i]
             Z[j, i] = z[i]
         if s1 != 0.0:
-            f += s1 * _damping_rate(z, vj, k, wk, C, fc, fs, vs, alpha, shape, bristle)
+            f += s1 * _damping_rate(z, vj, wk, dw, C, fc, fs, vs, alpha, shape, elem)
         F[j] = f + s2 * vj + b
         if j + 1 < n:
             h = t[j + 1] - t[j]
@@ -317,7 +384,8 @@ def gms_run(t, v, th, method, z0, F, Z):
                 g = stribeck_g(vj, fc, fs, vs, alpha, shape)
                 lam = C / g
                 for i in range(N_ELEMENTS):
-                    z[i] = z[i] + h * _block_rate(z[i], vj, g * wk[i], lam, bristle)
+                    z[i] = z[i] + h * _block_rate(z[i], vj, g * wk[i], lam,
+                                                   is_bristle(elem, i))
             else:
                 T1, a1, b1, T2, a2, b2 = split_step(vj, v[j + 1], h)
                 for piece in range(2):
@@ -330,7 +398,7 @@ def gms_run(t, v, th, method, z0, F, Z):
                     g = stribeck_g(vp, fc, fs, vs, alpha, shape)
                     lam = C / g
                     for i in range(N_ELEMENTS):
-                        z[i] = _block_piece(z[i], vp, T, g * wk[i], lam, bristle)
+                        z[i] = _block_piece(z[i], vp, T, g * wk[i], lam, is_bristle(elem, i))
 
 
 @njit(cache=True, nogil=True)
@@ -373,21 +441,27 @@ class GMS(FrictionModel):
 
     def _pack(self, p: GMSParams) -> np.ndarray:
         return np.array([p.sigma0, p.spread, p.C, p.sigma2, p.Fc, p.Fs, p.vs, p.alpha, p.b,
-                         SHAPES[p.shape], p.sigma1, p.tilt, ELEMENTS[p.element]],
+                         SHAPES[p.shape], p.sigma1, p.tilt, ELEMENTS[p.element], p.share,
+                         p.sigma_b],
                         dtype=np.float64)
 
     # -- pieces of the law --------------------------------------------------------------
+    def _layout(self):
+        """(k, w, dw): the elements' stiffnesses [N/m], shares [-] and damping weights [-]
+        (:func:`element_layout`)."""
+        k, w, dw = (np.empty(N_ELEMENTS) for _ in range(3))
+        element_layout(self._pack(self.params), k, w, dw)
+        return k, w, dw
+
     def element_shares(self) -> np.ndarray:
-        """Break-away shares w_i of the four blocks [-] (stiffest first; they sum to 1)."""
-        w = np.empty(N_ELEMENTS)
-        element_shares(self.params.tilt, w)
-        return w
+        """Break-away shares w_i of the four elements [-] (they sum to 1; slip-blocks and
+        bristles stiffest first, ``beside`` the contact's bristle first)."""
+        return self._layout()[1]
 
     def element_stiffness(self) -> np.ndarray:
-        """Stiffnesses k_i of the four blocks [N/m] (stiffest first; they sum to sigma0)."""
-        k = np.empty(N_ELEMENTS)
-        element_stiffness(self.params.sigma0, self.params.spread, k)
-        return k
+        """Stiffnesses k_i of the four elements [N/m] (slip-blocks and bristles stiffest
+        first, summing to sigma0; ``beside``: sigma0, then the blocks summing to sigma_b)."""
+        return self._layout()[0]
 
     def g(self, v) -> np.ndarray:
         """Stribeck curve g(v) [N].
@@ -412,7 +486,7 @@ class GMS(FrictionModel):
 
     def presliding_distance(self, level: float | None = None) -> float:
         """Travel from a state of rest without history until every block slips [m]: the
-        softest block's break-away deflection at the level ``level`` [N] (default Fs, the
+        largest break-away deflection of the elements at the level ``level`` [N] (default Fs, the
         level at rest). After a reversal from sliding the transition takes twice that.
 
         Parameters
@@ -421,7 +495,7 @@ class GMS(FrictionModel):
             Friction level [N] (default ``Fs``).
         """
         level = self.params.Fs if level is None else float(level)
-        return float(level * self.element_shares()[-1] / self.element_stiffness()[-1])
+        return float(level * np.max(self.element_shares() / self.element_stiffness()))
 
     def virgin_force(self, x, level: float | None = None) -> np.ndarray:
         """Presliding force [N] of a first loading from rest without history by the
@@ -473,24 +547,25 @@ class GMS(FrictionModel):
         w = self.element_shares()
         lam = p.C / g
         d = [g * (w[i] / k[i]) for i in range(N_ELEMENTS)]
-        bristle = p.element == "bristle"
+        elem = float(ELEMENTS[p.element])
 
         def rates(state):
             out = np.empty(N_ELEMENTS)
             for i in range(N_ELEMENTS):
-                out[i] = _block_rate(float(state[i]), v, d[i], lam, bristle)
+                out[i] = _block_rate(float(state[i]), v, d[i], lam, is_bristle(elem, i))
             return out
         return rates
 
     def force(self, state, v, **inputs) -> float:
-        """F = sum_i (k_i z_i + sigma1 (k_i / sigma0) dz_i/dt) + sigma2 v + b [N]."""
+        """F = sum_i (k_i z_i + sigma1 dw_i dz_i/dt) + sigma2 v + b [N] (dw_i = k_i / sigma0;
+        ``beside``: 1 for the contact's bristle, 0 for the blocks)."""
         p = self.params
-        k = self.element_stiffness()
+        k, _, dw = self._layout()
         f = 0.0
         for i in range(N_ELEMENTS):
             f += k[i] * float(state[i])
         if p.sigma1:
-            f += p.sigma1 * float(k @ self.derivatives(state, v)) / float(np.sum(k))
+            f += p.sigma1 * float(dw @ self.derivatives(state, v))
         return f + p.sigma2 * float(v) + p.b
 
     def steady_state_state(self, v0, **inputs) -> np.ndarray:
@@ -525,10 +600,11 @@ class GMS(FrictionModel):
         p = self.params
         v0 = float(v[0])
         k = self.element_stiffness()
-        if p.element == "bristle":
+        if p.element != "slip":
             # LuGre's rule (:meth:`FrictionModel._start_from`) for every bristle alike: each
             # at the same share of its largest deflection, the share at which the force
-            # (affine in it) is F[0], within +-1 (four equal bristles: the LuGre start)
+            # (affine in it) is F[0], within +-1 (four equal bristles: the LuGre start; the
+            # blocks beside a bristle at the same share as it)
             top = max(p.Fc, p.Fs) * (self.element_shares() / k)
             f0 = self.force(np.zeros(N_ELEMENTS), v0)
             f1 = self.force(top, v0)
@@ -547,7 +623,7 @@ class GMS(FrictionModel):
         # the micro-damping's part of the force (increasing in u all the same: it falls as
         # blocks start slipping, by less than their springs' part grows)
         damped = bool(p.sigma1) and v0 != 0.0
-        damp = p.sigma1 / float(np.sum(k)) if damped else 0.0
+        damp = p.sigma1 / float(np.sum(k)) if damped else 0.0  # slip: dw_i = k_i / sum k
         lam = p.C / g0 if damped else 0.0
         # a compiled bisection: in Python it was a third of the gms candidate's joint fit
         return _start_bisect(np.ascontiguousarray(d, dtype=float), k, sgn, v0 != 0.0, damp,

@@ -405,6 +405,32 @@ def law_variants(cand: Candidate, law, base_names, ctx: Context) -> list:
     return out
 
 
+def best_variant(fits, ctx: Context):
+    """The fit of a candidate's law variants to keep: of the (composite, fit NRMSE) pairs
+    ``fits``, the best-fitting one whose fitted size is practical (its form's
+    ``practical`` on the law's values and extras is ''), else the best-fitting one (None
+    for no fits). A variant that fits the record better with a presliding crossed within
+    a sample or one that spans the stroke draws the base's own behaviour or a spring,
+    not the effect; the candidate's practical variant is then its own form (session 36:
+    an XML-350 junction-peeling record fitted best by blocks beside the bristle 0.25 um
+    long, named ``gms`` through the slip-blocks before them).
+
+    Parameters
+    ----------
+    fits : list of (Composite, float)
+        Each law variant's joint fit and its fit NRMSE [-].
+    ctx : Context
+        Scales of the fit record (:func:`make_context`).
+    """
+    def nameable(comp) -> bool:
+        form = comp.effects[0] if comp.effects else None
+        if form is None:
+            return True
+        return not form.practical({**comp.describe()["params"], **comp.extras}, ctx)
+    fits = sorted(fits, key=lambda fc: fc[1])
+    return next((fc for fc in fits if nameable(fc[0])), fits[0] if fits else None)
+
+
 def levels_inside(law) -> bool:
     """Whether ``law`` can carry friction levels inside its bristle dynamics (a classic
     LuGre: :meth:`friction.lugre.LuGre.simulate_level`), where the ``inside`` forms of

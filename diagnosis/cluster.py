@@ -84,18 +84,16 @@ def as_client(executor):
 
 
 def _fit_one(name, *, law, base_names, fit, ctx):
-    """Best (composite, fit NRMSE) of candidate ``name`` over its law variants, or None
-    when it does not apply (the client decides what to report)."""
-    from .candidates import law_variants
+    """Best (composite, fit NRMSE) of candidate ``name`` over its law variants
+    (:func:`diagnosis.candidates.best_variant`), or None when it does not apply (the client
+    decides what to report)."""
+    from .candidates import best_variant, law_variants
     from .composite import fit_composite
     from .effects import CANDIDATES  # the registry diagnose() uses
     cand = CANDIDATES[name].specialise(law)
-    best = None
-    for law_v, names_v, form in law_variants(cand, law, base_names, ctx):
-        comp, cost = fit_composite(law_v, names_v, [form], fit, ctx)
-        if best is None or cost < best[1]:
-            best = (comp, cost)
-    return best
+    return best_variant([fit_composite(law_v, names_v, [form], fit, ctx)
+                         for law_v, names_v, form in law_variants(cand, law, base_names, ctx)],
+                        ctx)
 
 
 def applicable(names, law, fit, ctx, val_sets) -> list:

@@ -31,7 +31,7 @@ from friction.dataset import Dataset, load_dataset
 from friction.metrics import nrmse
 from friction.progress import status_lines
 
-from .candidates import law_variants, missing_columns as _missing_columns
+from .candidates import best_variant, law_variants, missing_columns as _missing_columns
 from .composite import Composite, fit_composite
 from .effects import CANDIDATES, EFFECT_NAMES, make_context
 from .regions import band_splits, frequency_split, regime_split
@@ -457,12 +457,9 @@ def diagnose(fit_data, model="lugre", validation=None, candidates=None, *, seed:
             skipped[name] = why
             continue
         say(f"[diagnose] candidate {k}/{len(names)}: {name}")
-        best = remote.get(name)
-        for law_v, names_v, form in (() if best else
-                                     law_variants(cand, base.law, base_names, ctx)):
-            comp, cost = fit_composite(law_v, names_v, [form], fit, ctx)
-            if best is None or cost < best[1]:
-                best = (comp, cost)
+        best = remote.get(name) or best_variant(
+            [fit_composite(law_v, names_v, [form], fit, ctx)
+             for law_v, names_v, form in law_variants(cand, base.law, base_names, ctx)], ctx)
         comp, cost = best
         # the form that fitted best (a variant may carry its own: law_variants)
         cand = comp.effects[0] if comp.effects else cand

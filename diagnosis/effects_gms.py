@@ -48,6 +48,14 @@ LuGre bristles of unequal stiffness and share (``element`` "bristle", :func:`bri
 the 271 grid cases of session 32 it moved one verdict, the rig's poroelastic layer to
 ``gms`` (right), and on the rig its held-out gap closed nowhere below -0.5 any more.
 
+A third variant keeps the base's own bristle and puts three slip-blocks *beside* it
+(``element`` "beside": ``share`` [-], their share of the curve, and ``sigma_b`` [N/m],
+their total stiffness, with ``spread``, ``tilt`` and ``C`` among them; :func:`beside_start`):
+a seal, a wiper, a cable or a second contact in parallel with the sliding one, whose
+presliding spans another scale than the contact's. The geometric four elements of the
+other two variants cannot put one stiff element under most of the level and three soft
+ones decades away; at ``share`` 0 the variant is the base itself.
+
 FMU route
 ---------
 As for ``backlash`` (:mod:`diagnosis.effects_backlash`): the blocks are the law's state, so
@@ -208,6 +216,12 @@ class GMSCandidate(LawCandidate):
     #: reversal_travel_floor`); shorter, the blocks' hysteresis is over within the samples a
     #: sub-sample shift moves, and one bristle (the base) draws the same samples
     MIN_SAMPLES = 1.5
+    #: longest reach of the blocks beside the contact (element ``beside``) named ``gms``, x
+    #: the fit record's stroke [-]: blocks that slip only beyond it are a spring to the
+    #: record's start, which a position map draws too (session 36: a valve spool's flow
+    #: force, reach 0.99-1.01 x the stroke, named ``gms`` over ``position``; the grid's
+    #: gms truths beside stiff contacts fitted 0.005-0.14 x it)
+    SPRING_STROKE = 0.5
 
     def start_values(self, law, names, fit, ctx: Context) -> list:
         """Spread, stiffness and attraction rate chosen on the data: the starts of
@@ -279,6 +293,11 @@ class GMSCandidate(LawCandidate):
             return (f"its presliding distance of {pre:.3g} m is crossed within "
                     f"{self.MIN_SAMPLES:g} samples of a reversal ({floor:.3g} m at the "
                     f"record's acceleration): one bristle draws the same samples")
+        stroke = ctx.x_hi - ctx.x_lo
+        if "share" in p and "sigma_b" in p and pre > self.SPRING_STROKE * stroke:
+            return (f"the blocks beside the contact reach {pre:.3g} m before they slip, "
+                    f"beyond {self.SPRING_STROKE:g} x the record's stroke ({stroke:.3g} m): "
+                    f"they never slip within it, a spring, not presliding")
         return ""
 
     def own_parameters(self, law) -> dict:

@@ -355,7 +355,7 @@ def _pythonfmu_dir():
 
 # the pythonfmu build of both laws costs 15-30 s: slow
 @pytest.mark.parametrize("kind", ["native", pytest.param("pythonfmu", marks=pytest.mark.slow)])
-@pytest.mark.parametrize("which", ["backlash", "gms", "gms_bristle"])
+@pytest.mark.parametrize("which", ["backlash", "gms", "gms_bristle", "gms_beside"])
 def test_candidate_law_runs_in_its_law_fmu_to_1e_10(which, kind):
     """The friction_effects block is a stateless map of the law's output; these candidates
     change the law's state, so they run in the law FMUs (C and pythonfmu). With the inputs
@@ -371,6 +371,8 @@ def test_candidate_law_runs_in_its_law_fmu_to_1e_10(which, kind):
            if which == "backlash" else GMS.law_for(base, spread=30.0, C=4e3))
     if which == "gms_bristle":  # the candidate's second variant, four LuGre bristles
         law = law.with_values(element="bristle", tilt=0.3)
+    if which == "gms_beside":  # its third, the base's bristle and blocks beside it
+        law = law.with_values(element="beside", tilt=0.3, share=0.3, sigma_b=400.0)
     path = (built_native_fmus((law.name,)) / f"{law.name}{SUFFIX}.fmu" if kind == "native"
             else _pythonfmu_dir() / f"{law.name}.fmu")
     t, x, v, _ = _motion(3000, 1e-3, 2)
@@ -391,6 +393,7 @@ def test_candidate_law_runs_in_its_law_fmu_to_1e_10(which, kind):
         assert not s.errors()
         # a parameter outside its bounds answers fmi2Error naming it
         for bad in (("delta", "gap_stiffness", "gap_drag") if which == "backlash"
+                    else ("spread", "share", "sigma_b") if which == "gms_beside"
                     else ("spread",)):
             assert s.set(bad, -1.0) >= 3
             assert any(bad in m for m in s.errors())

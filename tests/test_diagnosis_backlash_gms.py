@@ -10,6 +10,7 @@ import pytest
 from diagnosis import effects_backlash as eb
 from diagnosis import effects_gms as eg
 from diagnosis.effects import CANDIDATES, EFFECTS, make_context
+from friction.gms import beside_layout
 from friction import make_model
 from friction.dataset import Dataset
 from friction.metrics import nrmse
@@ -58,6 +59,55 @@ def test_backlash_candidate_is_the_base_behind_a_play_and_reports_the_lost_motio
 def _ctx():
     t, x, v, rng = _motion(2000, 1e-3, 0)
     return make_context(_record(make_model("lugre", **BASE).simulate(t, v), t, x, v, rng))
+
+
+def test_blocks_beside_the_contact_that_reach_past_half_the_stroke_are_a_spring():
+    """The beside variant's blocks must slip within the record: reaching beyond
+    ``SPRING_STROKE`` x the stroke before they slip, they are a spring to the record's start
+    (what a position map draws). The rule reads the beside blocks alone (not the contact's
+    bristle), and the other variants have no such rule."""
+    ctx = _ctx()
+    stroke = ctx.x_hi - ctx.x_lo
+    vals = dict(sigma0=BASE["sigma0"], spread=10.0, tilt=1.0, Fs=BASE["Fs"], share=0.3)
+    k, w = np.empty(4), np.empty(4)
+    beside_layout(vals["sigma0"], 10.0, 1.0, 0.3, 1.0, k, w)
+    per_unit = vals["Fs"] * w[3] / k[3]        # the softest block's reach at sigma_b = 1 N/m
+    spring = dict(vals, sigma_b=per_unit / (0.6 * stroke))   # reach 0.6 x the stroke
+    why = GMS.practical(spring, ctx)
+    assert "spring" in why and "stroke" in why
+    assert GMS.practical(dict(vals, sigma_b=per_unit / (0.4 * stroke)), ctx) == ""
+    slip = {n: spring[n] for n in ("sigma0", "spread", "tilt", "Fs")}
+    assert GMS.practical(slip, ctx) == ""
+
+
+def test_the_best_fitting_variant_of_practical_size_is_kept():
+    """Of a candidate's law variants, the best fit whose fitted size is practical is kept
+    (``best_variant``), not a better one its practical rule refuses; where every variant is
+    refused, the best fit (whose refusal the verdict then reads)."""
+    from diagnosis.candidates import best_variant
+
+    class Form:
+        def __init__(self, why):
+            self.why = why
+
+        def practical(self, p, ctx):
+            return self.why if p["tag"] else ""
+
+    class Fit:
+        def __init__(self, tag, why=""):
+            self.effects = [Form(why)]
+            self.extras = {}
+            self.tag = tag
+
+        def describe(self):
+            return {"params": {"tag": self.tag}}
+
+    refused, kept = Fit(1, "too small"), Fit(0)
+    assert best_variant([(refused, 0.01), (kept, 0.02)], None)[0] is kept
+    assert best_variant([(kept, 0.03), (refused, 0.01)], None) == (kept, 0.03)
+    other = Fit(1, "too small")
+    assert best_variant([(other, 0.05), (refused, 0.01)], None)[0] is refused
+    assert best_variant([], None) is None
 
 
 def test_backlash_practical_size_is_a_play_crossed_within_a_sample_and_a_half():
@@ -593,3 +643,19 @@ def test_a_spring_across_the_play_stiffer_than_the_bristles_is_no_play():
     _, capped = eb._across_fit(fit, p, delta, r, ["gap_stiffness"], 1e3, 1e4)
     assert free[0] == pytest.approx(5e4, rel=1e-6)
     assert capped[0] == pytest.approx(1e4, rel=1e-6)
+
+
+def test_grease_presliding_beside_a_stiff_contact_is_named_gms_not_delay():
+    """Seen family 22's grease layer yielding beside the XML-350's stiff contact (strength
+    0.5, 1 % noise, positions quantised and differentiated): on ee79bf5, before the beside
+    variant, ``delay`` (0.60 of the excess closed; ``gms`` 0.26); now ``gms``, closing the
+    whole excess (1.03 when written), ``delay`` far behind."""
+    from diagnosis import diagnose
+    from diagnosis.benchmark.cases import make_plant_case
+    from diagnosis.benchmark.runner import MEASURED
+    case = make_plant_case("xml350", "gms", 0.5, 0.01, seed=60850, quick=True,
+                           form="grease_yield", measured=MEASURED[3])
+    rep = diagnose(case.data, case.base, seed=0)
+    assert rep["verdict"]["cause"] == "gms"
+    closed = {e["name"]: e["excess_closed"] for e in rep["effects"]}
+    assert closed["gms"] > 0.8 and closed["gms"] > closed["delay"] + 0.2

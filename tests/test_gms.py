@@ -181,7 +181,10 @@ def test_exact_update_is_stable_at_any_step_and_stiffness(h):
 
 @pytest.mark.parametrize("kw", [dict(C=2e3),
                                 # LuGre bristles, damped, unequal shares
-                                dict(element="bristle", spread=30.0, tilt=0.3, sigma1=20.0)])
+                                dict(element="bristle", spread=30.0, tilt=0.3, sigma1=20.0),
+                                # a damped bristle with three slip-blocks beside it
+                                dict(element="beside", spread=30.0, tilt=0.3, sigma1=20.0,
+                                     C=2e3, share=0.4, sigma_b=2e3)])
 def test_kernel_converges_to_the_continuous_time_reference(kw):
     """Max force error of the kernel against simulate_prescribed (Radau, rtol 1e-10) on a
     motion with reversals, presliding and sliding, Stribeck curve and lag on: second order
@@ -322,6 +325,38 @@ def test_four_equal_bristles_are_the_lugre_law():
     slip = four.with_values(element="slip", C=1e6)
     Fs = slip.simulate(t, v, state0=slip.record_start_state(t, v, F=F0))
     assert np.sqrt(np.mean((Fs - Fl) ** 2)) > 50 * np.sqrt(np.mean((Fg - Fl) ** 2))
+
+
+def test_a_bristle_with_nothing_beside_it_is_the_lugre_law():
+    """element = "beside" at share 0: the contact's bristle alone (the blocks beside it
+    carry nothing and stay undeflected), the LuGre law as four equal bristles are, its
+    start from a measured first force included; with a share the blocks carry it: sliding
+    far, every element at its share, the force is the Stribeck curve, and the blocks'
+    virgin presliding reaches share x Fs at their break-away deflections."""
+    t, v = _rig_motion()
+    lugre = make_model("lugre", **RIG)
+    four = make_model("gms", spread=1.0, tilt=1.0, element="bristle", C=1.0, **RIG)
+    alone = make_model("gms", element="beside", share=0.0, spread=20.0, tilt=3.0,
+                       sigma_b=50.0, **RIG)
+    F0 = np.full(t.size, 3.0)
+    s_b = alone.record_start_state(t, v, F=F0)
+    s_l = lugre.record_start_state(t, v, F=F0)
+    assert s_b[0] == pytest.approx(s_l[0], rel=1e-12) and not np.any(s_b[1:])
+    Fb, S = alone.simulate(t, v, state0=s_b, return_state=True)
+    Ff = four.simulate(t, v, state0=four.record_start_state(t, v, F=F0))
+    assert not np.any(S[:, 1:])
+    np.testing.assert_allclose(Fb, Ff, rtol=1e-12, atol=1e-12 * np.ptp(Ff))
+    assert np.max(np.abs(Fb - lugre.simulate(t, v, state0=s_l))) < 2e-5 * np.ptp(Fb)
+    # with a share: the elements' layout, the steady state, the blocks' reach
+    m = alone.with_values(share=0.3, sigma_b=5e3)
+    k, w = m.element_stiffness(), m.element_shares()
+    assert k[0] == RIG["sigma0"] and w[0] == pytest.approx(0.7)
+    assert np.sum(k[1:]) == pytest.approx(5e3) and k[1] / k[3] == pytest.approx(20.0)
+    assert np.sum(w[1:]) == pytest.approx(0.3) and w[3] / w[1] == pytest.approx(3.0)
+    tt = np.linspace(0.0, 2.0, 4001)
+    F = m.simulate(tt, np.full(tt.size, 0.05))
+    assert F[-1] == pytest.approx(float(m.steady_state([0.05])[0]), rel=1e-6)
+    assert m.presliding_distance() == pytest.approx(RIG["Fs"] * w[3] / k[3], rel=1e-12)
 
 
 def test_bristle_virgin_curve_is_a_sum_of_exponentials():

@@ -162,7 +162,7 @@ def test_gms_bristle_variant_nests_the_base_and_reaches_a_tail_beside_a_damped_b
     (slip, n_slip), (bristle, n_bristle), (beside, n_beside) = GMS.modify_law(
         base, list(BASE), _ctx())
     assert (slip.params.element, bristle.params.element) == ("slip", "bristle")
-    assert beside.params.element == "beside" and n_beside == n_slip + ["share", "sigma_b"]
+    assert beside.params.element == "beside" and n_beside == n_bristle + ["share", "sigma_b"]
     assert n_slip == n_bristle[:-1] + ["C", "tilt"] and "C" not in n_bristle
     assert "C" not in GMS.own_parameters(bristle) and "C" in GMS.own_parameters(slip)
     t, x, v, _ = _motion(3000, 1e-3, 4)

@@ -409,7 +409,9 @@ def best_variant(fits, ctx: Context):
     """The fit of a candidate's law variants to keep: of the (composite, fit NRMSE) pairs
     ``fits``, the best-fitting one whose fitted size is practical (its form's
     ``practical`` on the law's values and extras is ''), else the best-fitting one (None
-    for no fits). A variant that fits the record better with a presliding crossed within
+    for no fits). A variant whose form asks for a gain (``variant_gain(law)`` < 1, the
+    more flexible form of a candidate) competes only where its NRMSE is below that share
+    of the best of the others'. A variant that fits the record better with a presliding crossed within
     a sample or one that spans the stroke draws the base's own behaviour or a spring,
     not the effect; the candidate's practical variant is then its own form (session 36:
     an XML-350 junction-peeling record fitted best by blocks beside the bristle 0.25 um
@@ -427,7 +429,16 @@ def best_variant(fits, ctx: Context):
         if form is None:
             return True
         return not form.practical({**comp.describe()["params"], **comp.extras}, ctx)
+
+    def gain(comp) -> float:
+        form = comp.effects[0] if comp.effects else None
+        return float(getattr(form, "variant_gain", lambda law: 1.0)(comp.law))
     fits = sorted(fits, key=lambda fc: fc[1])
+    # a variant that asks for a gain (``variant_gain`` < 1: it is the more flexible form)
+    # is kept only where it fits below that share of the best plain variant's NRMSE
+    plain = [cost for comp, cost in fits if gain(comp) >= 1.0]
+    fits = [(comp, cost) for comp, cost in fits
+            if gain(comp) >= 1.0 or not plain or cost < gain(comp) * min(plain)]
     return next((fc for fc in fits if nameable(fc[0])), fits[0] if fits else None)
 
 

@@ -217,6 +217,19 @@ class GMSCandidate(LawCandidate):
     #: reversal_travel_floor`); shorter, the blocks' hysteresis is over within the samples a
     #: sub-sample shift moves, and one bristle (the base) draws the same samples
     MIN_SAMPLES = 1.5
+    #: share of the best other variant's fit NRMSE below which the beside variant (the
+    #: most flexible, two parameters more) is kept [-] (:func:`diagnosis.candidates.
+    #: best_variant`): where presliding sits beside the contact it fitted at 0.27-0.71 of
+    #: the others' (fibre wiper, grease, gouge, junction peeling, contact renewal on the
+    #: XML-350); on stribeck and backlash truths it took at 0.89-1.00 of them (session 36)
+    BESIDE_GAIN = 0.85
+
+    def variant_gain(self, law) -> float:
+        """The gain the variant ``law`` must show over the others to be kept [-]
+        (:func:`diagnosis.candidates.best_variant`): :attr:`BESIDE_GAIN` for the blocks
+        beside the contact's bristle, 1 for the others."""
+        return self.BESIDE_GAIN if law.params.element == "beside" else 1.0
+
     #: longest reach of the blocks beside the contact (element ``beside``) named ``gms``, x
     #: the fit record's stroke [-]: blocks that slip only beyond it are a spring to the
     #: record's start, which a position map draws too (session 36: a valve spool's flow

@@ -83,21 +83,27 @@ def test_blocks_beside_the_contact_that_reach_past_half_the_stroke_are_a_spring(
 def test_the_best_fitting_variant_of_practical_size_is_kept():
     """Of a candidate's law variants, the best fit whose fitted size is practical is kept
     (``best_variant``), not a better one its practical rule refuses; where every variant is
-    refused, the best fit (whose refusal the verdict then reads)."""
+    refused, the best fit (whose refusal the verdict then reads). A variant that asks for a
+    gain (gms's beside blocks) is kept only where it fits below that share of the best
+    other variant's NRMSE."""
     from diagnosis.candidates import best_variant
 
     class Form:
-        def __init__(self, why):
-            self.why = why
+        def __init__(self, why, gain):
+            self.why, self.gain = why, gain
 
         def practical(self, p, ctx):
             return self.why if p["tag"] else ""
 
+        def variant_gain(self, law):
+            return self.gain
+
     class Fit:
-        def __init__(self, tag, why=""):
-            self.effects = [Form(why)]
+        def __init__(self, tag, why="", gain=1.0):
+            self.effects = [Form(why, gain)]
             self.extras = {}
             self.tag = tag
+            self.law = None
 
         def describe(self):
             return {"params": {"tag": self.tag}}
@@ -108,6 +114,10 @@ def test_the_best_fitting_variant_of_practical_size_is_kept():
     other = Fit(1, "too small")
     assert best_variant([(other, 0.05), (refused, 0.01)], None)[0] is refused
     assert best_variant([], None) is None
+    # a flexible variant (gain 0.85) competes only below 0.85 x the best plain one's misfit
+    flexible = Fit(0, gain=0.85)
+    assert best_variant([(flexible, 0.018), (kept, 0.02)], None)[0] is kept
+    assert best_variant([(flexible, 0.016), (kept, 0.02)], None)[0] is flexible
 
 
 def test_backlash_practical_size_is_a_play_crossed_within_a_sample_and_a_half():

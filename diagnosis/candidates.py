@@ -445,7 +445,7 @@ def best_variant(fits, ctx: Context):
 def levels_inside(law) -> bool:
     """Whether ``law`` can carry friction levels inside its bristle dynamics (a classic
     LuGre: :meth:`friction.lugre.LuGre.simulate_level`), where the ``inside`` forms of
-    ``load``, ``stribeck_shape``, ``drift`` and ``acceleration`` act."""
+    ``load``, ``stribeck_shape``, ``drift``, ``acceleration`` and ``position`` act."""
     return type(law).__name__ == "LuGre" and hasattr(law, "simulate_level")
 
 

@@ -71,3 +71,29 @@ def test_the_rule_speaks_only_of_truths_a_shift_draws():
     assert -Delay.MIN_SAMPLES < d < 0.0 and left > 0.8
     assert practical_size("delay", {"truth_shift": d, "shift_left": left}) == ""
     assert practical_size("delay", {"truth_shift": 0.5, "shift_left": 0.01}) != ""
+
+
+@pytest.mark.parametrize("imp, floor, before, why", [
+    (0.004, 0.01, 0.012, "noise floor"),     # below half the noise floor
+    (0.02, 0.01, 0.1, "held-out gap"),        # above the noise, below a quarter of the gap
+    (0.03, 0.01, 0.1, ""),                    # a name may be given
+])
+def test_a_truth_below_the_imprint_a_name_needs_is_below_practical_size(imp, floor, before, why):
+    from diagnosis.verdict import practical_size as verdict_size
+    info = {"truth_imprint": imp, "floor": floor, "before": before}
+    reason = practical_size("stribeck_shape", info)
+    assert (why in reason) if why else reason == ""
+    # the same rule the verdict applies to a named candidate of that imprint
+    entry = {"name": "stribeck_shape", "imprint": imp, "significance_z": 50.0}
+    assert bool(verdict_size(entry, before, floor, 10)) == bool(reason)
+
+
+def test_truth_imprint_is_the_rms_of_truth_minus_base_over_the_held_out_spread():
+    from diagnosis.benchmark.scoring import truth_imprint
+    rng = np.random.default_rng(3)
+    F = rng.normal(0.0, 2.0, 4000)
+    base = np.zeros(4000)
+    truth = np.full(4000, 0.1)
+    assert truth_imprint(F, truth, base) == pytest.approx(0.1 / np.std(F), rel=1e-12)
+    # a truth the base fit draws exactly has no imprint
+    assert truth_imprint(F, base, base) == 0.0

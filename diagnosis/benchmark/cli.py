@@ -45,8 +45,9 @@ def format_summary(res, title: str = "withheld-effect benchmark") -> str:
     below = res["overall"].get("below_practical_cases", 0)
     if below:
         out.append(f"  detect.: over the cases an oracle tells from the base; {below} of the "
-                   f"undetectable are below their effect's practical size (a delay of less "
-                   f"than a sample, which no verdict may name)")
+                   f"undetectable are below their effect's practical size (a truth whose "
+                   f"own held-out imprint is below what a name needs, or a delay of less "
+                   f"than a sample: no verdict may name them)")
     out.append(f"\n{'effect':15s} {'top-1':>9s} {'where':>9s} {'evidence':>9s} {'true':>9s} "
                f"{'undetect.':>9s}  named instead")
     for eff, e in res["per_effect"].items():

@@ -182,15 +182,33 @@ SHIFT_EXPLAINS = 0.5
 
 def practical_size(case_effect: str, info: dict) -> str:
     """Why the truth of a case is below its effect's practical size, so that the issue's
-    rule forbids naming it ('' when it is not): a ``delay`` truth whose shift
-    (:func:`truth_shift`, ``info["truth_shift"]``) is below the candidate's
-    :attr:`~diagnosis.effects_delay.Delay.MIN_SAMPLES` ("a shift smaller than a sample is not
-    a delay"), where that shift draws the truth (it leaves at most :data:`SHIFT_EXPLAINS`
-    of its departure from the base, ``info["shift_left"]``; a truth no shift draws, a
-    sensor's leak, is judged by its size alone). Such a case is not counted among the
+    rule forbids naming it ('' when it is not). Such a case is not counted among the
     detectable ones: no verdict may name it.
+
+    * Any effect: the truth's own held-out imprint (``info["truth_imprint"]``, NRMSE of
+      the noise-free truth minus the base fit's prediction, :func:`truth_imprint`) is
+      below what the verdict asks of a named candidate's (:func:`diagnosis.verdict.
+      practical_size`): :data:`~diagnosis.verdict.IMPRINT_NOISE` x the noise floor
+      ``info["floor"]`` or :data:`~diagnosis.verdict.IMPRINT_GAP` x the base's held-out
+      NRMSE ``info["before"]``. Even the truth itself, offered as a candidate, would be
+      refused: what the base absorbed of it leaves too little on the held-out record.
+    * A ``delay`` truth whose shift (:func:`truth_shift`, ``info["truth_shift"]``) is below
+      the candidate's :attr:`~diagnosis.effects_delay.Delay.MIN_SAMPLES` ("a shift smaller
+      than a sample is not a delay"), where that shift draws the truth (it leaves at most
+      :data:`SHIFT_EXPLAINS` of its departure from the base, ``info["shift_left"]``; a
+      truth no shift draws, a sensor's leak, is judged by its size alone).
     """
     from ..effects_delay import Delay
+    from ..verdict import IMPRINT_GAP, IMPRINT_NOISE
+    imp = info.get("truth_imprint")
+    if imp is not None:
+        floor, before = float(info.get("floor") or 0.0), float(info.get("before") or 0.0)
+        if imp < IMPRINT_NOISE * floor:
+            return (f"the truth's held-out imprint (NRMSE {imp:.3g}) is below "
+                    f"{IMPRINT_NOISE:g} x the noise floor {floor:.3g}")
+        if imp < IMPRINT_GAP * before:
+            return (f"the truth's held-out imprint (NRMSE {imp:.3g}) is below "
+                    f"{IMPRINT_GAP:g} x the held-out gap {before:.3g}")
     shift = info.get("truth_shift")
     left = info.get("shift_left", 0.0)
     if case_effect == "delay" and shift is not None and abs(shift) < Delay.MIN_SAMPLES \
@@ -198,6 +216,15 @@ def practical_size(case_effect: str, info: dict) -> str:
         return (f"the truth shifts the force by {abs(shift):.2f} samples, below the "
                 f"{Delay.MIN_SAMPLES:g} a delay needs")
     return ""
+
+
+def truth_imprint(F_held, truth_held, base_held) -> float:
+    """The truth's held-out imprint [-, NRMSE]: the RMS of the noise-free truth ``truth_held``
+    [N] minus the base fit's prediction ``base_held`` [N] on the held-out samples, over the
+    standard deviation of the measured held-out force ``F_held`` [N] (what a perfect
+    candidate would change in the prediction; :func:`diagnosis.diagnose`'s ``imprint``)."""
+    d = np.asarray(truth_held, float) - np.asarray(base_held, float)
+    return float(np.sqrt(np.mean(d * d)) / (np.std(F_held) or 1.0))
 
 
 def _score(case_effect, exp, rep, data, truth, seconds) -> dict:
@@ -219,6 +246,14 @@ def _score(case_effect, exp, rep, data, truth, seconds) -> dict:
                if base_pred is not None else 0.0)
     detectable = bool(rep["baseline"]["validation"] > NOISE_RATIO * sh["val_truth"]
                       or z_truth >= z_threshold(max(len(rep["effects"]), 1)))
+    # ... and the truth has the practical size a name needs (a perfect candidate's imprint)
+    imp = (truth_imprint(data.F[k:], np.asarray(truth)[k:], base_pred)
+           if base_pred is not None else None)
+    below = (practical_size(case_effect, {"truth_imprint": imp, "floor": rep["noise_floor"],
+                                          "before": rep["baseline"]["validation"]})
+             if imp is not None and case_effect not in ("clean", "outside") else "")
+    if below:
+        detectable = False
     # where the gap truly lies: the same sections on the noise-free gap (truth - base fit)
     loc_true = (localise_gap(data.select(slice(k, None)), np.asarray(truth)[k:] - base_pred)
                 if base_pred is not None else {"family": "", "label": ""})
@@ -235,7 +270,8 @@ def _score(case_effect, exp, rep, data, truth, seconds) -> dict:
             "loc_matches_truth": (loc["label"] == loc_true["label"]
                                   if case_effect not in ("clean", "outside") else None),
             "detectable": detectable if case_effect not in ("clean", "outside") else None,
-            "truth_z": z_truth,
+            "truth_z": z_truth, "truth_imprint": imp,
+            **({"below_practical": below} if below else {}),
             "runner_up": rep["verdict"].get("runner_up", ""),
             "ranking": [e["name"] for e in rep["effects"][:3]],
             **_expected_entry(exp, rep), "effects": decision_entries(rep["effects"]),

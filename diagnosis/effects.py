@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen31`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen32`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -267,6 +267,7 @@ _S28 = "diagnosis.benchmark.seen28:"
 _S29 = "diagnosis.benchmark.seen29:"
 _S30 = "diagnosis.benchmark.seen30:"
 _S31 = "diagnosis.benchmark.seen31:"
+_S32 = "diagnosis.benchmark.seen32:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -335,7 +336,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "winding_heat": _S28 + "winding_heat_truth",
                    "elastic_counterweight": _S29 + "elastic_counterweight_truth",
                    "inertia_lubricator": _S30 + "inertia_lubricator_truth",
-                   "slack_belt": _S31 + "slack_belt_truth"},
+                   "slack_belt": _S31 + "slack_belt_truth",
+                   "nut_liftoff": _S32 + "nut_liftoff_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -374,7 +376,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "soft_film_pressure": _S28 + "soft_film_pressure_truth",
                    "clamping_cylinder": _S29 + "clamping_cylinder_truth",
                    "crowned_rollers": _S30 + "crowned_rollers_truth",
-                   "wheel_sinkage": _S31 + "wheel_sinkage_truth"},
+                   "wheel_sinkage": _S31 + "wheel_sinkage_truth",
+                   "sinking_wiper": _S32 + "sinking_wiper_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -413,7 +416,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "angled_pull": _S28 + "angled_pull_truth",
                    "gecko_wedges": _S29 + "gecko_wedges_truth",
                    "charging_generator": _S30 + "charging_generator_truth",
-                   "cup_paddle": _S31 + "cup_paddle_truth"},
+                   "cup_paddle": _S31 + "cup_paddle_truth",
+                   "coolant_stream": _S32 + "coolant_stream_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -453,7 +457,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "capillary_condensation": _S28 + "capillary_condensation_truth",
                    "flash_weakening": _S29 + "flash_weakening_truth",
                    "peel_adhesion": _S30 + "peel_adhesion_truth",
-                   "measuring_wheel": _S31 + "measuring_wheel_truth"},
+                   "measuring_wheel": _S31 + "measuring_wheel_truth",
+                   "governor_shoes": _S32 + "governor_shoes_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -496,7 +501,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "ball_passage": _S28 + "ball_passage_truth",
                    "ferrous_insert": _S29 + "ferrous_insert_truth",
                    "lead_preload": _S30 + "lead_preload_truth",
-                   "rack_mesh": _S31 + "rack_mesh_truth"},
+                   "rack_mesh": _S31 + "rack_mesh_truth",
+                   "draining_film": _S32 + "draining_film_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -534,7 +540,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "hanging_pendulum": _S28 + "hanging_pendulum_truth",
                    "friction_pendulum": _S29 + "friction_pendulum_truth",
                    "liquid_column": _S30 + "liquid_column_truth",
-                   "magnet_spring": _S31 + "magnet_spring_truth"},
+                   "magnet_spring": _S31 + "magnet_spring_truth",
+                   "fluid_inerter": _S32 + "fluid_inerter_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -576,7 +583,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "adaptive_filter": _S28 + "adaptive_filter_truth",
                    "fixed_point_filter": _S29 + "fixed_point_filter_truth",
                    "polynomial_smoother": _S30 + "polynomial_smoother_truth",
-                   "disturbance_observer": _S31 + "disturbance_observer_truth"},
+                   "disturbance_observer": _S31 + "disturbance_observer_truth",
+                   "pulsation_comb": _S32 + "pulsation_comb_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -616,7 +624,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "thermostat_cycling": _S28 + "thermostat_cycling_truth",
                    "lining_glazing": _S29 + "lining_glazing_truth",
                    "carbon_tribolayer": _S30 + "carbon_tribolayer_truth",
-                   "frost_layer": _S31 + "frost_layer_truth"},
+                   "frost_layer": _S31 + "frost_layer_truth",
+                   "jr_clamp": _S32 + "jr_clamp_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -654,7 +663,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "air_cushion_gap": _S28 + "air_cushion_gap_truth",
                    "detent_ball": _S29 + "detent_ball_truth",
                    "magnet_latch": _S30 + "magnet_latch_truth",
-                   "warming_fit": _S31 + "warming_fit_truth"},
+                   "warming_fit": _S31 + "warming_fit_truth",
+                   "dilatant_gap": _S32 + "dilatant_gap_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -692,7 +702,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "shear_melting_film": _S28 + "shear_melting_film_truth",
                    "hysteresis_brake": _S29 + "hysteresis_brake_truth",
                    "fibre_wiper": _S30 + "fibre_wiper_truth",
-                   "band_brake": _S31 + "band_brake_truth"},
+                   "band_brake": _S31 + "band_brake_truth",
+                   "leaf_pack": _S32 + "leaf_pack_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

@@ -1,10 +1,10 @@
-"""The thirty-second sealed truth family (diagnosis.benchmark.sealed, written in session 36
+"""The thirty-third sealed truth family (diagnosis.benchmark.sealed, written in session 38
 by another hand, sealed: not run): each form builds a finite case of the requested size on every
 plant it applies to, is the base law at s = 0, grows with its amplitude factor and refuses
 the plants it does not apply to. No diagnosis is run on these forms: the family stays unseen
 until the end of a piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS`
-names it as its ``sealed`` form (the thirty-first family, sealed before it, is
-:mod:`diagnosis.benchmark.seen31` since its run)."""
+names it as its ``sealed`` form (the thirty-second family, sealed before it, is
+:mod:`diagnosis.benchmark.seen32` since its run)."""
 import dataclasses
 import importlib
 
@@ -20,11 +20,11 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "nut_liftoff", "load": "sinking_wiper",
-        "asymmetry": "coolant_stream", "stribeck_shape": "governor_shoes",
-        "position": "draining_film", "inertia": "fluid_inerter",
-        "delay": "pulsation_comb", "drift": "jr_clamp",
-        "backlash": "dilatant_gap", "gms": "leaf_pack"}
+FORM = {"acceleration": "bowed_screw", "load": "magnet_preload",
+        "asymmetry": "clapper_tool", "stribeck_shape": "battery_dynamo",
+        "position": "hardened_zones", "inertia": "shunted_coil",
+        "delay": "complementary_fusion", "drift": "solenoid_coil",
+        "backlash": "eddy_gap", "gms": "air_shoe"}
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
@@ -45,8 +45,9 @@ _FORM_MODULES = ("diagnosis.benchmark.truths", "diagnosis.benchmark.forms",
                  "diagnosis.benchmark.seen25", "diagnosis.benchmark.seen26",
                  "diagnosis.benchmark.seen27", "diagnosis.benchmark.seen28",
                  "diagnosis.benchmark.seen29", "diagnosis.benchmark.seen30",
-                 "diagnosis.benchmark.seen31", "diagnosis.benchmark.sealed",
-                 "diagnosis.effects_backlash", "diagnosis.effects_gms")
+                 "diagnosis.benchmark.seen31", "diagnosis.benchmark.seen32",
+                 "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
+                 "diagnosis.effects_gms")
 
 
 def test_the_family_has_one_new_form_per_effect():
@@ -68,9 +69,9 @@ def test_the_family_has_one_new_form_per_effect():
         assert not names & set(vars(mod)), name
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
-    assert doc.startswith("The thirty-second sealed truth family")
-    assert "sealed: not run" in doc and "2026-12-01 (session 36)" in doc
-    assert "session 35's, was run once and is :mod:`.seen31`" in doc
+    assert doc.startswith("The thirty-third sealed truth family")
+    assert "sealed: not run" in doc and "2026-12-01 (session 38)" in doc
+    assert "session 36's, was run once and is :mod:`.seen32`" in doc
 
 
 def test_registered_forms_resolve():
@@ -111,97 +112,101 @@ def test_sealed_forms_reach_their_size_on_two_plants(plant):
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        family.governor_shoes_truth(iso, 1.0)
+        family.battery_dynamo_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.leaf_pack_truth(iso, 1.0)
+        family.air_shoe_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.dilatant_gap_truth(iso, 1.0)
+        family.eddy_gap_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
     # a one-way stroke (the press's) never comes back over the positions the fit part saw
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        family.draining_film_truth.__wrapped__(one_way, 1.0)
-    # a load that never changes never sinks the carriage further onto its wiper
+        family.hardened_zones_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes never moves the magnet's gap
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        family.sinking_wiper_truth.__wrapped__(still, 1.0)
+        family.magnet_preload_truth.__wrapped__(still, 1.0)
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
-def test_the_nut_shares_its_load_until_a_half_lifts_off():
-    lift = family.NUT_LIFTOFF
-    s = family._nut_loads(np.array([0.0, 0.03, -0.03, lift, 5.0, -5.0]))
-    assert np.isclose(s[0], 2.0) and np.isclose(s[1], s[2])
-    assert np.isclose(s[1] - 2.0, 0.03 ** 2 / 12.0, rtol=2e-2)   # slowly at first
-    assert np.isclose(s[3], lift, rtol=1e-6) and np.allclose(s[4:], 5.0)   # then the thrust
-    u = np.linspace(0.0, 4.0, 401)
-    assert np.all(np.diff(family._nut_loads(u)) > 0.0)
+def test_the_bow_grows_under_compression_and_shrinks_under_tension():
+    b = family._bow_growth(np.array([0.0, 0.5, -0.5, 0.75]))
+    assert np.allclose(b, [1.0, 2.0, 2.0 / 3.0, 4.0])
     kin = plant_kinematics("forging_press", quick=True)
-    assert np.all(np.isfinite(family.nut_liftoff_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.bowed_screw_truth(kin, 1.0)))
 
 
-def test_the_wiper_is_pressed_once_the_carriage_sinks_past_its_clearance():
-    d = family._lip_press(np.array([0.0, 0.5, 1.0, 8.0]), 0.8, 1e-9)
-    assert np.allclose(d, [0.0, 0.0, 0.2, 3.2], atol=1e-8)
+def test_the_magnet_pulls_as_the_inverse_square_of_its_closing_gap():
+    p = family._magnet_pull(np.array([0.0, 1.0, -1.0, 0.5]), 2.0)
+    assert np.allclose(p, [1.0, 4.0, 4.0, (2.0 / 1.5) ** 2])
 
 
-def test_the_stream_drags_by_the_speed_relative_to_it():
-    d = family._stream_drag(np.array([0.0, 1.0, -1.0, -0.4]), -0.4)
-    assert np.allclose(d, [0.16, 1.96, -0.36, 0.0])
+def test_the_cutting_force_falls_slowly_with_the_speed():
+    c = family._cutting_factor(np.array([1.0, -1.0, 0.0, 0.5]), 0.1, 0.2)
+    assert np.allclose(c[:2], 1.0) and np.isclose(c[2], 11.0 ** 0.2)
+    assert c[2] > c[3] > c[0]
 
 
-def test_the_shoes_lift_off_as_the_square_of_the_speed():
-    p = family._shoe_press(np.array([0.0, 0.5, -0.5, 2.0]), 1e-9)
-    assert np.allclose(p, [1.0, 0.75, 0.75, 0.0], atol=1e-8)
-    q = family._shoe_press(np.linspace(0.0, 2.0, 201), 0.05)
-    assert np.all(np.diff(q) <= 0.0) and q[0] == 1.0 and q[-1] < 0.02
+def test_the_dynamo_brakes_above_its_cut_in_speed():
+    c = family._charging_current(np.array([0.0, 0.3, 1.0, -1.0, 0.675]), 0.35, 1e-9)
+    assert np.allclose(c, [0.0, 0.0, 1.0, 1.0, 0.5], atol=1e-8)
+    q = family._charging_current(np.linspace(0.0, 1.0, 101), 0.35, 0.03)
+    assert np.all(np.diff(q) > 0.0) and q[0] < 0.01
 
 
-def test_the_film_drains_thicker_downhill():
-    b = family._asperity_share(np.array([0.0, 1.0, 2.0]), 2.5, 0.25)
-    assert np.isclose(b[0], np.exp(-2.5 * np.sqrt(0.2))) and np.isclose(b[1], np.exp(-2.5))
-    assert b[2] == b[1]                                  # beyond the stroke: its end's
-    assert np.all(np.diff(family._asperity_share(np.linspace(0.0, 1.0, 101), 2.5,
-                                                 0.25)) < 0.0)
+def test_the_way_is_soft_where_two_passes_meet():
+    b = family._softness(np.array([0.0, 0.4, 0.8, 0.46, 1.0]), 0.4, 0.06)
+    assert np.isclose(b[0], 0.0, atol=1e-9) and np.allclose(b[1:3], 1.0)
+    assert np.isclose(b[3], np.exp(-0.5)) and b[4] < 0.01
 
 
-def test_the_inerter_is_a_mass_with_its_channels_losses():
-    f = family._inerter_force(np.array([2.0, 0.0, 0.0]), np.array([0.0, 3.0, -3.0]),
-                              1.5, 0.5, 0.1)
-    assert np.allclose(f, [3.0, 1.5 + 0.9, -1.5 - 0.9])
+def test_the_shunted_coil_is_a_mass_seen_through_its_lag():
+    t = np.linspace(0.0, 10.0, 100001)
+    f = family._shunt_force(t, np.ones_like(t), 2.0 * t, 3.0, 0.5)
+    assert np.allclose(f, 6.0 * (1.0 - np.exp(-t / 0.5)), atol=1e-3)   # M a, after the lag
+    b = family._coil_coupling(np.array([0.0, 1.0, -1.0, 2.0]), 0.3)
+    assert np.allclose(b, [1.0, 0.7, 0.7, 0.7])
 
 
-def test_the_comb_passes_steady_forces_and_splits_a_step():
-    t = np.linspace(0.0, 10.0, 1001)
-    assert np.allclose(family._comb(t, np.full(t.size, 3.0), 1.0), 3.0)
-    y = family._comb(t, (t >= 5.0).astype(float), 1.0)
-    assert np.allclose(y[:500], 0.0) and np.allclose(y[500:600], 0.5)
-    assert np.allclose(y[600:], 1.0)                  # the second half a lag later
+def test_the_fusion_delays_only_the_slow_part():
+    t = np.linspace(0.0, 10.0, 10001)
+    u = (t >= 2.0).astype(float)
+    assert np.allclose(family._fuse(t, np.full(t.size, 3.0), 1.0, 0.5), 3.0)
+    assert np.allclose(family._fuse(t, u, 0.0, 0.5), u)
+    y = family._fuse(t, u, 3.0, 0.5)
+    assert np.allclose(y[:2000], 0.0)
+    k = 2000 + np.arange(1, 3000, 500)                  # the fast part on time, then fading
+    assert np.allclose(y[k], np.exp(-(t[k] - 2.0) / 0.5), atol=2e-3)
+    assert np.isclose(y[-1], 1.0, atol=1e-3)            # the slow part, late
 
 
-def test_the_clamp_pulls_as_the_square_of_the_charged_voltage():
-    f = family._clamp_force(np.array([0.0, 0.4, 1e3]), 0.4)
-    assert np.allclose(f, [0.0, (1.0 - np.exp(-1.0)) ** 2, 1.0])
-    assert np.isclose(family._clamp_force(np.array([1e-3]), 1.0)[0], 1e-6, rtol=2e-3)
+def test_the_warming_coil_pulls_less():
+    p = family._coil_pull(np.array([0.0, 0.5, 1e3]), 0.5, 0.4)
+    assert np.isclose(p[0], 1.0) and np.isclose(p[2], 1.0 / 1.4 ** 2)
+    assert np.isclose(p[1], 1.0 / (1.0 + 0.4 * (1.0 - np.exp(-1.0))) ** 2)
+    assert np.all(np.diff(family._coil_pull(np.linspace(0.0, 1.0, 101), 0.5, 0.4)) < 0.0)
 
 
-def test_the_suspension_thickens_and_jams():
-    d = [family._dilatant_drag(e, 2.0, 1.0) for e in (0.0, 0.01, -0.01, 1e3)]
-    assert d[0] == 0.0 and np.isclose(d[1], 2e-4, rtol=1e-3) and np.isclose(d[2], -d[1])
-    assert np.isclose(d[3], 1.0, rtol=1e-5)
+def test_the_eddy_drag_peaks_at_its_critical_speed():
+    d = [family._eddy_drag(e, 2.0, 0.5) for e in (0.0, 0.5, -0.5, 1e-4, 50.0)]
+    assert d[0] == 0.0 and np.isclose(d[1], 2.0) and np.isclose(d[2], -2.0)
+    assert np.isclose(d[3], 2.0 * 2.0 * 1e-4 / 0.5, rtol=1e-6)   # viscous when slow
+    assert 0.0 < d[4] < 0.05                                    # pushed out when fast
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.dilatant_gap_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.eddy_gap_truth(kin, 1.0)))
 
 
-def test_the_leaf_pack_follows_its_envelopes_and_slides():
+def test_the_air_spring_stiffens_and_the_shoe_slides():
+    f = family._air_spring(np.array([0.0, 1.0, -1.0, 0.5]), 1.5, 1.0)
+    assert np.isclose(f[0], 0.0) and np.isclose(f[1], 1.0) and np.isclose(f[2], -1.0)
+    assert np.isclose(f[3], (1.5 / 1.0 - 1.5 / 2.0) / (1.5 / 0.5 - 1.5 / 2.5))
+    assert f[3] < 0.5                                   # stiffer the further it travels
     path = np.r_[np.linspace(0.0, 3.0, 3001), np.linspace(3.0, -3.0, 6001)[1:]]
-    f = family._leaf_pack(path, 1.0, 0.3, 0.01)
-    # the upper envelope, u + 0.3, lagged by the decay length
-    assert f[0] == 0.0 and np.isclose(f[500], 0.8 - 0.01, atol=1e-3)
-    assert np.isclose(f[3000], 1.0) and np.isclose(f[-1], -1.0)   # sliding both ways
-    assert np.isclose(f[3500], -0.1 + 0.01, atol=1e-3)            # back across the band
+    r = family._shoe_travel(path, 1.0)
+    assert r[0] == 0.0 and np.isclose(r[500], 0.5) and np.isclose(r[3000], 1.0)
+    assert np.isclose(r[3000 + 1500], -0.5) and np.isclose(r[-1], -1.0)
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.leaf_pack_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.air_shoe_truth(kin, 1.0)))
 
 
 @pytest.mark.slow

@@ -80,6 +80,26 @@ def test_blocks_beside_the_contact_that_reach_past_half_the_stroke_are_a_spring(
     assert GMS.practical(slip, ctx) == ""
 
 
+def test_the_blocks_reach_is_read_at_the_sliding_level_not_a_static_peak():
+    """The blocks beside the contact slip while it slides, at their share of the sliding
+    level ``Fc``: a static level far above it (the damping rig's fitted ``Fs`` runs to its
+    box, 290-580 N against ``Fc`` 5 N) holds only at rest and does not make them a spring.
+    Beyond half the stroke at ``Fc`` they still are one."""
+    ctx = _ctx()
+    stroke = ctx.x_hi - ctx.x_lo
+    Fc = 1.0
+    vals = dict(sigma0=BASE["sigma0"], spread=10.0, tilt=1.0, Fc=Fc, Fs=20.0 * Fc, share=0.3)
+    k, w = np.empty(4), np.empty(4)
+    beside_layout(vals["sigma0"], 10.0, 1.0, 0.3, 1.0, k, w)
+    per_unit = Fc * w[3] / k[3]          # the softest block's reach at Fc, sigma_b = 1 N/m
+    # reach 0.2 x the stroke at Fc, 4 x at Fs: blocks that slip within the record
+    assert GMS.practical(dict(vals, sigma_b=per_unit / (0.2 * stroke)), ctx) == ""
+    # reach 0.6 x the stroke at Fc: a spring
+    assert "spring" in GMS.practical(dict(vals, sigma_b=per_unit / (0.6 * stroke)), ctx)
+    # the short-presliding floor still reads the static level (unchanged by this rule)
+    assert GMS.practical({n: vals[n] for n in ("sigma0", "spread", "tilt", "Fs")}, ctx) == ""
+
+
 def test_the_best_fitting_variant_of_practical_size_is_kept():
     """Of a candidate's law variants, the best fit whose fitted size is practical is kept
     (``best_variant``), not a better one its practical rule refuses; where every variant is

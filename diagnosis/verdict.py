@@ -50,7 +50,7 @@ import numpy as np
 
 from .significance import z_threshold
 
-__all__ = ["decide", "rank", "overrule_deferrals", "noise_floor", "practical_size",
+__all__ = ["decide", "rank", "overrule_deferrals", "noise_floor", "practical_size", "imprint_shortfall",
            "decision_entries", "DEFER_SHARE",
            "MIN_EXCESS_CLOSED", "DOMINANT_EXCESS", "DOMINANCE", "dominant", "TIE", "TIE_REL",
            "EVENT_RATIO", "RESOLVED_EXCESS",
@@ -142,6 +142,21 @@ def resolved(effect: dict, floor: float) -> bool:
             and effect.get("imprint", 0.0) >= RESOLVED_IMPRINT * floor)
 
 
+def imprint_shortfall(imp: float, before: float, floor: float, whose: str = "its") -> str:
+    """Why a held-out imprint ``imp`` [-, NRMSE] is too small for a name ('' when it is
+    not): below :data:`IMPRINT_NOISE` x the noise floor ``floor`` or :data:`IMPRINT_GAP` x
+    the base's held-out NRMSE ``before`` [-]. ``whose`` starts the sentence (a candidate's
+    imprint, or the benchmark's truth's: :func:`diagnosis.benchmark.scoring.
+    practical_size`)."""
+    if imp < IMPRINT_NOISE * floor:
+        return (f"{whose} held-out imprint (NRMSE {imp:.3g}) is below {IMPRINT_NOISE:g} x the "
+                f"noise floor {floor:.3g}")
+    if imp < IMPRINT_GAP * before:
+        return (f"{whose} held-out imprint (NRMSE {imp:.3g}) is below {IMPRINT_GAP:g} x the "
+                f"held-out gap {before:.3g}")
+    return ""
+
+
 def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> str:
     """Why ``effect`` (a ranked entry of :func:`diagnose`) may not be named whatever share of
     the gap it closes; '' when it may.
@@ -169,13 +184,9 @@ def practical_size(effect: dict, before: float, floor: float, n_tests: int) -> s
             return (f"its held-out improvement is not significant (paired z = "
                     f"{effect['significance_z']:.1f}{against} < {z_need:.2f})")
     if "imprint" in effect:
-        imp = effect["imprint"]
-        if imp < IMPRINT_NOISE * floor:
-            return (f"its held-out imprint (NRMSE {imp:.3g}) is below {IMPRINT_NOISE:g} x the "
-                    f"noise floor {floor:.3g}")
-        if imp < IMPRINT_GAP * before:
-            return (f"its held-out imprint (NRMSE {imp:.3g}) is below {IMPRINT_GAP:g} x the "
-                    f"held-out gap {before:.3g}")
+        short = imprint_shortfall(effect["imprint"], before, floor)
+        if short:
+            return short
     if effect.get("size_reason"):
         return effect["size_reason"]
     return ""

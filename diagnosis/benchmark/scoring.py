@@ -199,16 +199,13 @@ def practical_size(case_effect: str, info: dict) -> str:
       truth no shift draws, a sensor's leak, is judged by its size alone).
     """
     from ..effects_delay import Delay
-    from ..verdict import IMPRINT_GAP, IMPRINT_NOISE
+    from ..verdict import imprint_shortfall
     imp = info.get("truth_imprint")
     if imp is not None:
-        floor, before = float(info.get("floor") or 0.0), float(info.get("before") or 0.0)
-        if imp < IMPRINT_NOISE * floor:
-            return (f"the truth's held-out imprint (NRMSE {imp:.3g}) is below "
-                    f"{IMPRINT_NOISE:g} x the noise floor {floor:.3g}")
-        if imp < IMPRINT_GAP * before:
-            return (f"the truth's held-out imprint (NRMSE {imp:.3g}) is below "
-                    f"{IMPRINT_GAP:g} x the held-out gap {before:.3g}")
+        short = imprint_shortfall(imp, float(info.get("before") or 0.0),
+                                  float(info.get("floor") or 0.0), "the truth's")
+        if short:
+            return short
     shift = info.get("truth_shift")
     left = info.get("shift_left", 0.0)
     if case_effect == "delay" and shift is not None and abs(shift) < Delay.MIN_SAMPLES \

@@ -50,8 +50,8 @@ import numpy as np
 
 from .significance import z_threshold
 
-__all__ = ["decide", "rank", "overrule_deferrals", "noise_floor", "practical_size", "imprint_shortfall",
-           "decision_entries", "DEFER_SHARE",
+__all__ = ["decide", "rank", "overrule_deferrals", "noise_floor", "practical_size",
+           "imprint_shortfall", "decision_entries", "DEFER_SHARE",
            "MIN_EXCESS_CLOSED", "DOMINANT_EXCESS", "DOMINANCE", "dominant", "TIE", "TIE_REL",
            "EVENT_RATIO", "RESOLVED_EXCESS",
            "RESOLVED_IMPRINT", "resolved",

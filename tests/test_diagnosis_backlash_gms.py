@@ -96,8 +96,17 @@ def test_the_blocks_reach_is_read_at_the_sliding_level_not_a_static_peak():
     assert GMS.practical(dict(vals, sigma_b=per_unit / (0.2 * stroke)), ctx) == ""
     # reach 0.6 x the stroke at Fc: a spring
     assert "spring" in GMS.practical(dict(vals, sigma_b=per_unit / (0.6 * stroke)), ctx)
-    # the short-presliding floor still reads the static level (unchanged by this rule)
-    assert GMS.practical({n: vals[n] for n in ("sigma0", "spread", "tilt", "Fs")}, ctx) == ""
+    # the short-presliding floor still reads the static level: slip-blocks reaching 4 x
+    # the floor at Fs (0.2 x at Fc) are not refused, nor at 0.8 x the floor at Fs
+    from diagnosis.effects_backlash import reversal_travel_floor
+    from friction.gms import element_shares, element_stiffness
+    floor = reversal_travel_floor(ctx, GMS.MIN_SAMPLES)
+    element_stiffness(1.0, 10.0, k)
+    element_shares(1.0, w)
+    reach = vals["Fs"] * float(np.max(w / k))           # at sigma0 = 1 N/m
+    slip = {n: vals[n] for n in ("spread", "tilt", "Fs", "Fc")}
+    assert GMS.practical(dict(slip, sigma0=reach / (4.0 * floor)), ctx) == ""
+    assert "crossed within" in GMS.practical(dict(slip, sigma0=reach / (0.8 * floor)), ctx)
 
 
 def test_the_best_fitting_variant_of_practical_size_is_kept():

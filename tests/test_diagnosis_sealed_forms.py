@@ -1,10 +1,10 @@
-"""The thirty-third sealed truth family (diagnosis.benchmark.sealed, written in session 38
+"""The thirty-fourth sealed truth family (diagnosis.benchmark.sealed, written in session 39
 by another hand, sealed: not run): each form builds a finite case of the requested size on every
 plant it applies to, is the base law at s = 0, grows with its amplitude factor and refuses
 the plants it does not apply to. No diagnosis is run on these forms: the family stays unseen
 until the end of a piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS`
-names it as its ``sealed`` form (the thirty-second family, sealed before it, is
-:mod:`diagnosis.benchmark.seen32` since its run)."""
+names it as its ``sealed`` form (the thirty-third family, sealed before it, is
+:mod:`diagnosis.benchmark.seen33` since its run)."""
 import dataclasses
 import importlib
 
@@ -20,11 +20,11 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "bowed_screw", "load": "magnet_preload",
-        "asymmetry": "clapper_tool", "stribeck_shape": "battery_dynamo",
-        "position": "hardened_zones", "inertia": "shunted_coil",
-        "delay": "complementary_fusion", "drift": "solenoid_coil",
-        "backlash": "eddy_gap", "gms": "air_shoe"}
+FORM = {"acceleration": "energised_seals", "load": "toggle_clamp",
+        "asymmetry": "plunger_pump", "stribeck_shape": "floating_pawl",
+        "position": "grit_band", "inertia": "yoke_flywheel",
+        "delay": "acoustic_link", "drift": "magnetic_aftereffect",
+        "backlash": "foam_pads", "gms": "buckling_strut"}
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
@@ -46,8 +46,8 @@ _FORM_MODULES = ("diagnosis.benchmark.truths", "diagnosis.benchmark.forms",
                  "diagnosis.benchmark.seen27", "diagnosis.benchmark.seen28",
                  "diagnosis.benchmark.seen29", "diagnosis.benchmark.seen30",
                  "diagnosis.benchmark.seen31", "diagnosis.benchmark.seen32",
-                 "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
-                 "diagnosis.effects_gms")
+                 "diagnosis.benchmark.seen33", "diagnosis.benchmark.sealed",
+                 "diagnosis.effects_backlash", "diagnosis.effects_gms")
 
 
 def test_the_family_has_one_new_form_per_effect():
@@ -69,9 +69,9 @@ def test_the_family_has_one_new_form_per_effect():
         assert not names & set(vars(mod)), name
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
-    assert doc.startswith("The thirty-third sealed truth family")
-    assert "sealed: not run" in doc and "2026-12-01 (session 38)" in doc
-    assert "session 36's, was run once and is :mod:`.seen32`" in doc
+    assert doc.startswith("The thirty-fourth sealed truth family")
+    assert "sealed: not run" in doc and "2026-12-01 (session 39)" in doc
+    assert "session 38's, was run once and is :mod:`.seen33`" in doc
 
 
 def test_registered_forms_resolve():
@@ -112,101 +112,101 @@ def test_sealed_forms_reach_their_size_on_two_plants(plant):
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        family.battery_dynamo_truth(iso, 1.0)
+        family.floating_pawl_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.air_shoe_truth(iso, 1.0)
+        family.buckling_strut_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.eddy_gap_truth(iso, 1.0)
+        family.foam_pads_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
     # a one-way stroke (the press's) never comes back over the positions the fit part saw
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        family.hardened_zones_truth.__wrapped__(one_way, 1.0)
-    # a load that never changes never moves the magnet's gap
+        family.grit_band_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes never moves the toggle's links
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        family.magnet_preload_truth.__wrapped__(still, 1.0)
+        family.toggle_clamp_truth.__wrapped__(still, 1.0)
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
-def test_the_bow_grows_under_compression_and_shrinks_under_tension():
-    b = family._bow_growth(np.array([0.0, 0.5, -0.5, 0.75]))
-    assert np.allclose(b, [1.0, 2.0, 2.0 / 3.0, 4.0])
-    kin = plant_kinematics("forging_press", quick=True)
-    assert np.all(np.isfinite(family.bowed_screw_truth(kin, 1.0)))
+def test_the_seals_hold_until_a_chamber_empties():
+    p1, p2 = family._chamber_pressures(np.array([0.0, 0.1, 1.0, -1.0]), 0.1, 1e-9)
+    assert np.allclose(p1 + p2, [0.2, 0.2, 0.6, 0.6])
+    assert np.isclose(p2[2], 0.0) and np.isclose(p1[3], 0.0)
 
 
-def test_the_magnet_pulls_as_the_inverse_square_of_its_closing_gap():
-    p = family._magnet_pull(np.array([0.0, 1.0, -1.0, 0.5]), 2.0)
-    assert np.allclose(p, [1.0, 4.0, 4.0, (2.0 / 1.5) ** 2])
+def test_the_toggle_gains_as_its_links_straighten():
+    g = family._toggle_gain(np.array([0.0, 0.5, 1.0]), 0.35, 0.5)
+    assert np.isclose(g[0], 1.0)
+    assert np.isclose(g[2], np.tan(0.35) / np.tan(0.175))
+    assert g[2] - g[1] > g[1] - g[0] > 0          # ever faster
 
 
-def test_the_cutting_force_falls_slowly_with_the_speed():
-    c = family._cutting_factor(np.array([1.0, -1.0, 0.0, 0.5]), 0.1, 0.2)
-    assert np.allclose(c[:2], 1.0) and np.isclose(c[2], 11.0 ** 0.2)
-    assert c[2] > c[3] > c[0]
+def test_the_pump_delivers_one_way_and_draws_in_the_other():
+    out, back = family._pump_pressure(np.array([0.0, 1.0, -1.0, -10.0]), 0.6, 0.05, 4.0, 0.2)
+    assert np.isclose(out[0], 0.6) and np.isclose(out[1], 1.0)
+    assert np.isclose(back[0], -0.05 / 1.25) and np.isclose(back[1], -0.25 / 2.25)
+    assert -0.2 < back[3] < back[2] < 0.0                 # bounded by the vapour pressure
 
 
-def test_the_dynamo_brakes_above_its_cut_in_speed():
-    c = family._charging_current(np.array([0.0, 0.3, 1.0, -1.0, 0.675]), 0.35, 1e-9)
-    assert np.allclose(c, [0.0, 0.0, 1.0, 1.0, 0.5], atol=1e-8)
-    q = family._charging_current(np.linspace(0.0, 1.0, 101), 0.35, 0.03)
-    assert np.all(np.diff(q) > 0.0) and q[0] < 0.01
+def test_the_pawl_drags_until_it_floats():
+    d = family._pawl_drag(np.array([0.0, 0.03, 0.3, 3.0, -3.0]), 0.3)
+    assert np.isclose(d[0], 1.0) and d[1] > 0.99 and np.isclose(d[2], 2 ** -0.5)
+    assert np.isclose(d[3], 1.0 / np.sqrt(1.0 + 1e4)) and d[3] == d[4]   # ~ (0.3 / u)^2
 
 
-def test_the_way_is_soft_where_two_passes_meet():
-    b = family._softness(np.array([0.0, 0.4, 0.8, 0.46, 1.0]), 0.4, 0.06)
-    assert np.isclose(b[0], 0.0, atol=1e-9) and np.allclose(b[1:3], 1.0)
-    assert np.isclose(b[3], np.exp(-0.5)) and b[4] < 0.01
+def test_the_grit_lies_in_a_band_and_thins_beyond():
+    c = family._grit_cover(np.array([0.0, 0.08, -0.08, 0.13, 0.5]), 0.08, 0.05)
+    assert np.allclose(c[:3], 1.0) and np.isclose(c[3], np.exp(-1.0)) and c[4] < 1e-3
 
 
-def test_the_shunted_coil_is_a_mass_seen_through_its_lag():
-    t = np.linspace(0.0, 10.0, 100001)
-    f = family._shunt_force(t, np.ones_like(t), 2.0 * t, 3.0, 0.5)
-    assert np.allclose(f, 6.0 * (1.0 - np.exp(-t / 0.5)), atol=1e-3)   # M a, after the lag
-    b = family._coil_coupling(np.array([0.0, 1.0, -1.0, 2.0]), 0.3)
-    assert np.allclose(b, [1.0, 0.7, 0.7, 0.7])
+def test_the_yoke_reflects_more_mass_towards_its_ends():
+    m, dm = family._yoke_mass(np.array([0.0, 0.5, -0.5]), 1.25)
+    assert np.isclose(m[0], 1.0) and np.isclose(m[1], 1.0 / (1.0 - 0.16)) and m[1] == m[2]
+    assert dm[0] == 0.0 and dm[1] > 0 > dm[2]
+    h = 1e-6                                                   # the gradient is m's
+    slope = (family._yoke_mass(0.5 + h, 1.25)[0] - family._yoke_mass(0.5 - h, 1.25)[0]) / (2 * h)
+    assert np.isclose(slope, dm[1])
 
 
-def test_the_fusion_delays_only_the_slow_part():
-    t = np.linspace(0.0, 10.0, 10001)
-    u = (t >= 2.0).astype(float)
-    assert np.allclose(family._fuse(t, np.full(t.size, 3.0), 1.0, 0.5), 3.0)
-    assert np.allclose(family._fuse(t, u, 0.0, 0.5), u)
-    y = family._fuse(t, u, 3.0, 0.5)
-    assert np.allclose(y[:2000], 0.0)
-    k = 2000 + np.arange(1, 3000, 500)                  # the fast part on time, then fading
-    assert np.allclose(y[k], np.exp(-(t[k] - 2.0) / 0.5), atol=2e-3)
-    assert np.isclose(y[-1], 1.0, atol=1e-3)            # the slow part, late
+def test_the_link_delays_by_the_flight_time():
+    t = np.linspace(0.0, 1.0, 1001)
+    u = np.sin(2 * np.pi * t)
+    assert np.allclose(family._acoustic_record(t, u, np.zeros_like(t)), u)
+    r = family._acoustic_record(t, u, np.full_like(t, 0.1))
+    assert np.allclose(r[200:], u[100:-100]) and np.allclose(r[:100], u[0])
+    # a flight that grows with the time stretches the record
+    assert np.allclose(family._acoustic_record(t, t, 0.5 * t), t / 1.5)
 
 
-def test_the_warming_coil_pulls_less():
-    p = family._coil_pull(np.array([0.0, 0.5, 1e3]), 0.5, 0.4)
-    assert np.isclose(p[0], 1.0) and np.isclose(p[2], 1.0 / 1.4 ** 2)
-    assert np.isclose(p[1], 1.0 / (1.0 + 0.4 * (1.0 - np.exp(-1.0))) ** 2)
-    assert np.all(np.diff(family._coil_pull(np.linspace(0.0, 1.0, 101), 0.5, 0.4)) < 0.0)
+def test_the_magnet_loses_its_pull_as_the_log_of_the_time():
+    p = family._aftereffect_pull(np.array([0.0, 0.01, 0.1, 1.0]), 0.01, 0.02)
+    assert p[0] == 1.0 and 1.0 > p[1] > p[2] > p[3]
+    assert np.isclose(p[3], (1.0 - 0.02 * np.log(101.0)) ** 2)
+    # each decade of the time costs a like loss: the fall never levels off
+    assert (p[1] - p[2]) / 0.09 > (p[2] - p[3]) / 0.9 > 0
 
 
-def test_the_eddy_drag_peaks_at_its_critical_speed():
-    d = [family._eddy_drag(e, 2.0, 0.5) for e in (0.0, 0.5, -0.5, 1e-4, 50.0)]
-    assert d[0] == 0.0 and np.isclose(d[1], 2.0) and np.isclose(d[2], -2.0)
-    assert np.isclose(d[3], 2.0 * 2.0 * 1e-4 / 0.5, rtol=1e-6)   # viscous when slow
-    assert 0.0 < d[4] < 0.05                                    # pushed out when fast
+def test_the_foam_yields_at_a_plateau_then_densifies():
+    f = [family._foam_stress(e, 0.05, 0.6, 0.2, 0.95)
+         for e in (0.0, 0.025, 0.05, 0.3, 0.6, 0.8, 0.95, 1.0)]
+    assert f[0] == 0.0 and np.isclose(f[1], 0.5) and np.isclose(f[2], 1.0)
+    assert 1.0 < f[3] < f[4] == 1.2 < f[5] < f[6] == f[7]
+    assert np.isclose(f[5], 1.2 * 4.0)
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.eddy_gap_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.foam_pads_truth(kin, 1.0)))
 
 
-def test_the_air_spring_stiffens_and_the_shoe_slides():
-    f = family._air_spring(np.array([0.0, 1.0, -1.0, 0.5]), 1.5, 1.0)
-    assert np.isclose(f[0], 0.0) and np.isclose(f[1], 1.0) and np.isclose(f[2], -1.0)
-    assert np.isclose(f[3], (1.5 / 1.0 - 1.5 / 2.0) / (1.5 / 0.5 - 1.5 / 2.5))
-    assert f[3] < 0.5                                   # stiffer the further it travels
+def test_the_strut_softens_where_it_buckles_and_the_shoe_slides():
+    f = family._strut_force(np.array([0.0, 0.1, 0.2, 0.6, 1.0, -1.0]), 0.7, 0.2)
+    assert f[0] == 0.0 and np.isclose(f[1], 0.35) and np.isclose(f[2], 0.7)
+    assert np.isclose(f[3], 0.85) and np.isclose(f[4], 1.0) and np.isclose(f[5], -1.0)
     path = np.r_[np.linspace(0.0, 3.0, 3001), np.linspace(3.0, -3.0, 6001)[1:]]
-    r = family._shoe_travel(path, 1.0)
+    r = family._strut_travel(path, 1.0)
     assert r[0] == 0.0 and np.isclose(r[500], 0.5) and np.isclose(r[3000], 1.0)
     assert np.isclose(r[3000 + 1500], -0.5) and np.isclose(r[-1], -1.0)
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.air_shoe_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.buckling_strut_truth(kin, 1.0)))
 
 
 @pytest.mark.slow

@@ -250,7 +250,8 @@ running the diagnosis on it, run once at the end of session 38 on the code of c6
 176 cases, 0 skipped, 605 s wall on 2 workers (alone). Top-1 59.7 % (105;
 61.9 % of the 168 detectable; of the 8 undetectable, 6 are below their practical size by the
 truth's own imprint (valve stribeck_shape 3, isolator inertia 2, valve asymmetry 1, all
-named none), 2 isolator delays shifted by less than a sample (one of them named delay));
+named none), 2 isolator delays shifted by less than a sample (one named delay, the other
+none));
 mean |shrink error| 0.223 (0.231 over the detectable, 0.150 over the right ones); wrong
 names on 35 (19.9 %): asymmetry -> stribeck_shape 7, inertia -> acceleration 4,
 backlash -> gms 4, stribeck_shape -> acceleration 4, acceleration -> position 4,

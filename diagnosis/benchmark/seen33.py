@@ -5,8 +5,8 @@ run once, sealed, at the end of session 38 (2026-12-01) on the code of c6080f7:
 176 cases, 0 skipped, 605 s wall on 2 workers (alone).
 Top-1 59.7 % (105; 61.9 % of the 168 detectable; of the 8 undetectable, 6 are below their
 practical size by the truth's own imprint (valve stribeck_shape 3, isolator inertia 2, valve
-asymmetry 1, all named none), 2 isolator delays shifted by less than a sample (one of them
-named delay)); mean |shrink error| 0.223 (0.231 over the detectable, 0.150 over the right
+asymmetry 1, all named none), 2 isolator delays shifted by less than a sample (one named
+delay, the other none)); mean |shrink error| 0.223 (0.231 over the detectable, 0.150 over the right
 ones); wrong names on 35 (19.9 %): asymmetry -> stribeck_shape 7, inertia -> acceleration 4,
 backlash -> gms 4, stribeck_shape -> acceleration 4, acceleration -> position 4,
 delay -> acceleration 3, load -> delay 2, delay -> gms 2, delay -> inertia 1,

@@ -86,6 +86,15 @@ drift 0.089. Before the 12-knot position map (a 4th-order Legendre series) posit
 before the acceleration part lagged as a whole (seed 000's "lag" form; the lag acted on the
 acceleration only) acceleration was 0.129; overall 0.082 with both.
 
+Session 39 (``--speed-only --repeats 3``, one BLAS thread, 2026-12-01 23:49-23:52 UTC, load
+0.95-1.44, e6e701a and the change alternated, two runs each): the side-by-side fits start
+with the costliest (:func:`diagnosis.cluster.costliest_first`, the candidates' measured
+``fit_cost``; the Jacobian's width had put the GMS fit, the costliest, last, where it ran
+alone for its last 0.6 s): 2 forked processes best 3.77 / 3.71 s -> **3.41 / 3.32 s**, median
+3.77 / 3.72 -> 3.44 / 3.41 s (23.2 / 23.1 -> 21.4 / 21.2 x one base identification); 2
+threads 4.47 / 4.62 -> 4.01 / 3.94 s; one thread 5.94 / 5.82 -> 5.89 / 5.78 s (the same
+work). The report is the same: only the order the fits start in changed.
+
 Session 30 (``--speed-only --repeats 5``, one BLAS thread, 2026-11-30 23:29-23:58 UTC,
 each line's codes alternated, nothing else running): f2f5ab8 best 3.87, 3.47, 3.77 s; with
 the GMS candidate's second start (3c7e4aa; a second joint fit where the two starts'

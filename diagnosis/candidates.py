@@ -182,6 +182,11 @@ class Candidate:
     #: extras whose derivative :meth:`jac` gives exactly; a joint fit with such an effect
     #: takes its Jacobian from :func:`diagnosis.composite._stacked_jacobian`
     exact_extras: ClassVar[tuple] = ()
+    #: seconds of its joint fit (starts included) on ``bench_diagnosis.py``'s speed case
+    #: (20,000 samples, one thread, session 39): the side-by-side fits start with the
+    #: costliest (:func:`diagnosis.cluster.costliest_first`); 0: unmeasured (ordered by
+    #: its Jacobian's width after the measured ones)
+    fit_cost: ClassVar[float] = 0.0
 
     def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
         return True, ""
@@ -594,6 +599,9 @@ class Asymmetry(Candidate):
 class AsymmetryTwins(Candidate):
     """``asymmetry`` for laws with direction twins: Fc, Fs, sigma2 (and vs, where the law
     has its twin) for v < 0 and the offset b become free parameters of the law itself."""
+    #: seconds of its fit on the speed case (:attr:`Candidate.fit_cost`)
+    fit_cost = 0.1
+
     TWINS = ("Fc", "Fs", "sigma2")
     #: twins freed where the law has them: a Stribeck velocity of its own for v < 0 (a
     #: breakaway that differs with the direction rarely keeps its Stribeck velocity; with

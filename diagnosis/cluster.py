@@ -32,7 +32,8 @@ called once per candidate.
 from __future__ import annotations
 
 __all__ = ["candidate_fits", "applicable", "as_client", "trajectory_fits", "thread_fits",
-           "process_fits", "local_fits", "can_fork", "THREADS", "PROCESSES"]
+           "process_fits", "local_fits", "can_fork", "costliest_first", "THREADS",
+           "PROCESSES"]
 
 import contextvars
 import functools
@@ -194,17 +195,21 @@ def _bound_fit(law, base_names, fit, ctx):
     return functools.partial(_fit_one, law=law, base_names=list(base_names), fit=fit, ctx=ctx)
 
 
-def _widest_first(names, law, base_names, ctx) -> list:
-    """``names`` with the widest fits first (most Jacobian columns, the cost's first
-    order), so that no long one starts last and runs alone."""
+def costliest_first(names, law, base_names, ctx) -> list:
+    """``names`` with the costliest fits first, so that no long one starts last and runs
+    alone: by the candidates' measured :attr:`~diagnosis.candidates.Candidate.fit_cost`,
+    then (unmeasured ones) by their Jacobian's width (most columns first). The width alone
+    put the GMS fit, the costliest, last: on the speed case of
+    ``benchmarks/bench_diagnosis.py`` it ran alone for its last 0.6 s."""
     from .candidates import law_variants
     from .effects import CANDIDATES
-    width = {}
+    key = {}
     for name in names:
         cand = CANDIDATES[name].specialise(law)
-        width[name] = max((len(form.force_extras(ctx)) + len(nv) for _, nv, form
-                           in law_variants(cand, law, base_names, ctx)), default=0)
-    return sorted(names, key=lambda nm: -width[nm])
+        width = max((len(form.force_extras(ctx)) + len(nv) for _, nv, form
+                     in law_variants(cand, law, base_names, ctx)), default=0)
+        key[name] = (-float(cand.fit_cost), -width)
+    return sorted(names, key=lambda nm: key[nm])
 
 
 def thread_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> dict:
@@ -236,7 +241,7 @@ def thread_fits(names, law, base_names, fit, ctx, val_sets=(), threads=None) -> 
     if not names:
         return {}
     one = _bound_fit(law, base_names, fit, ctx)
-    order = _widest_first(names, law, base_names, ctx)
+    order = costliest_first(names, law, base_names, ctx)
     # one BLAS thread per fit while they run side by side: each fit's trust-region steps
     # take SVDs of its Jacobian, and two fits whose BLAS spawns a thread per core each
     # oversubscribe the cores (OpenBLAS's threads spin while they wait; measured below)
@@ -331,7 +336,7 @@ def _run_pool(names, law, base_names, ctx, n, mp, progress, out):
             # the children run only the fits, not the threads' work
             warnings.simplefilter("ignore", DeprecationWarning)
             futures = {pool.submit(_forked_fit, name): name
-                       for name in _widest_first(names, law, base_names, ctx)}
+                       for name in costliest_first(names, law, base_names, ctx)}
             pending = set(futures)
             while pending:
                 done, pending = wait(pending, timeout=0.25, return_when=FIRST_COMPLETED)

@@ -61,6 +61,9 @@ class Acceleration(Candidate):
     the joint fit stayed in that basin (held-out gap unchanged, ``k`` back to 0); with the
     base at its true values the same form closed 0.4 of the gap, not the truth's 0.9.
     """
+    #: seconds of its fit on the speed case (:attr:`Candidate.fit_cost`)
+    fit_cost = 0.9
+
     #: largest exponent of the velocity weight [-]: the weight peaks at |v| = m_a v_c, and
     #: its width relative to the peak speed narrows as 1 / sqrt(m_a)
     MAX_M = 4.0

@@ -133,6 +133,8 @@ class Backlash(LawCandidate):
     """Lost motion ``backlash_gap`` = 2 delta [m] at every reversal between drive and
     contact: the base LuGre law fed the contact's motion behind a play
     (:class:`friction.backlash.BacklashLuGre`, module docstring)."""
+    #: seconds of its fit on the speed case (:attr:`Candidate.fit_cost`)
+    fit_cost = 0.65
 
     #: shortest lost motion named ``backlash``: the drive must take this many samples to
     #: cross it after a reversal [-] (:func:`reversal_travel_floor`); a play crossed within

@@ -61,6 +61,9 @@ class Delay(Candidate):
     The trajectory level and the FMU blocks keep the constant shift (a sensor's dynamics
     act on the reading, not on the plant).
     """
+    #: seconds of its fit on the speed case (:attr:`Candidate.fit_cost`)
+    fit_cost = 0.6
+
     MAX_SAMPLES = 25
     #: shortest shift of the force channel named ``delay`` [samples] (issue 15: "a shift
     #: smaller than a sample is not a delay"). Sampling and differentiation alone shift a

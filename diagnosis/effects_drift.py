@@ -56,6 +56,8 @@ class Drift(Candidate):
     on the damping rig lost; on session 32's 271 sample cases no verdict changed; 500 clean
     records still none named; 0.29 s more on the speed case of ``benchmarks/
     bench_diagnosis.py``.)"""
+    #: seconds of its fit on the speed case (:attr:`Candidate.fit_cost`)
+    fit_cost = 0.6
 
     #: the joint fit stops once an accepted step lowers the cost by less than this share
     #: of it (scipy's ``ftol``; the other fits 1e-8, :data:`diagnosis.composite.FTOL`).

@@ -166,6 +166,8 @@ class GMSCandidate(LawCandidate):
     (:class:`friction.gms.GMS`; module docstring), or four LuGre bristles of unequal
     stiffness and share (the law's ``element`` "bristle", which nests the base): two law
     variants, the better fit kept."""
+    #: seconds of its fit on the speed case (:attr:`Candidate.fit_cost`)
+    fit_cost = 1.2
 
     def applicable(self, law, fit, ctx: Context) -> tuple[bool, str]:
         """Whether the candidate applies to the base ``law`` on ``fit``, and why not.

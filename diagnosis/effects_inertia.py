@@ -155,6 +155,9 @@ class Inertia(Candidate):
     an oil column on the rig 0.71 -> 0.98); 500 clean records: 0 named; the speed case
     3.32 -> 3.27 s.
     """
+    #: seconds of its fit on the speed case (:attr:`Candidate.fit_cost`)
+    fit_cost = 0.15
+
     #: coupling time constants the start tries, x the sample interval [-], and the grips,
     #: x the acceleration scale [-] (inf: the coupling never slips)
     START_TAUS = (3.0, 10.0, 30.0, 100.0)

@@ -30,6 +30,9 @@ class Position(Candidate):
     a carriage on a sagging beam). On a classic LuGre the level map is also fitted inside
     the bristle dynamics (:class:`PositionInside`, the better on the fit record kept). The
     trajectory level and the FMU blocks keep the scaled map."""
+    #: seconds of its fit on the speed case (:attr:`Candidate.fit_cost`)
+    fit_cost = 0.6
+
     stage_doc = "friction level scaled along the stroke, and a force of the position"
     NAMES = POSITION_NAMES + POSITION_FORM_NAMES
     #: amplitudes of the additive periodic force [N] (cosine, sine; first and second

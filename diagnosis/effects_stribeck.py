@@ -27,6 +27,8 @@ class StribeckShape(Candidate):
     form); this family stays the form of the trajectory level and the FMUs, and of the
     other laws.
     """
+    #: seconds of its fit on the speed case (:attr:`Candidate.fit_cost`)
+    fit_cost = 0.3
 
     def applicable(self, law, fit, ctx):
         if not hasattr(law.params, "shape") or not hasattr(law.params, "alpha"):

@@ -162,3 +162,25 @@ def test_a_fit_that_raises_in_a_worker_raises_in_the_caller_with_its_message(cas
     monkeypatch.setattr(cluster, "_fit_one", refuses)
     with pytest.raises(ValueError, match="drift_tau = -1 is out of bounds"):
         cluster.process_fits(["delay", "drift", "inertia"], *_base(case), threads=2)
+
+
+def test_the_costliest_fits_start_first(case, monkeypatch):
+    # measured costs first (the GMS fit, the costliest, no longer starts last and runs
+    # alone), then the unmeasured ones by their Jacobian's width; and the pool submits in
+    # that order
+    names = ["asymmetry", "inertia", "position", "gms", "drift", "acceleration"]
+    law, base_names, fit, ctx = _base(case)
+    order = cluster.costliest_first(names, law, base_names, ctx)
+    from diagnosis.effects import CANDIDATES
+    costs = [CANDIDATES[n].specialise(law).fit_cost for n in order]
+    assert order[:2] == ["gms", "acceleration"]
+    assert costs == sorted(costs, reverse=True) and min(costs) > 0.0
+    monkeypatch.setattr(type(CANDIDATES["inertia"].specialise(law)), "fit_cost", 0.0)
+    order0 = cluster.costliest_first(names, law, base_names, ctx)
+    assert order0[-1] == "inertia" and order0[:-1] == [n for n in order if n != "inertia"]
+    submitted = []
+    real = cluster.costliest_first
+    monkeypatch.setattr(cluster, "costliest_first",
+                        lambda *a: submitted.extend(real(*a)) or list(submitted))
+    cluster.process_fits(["inertia", "gms", "delay"], law, base_names, fit, ctx, threads=2)
+    assert submitted == ["gms", "delay", "inertia"]

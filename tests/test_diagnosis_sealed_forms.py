@@ -1,10 +1,10 @@
-"""The thirty-fourth sealed truth family (diagnosis.benchmark.sealed, written in session 39
+"""The thirty-fifth sealed truth family (diagnosis.benchmark.sealed, written in session 40
 by another hand, sealed: not run): each form builds a finite case of the requested size on every
 plant it applies to, is the base law at s = 0, grows with its amplitude factor and refuses
 the plants it does not apply to. No diagnosis is run on these forms: the family stays unseen
 until the end of a piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS`
-names it as its ``sealed`` form (the thirty-third family, sealed before it, is
-:mod:`diagnosis.benchmark.seen33` since its run)."""
+names it as its ``sealed`` form (the thirty-fourth family, sealed before it, is
+:mod:`diagnosis.benchmark.seen34` since its run)."""
 import dataclasses
 import importlib
 
@@ -20,11 +20,11 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "energised_seals", "load": "toggle_clamp",
-        "asymmetry": "plunger_pump", "stribeck_shape": "floating_pawl",
-        "position": "grit_band", "inertia": "yoke_flywheel",
-        "delay": "acoustic_link", "drift": "magnetic_aftereffect",
-        "backlash": "foam_pads", "gms": "buckling_strut"}
+FORM = {"acceleration": "worm_mesh", "load": "ball_hysteresis",
+        "asymmetry": "trailing_hose", "stribeck_shape": "dielectric_pad",
+        "position": "wet_patch", "inertia": "winch_layers",
+        "delay": "bucket_brigade", "drift": "leaking_bladder",
+        "backlash": "liquid_bridge", "gms": "magnet_coupling"}
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
@@ -46,8 +46,9 @@ _FORM_MODULES = ("diagnosis.benchmark.truths", "diagnosis.benchmark.forms",
                  "diagnosis.benchmark.seen27", "diagnosis.benchmark.seen28",
                  "diagnosis.benchmark.seen29", "diagnosis.benchmark.seen30",
                  "diagnosis.benchmark.seen31", "diagnosis.benchmark.seen32",
-                 "diagnosis.benchmark.seen33", "diagnosis.benchmark.sealed",
-                 "diagnosis.effects_backlash", "diagnosis.effects_gms")
+                 "diagnosis.benchmark.seen33", "diagnosis.benchmark.seen34",
+                 "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
+                 "diagnosis.effects_gms")
 
 
 def test_the_family_has_one_new_form_per_effect():
@@ -69,9 +70,9 @@ def test_the_family_has_one_new_form_per_effect():
         assert not names & set(vars(mod)), name
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
-    assert doc.startswith("The thirty-fourth sealed truth family")
-    assert "sealed: not run" in doc and "2026-12-01 (session 39)" in doc
-    assert "session 38's, was run once and is :mod:`.seen33`" in doc
+    assert doc.startswith("The thirty-fifth sealed truth family")
+    assert "sealed: not run" in doc and "2026-12-02 (session 40)" in doc
+    assert "session 39's, was run once and is :mod:`.seen34`" in doc
 
 
 def test_registered_forms_resolve():
@@ -112,101 +113,111 @@ def test_sealed_forms_reach_their_size_on_two_plants(plant):
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        family.floating_pawl_truth(iso, 1.0)
+        family.dielectric_pad_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.buckling_strut_truth(iso, 1.0)
+        family.liquid_bridge_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.foam_pads_truth(iso, 1.0)
+        family.magnet_coupling_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
     # a one-way stroke (the press's) never comes back over the positions the fit part saw
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        family.grit_band_truth.__wrapped__(one_way, 1.0)
-    # a load that never changes never moves the toggle's links
+        family.wet_patch_truth.__wrapped__(one_way, 1.0)
+    # a load that never changes never changes the balls' loss
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        family.toggle_clamp_truth.__wrapped__(still, 1.0)
+        family.ball_hysteresis_truth.__wrapped__(still, 1.0)
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
-def test_the_seals_hold_until_a_chamber_empties():
-    p1, p2 = family._chamber_pressures(np.array([0.0, 0.1, 1.0, -1.0]), 0.1, 1e-9)
-    assert np.allclose(p1 + p2, [0.2, 0.2, 0.6, 0.6])
-    assert np.isclose(p2[2], 0.0) and np.isclose(p1[3], 0.0)
+def test_the_worm_loses_more_driving_and_less_as_it_speeds_up():
+    lead, mu0, mu1, fall, sw = 0.35, 0.15, 0.04, 0.2, 0.01
+    loss = family._worm_loss(np.array([0.0, 1.0, -1.0, 1.0]), np.array([0.5, 0.5, 0.5, 5.0]),
+                             lead, mu0, mu1, fall, sw)
+    mu = mu1 + (mu0 - mu1) / (1.0 + 0.5 / fall)
+    phi = np.arctan(mu)
+    assert loss[0] == 0.0
+    assert np.isclose(loss[1], np.tan(lead + phi) / np.tan(lead) - 1.0)     # driving
+    assert np.isclose(loss[2], 1.0 - np.tan(lead - phi) / np.tan(lead))     # back-driven
+    assert loss[1] > loss[2] > 0 and 0 < loss[3] < loss[1]
 
 
-def test_the_toggle_gains_as_its_links_straighten():
-    g = family._toggle_gain(np.array([0.0, 0.5, 1.0]), 0.35, 0.5)
-    assert np.isclose(g[0], 1.0)
-    assert np.isclose(g[2], np.tan(0.35) / np.tan(0.175))
-    assert g[2] - g[1] > g[1] - g[0] > 0          # ever faster
+def test_the_balls_lose_as_the_load_to_the_four_thirds():
+    g = family._rolling_hysteresis(np.array([0.0, 0.5, 1.0]), 0.1)
+    assert np.isclose(g[2], 1.0) and np.isclose(g[0], (0.1 / 1.1) ** (4.0 / 3.0))
+    assert g[2] - g[1] > g[1] - g[0] > 0                       # ever faster
 
 
-def test_the_pump_delivers_one_way_and_draws_in_the_other():
-    out, back = family._pump_pressure(np.array([0.0, 1.0, -1.0, -10.0]), 0.6, 0.05, 4.0, 0.2)
-    assert np.isclose(out[0], 0.6) and np.isclose(out[1], 1.0)
-    assert np.isclose(back[0], -0.05 / 1.25) and np.isclose(back[1], -0.25 / 2.25)
-    assert -0.2 < back[3] < back[2] < 0.0                 # bounded by the vapour pressure
+def test_the_hose_drags_pulled_and_gives_up_its_slack_over_a_travel():
+    x = np.r_[np.linspace(0.0, 0.1, 11), np.linspace(0.1, 0.0, 11)[1:],
+              np.linspace(0.0, 0.2, 21)[1:]]
+    p = family._hose_pull(x, 0.05)
+    assert np.all(p[:11] == 1.0)                               # straight: all of it slides
+    # pushed back 0.1, the loops hold 0.05 of slack, taken up over the next 0.05 of travel
+    assert np.isclose(p[20 + 2], 0.4) and np.isclose(p[20 + 4], 0.8)
+    assert np.all(p[20 + 5:] == 1.0)
 
 
-def test_the_pawl_drags_until_it_floats():
-    d = family._pawl_drag(np.array([0.0, 0.03, 0.3, 3.0, -3.0]), 0.3)
-    assert np.isclose(d[0], 1.0) and d[1] > 0.99 and np.isclose(d[2], 2 ** -0.5)
-    assert np.isclose(d[3], 1.0 / np.sqrt(1.0 + 1e4)) and d[3] == d[4]   # ~ (0.3 / u)^2
+def test_the_pad_pulls_fully_at_rest_and_fades_with_the_speed():
+    q = family._pad_pull(np.array([0.0, 0.015, 0.15, 1.5, -1.5]), 0.15)
+    assert q[0] == 1.0 and q[1] > 0.99 and np.isclose(q[2], (1.0 - np.exp(-1.0)) ** 2)
+    assert np.isclose(q[3], (1.0 - np.exp(-0.1)) ** 2) and q[3] == q[4]
+    assert np.isclose(q[3], 0.01, rtol=0.1)                    # ~ (0.15 / u)^2
 
 
-def test_the_grit_lies_in_a_band_and_thins_beyond():
-    c = family._grit_cover(np.array([0.0, 0.08, -0.08, 0.13, 0.5]), 0.08, 0.05)
-    assert np.allclose(c[:3], 1.0) and np.isclose(c[3], np.exp(-1.0)) and c[4] < 1e-3
+def test_the_menisci_pull_hardest_where_the_film_is_thin():
+    d = np.array([0.0, 0.1 * np.sqrt(np.log(3.0)), 0.5])
+    b = family._meniscus_pull(d, 0.1, 3.0)
+    assert np.isclose(b[0], 3.0 * np.exp(-2.0)) and np.isclose(b[1], 1.0) and b[2] < 1e-9
+    assert b[1] > b[0] > b[2]                                  # a ring round a milder middle
 
 
-def test_the_yoke_reflects_more_mass_towards_its_ends():
-    m, dm = family._yoke_mass(np.array([0.0, 0.5, -0.5]), 1.25)
-    assert np.isclose(m[0], 1.0) and np.isclose(m[1], 1.0 / (1.0 - 0.16)) and m[1] == m[2]
-    assert dm[0] == 0.0 and dm[1] > 0 > dm[2]
-    h = 1e-6                                                   # the gradient is m's
-    slope = (family._yoke_mass(0.5 + h, 1.25)[0] - family._yoke_mass(0.5 - h, 1.25)[0]) / (2 * h)
-    assert np.isclose(slope, dm[1])
+def test_the_drum_reflects_less_mass_on_each_layer():
+    m, dm = family._winch_mass(np.array([0.0, 0.5, 1.0]), 3, 0.25, 0.08)
+    assert np.isclose(m[0], 1.0, atol=1e-6) and np.isclose(m[2], 1.0 / 1.5 ** 2, atol=1e-6)
+    assert m[0] > m[1] > m[2] and np.all(dm <= 0.0)
+    h = 1e-6
+    q = 1.0 / 3.0 + 0.01                                       # on a cross-over
+    slope = (family._winch_mass(q + h, 3, 0.25, 0.08)[0]
+             - family._winch_mass(q - h, 3, 0.25, 0.08)[0]) / (2 * h)
+    assert np.isclose(slope, family._winch_mass(q, 3, 0.25, 0.08)[1])
 
 
-def test_the_link_delays_by_the_flight_time():
-    t = np.linspace(0.0, 1.0, 1001)
-    u = np.sin(2 * np.pi * t)
-    assert np.allclose(family._acoustic_record(t, u, np.zeros_like(t)), u)
-    r = family._acoustic_record(t, u, np.full_like(t, 0.1))
-    assert np.allclose(r[200:], u[100:-100]) and np.allclose(r[:100], u[0])
-    # a flight that grows with the time stretches the record
-    assert np.allclose(family._acoustic_record(t, t, 0.5 * t), t / 1.5)
+def test_the_brigade_delays_by_its_stages_and_smears():
+    ks, ws = family._brigade_weights(16, 0.08)
+    assert ks[0] == 16 and np.isclose(ws.sum(), 1.0)
+    assert np.isclose(ws[0], 0.92 ** 16, rtol=1e-6)
+    assert np.isclose(np.sum(ks * ws), 16 / 0.92, rtol=1e-4)  # the mean: stages / (1 - loss)
+    assert np.allclose(family._brigade_weights(4, 0.0)[0], [4.0])   # no loss: a pure delay
 
 
-def test_the_magnet_loses_its_pull_as_the_log_of_the_time():
-    p = family._aftereffect_pull(np.array([0.0, 0.01, 0.1, 1.0]), 0.01, 0.02)
-    assert p[0] == 1.0 and 1.0 > p[1] > p[2] > p[3]
-    assert np.isclose(p[3], (1.0 - 0.02 * np.log(101.0)) ** 2)
-    # each decade of the time costs a like loss: the fall never levels off
-    assert (p[1] - p[2]) / 0.09 > (p[2] - p[3]) / 0.9 > 0
+def test_the_bladder_empties_choked_then_ever_more_slowly():
+    tr = np.array([0.0, 0.1, 0.2, 0.5, 1.0])
+    p = family._bladder_pressure(tr, 4.0, 1.0, 1.4)
+    assert p[0] == 4.0 and np.all(np.diff(p) < 0) and p[-1] >= 1.0
+    assert np.isclose(p[1], 4.0 * np.exp(-0.1), rtol=1e-3)   # choked: exponential
+    # subsonic: the pressure falls slower than the choked exponential would go on
+    late = family._bladder_pressure(np.array([0.9, 1.0]), 4.0, 1.0, 1.4)
+    assert late[0] < 1.893 and (late[0] - late[1]) / late[0] < 1.0 - np.exp(-0.1)
 
 
-def test_the_foam_yields_at_a_plateau_then_densifies():
-    f = [family._foam_stress(e, 0.05, 0.6, 0.2, 0.95)
-         for e in (0.0, 0.025, 0.05, 0.3, 0.6, 0.8, 0.95, 1.0)]
-    assert f[0] == 0.0 and np.isclose(f[1], 0.5) and np.isclose(f[2], 1.0)
-    assert 1.0 < f[3] < f[4] == 1.2 < f[5] < f[6] == f[7]
-    assert np.isclose(f[5], 1.2 * 4.0)
+def test_the_bridge_pulls_less_as_it_stretches_and_ruptures():
+    f = [family._bridge_force(d, 2.0, 1e-3) for d in (-1e-4, 0.0, 5e-4, 1e-3, 2e-3)]
+    assert f[0] == f[1] == 2.0 and np.isclose(f[2], 1.0) and f[3] == f[4] == 0.0
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.foam_pads_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.liquid_bridge_truth(kin, 1.0)))
 
 
-def test_the_strut_softens_where_it_buckles_and_the_shoe_slides():
-    f = family._strut_force(np.array([0.0, 0.1, 0.2, 0.6, 1.0, -1.0]), 0.7, 0.2)
-    assert f[0] == 0.0 and np.isclose(f[1], 0.35) and np.isclose(f[2], 0.7)
-    assert np.isclose(f[3], 0.85) and np.isclose(f[4], 1.0) and np.isclose(f[5], -1.0)
+def test_the_magnet_holds_the_shoe_softening_towards_its_pull_out():
+    f = family._coupling_pull(np.array([0.0, 0.5, 1.0, -1.0]), 1.2)
+    assert f[0] == 0.0 and np.isclose(f[2], 1.0) and f[3] == -1.0
+    assert f[1] > 0.5                                          # stiff first, then softer
     path = np.r_[np.linspace(0.0, 3.0, 3001), np.linspace(3.0, -3.0, 6001)[1:]]
-    r = family._strut_travel(path, 1.0)
+    r = family._shoe_offset(path, 1.0)
     assert r[0] == 0.0 and np.isclose(r[500], 0.5) and np.isclose(r[3000], 1.0)
     assert np.isclose(r[3000 + 1500], -0.5) and np.isclose(r[-1], -1.0)
     kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.buckling_strut_truth(kin, 1.0)))
+    assert np.all(np.isfinite(family.magnet_coupling_truth(kin, 1.0)))
 
 
 @pytest.mark.slow

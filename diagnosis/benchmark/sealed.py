@@ -1,12 +1,12 @@
-"""The thirty-fourth sealed truth family: one more mechanism per effect, out of all tuning.
+"""The thirty-fifth sealed truth family: one more mechanism per effect, out of all tuning.
 
-Written 2026-12-01 (session 39) by another hand, once, without running the diagnosis on it;
+Written 2026-12-02 (session 40) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 38's, was run once and is :mod:`.seen33`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen33`
+sealed before it, session 39's, was run once and is :mod:`.seen34`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen34`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen33`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen34`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`, ``diagnosis.effects_<name>``), taken from the friction
 literature or from real machines, integrated along the plant's continuous motion on the grid
@@ -18,52 +18,55 @@ each effect's amplitude monotonically from the base law at ``s`` = 0 (its calibr
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``energised_seals``: the axis is driven by a double-acting hydraulic
-                   cylinder held at a mean pressure; its seals' friction grows with the
-                   pressure they hold, and once the thrust (m a) has emptied one chamber
-                   to the tank's pressure the other's alone rises: levels that hold at
-                   gentle accelerations and rise with |a| past a threshold
-load               ``toggle_clamp``: the normal load bears on the knee of a toggle that
-                   presses a gib on the way; the links' spring yields, the links
-                   straighten and the toggle's gain 1 / (2 tan theta) rises: levels that
-                   rise ever faster with the load
-asymmetry          ``plunger_pump``: the carriage works a single-acting plunger pump:
-                   towards +x it delivers against its relief valve's cracking pressure
-                   and the delivery's orifice loss (~ v^2); towards -x it only draws oil
-                   in through its inlet check valve, bounded by cavitation
-stribeck_shape     ``floating_pawl``: a spring-loaded pawl rides over a toothed rack:
-                   at low speeds it drops into every root, a drag independent of the
-                   speed; above its float speed it is still in flight at the next tooth
-                   and the drag falls as the speed's inverse square
-position           ``grit_band``: a band of the way beside the work is covered with loose
-                   abrasive grit, thinning beyond the band where the wipers carried it:
-                   three-body abrasion raises the levels over that band
-inertia            ``yoke_flywheel``: a flywheel turned by a Scotch yoke on the
-                   carriage: its inertia reflected as the mass J (dtheta/dx)^2, growing
-                   towards the stroke's ends, with Lagrange's m'(x) v^2 / 2 beside it
-delay              ``acoustic_link``: the force measured on the carriage is sent by an
-                   ultrasonic link to a receiver beyond the stroke's end: each reading
-                   arrives after its flight time, which grows with the distance along
-                   the stroke (and stretches or compresses the record, the Doppler
-                   effect)
-drift              ``magnetic_aftereffect``: the pads are pressed by a permanent-magnet
-                   clamp magnetised by a pulse at the record's start; its magnetisation
-                   decays by magnetic viscosity as the logarithm of the time and the pull
-                   as its square: levels that fall fast at first, then ever slower
-backlash           ``foam_pads``: the play's flanks are lined with elastomeric foam:
-                   elastic, then a collapse plateau below the contact's friction, then
-                   densification: the contact is pushed once the pad has densified
-gms                ``buckling_strut``: part of the friction is carried by a shoe pushed
-                   and pulled by a slender strut: stiff while straight, soft once
-                   buckled, until the shoe slides; it unloads along the same elastic
-                   path; at ``s`` = 0 the base
+acceleration       ``worm_mesh``: the axis is driven through a worm gear; the inertial
+                   force m a passes through the sliding mesh, whose loss is set by its
+                   efficiency driving (a and v of one sign) or back-driven by the
+                   carriage's inertia (decelerating), and by a friction coefficient that
+                   falls with the sliding speed: levels that rise with |a|, differently
+                   accelerating and decelerating, more at low speeds
+load               ``ball_hysteresis``: the carriage runs on recirculating-ball blocks;
+                   each ball's Hertzian contact loses a share of its stored elastic work
+                   as it rolls (elastic hysteresis), a rolling resistance that grows as
+                   the load's 4/3 power
+asymmetry          ``trailing_hose``: a hose fixed to the carriage trails on a tray
+                   towards -x: pulled (towards +x) its whole length drags; pushed it
+                   folds into loops and drags little, gathering slack that the next pull
+                   takes up over a travel after the reversal
+stribeck_shape     ``dielectric_pad``: an electroadhesive pad of the Johnsen-Rahbek kind
+                   pulls the carriage onto the way; a contact spot charges through the
+                   dielectric's resistance only while it lies under the pad, so the pull,
+                   full at rest, fades as the speed shortens that time (as the square of
+                   the charge)
+position           ``wet_patch``: a patch of the way carries a thin water film whose
+                   menisci pull the carriage onto the way: nothing on the dry way, most
+                   where the film just fills the roughness, less where it floods it (a
+                   ring of high friction around a milder middle)
+inertia            ``winch_layers``: the carriage is pulled by a rope from a winch drum
+                   that winds it in layers; the drum's and motor's inertia is reflected
+                   as J / r^2, r stepping up with each layer, with Lagrange's m'(x) v^2 /
+                   2 at each step
+delay              ``bucket_brigade``: the force signal passes a bucket-brigade delay line
+                   of charge-transfer stages, each of which leaves a share of its packet
+                   behind: a delay of stages x clock period, smeared over the periods
+                   after it
+drift              ``leaking_bladder``: the gib is pressed by an air bladder inflated at
+                   the record's start and shut off, whose valve leaks through an orifice:
+                   choked at first (the pressure falls exponentially), then subsonic
+                   (ever more slowly): levels that fall with the bladder's gauge pressure
+backlash           ``liquid_bridge``: the play's flanks are wetted: the flank the drive
+                   leaves holds the contact by a liquid bridge that pulls less as it
+                   stretches, until it ruptures part-way across the play
+gms                ``magnet_coupling``: part of the friction is carried by a shoe held to
+                   the carriage only by a magnetic (reluctance) coupling whose pull grows
+                   as the sine of the offset, until the shoe slides; it unloads along the
+                   same path; at ``s`` = 0 the base
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``floating_pawl``
-needs a Stribeck curve (not the isolator's mre_lugre), ``grit_band`` a record that
-revisits its positions (not the press), ``toggle_clamp`` a load that changes,
-``foam_pads`` and ``buckling_strut`` a classic LuGre base (valve, damping rig, XML-350);
-each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
+Where a form applies: as its effect's record (``truth_applies``); ``dielectric_pad``
+needs a Stribeck curve (not the isolator's mre_lugre), ``wet_patch`` a record that
+revisits its positions (not the press), ``ball_hysteresis`` a load that changes,
+``liquid_bridge`` and ``magnet_coupling`` a classic LuGre base (valve, damping rig,
+XML-350); each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
 
@@ -76,68 +79,74 @@ from friction.shapes import SHAPES
 
 from .kinematics import PlantKinematics
 from .truths import (_base_parts, _bump_centre, _contact_constants, _level,
-                     _light_contact_step, _lugre_params, _presliding_path, _smooth_max0,
-                     _substeps, has_stribeck_curve, level_inside, lugre_with_curve,
-                     on_fine_grid)
+                     _light_contact_step, _lugre_params, _presliding_path, _substeps,
+                     has_stribeck_curve, level_inside, lugre_with_curve, on_fine_grid)
 
-__all__ = ["FORMS", "energised_seals_truth", "toggle_clamp_truth", "plunger_pump_truth",
-           "floating_pawl_truth", "grit_band_truth", "yoke_flywheel_truth",
-           "acoustic_link_truth", "magnetic_aftereffect_truth", "foam_pads_truth",
-           "buckling_strut_truth"]
+__all__ = ["FORMS", "worm_mesh_truth", "ball_hysteresis_truth", "trailing_hose_truth",
+           "dielectric_pad_truth", "wet_patch_truth", "winch_layers_truth",
+           "bucket_brigade_truth", "leaking_bladder_truth", "liquid_bridge_truth",
+           "magnet_coupling_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "energised_seals", "load": "toggle_clamp",
-         "asymmetry": "plunger_pump", "stribeck_shape": "floating_pawl",
-         "position": "grit_band", "inertia": "yoke_flywheel",
-         "delay": "acoustic_link", "drift": "magnetic_aftereffect",
-         "backlash": "foam_pads", "gms": "buckling_strut"}
+FORMS = {"acceleration": "worm_mesh", "load": "ball_hysteresis",
+         "asymmetry": "trailing_hose", "stribeck_shape": "dielectric_pad",
+         "position": "wet_patch", "inertia": "winch_layers",
+         "delay": "bucket_brigade", "drift": "leaking_bladder",
+         "backlash": "liquid_bridge", "gms": "magnet_coupling"}
 
 
 # -- acceleration ----------------------------------------------------------------------------
-#: ``energised_seals``' rise of the levels per unit of the seals' extra pressure over its
-#: 99th percentile along the record, at strength 1 [-]; the chambers' mean pressure, x the
-#: pressure difference that drives the top acceleration [-]; the drive's peak thrust (its
-#: relief valve), x the inertial force at the top acceleration [-]; the rounding of a
-#: chamber's pressure at the tank's (its cavitation), the same scale [-]
-SEAL_RISE, SEAL_MEAN, SEAL_PEAK, SEAL_ROUND = 1.0, 0.1, 1.5, 0.02
+#: ``worm_mesh``'s rise of the levels per unit of the mesh's loss over its 99th percentile
+#: along the record, at strength 1 [-]; the worm's lead angle [rad]; the mesh's friction
+#: coefficient at rest and at high sliding speeds [-], and the sliding speed over which it
+#: falls, x the top speed [-]; the power flow's change-over, x a99 v99 [-]
+WORM_RISE, WORM_LEAD, WORM_MU0, WORM_MU1, WORM_FALL, WORM_SWITCH = (
+    1.0, 0.35, 0.15, 0.04, 0.2, 0.01)
 
 
-def _chamber_pressures(u, mean, rnd):
-    """The two chambers' pressures [-] (over the pressure difference at the top
-    acceleration) of a double-acting cylinder held at the mean pressure ``mean`` and driven
-    by the pressure difference ``u`` [-] (its thrust over the top acceleration's): mean +-
-    u / 2, neither below the tank's (0; a chamber that reaches it cavitates and the other
-    alone carries the thrust), rounded over ``rnd``."""
+def _worm_loss(u, w, lead, mu0, mu1, fall, switch):
+    """The worm mesh's loss [-] (over the thrust at the top acceleration) at the thrusts
+    ``u`` [-] (m a over its value at the top acceleration) and the speeds ``w`` [-] (over
+    the top speed): the mesh's friction coefficient falls with the sliding speed, mu =
+    ``mu1`` + (``mu0`` - ``mu1``) / (1 + |w| / ``fall``), its friction angle phi = atan mu;
+    where the worm drives the carriage (u w > 0) the loss is |u| (1 / eta_f - 1), eta_f =
+    tan(lead) / tan(lead + phi); where the carriage's inertia drives the worm back (u w <
+    0) it is |u| (1 - eta_b), eta_b = tan(lead - phi) / tan(lead); the two blended over
+    ``switch`` of u w (tanh)."""
     u = np.asarray(u, float)
-    p1 = _smooth_max0(mean + 0.5 * u, rnd)
-    p2 = _smooth_max0(mean - 0.5 * u, rnd)
-    return p1, p2
+    w = np.asarray(w, float)
+    mu = float(mu1) + (float(mu0) - float(mu1)) / (1.0 + np.abs(w) / float(fall))
+    phi = np.arctan(mu)
+    tl = math.tan(float(lead))
+    fwd = 1.0 / (tl / np.tan(float(lead) + phi)) - 1.0
+    back = 1.0 - np.tan(float(lead) - phi) / tl
+    k = 0.5 * (1.0 + np.tanh(u * w / float(switch)))
+    return np.abs(u) * (k * fwd + (1.0 - k) * back)
 
 
 @on_fine_grid
-def energised_seals_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The axis is driven by a double-acting hydraulic cylinder whose servo valve holds
-    both chambers at a mean pressure (:data:`SEAL_MEAN` x the pressure difference that
-    drives the top acceleration) and adds the difference its thrust needs: the carriage's
-    inertial force m a (its friction's share is small next to it at hard accelerations),
-    bounded by the relief valve (:data:`SEAL_PEAK` x the force at the top acceleration).
-    The piston's and the rod's elastomer seals are energised by the pressure they hold: a
-    seal's friction is its fitted interference's plus a coefficient times the pressure
-    times its area. While both chambers stay above the tank's pressure, one gains what
-    the other loses and the seals' summed friction holds; past the thrust at which one
-    chamber reaches the tank's pressure (it cannot go below: it cavitates), the other's
-    pressure alone rises with the thrust (:func:`_chamber_pressures`). The Coulomb and
-    Stribeck levels are the base's times 1 + ``s`` :data:`SEAL_RISE` x the summed
-    pressure's excess over its value at rest, over its 99th percentile along the record,
-    inside the bristle dynamics; the viscous term is the base's.
+def worm_mesh_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The axis is driven through a worm gear (a worm turned by the motor meshing with a
+    wheel that turns the axis' pinion, as on the tables of older milling machines and
+    dividing heads): the carriage's inertial force m a passes through the mesh, whose
+    sliding friction costs a share of it. Where the motor drives the carriage (a and v of
+    one sign) the worm drives the wheel with the efficiency tan(lambda) / tan(lambda +
+    phi); where the carriage decelerates its inertia drives the wheel back into the worm
+    with the efficiency tan(lambda - phi) / tan(lambda) (lambda :data:`WORM_LEAD`, phi the
+    mesh's friction angle): the loss differs between the two flows of the power. The
+    mesh's friction coefficient falls as the sliding speed builds its oil film
+    (:data:`WORM_MU0` at rest to :data:`WORM_MU1`; :func:`_worm_loss`), so a like
+    acceleration costs more at low speeds than at high ones. The loss opposes the motion:
+    the Coulomb and Stribeck levels are the base's times 1 + ``s`` :data:`WORM_RISE` x the
+    loss over its 99th percentile along the record, inside the bristle dynamics; the
+    viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (a [m/s^2]) and its base law.
+        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the seals' friction per unit of pressure, / its value at
-        strength 1.
+        Amplitude factor [-]: the geared inertia's share, / its value at strength 1.
 
     Returns
     -------
@@ -146,444 +155,67 @@ def energised_seals_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The friction of pressure-energised elastomer seals, a fitted part plus a coefficient
-    times the pressure and the seal's projected area (the Parker O-Ring Handbook, ORD 5700,
-    ch. on dynamic seals and their friction; Mueller and Nau 1998, Fluid Sealing
-    Technology, ch. on reciprocating seals) and the chambers' pressures of a servo-driven
-    cylinder, held at a mean and bounded below by the tank's pressure or cavitation (Merritt
-    1967, Hydraulic Control Systems, ch. on valve-controlled pistons). The candidate raises
-    the levels with |a|, lagged, tilts them with a and adds a force odd in a; the open forms
+    The efficiency of a worm drive, driving and back-driven, from its lead angle and the
+    friction angle (Buckingham 1949, Analytical Mechanics of Gears, ch. on worm gears;
+    Shigley and Mischke 2001, Mechanical Engineering Design, ch. on worm gears), and the
+    worm mesh's friction coefficient falling with the sliding speed (AGMA 6034; Niemann
+    and Winter 1983, Maschinenelemente, vol. 3, on worm gears). The candidate raises the
+    levels with |a|, lagged, tilts them with a and adds a force odd in a; the open forms
     lag, age, heat, skid, load, press, attract, squeeze, transfer weight, slosh, dilate,
     wedge, spring a gib, soften rubber, swing arms, unload by the jerk, tilt pads, push ball
     trains, ripple the current, slide rack flanks, set a shoe, shut a damper's bypass, creep
     a belt, rack a gantry, tighten a band, surge a feed line, load a traction drive, heat a
     winding, unload a counterweight's rope, pump oil, slacken a belt's strand, lift a
-    preloaded nut's half off or bend a bowed screw. Here the thrust's pressure presses the
-    drive's own seals, once it has emptied one chamber.
+    preloaded nut's half off, bend a bowed screw or energise a cylinder's seals. Here the
+    inertial force passes through a sliding mesh whose loss depends on the power's flow
+    and on the speed.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    a99 = max(kin.scales["a99"], 1e-12)
-    u = np.clip(np.asarray(kin.a, float) / a99, -SEAL_PEAK, SEAL_PEAK)
-    p1, p2 = _chamber_pressures(u, SEAL_MEAN, SEAL_ROUND)
-    q0 = sum(_chamber_pressures(0.0, SEAL_MEAN, SEAL_ROUND))
-    e = p1 + p2 - float(q0)
-    e = e / max(float(np.percentile(np.abs(e), 99)), 1e-12)
-    lev = np.maximum(1.0 + float(s) * SEAL_RISE * e, 0.05)
+    sc = kin.scales
+    u = np.asarray(kin.a, float) / max(sc["a99"], 1e-12)
+    w = np.asarray(kin.v, float) / max(sc["v99"], 1e-12)
+    loss = _worm_loss(u, w, WORM_LEAD, WORM_MU0, WORM_MU1, WORM_FALL, WORM_SWITCH)
+    e = loss / max(float(np.percentile(loss, 99)), 1e-12)
+    lev = 1.0 + float(s) * WORM_RISE * e
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- load ------------------------------------------------------------------------------------
-#: ``toggle_clamp``'s largest change of the levels with the toggle's amplification, at
-#: strength 1 [-]; the links' angle to the line of thrust at no load [rad]; the share of
-#: that angle the links' spring lets them straighten by at the largest load [-]
-TOG_RISE, TOG_ANGLE, TOG_GIVE = 0.5, 0.35, 0.5
+#: ``ball_hysteresis``' largest change of the levels with the balls' rolling loss, at
+#: strength 1 [-]; the load the balls carry at no normal load (the carriage's weight and
+#: its fitted preload), x the largest load [-]
+HYST_RISE, HYST_REST = 0.5, 0.1
 
 
-def _toggle_gain(w, angle, give):
-    """A toggle's (knuckle joint's) normal force [-] on its pad per unit of the thrust on
-    its knee, over its value at no load, at the loads ``w`` [-] (x the largest): each link
-    at the angle theta to the pad's surface turns the knee's thrust W into W / (2 tan
-    theta); the links' spring yields in proportion to the load and the links straighten,
-    theta = ``angle`` (1 - ``give`` |w|), so the gain rises ever faster with the load."""
+def _rolling_hysteresis(w, rest):
+    """The balls' rolling resistance [-] (over its value at the largest load) at the loads
+    ``w`` [-] (x the largest): each ball's Hertzian contact has the radius a ~ (W R /
+    E*)^(1/3) and loses a share of the elastic work stored in it as it rolls on, F = alpha
+    (3 / 16) W a / R ~ W^(4/3), the balls carrying the load and ``rest``."""
     w = np.abs(np.asarray(w, float))
-    return math.tan(float(angle)) / np.tan(float(angle) * (1.0 - float(give) * w))
+    return ((w + float(rest)) / (1.0 + float(rest))) ** (4.0 / 3.0)
 
 
 @on_fine_grid
-def toggle_clamp_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage's gib (or a guide's clamping pad) is pressed on the way through a
-    toggle (a knuckle joint) on which the normal load bears: the load pushes on the knee of
-    two links that make an angle theta (:data:`TOG_ANGLE` at no load) with the pad's
-    surface, and each link presses the pad with W / (2 tan theta). The links sit on a
-    spring that yields under the load, so the knee sinks and the links straighten
-    (theta falls by :data:`TOG_GIVE` of its value at the largest load), and the gain of
-    the toggle rises ever faster with the load (:func:`_toggle_gain`). The Coulomb and
-    Stribeck levels are the base's times 1 + ``s`` :data:`TOG_RISE` x the gain's
-    departure from its mean along the record, over its largest (the base's level holds
-    the mean gain), inside the bristle dynamics; the viscous term is the base's.
+def ball_hysteresis_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage runs on recirculating-ball blocks whose balls carry the normal load;
+    each ball rolling on the hardened rail loses, with each passage, a share of the
+    elastic work stored in its Hertzian contact (elastic hysteresis of the steel): its
+    rolling resistance grows as the load times the contact's radius over the ball's
+    radius, as the load's 4/3 power (:func:`_rolling_hysteresis`; the balls also carry
+    :data:`HYST_REST` x the largest load at no load). The Coulomb and Stribeck levels are
+    the base's times 1 + ``s`` :data:`HYST_RISE` x that resistance's departure from its
+    mean along the record, over its largest (the base's level holds the mean), inside the
+    bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (load [N]) and its base law.
     s : float
-        Amplitude factor [-]: the toggle-pressed pad's share of the friction, / its value
-        at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    The toggle (knuckle-joint) mechanism and its mechanical advantage 1 / (2 tan theta), which
-    grows without bound as the links straighten (Reuleaux 1876, The Kinematics of Machinery;
-    Shigley and Uicker 1980, Theory of Machines and Mechanisms, ch. on mechanical advantage;
-    the toggle clamps of fixtures and the knuckle-joint presses). The candidate makes the
-    levels affine in the load, with a memory over the travel; the open forms scale the
-    friction with a Hertz contact's area, a seal's, a film's, a junction's, a pivot's, an
-    adhesive contact's or a pin's arc, break, squeeze or desorb films, plough, creep,
-    vibrate, overload or feed a constant flow to a pad, heal scuffs, relieve a preload, roll
-    on a lossy track, slip differentially, spin balls, press a disc spring, skid lightly
-    loaded rollers, bed a rail, heat a liner by PV, shear a soft film under pressure, pass
-    the load through a clamp's seal, load crowned rollers' ends, sink wheels into a
-    compacting track, sink a carriage onto its own wiper or close a magnet's gap. Here a
-    linkage's geometry amplifies the load it passes to a pad, the more the harder it is
-    pressed.
-    """
-    L = np.abs(np.asarray(kin.load, float))
-    Lmax = float(np.max(L)) or 1.0
-    if not np.ptp(L) > 1e-9 * Lmax:
-        raise ValueError(f"load (toggle_clamp): the {kin.plant} record's load does not "
-                         f"change")
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    g = _toggle_gain(L / Lmax, TOG_ANGLE, TOG_GIVE)
-    e = g - float(np.mean(g))
-    e = e / max(float(np.max(np.abs(e))), 1e-12)
-    lev = np.maximum(1.0 + float(s) * TOG_RISE * e, 0.05)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- asymmetry -------------------------------------------------------------------------------
-#: ``plunger_pump``'s delivery force at the top speed, x the friction level, at strength 1
-#: [-]; the delivery's relief (cracking) pressure, x the delivery pressure at the top speed
-#: [-]; the suction's inlet check valve's cracking pressure, x the same [-], its inlet's
-#: orifice loss at the top speed over that cracking pressure [-] and the suction's bound
-#: (the vapour pressure: the plunger cavitates), x the same [-]; the speed over which the
-#: check valves change over, x the top speed [-]
-PUMP_FORCE, PUMP_CRACK, PUMP_INLET, PUMP_INLOSS, PUMP_CAV, PUMP_SWITCH = (
-    0.5, 0.6, 0.05, 4.0, 0.2, 0.02)
-
-
-def _pump_pressure(u, crack, inlet, inloss, cav):
-    """The plunger's pressure [-] (over the delivery pressure at the top speed; the
-    plunger moving towards +x delivers, towards -x draws in) at the speeds ``u`` [-]
-    (over the top speed): delivering, the relief valve's cracking pressure ``crack`` plus
-    the delivery line's orifice loss, growing as u^2 (``crack`` + (1 - ``crack``) u^2);
-    drawing in, minus the inlet check valve's cracking pressure ``inlet`` plus its
-    orifice loss (``inlet`` (1 + ``inloss`` u^2)), bounded by the vapour pressure ``cav``
-    (y / (1 + y / ``cav``)). Each branch for its own sign of ``u``."""
-    u = np.asarray(u, float)
-    out = float(crack) + (1.0 - float(crack)) * u * u
-    y = float(inlet) * (1.0 + float(inloss) * u * u)
-    return out, -y / (1.0 + y / float(cav))
-
-
-@on_fine_grid
-def plunger_pump_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage drives the plunger of a single-acting piston pump (a way-lubrication or
-    a coolant pump worked by the axis, as on shapers, planers and older grinders) through
-    two check valves. Moving towards +x the plunger delivers: the outlet valve opens and
-    the plunger pushes against the relief valve's cracking pressure (:data:`PUMP_CRACK` x
-    the delivery pressure at the top speed) plus the delivery line's orifice loss, which
-    grows as the flow squared; moving towards -x it draws oil in through the inlet check
-    valve against that valve's small cracking pressure (:data:`PUMP_INLET`) and the inlet's
-    orifice loss, bounded by the oil's vapour pressure, at which the plunger cavitates
-    (:data:`PUMP_CAV`; :func:`_pump_pressure`). The valves change over within
-    :data:`PUMP_SWITCH` x the top speed (tanh). The truth adds ``s`` :data:`PUMP_FORCE` x
-    the friction level x that pressure (1 when delivering at the top speed) to the base.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law.
-    s : float
-        Amplitude factor [-]: the plunger's area, / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Reciprocating plunger pumps with suction and delivery check valves, their relief
-    valve's cracking pressure and the orifice loss of the delivery, dp ~ Q^2, and
-    cavitation at the vapour pressure on the suction stroke (Karassik, Messina, Cooper and
-    Heald 2008, Pump Handbook, ch. on reciprocating pumps; Merritt 1967, Hydraulic Control
-    Systems, ch. on orifice flow), as machine tools' axis-driven lubricating pumps (Chapman
-    1972, Workshop Technology, part 2, on the lubrication of shapers and planers). The
-    candidate gives each direction its levels and an offset; the open forms twin the levels,
-    the curves or the viscous term, bend a curve, roll a lip, load a thrust bearing, film a
-    rod seal, texture a ratchet, return a spring, tilt a pad, strut a sprag, throttle a
-    meter-out, differ a cylinder's areas, groove chevrons, buckle a helix, scrape chips,
-    commutate, idle a belt, free a roller, wick a felt, run a belt, lean a brush, band a
-    seal, counterbalance a valve, vibrate elliptically, diode a flow, pitch pads, skew
-    rollers, lift through a screw, turn the frame, angle a pull, adhere by wedges, charge
-    through a diode, drag a cup, flush coolant along the axis or cut one way with a clapper
-    tool. Here a pump works one stroke against its delivery and the other only draws in.
-    """
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    v99 = max(kin.scales["v99"], 1e-12)
-    u = np.asarray(kin.v, float) / v99
-    fwd = 0.5 * (1.0 + np.tanh(u / PUMP_SWITCH))
-    out, back = _pump_pressure(u, PUMP_CRACK, PUMP_INLET, PUMP_INLOSS, PUMP_CAV)
-    return F + float(s) * PUMP_FORCE * _level(kin) * (fwd * out + (1.0 - fwd) * back)
-
-
-# -- stribeck_shape --------------------------------------------------------------------------
-#: ``floating_pawl``'s drag at rest, x the Coulomb level, at strength 1 [-]; the pawl's
-#: float speed (where it no longer falls back to a tooth's root before the next tooth),
-#: x the top speed [-]
-PAWL_DRAG, PAWL_FLOAT = 0.5, 0.3
-
-
-def _pawl_drag(u, ufloat):
-    """The pawl's mean drag [-] (over its value at low speeds) at the speeds ``u`` [-]
-    (over the top speed): below the float speed ``ufloat`` it drops into every tooth's
-    root and the tooth's flank lifts it again, an energy per tooth, a drag independent of
-    the speed; above it the pawl, thrown off a crest, is still in flight when the next
-    tooth passes and strikes ever fewer and lower, the drag falling as (``ufloat`` /
-    u)^2: 1 / sqrt(1 + (u / ``ufloat``)^4)."""
-    r = np.abs(np.asarray(u, float)) / float(ufloat)
-    return 1.0 / np.sqrt(1.0 + r ** 4)
-
-
-@on_fine_grid
-def floating_pawl_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage carries a spring-loaded pawl that rides over a toothed rack along the
-    way (a safety catch of a vertical axis, or an indexing detent left engaged): each tooth
-    lifts the pawl against its spring and the pawl drops into the next root, a loss of
-    energy per tooth and so a drag independent of the speed at low speeds. The pawl falls
-    back under its spring in a fixed time; once a tooth passes sooner (above the float
-    speed, :data:`PAWL_FLOAT` x the top speed) the pawl, thrown off a crest, is still in
-    flight at the next tooth and strikes ever fewer and lower, and the drag falls as the
-    speed's inverse square (:func:`_pawl_drag`). That drag, ``s`` :data:`PAWL_DRAG` x the
-    Coulomb level at rest, is added to the base's Stribeck curve, inside the bristle
-    dynamics.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (v [m/s]) and its base law (with a Stribeck curve).
-    s : float
-        Amplitude factor [-]: the pawl's spring force, / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Follower jump and float, where a spring-returned follower (an engine's valve, a cam's
-    follower, a pawl) no longer keeps to its track once its return time exceeds the time
-    the track allows (Norton 2009, Cam Design and Manufacturing Handbook, ch. on follower
-    jump; Rothbart 2004, Cam Design Handbook), and ratchets' and detents' losses per tooth
-    (Shigley and Mischke 2001, Mechanical Engineering Design, on ratchets and pawls). The
-    candidate's curve is Gaussian, Lorentzian or an exponential tail; the open forms add
-    tails, rationals, films that lift, spikes, bimodal roughness, logs, Eyring, starvation,
-    rubber hysteresis, resonances, dither, melting, grains, readsorption, thermoviscous,
-    turbulent and thixotropic films, churning, core losses, breathing bellows, eddy brakes,
-    shear thinning, flying pads, wiping menisci, journals, wall slip, a closing clearance, a
-    dwell's squeeze, a pocket's suction, condensing menisci, flash heating, a peeled
-    adhesion, a measuring wheel's creep, a governor's shoes or a battery's dynamo. Here a
-    pawl's flight time sets the speed above which it stops dragging.
-    """
-    law = kin.base
-    if not has_stribeck_curve(kin):
-        raise ValueError("stribeck_shape (floating_pawl): the mre_lugre base has no "
-                         "Stribeck curve")
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    v99 = max(kin.scales["v99"], 1e-12)
-    add = float(s) * PAWL_DRAG * _level(kin)
-    return lugre_with_curve(kin, lambda vv: law.g(vv) + add * _pawl_drag(vv / v99,
-                                                                         PAWL_FLOAT))
-
-
-# -- position --------------------------------------------------------------------------------
-#: ``grit_band``'s rise of the levels where the grit lies thickest, at strength 1 [-]; the
-#: band's half-width where it lies evenly, x the stroke [-]; the length over which the
-#: wipers have thinned it beyond the band, x the stroke [-]
-GRIT_RISE, GRIT_HALF, GRIT_TAIL = 0.5, 0.08, 0.05
-
-
-def _grit_cover(d, half, tail):
-    """The grit's cover of the way [-] (1 in the band) at the distances ``d`` [-] from the
-    band's centre (over the stroke): even over ``half`` either side, thinning beyond as
-    exp(-(|d| - ``half``) / ``tail``), as the wipers have carried it along and shed it."""
-    d = np.abs(np.asarray(d, float))
-    return np.exp(-np.maximum(d - float(half), 0.0) / float(tail))
-
-
-@on_fine_grid
-def grit_band_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A band of the way beside the work (where a grinding wheel's or a saw's fall-out
-    settles) is covered with hard abrasive grit, even over :data:`GRIT_HALF` x the stroke
-    either side of its centre (the middle of the positions both parts of the record
-    visit) and thinning beyond it over :data:`GRIT_TAIL` x the stroke, where the wipers
-    have carried it along (:func:`_grit_cover`). Loose hard particles between the
-    carriage's pads and the way roll and slide between them and plough grooves in both
-    (three-body abrasion), adding a ploughing share to the adhesive friction: the Coulomb
-    and Stribeck levels are the base's times 1 + ``s`` :data:`GRIT_RISE` x the cover less
-    its mean along the record, over its largest, inside the bristle dynamics; the viscous
-    term is the base's.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (x [m]) and its base law.
-    s : float
-        Amplitude factor [-]: the friction's rise where the grit lies thickest, / its value
-        at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    Three-body abrasion by loose hard particles, which roll and slide between two surfaces
-    and plough both, and the ploughing share it adds to the friction (Rabinowicz 1995,
-    Friction and Wear of Materials, ch. on abrasive wear; Hutchings 1992, Tribology:
-    Friction and Wear of Engineering Materials, ch. on abrasive wear; Suh and Sin 1981, The
-    genesis of friction, Wear 69). The candidate scales the friction along the stroke and
-    adds a force of the position; the open forms put defects, waviness, wear, runout, bends,
-    films, cogging, tapers, pockets, cushions, covers, springs, holes, plungers, sags,
-    festoons, curves, chains, cams, heat, dents, joints, misalignment, flow forces, cranks,
-    overhangs, a track's end, a reel, a way's flatness, conductive strips, a guide's ball
-    passage, a steel insert, a screw's lead error, a rack's mesh, a draining film or
-    hardened zones on the stroke. Here loose particles lie on a band of the way.
-    """
-    c = _bump_centre(kin)
-    if c is None:
-        raise ValueError(f"position (grit_band): the held-out part of the {kin.plant} "
-                         f"record never revisits the positions of its fit part")
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    sc = kin.scales
-    span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
-    b = _grit_cover((np.asarray(kin.x, float) - c) / span, GRIT_HALF, GRIT_TAIL)
-    p = b - float(np.mean(b))
-    p = p / max(float(np.max(np.abs(p))), 1e-12)
-    lev = np.maximum(1.0 + float(s) * GRIT_RISE * p, 0.05)
-    return level_inside(kin, lev, np.ones_like(lev))
-
-
-# -- inertia ---------------------------------------------------------------------------------
-#: ``yoke_flywheel``'s mass reflected to the axis with the crank square to the slot (J / R^2)
-#: at strength 1, x the friction level / a99 [kg per N s^2/m]; the crank's radius, x half
-#: the visited stroke (above 1: the crank never reaches its dead centres) [-]
-YOKE_MASS, YOKE_CRANK = 0.5, 1.25
-
-
-def _yoke_mass(d, crank):
-    """The flywheel's mass [-] reflected to the carriage through a Scotch yoke (over its
-    value with the crank square to the slot) at the offsets ``d`` [-] (over the crank's
-    radius ``crank``; the yoke's x = R sin theta, so dtheta/dx = 1 / sqrt(R^2 - x^2)):
-    J (dtheta/dx)^2 = 1 / (1 - (d / ``crank``)^2), and its derivative along the offset
-    [-] (over the crank's radius)."""
-    q = np.asarray(d, float) / float(crank)
-    m = 1.0 / (1.0 - q * q)
-    return m, 2.0 * q * m * m / float(crank)
-
-
-@on_fine_grid
-def yoke_flywheel_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage's slot is the yoke of a Scotch yoke: a crank pin running in it turns a
-    flywheel (a crank-driven rotary part, as a shaper's or a pump's, left coupled to the
-    axis), so the flywheel's angle follows the carriage's position, x = R sin theta, with
-    the crank's radius R :data:`YOKE_CRANK` x half the visited stroke (it never reaches its
-    dead centres). The flywheel's inertia J is seen at the carriage as the mass J
-    (dtheta/dx)^2, J / R^2 (``s`` :data:`YOKE_MASS` x the friction level / a99) with the
-    crank square to the slot and growing towards the stroke's ends as 1 / (1 - (x /
-    R)^2) (:func:`_yoke_mass`); by Lagrange's equation the force is that mass times the
-    acceleration plus half its gradient along x times the speed squared. The inverse
-    dynamics misses it; the truth adds it to the base.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s], a [m/s^2]) and its base law.
-    s : float
-        Amplitude factor [-]: the flywheel's moment of inertia, / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    The Scotch yoke's kinematics, x = R sin theta (Shigley and Uicker 1980, Theory of
-    Machines and Mechanisms, ch. on linkages; Norton 2008, Design of Machinery, ch. on the
-    dynamics of crank mechanisms) and a mechanism's inertia reduced to one coordinate, a
-    mass that depends on the configuration, whose generalised force by Lagrange's equation
-    is m(x) a + m'(x) v^2 / 2 (Meriam and Kraige, Engineering Mechanics: Dynamics, on
-    variable-ratio drives; Wittenburg 2008, Dynamics of Multibody Systems). The candidate
-    misses a constant mass; the open forms filter it, reflect it through gearing, a chain, a
-    pinion or a screw, hang it on a spring, a cable, a fluid, a clutch, a coupling, a
-    flyweight, a friction-damped, quasi-zero-stiffness, hose's, elastomer or magnetic mount,
-    surge a spring, add a fluid's mass, pick, drop, empty, slide, rattle, telescope, roll or
-    rock it, recoil a frame, saturate a motor, lead a feedforward, pitch a scale, radiate
-    waves, swing it on a rod, slide it in a dish, swing a liquid in a tube, amplify a
-    fluid's mass in an inerter or store it as a shunted coil's charge. Here a crank's
-    changing ratio makes the reflected mass a function of the position.
-    """
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    sc = kin.scales
-    a99 = max(sc["a99"], 1e-12)
-    mid = 0.5 * (sc["x_hi"] + sc["x_lo"])
-    half = max(0.5 * (sc["x_hi"] - sc["x_lo"]), 1e-12)
-    d = (np.asarray(kin.x, float) - mid) / half
-    m, dm = _yoke_mass(d, YOKE_CRANK)
-    M = float(s) * YOKE_MASS * _level(kin) / a99
-    v = np.asarray(kin.v, float)
-    return F + M * (m * np.asarray(kin.a, float) + 0.5 * dm / half * v * v)
-
-
-# -- delay -----------------------------------------------------------------------------------
-#: ``acoustic_link``'s flight time from the stroke's far end at strength 1 [data samples];
-#: the receiver's distance beyond the stroke's near (-x) end, x the stroke [-]
-LINK_SAMPLES, LINK_NEAR = 4.0, 0.5
-
-
-def _acoustic_record(t, u, flight):
-    """The record [N] at the times ``t`` [s] of readings ``u`` [N] sent at ``t`` and heard
-    ``flight`` [s] later (the path's length over the speed of sound, at each sending): at
-    each time the latest reading heard (linear between the readings; before the first
-    arrives, the first), its arrival times kept in order (a reading overtaken by a later
-    one is never the latest: the carriage never outruns the sound). With no flight time,
-    ``u`` itself."""
-    t = np.asarray(t, float)
-    u = np.asarray(u, float)
-    arrive = np.maximum.accumulate(t + np.asarray(flight, float))
-    return np.interp(t, arrive, u, left=u[0])
-
-
-@on_fine_grid
-def acoustic_link_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force is measured on the carriage and sent to the acquisition by an ultrasonic
-    link (a transmitter on the carriage, a receiver fixed beyond the stroke's -x end, as
-    where a cable or a radio link cannot be used): each reading reaches the receiver after
-    its flight over the distance between them at the speed of sound, longer the further
-    the carriage is from the receiver (the receiver :data:`LINK_NEAR` x the stroke beyond
-    the near end; ``s`` :data:`LINK_SAMPLES` data samples of flight from the far end,
-    in proportion to the distance). The acquisition records the latest reading heard
-    (:func:`_acoustic_record`): the force's changes reach the record late by a time that
-    grows along the stroke, and the record is stretched while the carriage moves away and
-    compressed while it comes back (the Doppler effect). The motion channels are on time.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (t [s], x [m]) and its base law.
-    s : float
-        Amplitude factor [-]: the flight time per unit of distance (the inverse of the
-        speed of sound in the axis's enclosure, or the path's folding), / its value at
+        Amplitude factor [-]: the rolling blocks' share of the friction, / its value at
         strength 1.
 
     Returns
@@ -593,69 +225,91 @@ def acoustic_link_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The propagation of sound in air at c = 331 sqrt(T / 273 K) m/s and the time of flight
-    and Doppler shift of a moving source (Kinsler, Frey, Coppens and Sanders 2000,
-    Fundamentals of Acoustics, ch. on plane waves and the Doppler effect) and ultrasonic
-    data links and ranging, whose arrival time is the path's length over c (Lynnworth 1989,
-    Ultrasonic Measurements for Process Control, ch. on transit time). The candidate shifts
-    the force in time or lags it through a first-order filter; the open forms delay, filter,
-    average, stamp, decimate, hold, skew, jitter, limit the slew, pipe, take medians, report
-    on a dead band, sample positions, run a belt, aerate, drop telegrams, leak, creep,
-    notch, track, snub, time a waveguide's pulse, diffuse eddy currents, count a resonator,
-    sweep a grating, restore a force by a servo, interleave converters, balance a pneumatic
-    cell, count out a dual slope, adapt a filter's time constant, round in integer
-    arithmetic, fit a polynomial, observe a disturbance, average two taps half a period
-    apart or fuse a late fine channel with a fast coarse one. Here the delay is a flight
-    time that follows the carriage along the stroke.
+    Rolling friction from elastic hysteresis losses, F = alpha (3 / 16) W a / R with the
+    Hertzian contact radius a ~ (W R / E*)^(1/3), so F ~ W^(4/3) (Tabor 1955, The mechanism
+    of rolling friction II, Proc. R. Soc. A 229; Johnson 1985, Contact Mechanics, ch. 8 on
+    rolling contact; Greenwood, Minshall and Tabor 1961, Hysteresis losses in rolling and
+    sliding friction, Proc. R. Soc. A 259). The candidate makes the levels affine in the
+    load, with a memory over the travel; the open forms scale the friction with a Hertz
+    contact's area, a seal's, a film's, a junction's, a pivot's, an adhesive contact's or a
+    pin's arc, break, squeeze or desorb films, plough, creep, vibrate, overload or feed a
+    constant flow to a pad, heal scuffs, relieve a preload, roll on a lossy track, slip
+    differentially, spin balls, press a disc spring, skid lightly loaded rollers, bed a
+    rail, heat a liner by PV, shear a soft film under pressure, pass the load through a
+    clamp's seal, load crowned rollers' ends, sink wheels into a compacting track, sink a
+    carriage onto its own wiper, close a magnet's gap or amplify it through a toggle. Here
+    the hard rolling elements' own elastic hysteresis grows faster than the load.
     """
+    L = np.abs(np.asarray(kin.load, float))
+    Lmax = float(np.max(L)) or 1.0
+    if not np.ptp(L) > 1e-9 * Lmax:
+        raise ValueError(f"load (ball_hysteresis): the {kin.plant} record's load does not "
+                         f"change")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    sc = kin.scales
-    span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
-    dist = (LINK_NEAR + (np.asarray(kin.x, float) - sc["x_lo"]) / span) / (LINK_NEAR + 1.0)
-    flight = float(s) * LINK_SAMPLES * kin.sample_dt * dist
-    return _acoustic_record(kin.t, F, flight)
+    g = _rolling_hysteresis(L / Lmax, HYST_REST)
+    e = g - float(np.mean(g))
+    e = e / max(float(np.max(np.abs(e))), 1e-12)
+    lev = np.maximum(1.0 + float(s) * HYST_RISE * e, 0.05)
+    return level_inside(kin, lev, np.ones_like(lev))
 
 
-# -- drift -----------------------------------------------------------------------------------
-#: ``magnetic_aftereffect``'s fall of the levels at the record's end, at strength 1 [-]; the
-#: magnetisation's time origin after the magnetising pulse, x the record's duration [-];
-#: the magnet's viscosity coefficient, the magnetisation's loss per e-fold of the time
-#: (over the magnetisation just after the pulse) [-]
-AFTER_FALL, AFTER_T0, AFTER_S = 0.4, 0.01, 0.02
+# -- asymmetry -------------------------------------------------------------------------------
+#: ``trailing_hose``' drag of the whole hose pulled straight, x the friction level, at
+#: strength 1 [-]; the drag of the hose pushed into loops, x that [-]; the slack the loops
+#: hold at most, x the stroke [-]; the speed over which the drag changes sign, x the top
+#: speed [-]
+HOSE_DRAG, HOSE_PUSH, HOSE_SLACK, HOSE_SWITCH = 0.5, 0.1, 0.3, 0.02
 
 
-def _aftereffect_pull(tr, t0, visc):
-    """A permanent-magnet clamp's pull [-] (over its pull just after the magnetising
-    pulse) at the record's relative times ``tr`` [-]: the magnetisation decays by magnetic
-    viscosity as the logarithm of the time, M = 1 - ``visc`` ln(1 + tr / ``t0``), and the
-    pull across the clamp's fixed gap as M^2."""
-    tr = np.maximum(np.asarray(tr, float), 0.0)
-    m = 1.0 - float(visc) * np.log1p(tr / float(t0))
-    return m * m
+@njit(cache=True)
+def _hose_pull(x, slack_max):
+    """The share [-] of the hose that slides on the floor as the carriage pulls it (moving
+    towards +x, the hose trailing towards -x) along the positions ``x`` [m]: moving
+    towards -x the carriage pushes the hose into loops and gathers slack (at most
+    ``slack_max`` [m]); pulling, it straightens the loops nearest it first, and the hose's
+    sliding part grows with the travel since the reversal until the slack is taken up
+    (then 1). From a straight hose."""
+    n = x.size
+    out = np.empty(n)
+    slack = 0.0
+    pulled = 0.0
+    for k in range(n):
+        dx = x[k] - x[k - 1] if k > 0 else 0.0
+        if dx < 0.0:
+            # the loops already straightened are slack no more
+            slack = min(max(slack - pulled, 0.0) - dx, slack_max)
+            pulled = 0.0
+        elif dx > 0.0:
+            pulled += dx
+            if pulled >= slack:
+                slack = 0.0
+                pulled = 0.0
+        out[k] = 1.0 if slack <= 0.0 else min(pulled / slack, 1.0)
+    return out
 
 
 @on_fine_grid
-def magnetic_aftereffect_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage's pads are pressed on the way by a permanent-magnet clamp (an
-    electro-permanent clamp, its magnets magnetised by a current pulse just before the
-    record's start). At a constant temperature and field the magnets' magnetisation
-    decays after the pulse by magnetic viscosity, the thermally activated reversal of
-    domains over their energy barriers: in proportion to the logarithm of the time since
-    the pulse (its time origin :data:`AFTER_T0` x the record, its coefficient
-    :data:`AFTER_S` per e-fold), and the clamp's pull across its fixed gap falls as the
-    magnetisation squared (:func:`_aftereffect_pull`). The Coulomb and Stribeck levels
-    are the base's times 1 - ``s`` :data:`AFTER_FALL` x the pull's loss since the start
-    over its loss at the record's end, inside the bristle dynamics; the viscous term is
-    the base's: a fall fast at first and ever slower, never levelling off.
+def trailing_hose_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A supply hose (or a cable) is fixed to the carriage and trails on the floor of a
+    tray towards -x, its far end free. Moving towards +x the carriage pulls it: the hose
+    slides on the tray and its drag is its weight times its friction coefficient
+    (``s`` :data:`HOSE_DRAG` x the friction level once it is straight); moving towards -x
+    the carriage pushes it: a hose cannot carry more than its small buckling load in
+    compression, so it folds into loops near the carriage and drags only
+    :data:`HOSE_PUSH` of that, gathering slack (at most :data:`HOSE_SLACK` x the stroke).
+    After a reversal into +x the loops nearest the carriage straighten first, and the
+    sliding part of the hose (so its drag) grows with the travel until the slack is taken
+    up (:func:`_hose_pull`). The drag changes sign with the speed over :data:`HOSE_SWITCH`
+    x the top speed (tanh) and is added to the base.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (t [s]) and its base law.
+        The motion on the fine grid (x [m], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the clamp's share of the friction, / its value at strength 1.
+        Amplitude factor [-]: the hose's weight per length, / its value at strength 1.
 
     Returns
     -------
@@ -664,89 +318,515 @@ def magnetic_aftereffect_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Magnetic viscosity (the magnetic after-effect), the decay of a magnet's magnetisation as
-    S ln(t) after a change of the field, from the thermal activation of irreversible
-    reversals (Street and Woolley 1949, A study of magnetic viscosity, Proc. Phys. Soc. A
-    62; Chikazumi 1997, Physics of Ferromagnetism, ch. on magnetic after-effect), the pull
-    of a magnet ~ B^2 across a gap (Furlani 2001, Permanent Magnet and Electromechanical
-    Devices) and electro-permanent magnetic clamps and chucks, magnetised by a pulse. The
-    candidate is a trend, a saturating change, a step, a cycle, a resetting change or the
-    friction power's heat; the open forms warm up, wear in, change, heat, wear, follow the
-    humidity, grind, relubricate, relax, oxidise, deplete, wear through, swell, build films,
-    take in particles, expand, shear down, heat magnets, charge, creep, loosen, dewet,
-    channel, drain, spall, evaporate, pump down, settle an additive, crystallise wax, bleed
-    a grease's oil, cycle a thermostat, glaze a lining, form a tribolayer, grow frost,
-    charge an electrostatic clamp or warm a solenoid's coil. Here a magnet's own domains
-    relax after it was magnetised, at a constant temperature.
+    The drag of a flexible line pulled along a surface (Coulomb friction of its weight,
+    as for ropes, chains and trailing cables: Irvine 1981, Cable Structures, ch. on cables
+    on a rough surface; the trailing cables of mining machines and cranes, IEC 60204-32)
+    and the small compressive load a slender hose can carry before it buckles into loops
+    (Timoshenko and Gere 1961, Theory of Elastic Stability, ch. 2). The candidate gives
+    each direction its levels and an offset; the open forms twin the levels, the curves
+    or the viscous term, bend a curve, roll a lip, load a thrust bearing, film a rod seal,
+    texture a ratchet, return a spring, tilt a pad, strut a sprag, throttle a meter-out,
+    differ a cylinder's areas, groove chevrons, buckle a helix, scrape chips, commutate,
+    idle a belt, free a roller, wick a felt, run a belt, lean a brush, band a seal,
+    counterbalance a valve, vibrate elliptically, diode a flow, pitch pads, skew rollers,
+    lift through a screw, turn the frame, angle a pull, adhere by wedges, charge through a
+    diode, drag a cup, flush coolant along the axis, cut one way with a clapper tool or
+    work a plunger pump. Here a line pulled one way drags its whole length and pushed the
+    other folds up, and gives up its slack over a travel after each reversal.
+    """
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    sc = kin.scales
+    span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
+    x = np.asarray(kin.x, float)
+    pull = _hose_pull(x, HOSE_SLACK * span)
+    fwd = 0.5 * (1.0 + np.tanh(np.asarray(kin.v, float) / (HOSE_SWITCH * max(sc["v99"],
+                                                                             1e-12))))
+    drag = fwd * pull - (1.0 - fwd) * HOSE_PUSH
+    return F + float(s) * HOSE_DRAG * _level(kin) * drag
+
+
+# -- stribeck_shape --------------------------------------------------------------------------
+#: ``dielectric_pad``'s attraction at rest, x the Coulomb level, at strength 1 [-]; the
+#: speed at which a contact spot passes in the dielectric's charging time (the spot's
+#: length over R C), x the top speed [-]
+PAD_PULL, PAD_SPEED = 0.5, 0.15
+
+
+def _pad_pull(u, ucharge):
+    """The pad's mean attraction [-] (over its value at rest) at the speeds ``u`` [-]
+    (over the top speed): each contact spot lies under the pad for its length over the
+    speed, t = l / |v|, and charges as 1 - exp(-t / (R C)); the attraction goes as the
+    charge squared: (1 - exp(-``ucharge`` / |u|))^2, 1 at rest and ~ (``ucharge`` /
+    u)^2 fast."""
+    r = np.abs(np.asarray(u, float))
+    q = 1.0 - np.exp(-float(ucharge) / np.maximum(r, 1e-300))
+    return q * q
+
+
+@on_fine_grid
+def dielectric_pad_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage carries an electroadhesive pad of the Johnsen-Rahbek kind (a slightly
+    conducting dielectric over an electrode held at a constant voltage) that slides on
+    the grounded way and pulls the carriage onto it. Its attraction comes from the charge
+    that flows through the dielectric's resistance into the spots where it touches the
+    way, charging their tiny gaps with the time constant R C; a spot stays under the pad
+    for its length over the speed, so at rest each charges fully, and the faster the
+    slide the less charge a spot takes before it moves on (:func:`_pad_pull`, the pull as
+    the charge squared, ``s`` :data:`PAD_PULL` x the Coulomb level at rest; the spot's
+    length over R C is :data:`PAD_SPEED` x the top speed). The truth adds that pull's
+    friction to the base's Stribeck curve, inside the bristle dynamics.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (v [m/s]) and its base law.
+    s : float
+        Amplitude factor [-]: the pad's voltage squared, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Raises
+    ------
+    ValueError
+        On the isolator's mre_lugre base (no Stribeck curve).
+
+    Notes
+    -----
+    The Johnsen-Rahbek effect, an attraction from the charge held across the contact
+    spots' gaps, fed through the dielectric's bulk resistance (Johnsen and Rahbek 1923,
+    J. IEE 61; Atkinson 1969, A simple theory of the Johnsen-Rahbek effect, J. Phys. D 2;
+    Watanabe, Kitabayashi and Nakayama 1993, Jpn. J. Appl. Phys. 32, on its time
+    dependence) and electroadhesion by sliding pads. The candidate's curve is Gaussian,
+    Lorentzian or an exponential tail; the open forms add tails, rationals, films that
+    lift, spikes, bimodal roughness, logs, Eyring, starvation, rubber hysteresis,
+    resonances, dither, melting, grains, readsorption, thermoviscous, turbulent and
+    thixotropic films, churning, core losses, breathing bellows, eddy brakes, shear
+    thinning, flying pads, wiping menisci, journals, wall slip, a closing clearance, a
+    dwell's squeeze, a pocket's suction, condensing menisci, flash heating, a peeled
+    adhesion, a measuring wheel's creep, a governor's shoes, a battery's dynamo or a
+    floating pawl. Here an electrical time constant against a contact's dwell time sets
+    the speed above which the pull fades.
+    """
+    if not has_stribeck_curve(kin):
+        raise ValueError("stribeck_shape (dielectric_pad): the mre_lugre base has no "
+                         "Stribeck curve")
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    law = kin.base
+    v99 = max(kin.scales["v99"], 1e-12)
+    add = float(s) * PAD_PULL * _level(kin)
+    return lugre_with_curve(kin, lambda vv: law.g(vv) + add * _pad_pull(vv / v99,
+                                                                       PAD_SPEED))
+
+
+# -- position --------------------------------------------------------------------------------
+#: ``wet_patch``'s rise of the levels where the menisci pull hardest, at strength 1 [-]; the
+#: patch's half-width (where the water lies 1/e as thick as at its middle), x the stroke
+#: [-]; the water's thickness at the patch's middle, x the thickness at which the menisci
+#: pull hardest [-]
+WET_RISE, WET_HALF, WET_DEPTH = 0.5, 0.1, 3.0
+
+
+def _meniscus_pull(d, half, depth):
+    """The menisci's pull [-] (over its largest) at the distances ``d`` [-] from the
+    patch's middle (x the stroke): the water's thickness h = ``depth`` exp(-(d /
+    ``half``)^2) (x the thickness of the strongest pull); the capillary bridges around
+    the contact spots pull as (h) exp(1 - h): nothing where the way is dry, most where the
+    water just fills the roughness, less where it floods the spots and the menisci merge."""
+    d = np.asarray(d, float)
+    h = float(depth) * np.exp(-(d / float(half)) ** 2)
+    return h * np.exp(1.0 - h)
+
+
+@on_fine_grid
+def wet_patch_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A patch of the way (where the coolant's mist settles, or water condenses under a
+    cold fixture) carries a thin film of water, thickest at the patch's middle and thinning
+    to dry across :data:`WET_HALF` x the stroke. Around each contact spot the water forms
+    capillary bridges whose Laplace pressure pulls the carriage onto the way: the pull adds
+    to the normal load, most where the film just fills the roughness and less where it
+    floods the spots (there the menisci merge and their curvature relaxes) and nowhere on
+    the dry way (:func:`_meniscus_pull`; the film at the middle is :data:`WET_DEPTH` x the
+    thickness of the strongest pull): a ring of high friction around a milder middle. The
+    Coulomb and Stribeck levels are the base's times 1 + ``s`` :data:`WET_RISE` x the
+    pull's departure from its mean along the record, over its largest, inside the bristle
+    dynamics; the viscous term is the base's. The patch lies where the fit and held-out
+    parts both pass (:func:`.truths._bump_centre`).
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (x [m]) and its base law.
+    s : float
+        Amplitude factor [-]: the menisci's pull, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Raises
+    ------
+    ValueError
+        When the held-out part never revisits the fit part's positions (the press).
+
+    Notes
+    -----
+    Capillary (meniscus) forces at contacting rough surfaces and their dependence on the
+    liquid film's thickness: they rise as the film fills the gaps around the asperities and
+    fall once it floods them (Bhushan 2013, Introduction to Tribology, ch. on adhesion and
+    meniscus effects; Israelachvili 2011, Intermolecular and Surface Forces, ch. on
+    capillary forces; Matthewson and Mamin 1988, Liquid-mediated adhesion of ultra-flat
+    solid surfaces, MRS Proc. 119). The candidate scales the friction along the stroke and
+    adds a force of the position; the open forms put defects, waviness, wear, runout,
+    bends, films, cogging, tapers, pockets, cushions, covers, springs, holes, plungers,
+    sags, festoons, curves, chains, cams, heat, dents, joints, misalignment, flow forces,
+    cranks, overhangs, a track's end, a reel, a way's flatness, conductive strips, a
+    guide's ball passage, a steel insert, a screw's lead error, a rack's mesh, a draining
+    film, hardened zones or a band of grit on the stroke. Here a water film's menisci pull
+    the contact onto the way, hardest where the film is thin.
+    """
+    c = _bump_centre(kin)
+    if c is None:
+        raise ValueError(f"position (wet_patch): the held-out part of the {kin.plant} "
+                         f"record never revisits the positions of its fit part")
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    sc = kin.scales
+    span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
+    b = _meniscus_pull((np.asarray(kin.x, float) - c) / span, WET_HALF, WET_DEPTH)
+    p = b - float(np.mean(b))
+    p = p / max(float(np.max(np.abs(p))), 1e-12)
+    lev = np.maximum(1.0 + float(s) * WET_RISE * p, 0.05)
+    return level_inside(kin, lev, np.ones_like(lev))
+
+
+# -- inertia ---------------------------------------------------------------------------------
+#: ``winch_layers``' drum and motor inertia reflected to the carriage on the first layer
+#: (J / r0^2) at strength 1, x the friction level / a99 [kg per N s^2/m]; the layers the
+#: cable winds across the visited stroke [-]; each layer's growth of the winding radius, x
+#: the first layer's radius [-]; the share of a layer over which the cable climbs to the
+#: next (its cross-over, about one turn) [-]
+WINCH_MASS, WINCH_LAYERS, WINCH_GROW, WINCH_CLIMB = 0.5, 3, 0.25, 0.08
+
+
+def _winch_mass(q, layers, grow, climb):
+    """The drum's inertia reflected to the carriage [-] (over its value on the first layer)
+    and its gradient [-] (per unit of ``q``) at the shares ``q`` [-] of the visited stroke
+    the cable has wound on: the winding radius r = r0 (1 + ``grow`` n), n the layers
+    completed, each climbed over ``climb`` of a layer (a logistic step), and the reflected
+    mass J / r^2."""
+    q = np.asarray(q, float)
+    ph = q * float(layers)
+    n = np.zeros_like(ph)
+    dn = np.zeros_like(ph)
+    for k in range(1, int(layers)):
+        e = np.exp(-np.clip((ph - k) / float(climb), -60.0, 60.0))
+        sig = 1.0 / (1.0 + e)
+        n += sig
+        dn += sig * (1.0 - sig) / float(climb) * float(layers)
+    r = 1.0 + float(grow) * n
+    return 1.0 / (r * r), -2.0 * float(grow) * dn / (r * r * r)
+
+
+@on_fine_grid
+def winch_layers_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage is pulled by a wire rope from a winch whose drum winds it in
+    :data:`WINCH_LAYERS` layers over the visited stroke (the rope's far end at the
+    carriage, a return spring or a second winch holding it taut). The drum's and the
+    motor's inertia J is seen at the carriage as the mass J / r^2, r the radius the rope
+    winds at: each layer lifts it by :data:`WINCH_GROW` x the first layer's, over the
+    cross-over where the rope climbs to the next layer (:data:`WINCH_CLIMB` of a layer),
+    so the reflected mass (``s`` :data:`WINCH_MASS` x the friction level / a99 on the
+    first layer) falls in steps along the stroke (:func:`_winch_mass`), and Lagrange's
+    m'(x) v^2 / 2 acts at each step. The truth adds m(x) a + m'(x) v^2 / 2 to the base:
+    the inverse dynamics, which knows only the carriage's mass, misses it.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (x [m], v [m/s], a [m/s^2]) and its base law.
+    s : float
+        Amplitude factor [-]: the drum's and motor's inertia, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Multi-layer winding of ropes on drums, the radius growing by about a rope's diameter
+    per layer and the rope climbing to the next layer at the flange (Feyrer 2015, Wire
+    Ropes, ch. on drums and multi-layer spooling; the Lebus grooving of hoists and cranes'
+    drums; Dietz and Wehking, on rope drives), and a mechanism's inertia reduced to one
+    coordinate, m(x) a + m'(x) v^2 / 2 by Lagrange's equation (Wittenburg 2008, Dynamics of
+    Multibody Systems). The candidate misses a constant mass; the open forms filter it,
+    reflect it through gearing, a chain, a pinion or a screw, hang it on a spring, a cable,
+    a fluid, a clutch, a coupling, a flyweight, a friction-damped, quasi-zero-stiffness,
+    hose's, elastomer or magnetic mount, surge a spring, add a fluid's mass, pick, drop,
+    empty, slide, rattle, telescope, roll or rock it, recoil a frame, saturate a motor,
+    lead a feedforward, pitch a scale, radiate waves, swing it on a rod, slide it in a
+    dish, swing a liquid in a tube, amplify a fluid's mass in an inerter, store it as a
+    shunted coil's charge or reflect it through a Scotch yoke. Here a drum's inertia is
+    reflected through a winding radius that steps up with each layer of rope.
+    """
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    sc = kin.scales
+    a99 = max(sc["a99"], 1e-12)
+    span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
+    q = np.clip((np.asarray(kin.x, float) - sc["x_lo"]) / span, 0.0, 1.0)
+    m, dm = _winch_mass(q, WINCH_LAYERS, WINCH_GROW, WINCH_CLIMB)
+    M = float(s) * WINCH_MASS * _level(kin) / a99
+    v = np.asarray(kin.v, float)
+    return F + M * (m * np.asarray(kin.a, float) + 0.5 * dm / span * v * v)
+
+
+# -- delay -----------------------------------------------------------------------------------
+#: ``bucket_brigade``'s nominal delay (its stages x the clock's period) at strength 1 [data
+#: samples]; its stages [-]; the share of a charge packet each transfer leaves behind (the
+#: charge-transfer inefficiency) [-]
+BBD_SAMPLES, BBD_STAGES, BBD_LOSS = 3.0, 16, 0.08
+
+
+def _brigade_weights(stages, loss, tail=1e-7):
+    """The clock periods k [-] a charge packet takes through ``stages`` stages that each
+    pass it on with the probability 1 - ``loss`` per clock (what stays behind follows a
+    clock later) and their weights [-] (the negative binomial, C(k - 1, stages - 1) (1 -
+    loss)^stages loss^(k - stages), k >= stages; cut where the rest is below ``tail`` and
+    renormalised)."""
+    n = int(stages)
+    e = float(loss)
+    ks, ws = [], []
+    w = (1.0 - e) ** n
+    k = n
+    total = 0.0
+    while True:
+        ks.append(k)
+        ws.append(w)
+        total += w
+        if 1.0 - total < tail or k > 50 * n:
+            break
+        w = w * k / (k - n + 1) * e          # C(k, n - 1) / C(k - 1, n - 1) = k / (k - n + 1)
+        k += 1
+    ws = np.asarray(ws)
+    return np.asarray(ks, float), ws / ws.sum()
+
+
+@on_fine_grid
+def bucket_brigade_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force signal passes an analogue delay line of the bucket-brigade kind (a chain
+    of :data:`BBD_STAGES` capacitors whose charge packets are passed on, one stage per
+    clock period, by switching transistors), as in the anti-aliasing and matching delays
+    of older analogue conditioning: the record is the force ``s`` :data:`BBD_SAMPLES`
+    samples late (the stages x the clock's period). Each transfer leaves
+    :data:`BBD_LOSS` of its packet behind, which follows one period later, so the
+    packet arrives spread over the periods after the nominal delay (a negative binomial
+    of the periods it takes, :func:`_brigade_weights`): a delay with a smear that lags
+    further. A longer clock period (a larger ``s``), a longer delay and a wider smear.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s]) and its base law.
+    s : float
+        Amplitude factor [-]: the clock's period, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    Bucket-brigade and charge-coupled delay lines and their charge-transfer inefficiency,
+    the share a transfer leaves behind, which smears a signal over later clock periods
+    (Sangster and Teer 1969, Bucket-brigade electronics, IEEE J. Solid-State Circuits 4;
+    Sequin and Tompsett 1975, Charge Transfer Devices, ch. on transfer inefficiency;
+    Berglund 1971, Analog performance limitations of charge-transfer dynamic shift
+    registers, IEEE J. Solid-State Circuits 6). The candidate shifts the force in time or
+    lags it through a first-order filter; the open forms delay, filter, average, stamp,
+    decimate, hold, skew, jitter, limit the slew, pipe, take medians, report on a dead
+    band, sample positions, run a belt, aerate, drop telegrams, leak, creep, notch, track,
+    snub, time a waveguide's pulse, diffuse eddy currents, count a resonator, sweep a
+    grating, restore a force by a servo, interleave converters, balance a pneumatic cell,
+    count out a dual slope, adapt a filter's time constant, round in integer arithmetic,
+    fit a polynomial, observe a disturbance, average two taps half a period apart, fuse a
+    late fine channel with a fast coarse one or send it by sound. Here the delay is a
+    chain of charge transfers, each of which leaves a little behind.
+    """
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    t = np.asarray(kin.t, float)
+    period = float(s) * BBD_SAMPLES * kin.sample_dt / BBD_STAGES
+    ks, ws = _brigade_weights(BBD_STAGES, BBD_LOSS)
+    out = np.zeros_like(F)
+    for k, w in zip(ks, ws):
+        out += w * np.interp(t - k * period, t, F, left=F[0])
+    return out
+
+
+# -- drift -----------------------------------------------------------------------------------
+#: ``leaking_bladder``'s fall of the levels at the record's end, at strength 1 [-]; the
+#: bladder's pressure at the record's start, x the atmosphere's (absolute) [-]; its
+#: emptying time constant while the leak is choked (its volume over the leak's choked
+#: flow per pressure), x the record's duration [-]; the air's ratio of specific heats [-]
+BLAD_FALL, BLAD_P0, BLAD_TAU, BLAD_GAMMA = 0.5, 4.0, 1.0, 1.4
+
+
+def _bladder_pressure(tr, p0, tau, gamma, n=4001):
+    """A leaking air bladder's absolute pressure [-] (x the atmosphere's) at the times
+    ``tr`` [-] (x the record's duration) from ``p0`` at 0, isothermal: dp/dt = -(p / tau)
+    psi(1 / p) / psi*, the leak's flow function of an orifice, choked (psi = psi*) while
+    the pressure is above the critical ratio (2 / (gamma + 1))^(-gamma / (gamma - 1)),
+    subsonic below it (psi = sqrt(2 gamma / (gamma - 1) (r^(2 / gamma) - r^((gamma + 1) /
+    gamma))), r = 1 / p), so the pressure falls exponentially at first and then ever more
+    slowly to the atmosphere's (forward Euler on ``n`` steps over the record)."""
+    g = float(gamma)
+    rc = (2.0 / (g + 1.0)) ** (g / (g - 1.0))
+
+    def psi(r):
+        r = min(max(r, rc), 1.0)
+        return math.sqrt(max(2.0 * g / (g - 1.0) * (r ** (2.0 / g) - r ** ((g + 1.0) / g)),
+                             0.0))
+    pc = psi(rc)
+    tt = np.linspace(0.0, 1.0, n)
+    p = np.empty(n)
+    p[0] = float(p0)
+    h = tt[1] - tt[0]
+    for k in range(1, n):
+        q = p[k - 1]
+        p[k] = max(q - h * q / float(tau) * psi(1.0 / q) / pc, 1.0)
+    return np.interp(np.clip(np.asarray(tr, float), 0.0, 1.0), tt, p)
+
+
+@on_fine_grid
+def leaking_bladder_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage's gib is pressed on the way by an air bladder (a pneumatic clamping
+    hose) inflated to :data:`BLAD_P0` x the atmosphere's pressure at the record's start and
+    then shut off; its valve's seat leaks through a fine orifice. While the bladder's
+    pressure is above the critical ratio the leak is choked, its flow in proportion to the
+    pressure, and the pressure falls exponentially (time constant :data:`BLAD_TAU` x the
+    record); below it the flow is subsonic and falls faster than the pressure, and the
+    pressure creeps to the atmosphere's ever more slowly (:func:`_bladder_pressure`). The
+    gib's preload follows the bladder's gauge pressure: the Coulomb and Stribeck levels
+    are the base's times 1 - ``s`` :data:`BLAD_FALL` x the share of the gauge pressure
+    lost, over its share at the record's end, inside the bristle dynamics; the viscous
+    term is the base's.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (t [s]) and its base law.
+    s : float
+        Amplitude factor [-]: the bladder's share of the gib's preload, / its value at
+        strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    The discharge of a vessel through an orifice, choked above the critical pressure ratio
+    (0.528 for air) with a mass flow in proportion to the upstream pressure, subsonic below
+    it (Saint-Venant and Wantzel's flow function; Shapiro 1953, The Dynamics and
+    Thermodynamics of Compressible Fluid Flow, vol. 1, ch. 4; ISO 6358 for pneumatic
+    components), and pneumatic clamping elements that hold a preload through a shut
+    valve. The candidate is a trend, a saturating change, a step, a cycle, a resetting
+    change or the friction power's heat; the open forms warm up, wear in, change, heat,
+    wear, follow the humidity, grind, relubricate, relax, oxidise, deplete, wear through,
+    swell, build films, take in particles, expand, shear down, heat magnets, charge, creep,
+    loosen, dewet, channel, drain, spall, evaporate, pump down, settle an additive,
+    crystallise wax, bleed a grease's oil, cycle a thermostat, glaze a lining, form a
+    tribolayer, grow frost, charge an electrostatic clamp, warm a solenoid's coil or relax
+    a magnet's domains. Here a gas leaks out of the preload, choked at first and then
+    subsonic.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     t = np.asarray(kin.t, float)
     tr = (t - t[0]) / max(float(t[-1] - t[0]), 1e-300)
-    loss = 1.0 - _aftereffect_pull(tr, AFTER_T0, AFTER_S)
-    lev = np.maximum(1.0 - float(s) * AFTER_FALL * loss / max(float(loss[-1]), 1e-12), 0.05)
+    p = _bladder_pressure(tr, BLAD_P0, BLAD_TAU, BLAD_GAMMA)
+    loss = (BLAD_P0 - p) / (BLAD_P0 - 1.0)
+    lev = np.maximum(1.0 - float(s) * BLAD_FALL * loss / max(float(loss[-1]), 1e-12), 0.05)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: ``foam_pads``' play at strength 1, as a share of the stroke (its full width between the
-#: rigid flanks) [-]; each foam pad's thickness, x half the play [-]; the foam's plateau
-#: (collapse) force, x the Coulomb level [-]; its strain at the plateau's start (the cell
-#: walls' elastic limit) [-] and at densification [-]; the plateau's rise to
-#: densification, x the plateau force [-]; the strain the densification is followed to
-#: (the pad then bottoms on the flank) [-]
-FOAM_CLEAR, FOAM_THICK, FOAM_PLAT = 0.0004, 0.5, 0.3
-FOAM_YIELD, FOAM_DENSE, FOAM_HARD, FOAM_BOTTOM = 0.05, 0.6, 0.2, 0.95
+#: ``liquid_bridge``'s play at strength 1, as a share of the stroke (its full width between
+#: the flanks) [-]; the bridge's pull at contact, x the Coulomb level [-]; the separation
+#: at which it ruptures, x the play's full width [-]
+BRIDGE_CLEAR, BRIDGE_PULL, BRIDGE_REACH = 0.0003, 0.6, 0.5
 
 
 @njit(cache=True)
-def _foam_stress(eps, yld, dense, hard, bottom):
-    """An elastomeric open-cell foam's compressive force [-] (over its plateau force) at the
-    strains ``eps`` [-] (0 to 1): linear elastic up to ``yld`` (the cell walls bend),
-    a plateau rising by ``hard`` to the densification strain ``dense`` (the cell walls
-    buckle), then steeply, ((1 - ``dense``) / (1 - eps))^2, as the collapsed cells touch,
-    followed up to ``bottom`` (held there beyond). 0 at no strain."""
-    if eps <= 0.0:
+def _bridge_force(d, pull, reach):
+    """A liquid bridge's pull [N] across the separation ``d`` [m] from the flank it formed
+    on: ``pull`` [N] at contact, falling linearly with the separation (the neck thins as
+    the bridge stretches at a constant volume) to its rupture at ``reach`` [m]; 0 beyond."""
+    if d >= reach:
         return 0.0
-    if eps < yld:
-        return eps / yld
-    if eps < dense:
-        return 1.0 + hard * (eps - yld) / (dense - yld)
-    e = eps if eps < bottom else bottom
-    r = (1.0 - dense) / (1.0 - e)
-    return (1.0 + hard) * r * r
+    if d <= 0.0:
+        return pull
+    return pull * (1.0 - d / reach)
 
 
 @njit(cache=True)
-def _foam_contact(h, xd, half, tf, plat, kh, ch, m, s0, s1, s2, Fc, Fs, vs, alpha, shape,
-                  yld, dense, hard, bottom):
+def _bridge_contact(h, xd, half, pull, reach, kh, ch, m, s0, s1, s2, Fc, Fs, vs, alpha,
+                    shape):
     """LuGre friction [N] of a light contact of mass ``m`` [kg] driven by the drive positions
-    ``xd`` [m] (steps ``h`` [s]) through a play of half-width ``half`` [m] whose flanks
-    carry foam pads ``tf`` [m] thick (:func:`_foam_stress`, its plateau ``plat`` [N];
-    compressive only) and are rigid beyond them (a spring ``kh`` [N/m] and damper ``ch``
-    [N s/m], compressive only, the pad fully compressed between); from rest, the drive
-    in the play's middle. Semi-implicit Euler of the contact, its bristle exact."""
+    ``xd`` [m] (steps ``h`` [s]) through a play of half-width ``half`` [m] between rigid
+    flanks (a spring ``kh`` [N/m] and damper ``ch`` [N s/m], compressive only); touching a
+    flank wets it and leaves a liquid bridge that pulls the contact back towards that flank
+    as the drive leaves it (:func:`_bridge_force`, ``pull`` [N], ``reach`` [m]) until it
+    ruptures. From rest, the drive in the play's middle, no bridge. Semi-implicit Euler of
+    the contact, its bristle exact."""
     nn = xd.size
     F = np.empty(nn)
     x = xd[0]
     v = 0.0
     z = 0.0
-    free = half - tf
+    side = 0
     for j in range(nn):
         vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
         e = xd[j] - x
         ed = vd - v
         fc = 0.0
-        ae = e if e > 0.0 else -e
-        if ae > free:
-            fc = plat * _foam_stress((ae - free) / tf, yld, dense, hard, bottom)
-            if ae > half:
-                f2 = kh * (ae - half) + (ch * ed if e > 0.0 else -ch * ed)
-                if f2 > 0.0:
-                    fc += f2
-            if e < 0.0:
-                fc = -fc
+        if e > half:
+            side = 1
+            f2 = kh * (e - half) + ch * ed
+            if f2 > 0.0:
+                fc += f2
+        elif e < -half:
+            side = -1
+            f2 = kh * (-e - half) - ch * ed
+            if f2 > 0.0:
+                fc -= f2
+        if side == 1:
+            d = half - e
+            if d >= reach:
+                side = 0
+            elif d > 0.0:
+                fc -= _bridge_force(d, pull, reach)
+        elif side == -1:
+            d = half + e
+            if d >= reach:
+                side = 0
+            elif d > 0.0:
+                fc += _bridge_force(d, pull, reach)
         F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha,
                                          shape)
         x = x + h * v
@@ -754,100 +834,83 @@ def _foam_contact(h, xd, half, tf, plat, kh, ch, m, s0, s1, s2, Fc, Fs, vs, alph
 
 
 @on_fine_grid
-def foam_pads_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact are joined across a play of width ``s``^2 :data:`FOAM_CLEAR` x the
-    stroke whose flanks are lined with pads of an elastomeric open-cell foam (a noise- and
-    shock-damping liner), each :data:`FOAM_THICK` x half the play thick. Across the
-    play's middle the contact is free; the drive then meets a pad, which resists
-    elastically while its cell walls bend, then collapses at a nearly constant force
-    (its plateau, :data:`FOAM_PLAT` x the Coulomb level, rising slowly as the cell walls
-    buckle) and stiffens steeply once the collapsed cells touch (densification;
-    :func:`_foam_stress`), until the pad bottoms on the rigid flank
-    (:func:`_foam_contact`). The plateau holds less than the contact's friction: a
-    reversal pushes the contact only once the pad is densified, at a take-up that depends
-    on how hard the contact sticks. The contact is light (its inertial force at the top
-    acceleration 1 % of the Coulomb level) with the base's LuGre friction; the foam's
-    unloading hysteresis is left out.
+def liquid_bridge_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact are joined across a play of width ``s``^2 :data:`BRIDGE_CLEAR` x
+    the stroke whose flanks are wetted by oil (or water): where the drive's flank touches
+    the contact a liquid bridge forms between them, and when the drive reverses and leaves
+    that flank the bridge pulls the contact after it, :data:`BRIDGE_PULL` x the Coulomb
+    level at contact and less as it stretches and its neck thins, until it ruptures at
+    :data:`BRIDGE_REACH` x the play's width (:func:`_bridge_force`,
+    :func:`_bridge_contact`): the force does not fall to nothing at a reversal but lingers
+    over part of the lost motion, then drops before the other flank is reached.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
+        The motion on the fine grid and its base law.
     s : float
-        Amplitude factor [-]: the square root of the play's width (as the open plays'),
-        / its value at strength 1.
+        Amplitude factor [-]: the play's width, / its square root at strength 1.
 
     Returns
     -------
     ndarray
         Force [N] on ``kin``'s grid.
 
+    Raises
+    ------
+    ValueError
+        On a base other than a classic LuGre (the isolator's mre_lugre).
+
     Notes
     -----
-    The compression of cellular solids, linear elastic, then a plateau as the cell walls
-    buckle or collapse, then densification (Gibson and Ashby 1997, Cellular Solids:
-    Structure and Properties, ch. 5 on elastomeric foams; Mills 2007, Polymer Foams
-    Handbook, ch. on compressive behaviour) and lost motion in mechanisms (Nordin and Gutman
-    2002, Controlling mechanical systems with backlash - a survey, Automatica 38). The
-    candidate holds or frees the contact across a rigid play; the open forms take it up
-    rigidly, compliantly, by impact, against a spring, eccentrically, through oil, worn,
-    with a dragging idler, biased, slack, magnetic, preloaded, through a flexspline, a rope,
-    a spider, a fluid link, a cable, a clutch, a varying mesh, a polymer gear, grease, a
-    wedge, an overlapped spool, a side loaded pin, a toggle spring, graded pins, an adhesive
-    flank, packed powder, a floating part between two plays, trapped air, a ball detent,
-    magnets on the flanks, a play that warms shut, a shear-thickening fluid or an
-    eddy-current damper. Here the flanks are lined with a foam that collapses at a plateau
-    before it stiffens.
+    Liquid bridges between separating solids: the capillary force of a pendular bridge
+    falls as it stretches at a constant volume and the bridge ruptures at a separation of
+    about its volume's cube root (Lian, Thornton and Adams 1993, A theoretical study of
+    the liquid bridge forces between two rigid spherical bodies, J. Colloid Interface Sci.
+    161; Willett, Adams, Johnson and Seville 2000, Capillary bridges between two spherical
+    bodies, Langmuir 16), and lost motion in mechanisms (Nordin and Gutman 2002,
+    Controlling mechanical systems with backlash - a survey, Automatica 38). The candidate
+    holds or frees the contact across a rigid play; the open forms take it up rigidly,
+    compliantly, by impact, against a spring, eccentrically, through oil, worn, with a
+    dragging idler, biased, slack, magnetic, preloaded, through a flexspline, a rope, a
+    spider, a fluid link, a cable, a clutch, a varying mesh, a polymer gear, grease, a
+    wedge, an overlapped spool, a side loaded pin, a toggle spring, graded pins, an
+    adhesive flank, packed powder, a floating part between two plays, trapped air, a ball
+    detent, magnets on the flanks, a play that warms shut, a shear-thickening fluid, an
+    eddy-current damper or foam on the flanks. Here a wetted flank holds the contact by a
+    stretching bridge after the drive has left it, until the bridge breaks.
     """
-    p = _lugre_params(kin, "backlash (foam_pads)")
+    p = _lugre_params(kin, "backlash (liquid_bridge)")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    half = 0.5 * float(s) ** 2 * FOAM_CLEAR * float(np.ptp(kin.x))
-    tf = FOAM_THICK * half
-    plat = FOAM_PLAT * float(p.Fc)
+    half = 0.5 * float(s) ** 2 * BRIDGE_CLEAR * float(np.ptp(kin.x))
+    pull = BRIDGE_PULL * float(p.Fc)
+    reach = BRIDGE_REACH * 2.0 * half
     m, kh, ch = _contact_constants(kin, p)
-    # the densified pad's steepest stiffness at the bottom strain [N/m]
-    kf = plat * (1.0 + FOAM_HARD) * 2.0 * (1.0 - FOAM_DENSE) ** 2 / (
-        (1.0 - FOAM_BOTTOM) ** 3 * max(tf, 1e-300))
-    rate = max(math.sqrt(max(kh, kf) / m), (float(p.sigma1) + float(p.sigma2) + ch) / m)
+    rate = max(math.sqrt(kh / m), (float(p.sigma1) + float(p.sigma2) + ch) / m)
     h, xd, n_sub = _substeps(kin, rate)
-    Fr = _foam_contact(h, xd, half, tf, plat, kh, ch, m,
-                       float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
-                       float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape],
-                       FOAM_YIELD, FOAM_DENSE, FOAM_HARD, FOAM_BOTTOM)
+    Fr = _bridge_contact(h, xd, half, pull, reach, kh, ch, m,
+                         float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
+                         float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
     return Fr[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: ``buckling_strut``'s share of the friction the shoe carries, at strength 1 (at most 0.95)
-#: [-]; its slip travel beyond the base bristle's Fs / sigma0, at strength 1, x the stroke /
-#: 3 [-]; the strut's buckling load, x the shoe's sliding force [-], and the travel at
-#: which it buckles, x the slip travel [-]
-STRUT_SHARE, STRUT_PATH, STRUT_PCR, STRUT_BUCKLE = 0.3, 0.1, 0.7, 0.2
-
-
-def _strut_force(r, pcr, rb):
-    """A slender strut's axial force [-] (over the shoe's sliding force) at the end
-    shortenings ``r`` [-] (over the slip travel; its sign the force's): straight, in
-    proportion up to its buckling load ``pcr`` at the travel ``rb``; buckled, it carries
-    little more as it shortens (its stable post-buckling branch, P = P_cr (1 + D / 2L) in
-    the end shortening D beyond buckling, steepened here so the force reaches the shoe's
-    sliding force, 1, at the slip travel): elastic both ways, it unloads along the same
-    path."""
-    r = np.asarray(r, float)
-    a = np.abs(r)
-    post = pcr + (1.0 - pcr) * (a - rb) / (1.0 - rb)
-    return np.sign(r) * np.where(a < rb, pcr * a / rb, post)
+#: ``magnet_coupling``'s share of the friction the shoe carries, at strength 1 (at most
+#: 0.95) [-]; its slip travel beyond the base bristle's Fs / sigma0, at strength 1, x the
+#: stroke / 3 [-]; the coupling's electrical angle at which its pull reaches the shoe's
+#: sliding force (below pi / 2: it never slips a pole) [rad]
+MAG_SHARE, MAG_PATH, MAG_ANGLE = 0.3, 0.1, 1.2
 
 
 @njit(cache=True)
-def _strut_travel(x, x_ref):
-    """The strut's end shortening [-] (over the slip travel ``x_ref`` [m]) along the
-    carriage's positions ``x`` [m], from rest and unstressed: the shoe sticks on the way,
-    so the strut is loaded by the carriage's travel, until that travel reaches the slip
-    travel (+-1: the strut's force the shoe's sliding force); then the shoe slides and the
-    strut stays loaded there."""
+def _shoe_offset(x, x_ref):
+    """The shoe's offset from its magnet [-] (over the slip travel ``x_ref`` [m]) along the
+    carriage's positions ``x`` [m], from rest and centred: the shoe sticks on the way while
+    the carriage carries the magnet on, until the offset reaches the slip travel (+-1: the
+    coupling's pull the shoe's sliding force); then the shoe slides behind the magnet at
+    that offset."""
     n = x.size
     out = np.empty(n)
     shoe = x[0] if n > 0 else 0.0
@@ -863,63 +926,77 @@ def _strut_travel(x, x_ref):
     return out
 
 
+def _coupling_pull(r, angle):
+    """The magnetic coupling's pull [-] (over the shoe's sliding force) at the offsets ``r``
+    [-] (over the slip travel): the reluctance force of a magnet facing toothed steel,
+    sin(pi offset / pitch), reaching the sliding force at the electrical angle ``angle``:
+    sin(``angle`` r) / sin(``angle``), stiff near the centre and softening towards the
+    slip."""
+    r = np.asarray(r, float)
+    return np.sin(float(angle) * r) / math.sin(float(angle))
+
+
 @on_fine_grid
-def buckling_strut_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+def magnet_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     """Part of the contact's friction is carried by a shoe that rides on the way and is
-    pushed and pulled along by a slender strut (a thin flexure rod between carriage and
-    shoe, pinned at both ends). The shoe sticks on the way and the carriage's travel
-    loads the strut: straight, it is stiff; at its buckling load (:data:`STRUT_PCR` x the
-    shoe's sliding force, reached at :data:`STRUT_BUCKLE` x the slip travel) it bows
-    sideways and carries little more as it shortens further (its post-buckling branch),
-    until its force reaches the shoe's sliding force and the shoe slides, at a travel of
-    the base bristle's Fs / sigma0 plus ``s`` :data:`STRUT_PATH` x the stroke / 3
-    (:func:`_strut_travel`). A reversal unloads the strut along the same elastic path,
-    soft first, stiff once straight again (:func:`_strut_force`; a pinned strut buckles
-    the same way under tension's opposite, so the law is odd). The shoe carries the share
-    w = ``s`` :data:`STRUT_SHARE` of the Coulomb level, w Fc f; the contact the rest, the
-    base's LuGre with its curve less w Fc (its viscous term whole). At ``s`` = 0 the base
-    itself.
+    held to the carriage only by a magnetic coupling: a permanent magnet on the carriage
+    faces the shoe's toothed steel, and their offset raises a reluctance pull that grows
+    as the sine of the offset over the teeth's pitch. The shoe sticks while the carriage
+    moves the magnet on and the pull builds, stiff at first, softening as the offset nears
+    the angle :data:`MAG_ANGLE` at which the pull reaches the shoe's sliding force; then the
+    shoe slides behind the magnet at that offset, the slip travel being the base bristle's
+    Fs / sigma0 plus ``s`` :data:`MAG_PATH` x the stroke / 3 (:func:`_shoe_offset`). A
+    reversal unloads the coupling along the same magnetic path: no loss inside the slip
+    travel. The shoe carries ``s`` :data:`MAG_SHARE` (at most 0.95) of the Coulomb level
+    (:func:`_coupling_pull`); the rest stays the base law with its level lowered by as
+    much; at ``s`` = 0 the base.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law (a classic LuGre).
+        The motion on the fine grid (x [m]) and its base law.
     s : float
         Amplitude factor [-]: the shoe's share of the friction (up to ``s`` = 0.95 /
-        :data:`STRUT_SHARE`) and its slip travel (as the open presliding forms' path).
+        :data:`MAG_SHARE`) and its slip travel, / their values at strength 1.
 
     Returns
     -------
     ndarray
         Force [N] on ``kin``'s grid.
 
+    Raises
+    ------
+    ValueError
+        On a base other than a classic LuGre (the isolator's mre_lugre).
+
     Notes
     -----
-    The Euler buckling of a pinned strut and its stable post-buckling branch, on which the
-    load rises only slowly with the end shortening (Timoshenko and Gere 1961, Theory of
-    Elastic Stability, ch. 2 on the elastica; Bazant and Cedolin 1991, Stability of
-    Structures, ch. on post-critical behaviour), as used in buckled-beam force limiters and
-    constant-force mechanisms, and friction shoes held on flexures beside a contact. The
-    candidate's presliding is a generalized Maxwell-slip (GMS) element set; the open forms
-    are Maxwell-slip sets, Dahl, elasto-plastic, Bliman-Sorine, Bouc-Wen, Zener junctions,
-    Mindlin contacts, rate-and-state, Tomlinson asperities, bond rupture, gouge, kinematic
-    hardening, interlocking, capillary bridges, cyclic hardening, peeling, unloading
-    microslip, a power-law joint, junction growth, avalanches, slip weakening, a microslip
-    bar, contact renewal, grease's yield, a superelastic flexure, an Eyring film, a
-    viscoplastic layer, a poroelastic one, a confined film that melts, a hysteresis brake, a
-    fibre wiper, a band on a drum, a spring's rubbing leaves or an air cylinder's spring,
-    each beside the contact, or a stiffening wire mesh in series with it. Here the spring
-    that holds a sticking shoe softens where it buckles, and recovers elastically.
+    The reluctance force between a permanent magnet and toothed (or slotted) steel, which
+    varies as the sine of the offset over the pitch up to a pull-out force, as in magnetic
+    couplings and magnetic gears (Furlani 2001, Permanent Magnet and Electromechanical
+    Devices, ch. on magnetic couplings; Hendershot and Miller 2010, Design of Brushless
+    Permanent-Magnet Machines, on cogging and detent forces). The candidate's presliding
+    is a generalized Maxwell-slip (GMS) element set; the open forms are Maxwell-slip sets,
+    Dahl, elasto-plastic, Bliman-Sorine, Bouc-Wen, Zener junctions, Mindlin contacts,
+    rate-and-state, Tomlinson asperities, bond rupture, gouge, kinematic hardening,
+    interlocking, capillary bridges, cyclic hardening, peeling, unloading microslip, a
+    power-law joint, junction growth, avalanches, slip weakening, a microslip bar, contact
+    renewal, grease's yield, a superelastic flexure, an Eyring film, a viscoplastic layer,
+    a poroelastic one, a confined film that melts, a hysteresis brake, a fibre wiper, a
+    band on a drum, a spring's rubbing leaves, an air cylinder's spring or a buckling
+    strut, each beside the contact, or a stiffening wire mesh in series with it. Here a
+    magnetic field, not a solid, holds the sticking shoe, stiff at first and softening
+    towards its pull-out.
     """
-    _lugre_params(kin, "gms (buckling_strut)")
+    _lugre_params(kin, "gms (magnet_coupling)")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     law = kin.base
-    w = min(float(s) * STRUT_SHARE, 0.95)
+    w = min(float(s) * MAG_SHARE, 0.95)
     wf = w * _level(kin)
-    e0, extra = _presliding_path(kin, s, STRUT_PATH)
-    r = _strut_travel(np.asarray(kin.x, float), e0 + extra)
-    f = _strut_force(r, STRUT_PCR, STRUT_BUCKLE)
+    e0, extra = _presliding_path(kin, s, MAG_PATH)
+    r = _shoe_offset(np.asarray(kin.x, float), e0 + extra)
+    f = _coupling_pull(r, MAG_ANGLE)
     rest = lugre_with_curve(kin, lambda vv: law.g(vv) - wf)
     return rest + wf * f

@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen34`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen35`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -270,6 +270,7 @@ _S31 = "diagnosis.benchmark.seen31:"
 _S32 = "diagnosis.benchmark.seen32:"
 _S33 = "diagnosis.benchmark.seen33:"
 _S34 = "diagnosis.benchmark.seen34:"
+_S35 = "diagnosis.benchmark.seen35:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -341,7 +342,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "slack_belt": _S31 + "slack_belt_truth",
                    "nut_liftoff": _S32 + "nut_liftoff_truth",
                    "bowed_screw": _S33 + "bowed_screw_truth",
-                   "energised_seals": _S34 + "energised_seals_truth"},
+                   "energised_seals": _S34 + "energised_seals_truth",
+                   "worm_mesh": _S35 + "worm_mesh_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -383,7 +385,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "wheel_sinkage": _S31 + "wheel_sinkage_truth",
                    "sinking_wiper": _S32 + "sinking_wiper_truth",
                    "magnet_preload": _S33 + "magnet_preload_truth",
-                   "toggle_clamp": _S34 + "toggle_clamp_truth"},
+                   "toggle_clamp": _S34 + "toggle_clamp_truth",
+                   "ball_hysteresis": _S35 + "ball_hysteresis_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
@@ -425,7 +428,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "cup_paddle": _S31 + "cup_paddle_truth",
                    "coolant_stream": _S32 + "coolant_stream_truth",
                    "clapper_tool": _S33 + "clapper_tool_truth",
-                   "plunger_pump": _S34 + "plunger_pump_truth"},
+                   "plunger_pump": _S34 + "plunger_pump_truth",
+                   "trailing_hose": _S35 + "trailing_hose_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -468,7 +472,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "measuring_wheel": _S31 + "measuring_wheel_truth",
                    "governor_shoes": _S32 + "governor_shoes_truth",
                    "battery_dynamo": _S33 + "battery_dynamo_truth",
-                   "floating_pawl": _S34 + "floating_pawl_truth"},
+                   "floating_pawl": _S34 + "floating_pawl_truth",
+                   "dielectric_pad": _S35 + "dielectric_pad_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -514,7 +519,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "rack_mesh": _S31 + "rack_mesh_truth",
                    "draining_film": _S32 + "draining_film_truth",
                    "hardened_zones": _S33 + "hardened_zones_truth",
-                   "grit_band": _S34 + "grit_band_truth"},
+                   "grit_band": _S34 + "grit_band_truth",
+                   "wet_patch": _S35 + "wet_patch_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -555,7 +561,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "magnet_spring": _S31 + "magnet_spring_truth",
                    "fluid_inerter": _S32 + "fluid_inerter_truth",
                    "shunted_coil": _S33 + "shunted_coil_truth",
-                   "yoke_flywheel": _S34 + "yoke_flywheel_truth"},
+                   "yoke_flywheel": _S34 + "yoke_flywheel_truth",
+                   "winch_layers": _S35 + "winch_layers_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -600,7 +607,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "disturbance_observer": _S31 + "disturbance_observer_truth",
                    "pulsation_comb": _S32 + "pulsation_comb_truth",
                    "complementary_fusion": _S33 + "complementary_fusion_truth",
-                   "acoustic_link": _S34 + "acoustic_link_truth"},
+                   "acoustic_link": _S34 + "acoustic_link_truth",
+                   "bucket_brigade": _S35 + "bucket_brigade_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -643,7 +651,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "frost_layer": _S31 + "frost_layer_truth",
                    "jr_clamp": _S32 + "jr_clamp_truth",
                    "solenoid_coil": _S33 + "solenoid_coil_truth",
-                   "magnetic_aftereffect": _S34 + "magnetic_aftereffect_truth"},
+                   "magnetic_aftereffect": _S34 + "magnetic_aftereffect_truth",
+                   "leaking_bladder": _S35 + "leaking_bladder_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -684,7 +693,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "warming_fit": _S31 + "warming_fit_truth",
                    "dilatant_gap": _S32 + "dilatant_gap_truth",
                    "eddy_gap": _S33 + "eddy_gap_truth",
-                   "foam_pads": _S34 + "foam_pads_truth"},
+                   "foam_pads": _S34 + "foam_pads_truth",
+                   "liquid_bridge": _S35 + "liquid_bridge_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -725,7 +735,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "band_brake": _S31 + "band_brake_truth",
                    "leaf_pack": _S32 + "leaf_pack_truth",
                    "air_shoe": _S33 + "air_shoe_truth",
-                   "buckling_strut": _S34 + "buckling_strut_truth"},
+                   "buckling_strut": _S34 + "buckling_strut_truth",
+                   "magnet_coupling": _S35 + "magnet_coupling_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

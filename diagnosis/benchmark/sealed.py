@@ -1,12 +1,12 @@
-"""The thirty-fifth sealed truth family: one more mechanism per effect, out of all tuning.
+"""The thirty-sixth sealed truth family: one more mechanism per effect, out of all tuning.
 
 Written 2026-12-02 (session 40) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 39's, was run once and is :mod:`.seen34`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen34`
+sealed before it, session 40's first, was run once and is :mod:`.seen35`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen35`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen34`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen35`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`, ``diagnosis.effects_<name>``), taken from the friction
 literature or from real machines, integrated along the plant's continuous motion on the grid
@@ -18,55 +18,53 @@ each effect's amplitude monotonically from the base law at ``s`` = 0 (its calibr
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``worm_mesh``: the axis is driven through a worm gear; the inertial
-                   force m a passes through the sliding mesh, whose loss is set by its
-                   efficiency driving (a and v of one sign) or back-driven by the
-                   carriage's inertia (decelerating), and by a friction coefficient that
-                   falls with the sliding speed: levels that rise with |a|, differently
-                   accelerating and decelerating, more at low speeds
-load               ``ball_hysteresis``: the carriage runs on recirculating-ball blocks;
-                   each ball's Hertzian contact loses a share of its stored elastic work
-                   as it rolls (elastic hysteresis), a rolling resistance that grows as
-                   the load's 4/3 power
-asymmetry          ``trailing_hose``: a hose fixed to the carriage trails on a tray
-                   towards -x: pulled (towards +x) its whole length drags; pushed it
-                   folds into loops and drags little, gathering slack that the next pull
-                   takes up over a travel after the reversal
-stribeck_shape     ``dielectric_pad``: an electroadhesive pad of the Johnsen-Rahbek kind
-                   pulls the carriage onto the way; a contact spot charges through the
-                   dielectric's resistance only while it lies under the pad, so the pull,
-                   full at rest, fades as the speed shortens that time (as the square of
-                   the charge)
-position           ``wet_patch``: a patch of the way carries a thin water film whose
-                   menisci pull the carriage onto the way: nothing on the dry way, most
-                   where the film just fills the roughness, less where it floods it (a
-                   ring of high friction around a milder middle)
-inertia            ``winch_layers``: the carriage is pulled by a rope from a winch drum
-                   that winds it in layers; the drum's and motor's inertia is reflected
-                   as J / r^2, r stepping up with each layer, with Lagrange's m'(x) v^2 /
-                   2 at each step
-delay              ``bucket_brigade``: the force signal passes a bucket-brigade delay line
-                   of charge-transfer stages, each of which leaves a share of its packet
-                   behind: a delay of stages x clock period, smeared over the periods
-                   after it
-drift              ``leaking_bladder``: the gib is pressed by an air bladder inflated at
-                   the record's start and shut off, whose valve leaks through an orifice:
-                   choked at first (the pressure falls exponentially), then subsonic
-                   (ever more slowly): levels that fall with the bladder's gauge pressure
-backlash           ``liquid_bridge``: the play's flanks are wetted: the flank the drive
-                   leaves holds the contact by a liquid bridge that pulls less as it
-                   stretches, until it ruptures part-way across the play
-gms                ``magnet_coupling``: part of the friction is carried by a shoe held to
-                   the carriage only by a magnetic (reluctance) coupling whose pull grows
-                   as the sine of the offset, until the shoe slides; it unloads along the
-                   same path; at ``s`` = 0 the base
+acceleration       ``slip_coupling``: the axis is driven through a hydrodynamic fluid
+                   coupling, which passes the friction's and the inertial thrust by a
+                   slip that grows with the thrust and falls as the speed's square; the
+                   slip's share of the power is lost: levels that rise with the thrust m a
+                   adds (and fall with what it takes), most at low speeds
+load               ``porous_bushing``: the carriage slides on oil-impregnated sintered
+                   bushings; the film's pressure drives its oil back into the pores, so
+                   the film thins as the load grows and the asperities carry ever more
+                   of it: levels that rise faster than the load
+asymmetry          ``magnetic_conveyor``: a magnetic chip conveyor's field travels towards
+                   +x beneath the carriage's conducting underside and pulls it by the
+                   slip between them (Kloss's curve): a pull at rest, less moving with the
+                   field, more and then less moving against it
+stribeck_shape     ``spin_off``: the drive's turning surface carries the contact's
+                   lubricant, refilled by a wick and flung off by the centrifugal force
+                   as the speed's square and the film's cube: the film thins with the
+                   speed and the boundary friction it saved rises
+position           ``rust_stain``: water stood on a stretch of the bare way and rusted
+                   it: the friction rises over the stain, fading at its edges over the
+                   moisture's diffusion length
+inertia            ``scissor_links``: the carriage stretches a scissor linkage (lazy
+                   tongs) whose links rise and fall ever faster as it nears straight: a
+                   reflected mass that grows along the stroke, with Lagrange's m'(x) v^2 /
+                   2
+delay              ``rolling_shutter``: the force is read by a camera from a spring's
+                   deflection; its rolling shutter reads the rows in turn, so the force
+                   is delayed by a time that grows with the row its mark falls on, that
+                   is with the force itself
+drift              ``battery_magnet``: the gib is pressed by an electromagnet fed from a
+                   battery that discharges along Shepherd's curve (a quick first fall, a
+                   slow one, the knee towards exhaustion): levels that fall with the
+                   square of its voltage
+backlash           ``swing_shackle``: drive and contact are joined across the play by a
+                   hanging shackle: gravity on the swinging link pulls the contact after
+                   the drive by W tan theta, little in the play's middle, ever more
+                   towards its stops
+gms                ``hanging_shoe``: part of the friction is carried by a weighted shoe
+                   hung from the carriage on a swinging link: gravity pulls it along by
+                   W tan theta, soft at first and stiffening until the shoe slides; it
+                   unloads along the same path; at ``s`` = 0 the base
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``dielectric_pad``
-needs a Stribeck curve (not the isolator's mre_lugre), ``wet_patch`` a record that
-revisits its positions (not the press), ``ball_hysteresis`` a load that changes,
-``liquid_bridge`` and ``magnet_coupling`` a classic LuGre base (valve, damping rig,
-XML-350); each raises a ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
+Where a form applies: as its effect's record (``truth_applies``); ``spin_off`` needs a
+Stribeck curve (not the isolator's mre_lugre), ``rust_stain`` a record that revisits its
+positions (not the press), ``porous_bushing`` a load that changes, ``swing_shackle`` and
+``hanging_shoe`` a classic LuGre base (valve, damping rig, XML-350); each raises a
+``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
 
@@ -82,71 +80,63 @@ from .truths import (_base_parts, _bump_centre, _contact_constants, _level,
                      _light_contact_step, _lugre_params, _presliding_path, _substeps,
                      has_stribeck_curve, level_inside, lugre_with_curve, on_fine_grid)
 
-__all__ = ["FORMS", "worm_mesh_truth", "ball_hysteresis_truth", "trailing_hose_truth",
-           "dielectric_pad_truth", "wet_patch_truth", "winch_layers_truth",
-           "bucket_brigade_truth", "leaking_bladder_truth", "liquid_bridge_truth",
-           "magnet_coupling_truth"]
+__all__ = ["FORMS", "slip_coupling_truth", "porous_bushing_truth", "magnetic_conveyor_truth",
+           "spin_off_truth", "rust_stain_truth", "scissor_links_truth",
+           "rolling_shutter_truth", "battery_magnet_truth", "swing_shackle_truth",
+           "hanging_shoe_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "worm_mesh", "load": "ball_hysteresis",
-         "asymmetry": "trailing_hose", "stribeck_shape": "dielectric_pad",
-         "position": "wet_patch", "inertia": "winch_layers",
-         "delay": "bucket_brigade", "drift": "leaking_bladder",
-         "backlash": "liquid_bridge", "gms": "magnet_coupling"}
+FORMS = {"acceleration": "slip_coupling", "load": "porous_bushing",
+         "asymmetry": "magnetic_conveyor", "stribeck_shape": "spin_off",
+         "position": "rust_stain", "inertia": "scissor_links",
+         "delay": "rolling_shutter", "drift": "battery_magnet",
+         "backlash": "swing_shackle", "gms": "hanging_shoe"}
 
 
 # -- acceleration ----------------------------------------------------------------------------
-#: ``worm_mesh``'s rise of the levels per unit of the mesh's loss over its 99th percentile
-#: along the record, at strength 1 [-]; the worm's lead angle [rad]; the mesh's friction
-#: coefficient at rest and at high sliding speeds [-], and the sliding speed over which it
-#: falls, x the top speed [-]; the power flow's change-over, x a99 v99 [-]
-WORM_RISE, WORM_LEAD, WORM_MU0, WORM_MU1, WORM_FALL, WORM_SWITCH = (
-    1.0, 0.35, 0.15, 0.04, 0.2, 0.01)
+#: ``slip_coupling``'s rise of the levels per unit of the coupling's loss over its 99th
+#: percentile along the record, at strength 1 [-]; the coupling's slip at the friction's
+#: thrust and the top speed [-]; the speed below which the coupling stalls, x the top speed
+#: [-]; the inertial thrust at the top acceleration, x the friction's thrust [-]
+FLUID_RISE, FLUID_SLIP, FLUID_STALL, FLUID_THRUST = 1.0, 0.1, 0.3, 1.0
 
 
-def _worm_loss(u, w, lead, mu0, mu1, fall, switch):
-    """The worm mesh's loss [-] (over the thrust at the top acceleration) at the thrusts
-    ``u`` [-] (m a over its value at the top acceleration) and the speeds ``w`` [-] (over
-    the top speed): the mesh's friction coefficient falls with the sliding speed, mu =
-    ``mu1`` + (``mu0`` - ``mu1``) / (1 + |w| / ``fall``), its friction angle phi = atan mu;
-    where the worm drives the carriage (u w > 0) the loss is |u| (1 / eta_f - 1), eta_f =
-    tan(lead) / tan(lead + phi); where the carriage's inertia drives the worm back (u w <
-    0) it is |u| (1 - eta_b), eta_b = tan(lead - phi) / tan(lead); the two blended over
-    ``switch`` of u w (tanh)."""
+def _coupling_loss(u, w, slip, stall, thrust):
+    """The fluid coupling's loss [-] (over the friction's thrust) that the inertial thrust
+    adds, at the accelerations ``u`` [-] (over the top acceleration) and the speeds ``w``
+    [-] (over the top speed): the coupling passes the thrust T = 1 + ``thrust`` u sign(w)
+    (the friction's and the inertial force's) with a torque ~ sigma omega^2 at a small slip
+    sigma, so its slip is sigma = ``slip`` |T| / (w^2 + ``stall``^2) (at most 1: the
+    coupling stalls) and its loss |T| sigma (the slip's share of the power, turned into heat
+    in the oil); returned less the loss at T = 1 (no acceleration)."""
     u = np.asarray(u, float)
     w = np.asarray(w, float)
-    mu = float(mu1) + (float(mu0) - float(mu1)) / (1.0 + np.abs(w) / float(fall))
-    phi = np.arctan(mu)
-    tl = math.tan(float(lead))
-    fwd = 1.0 / (tl / np.tan(float(lead) + phi)) - 1.0
-    back = 1.0 - np.tan(float(lead) - phi) / tl
-    k = 0.5 * (1.0 + np.tanh(u * w / float(switch)))
-    return np.abs(u) * (k * fwd + (1.0 - k) * back)
+    d = w * w + float(stall) ** 2
+    T = np.abs(1.0 + float(thrust) * u * np.sign(w))
+    return T * np.minimum(float(slip) * T / d, 1.0) - np.minimum(float(slip) / d, 1.0)
 
 
 @on_fine_grid
-def worm_mesh_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The axis is driven through a worm gear (a worm turned by the motor meshing with a
-    wheel that turns the axis' pinion, as on the tables of older milling machines and
-    dividing heads): the carriage's inertial force m a passes through the mesh, whose
-    sliding friction costs a share of it. Where the motor drives the carriage (a and v of
-    one sign) the worm drives the wheel with the efficiency tan(lambda) / tan(lambda +
-    phi); where the carriage decelerates its inertia drives the wheel back into the worm
-    with the efficiency tan(lambda - phi) / tan(lambda) (lambda :data:`WORM_LEAD`, phi the
-    mesh's friction angle): the loss differs between the two flows of the power. The
-    mesh's friction coefficient falls as the sliding speed builds its oil film
-    (:data:`WORM_MU0` at rest to :data:`WORM_MU1`; :func:`_worm_loss`), so a like
-    acceleration costs more at low speeds than at high ones. The loss opposes the motion:
-    the Coulomb and Stribeck levels are the base's times 1 + ``s`` :data:`WORM_RISE` x the
-    loss over its 99th percentile along the record, inside the bristle dynamics; the
-    viscous term is the base's.
+def slip_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The axis' motor drives it through a hydrodynamic (Foettinger) fluid coupling, as on
+    conveyors and older heavy traverses: the pump wheel throws oil at the turbine wheel, and
+    the torque the coupling passes grows with its slip and with the square of its speed.
+    The coupling passes the friction's thrust and the carriage's inertial force m a, so it
+    slips by a share that grows with that thrust and falls as the square of the speed
+    (:func:`_coupling_loss`), and the slip's share of the power is lost in the oil: the
+    inertial force adds a loss that grows as (1 + a)^2 - 1 (less when the carriage
+    decelerates), largest at low speeds, where the coupling nearly stalls. The loss the
+    acceleration adds opposes the motion: the Coulomb and
+    Stribeck levels are the base's times 1 + ``s`` :data:`FLUID_RISE` x the loss over its
+    99th percentile along the record, inside the bristle dynamics; the viscous term is the
+    base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the geared inertia's share, / its value at strength 1.
+        Amplitude factor [-]: the coupled inertia's share, / its value at strength 1.
 
     Returns
     -------
@@ -155,20 +145,20 @@ def worm_mesh_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The efficiency of a worm drive, driving and back-driven, from its lead angle and the
-    friction angle (Buckingham 1949, Analytical Mechanics of Gears, ch. on worm gears;
-    Shigley and Mischke 2001, Mechanical Engineering Design, ch. on worm gears), and the
-    worm mesh's friction coefficient falling with the sliding speed (AGMA 6034; Niemann
-    and Winter 1983, Maschinenelemente, vol. 3, on worm gears). The candidate raises the
+    The fluid coupling's torque, proportional to the fluid's density, the fifth power of
+    its size and the square of its speed times a function of the slip, nearly linear at
+    small slips, and its efficiency 1 - slip (Foettinger 1905; Wolf 1962, Die
+    Stroemungskupplung; Hydrodynamic couplings in Voith's and Fluidrive's handbooks;
+    Pennestri et al. on the fluid coupling's characteristic). The candidate raises the
     levels with |a|, lagged, tilts them with a and adds a force odd in a; the open forms
     lag, age, heat, skid, load, press, attract, squeeze, transfer weight, slosh, dilate,
     wedge, spring a gib, soften rubber, swing arms, unload by the jerk, tilt pads, push ball
     trains, ripple the current, slide rack flanks, set a shoe, shut a damper's bypass, creep
     a belt, rack a gantry, tighten a band, surge a feed line, load a traction drive, heat a
     winding, unload a counterweight's rope, pump oil, slacken a belt's strand, lift a
-    preloaded nut's half off, bend a bowed screw or energise a cylinder's seals. Here the
-    inertial force passes through a sliding mesh whose loss depends on the power's flow
-    and on the speed.
+    preloaded nut's half off, bend a bowed screw, energise a cylinder's seals or pass a
+    worm mesh. Here the inertial force slips a hydrodynamic coupling, by more the slower it
+    turns.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
@@ -176,214 +166,211 @@ def worm_mesh_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     sc = kin.scales
     u = np.asarray(kin.a, float) / max(sc["a99"], 1e-12)
     w = np.asarray(kin.v, float) / max(sc["v99"], 1e-12)
-    loss = _worm_loss(u, w, WORM_LEAD, WORM_MU0, WORM_MU1, WORM_FALL, WORM_SWITCH)
-    e = loss / max(float(np.percentile(loss, 99)), 1e-12)
-    lev = 1.0 + float(s) * WORM_RISE * e
+    loss = _coupling_loss(u, w, FLUID_SLIP, FLUID_STALL, FLUID_THRUST)
+    e = loss / max(float(np.percentile(np.abs(loss), 99)), 1e-12)
+    lev = np.maximum(1.0 + float(s) * FLUID_RISE * e, 0.05)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- load ------------------------------------------------------------------------------------
-#: ``ball_hysteresis``' largest change of the levels with the balls' rolling loss, at
-#: strength 1 [-]; the load the balls carry at no normal load (the carriage's weight and
-#: its fitted preload), x the largest load [-]
-HYST_RISE, HYST_REST = 0.5, 0.1
+#: ``porous_bushing``'s largest change of the levels with the bushing's friction, at
+#: strength 1 [-]; the load the bushing carries at no normal load, x the largest load [-];
+#: the film's thickness over the roughness at no load [-]; the pores' drain of the film per
+#: unit load (the bearing's permeability parameter) [-]; the friction coefficients of the
+#: asperities' contact and of the film [-]
+PORE_RISE, PORE_REST, PORE_FILM, PORE_DRAIN, PORE_MUB, PORE_MUF = (
+    0.5, 0.1, 3.0, 3.0, 0.15, 0.01)
 
 
-def _rolling_hysteresis(w, rest):
-    """The balls' rolling resistance [-] (over its value at the largest load) at the loads
-    ``w`` [-] (x the largest): each ball's Hertzian contact has the radius a ~ (W R /
-    E*)^(1/3) and loses a share of the elastic work stored in it as it rolls on, F = alpha
-    (3 / 16) W a / R ~ W^(4/3), the balls carrying the load and ``rest``."""
-    w = np.abs(np.asarray(w, float))
-    return ((w + float(rest)) / (1.0 + float(rest))) ** (4.0 / 3.0)
+def _bushing_friction(w, rest, film, drain, mub, muf):
+    """The porous bushing's friction [-] (over its value at the largest load) at the loads
+    ``w`` [-] (x the largest; the bushing carries ``w`` + ``rest``): the film's pressure,
+    proportional to the load, drives its oil into the pores (Darcy), so the film's
+    thickness over the roughness falls as lambda = ``film`` / (1 + ``drain`` load); the
+    asperities carry the share 0.5 erfc(lambda / sqrt 2) (Gaussian heights) at ``mub``,
+    the film the rest at ``muf``."""
+    q = (np.abs(np.asarray(w, float)) + float(rest)) / (1.0 + float(rest))
+
+    def mu(load):
+        lam = float(film) / (1.0 + float(drain) * load)
+        share = 0.5 * np.vectorize(math.erfc)(lam / math.sqrt(2.0))
+        return float(muf) + (float(mub) - float(muf)) * share
+    return q * mu(q) / mu(np.array(1.0))
 
 
 @on_fine_grid
-def ball_hysteresis_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage runs on recirculating-ball blocks whose balls carry the normal load;
-    each ball rolling on the hardened rail loses, with each passage, a share of the
-    elastic work stored in its Hertzian contact (elastic hysteresis of the steel): its
-    rolling resistance grows as the load times the contact's radius over the ball's
-    radius, as the load's 4/3 power (:func:`_rolling_hysteresis`; the balls also carry
-    :data:`HYST_REST` x the largest load at no load). The Coulomb and Stribeck levels are
-    the base's times 1 + ``s`` :data:`HYST_RISE` x that resistance's departure from its
-    mean along the record, over its largest (the base's level holds the mean), inside the
-    bristle dynamics; the viscous term is the base's.
+def porous_bushing_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage slides on oil-impregnated sintered bronze bushings (self-lubricating
+    porous bearings): the oil the pores release forms the film, but the film's pressure,
+    which grows with the load, drives its oil back into the pores through the bronze's
+    permeability (Darcy's law), so the film thins as the load grows and ever more of the
+    load falls on the asperities, whose friction is many times the film's
+    (:func:`_bushing_friction`): the friction grows faster than the load. The Coulomb and
+    Stribeck levels are the base's times 1 + ``s`` :data:`PORE_RISE` x the friction's
+    departure from its mean along the record, over its largest, inside the bristle
+    dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (load [N]) and its base law.
+        The motion on the fine grid and its base law, with the normal load [N].
     s : float
-        Amplitude factor [-]: the rolling blocks' share of the friction, / its value at
-        strength 1.
+        Amplitude factor [-]: the bushings' share of the friction, / its value at strength
+        1.
 
     Returns
     -------
     ndarray
         Force [N] on ``kin``'s grid.
 
+    Raises
+    ------
+    ValueError
+        When the record's load does not change.
+
     Notes
     -----
-    Rolling friction from elastic hysteresis losses, F = alpha (3 / 16) W a / R with the
-    Hertzian contact radius a ~ (W R / E*)^(1/3), so F ~ W^(4/3) (Tabor 1955, The mechanism
-    of rolling friction II, Proc. R. Soc. A 229; Johnson 1985, Contact Mechanics, ch. 8 on
-    rolling contact; Greenwood, Minshall and Tabor 1961, Hysteresis losses in rolling and
-    sliding friction, Proc. R. Soc. A 259). The candidate makes the levels affine in the
-    load, with a memory over the travel; the open forms scale the friction with a Hertz
-    contact's area, a seal's, a film's, a junction's, a pivot's, an adhesive contact's or a
-    pin's arc, break, squeeze or desorb films, plough, creep, vibrate, overload or feed a
-    constant flow to a pad, heal scuffs, relieve a preload, roll on a lossy track, slip
+    Porous (oil-impregnated sintered) bearings, whose film loses oil into the bearing's
+    pores by Darcy flow at a rate set by their permeability (Morgan and Cameron 1957,
+    Mechanism of lubrication in porous metal bearings, Proc. Conf. Lubrication and Wear,
+    IMechE; Cameron, Morgan and Stainsby 1962, Critical conditions for hydrodynamic
+    lubrication of porous metal bearings, Proc. IMechE 176), and the asperities' share of
+    the load at a film thickness over the roughness lambda (Greenwood and Williamson 1966,
+    Contact of nominally flat surfaces, Proc. R. Soc. A 295; the mixed regime of the
+    Stribeck curve). The candidate makes the levels affine in the load, with a memory
+    over the travel; the open forms scale the friction with a Hertz contact's area, a
+    seal's, a film's, a junction's, a pivot's, an adhesive contact's or a pin's arc,
+    break, squeeze or desorb films, plough, creep, vibrate, overload or feed a constant
+    flow to a pad, heal scuffs, relieve a preload, roll on a lossy track, slip
     differentially, spin balls, press a disc spring, skid lightly loaded rollers, bed a
-    rail, heat a liner by PV, shear a soft film under pressure, pass the load through a
-    clamp's seal, load crowned rollers' ends, sink wheels into a compacting track, sink a
-    carriage onto its own wiper, close a magnet's gap or amplify it through a toggle. Here
-    the hard rolling elements' own elastic hysteresis grows faster than the load.
+    rail, heat a liner by PV, shear a soft film under pressure, raise a film's viscosity
+    by the pressure, pass the load through a clamp's seal, load crowned rollers' ends, sink
+    wheels into a compacting track, sink a carriage onto its own wiper, close a magnet's
+    gap, amplify it through a toggle or lose the balls' elastic hysteresis. Here the load
+    drives the film's oil into the bushing's pores.
     """
     L = np.abs(np.asarray(kin.load, float))
     Lmax = float(np.max(L)) or 1.0
     if not np.ptp(L) > 1e-9 * Lmax:
-        raise ValueError(f"load (ball_hysteresis): the {kin.plant} record's load does not "
+        raise ValueError(f"load (porous_bushing): the {kin.plant} record's load does not "
                          f"change")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    g = _rolling_hysteresis(L / Lmax, HYST_REST)
+    g = _bushing_friction(L / Lmax, PORE_REST, PORE_FILM, PORE_DRAIN, PORE_MUB, PORE_MUF)
     e = g - float(np.mean(g))
     e = e / max(float(np.max(np.abs(e))), 1e-12)
-    lev = np.maximum(1.0 + float(s) * HYST_RISE * e, 0.05)
+    lev = np.maximum(1.0 + float(s) * PORE_RISE * e, 0.05)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- asymmetry -------------------------------------------------------------------------------
-#: ``trailing_hose``' drag of the whole hose pulled straight, x the friction level, at
-#: strength 1 [-]; the drag of the hose pushed into loops, x that [-]; the slack the loops
-#: hold at most, x the stroke [-]; the speed over which the drag changes sign, x the top
-#: speed [-]
-HOSE_DRAG, HOSE_PUSH, HOSE_SLACK, HOSE_SWITCH = 0.5, 0.1, 0.3, 0.02
+#: ``magnetic_conveyor``'s largest pull at strength 1, x the Coulomb level [-]; the
+#: travelling field's speed towards +x, x the top speed [-]; the slip at which the pull
+#: peaks (the breakdown slip) [-]
+CONVEYOR_PULL, CONVEYOR_SPEED, CONVEYOR_BREAK = 0.6, 1.5, 0.3
 
 
-@njit(cache=True)
-def _hose_pull(x, slack_max):
-    """The share [-] of the hose that slides on the floor as the carriage pulls it (moving
-    towards +x, the hose trailing towards -x) along the positions ``x`` [m]: moving
-    towards -x the carriage pushes the hose into loops and gathers slack (at most
-    ``slack_max`` [m]); pulling, it straightens the loops nearest it first, and the hose's
-    sliding part grows with the travel since the reversal until the slack is taken up
-    (then 1). From a straight hose."""
-    n = x.size
-    out = np.empty(n)
-    slack = 0.0
-    pulled = 0.0
-    for k in range(n):
-        dx = x[k] - x[k - 1] if k > 0 else 0.0
-        if dx < 0.0:
-            # the loops already straightened are slack no more
-            slack = min(max(slack - pulled, 0.0) - dx, slack_max)
-            pulled = 0.0
-        elif dx > 0.0:
-            pulled += dx
-            if pulled >= slack:
-                slack = 0.0
-                pulled = 0.0
-        out[k] = 1.0 if slack <= 0.0 else min(pulled / slack, 1.0)
-    return out
+def _induction_pull(w, speed, breakdown):
+    """The travelling field's pull [-] (over its largest) on a conducting plate moving at
+    the speeds ``w`` [-] (x the top speed) under a field travelling at ``speed``: the slip
+    sigma = (``speed`` - w) / ``speed`` and Kloss's relation 2 / (sigma / sigma_k + sigma_k
+    / sigma), sigma_k ``breakdown`` (0 at sigma = 0, odd in sigma)."""
+    sig = (float(speed) - np.asarray(w, float)) / float(speed)
+    sk = float(breakdown)
+    return 2.0 * sig * sk / (sig * sig + sk * sk)
 
 
 @on_fine_grid
-def trailing_hose_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A supply hose (or a cable) is fixed to the carriage and trails on the floor of a
-    tray towards -x, its far end free. Moving towards +x the carriage pulls it: the hose
-    slides on the tray and its drag is its weight times its friction coefficient
-    (``s`` :data:`HOSE_DRAG` x the friction level once it is straight); moving towards -x
-    the carriage pushes it: a hose cannot carry more than its small buckling load in
-    compression, so it folds into loops near the carriage and drags only
-    :data:`HOSE_PUSH` of that, gathering slack (at most :data:`HOSE_SLACK` x the stroke).
-    After a reversal into +x the loops nearest the carriage straighten first, and the
-    sliding part of the hose (so its drag) grows with the travel until the slack is taken
-    up (:func:`_hose_pull`). The drag changes sign with the speed over :data:`HOSE_SWITCH`
-    x the top speed (tanh) and is added to the base.
-
-    Parameters
-    ----------
-    kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s]) and its base law.
-    s : float
-        Amplitude factor [-]: the hose's weight per length, / its value at strength 1.
-
-    Returns
-    -------
-    ndarray
-        Force [N] on ``kin``'s grid.
-
-    Notes
-    -----
-    The drag of a flexible line pulled along a surface (Coulomb friction of its weight,
-    as for ropes, chains and trailing cables: Irvine 1981, Cable Structures, ch. on cables
-    on a rough surface; the trailing cables of mining machines and cranes, IEC 60204-32)
-    and the small compressive load a slender hose can carry before it buckles into loops
-    (Timoshenko and Gere 1961, Theory of Elastic Stability, ch. 2). The candidate gives
-    each direction its levels and an offset; the open forms twin the levels, the curves
-    or the viscous term, bend a curve, roll a lip, load a thrust bearing, film a rod seal,
-    texture a ratchet, return a spring, tilt a pad, strut a sprag, throttle a meter-out,
-    differ a cylinder's areas, groove chevrons, buckle a helix, scrape chips, commutate,
-    idle a belt, free a roller, wick a felt, run a belt, lean a brush, band a seal,
-    counterbalance a valve, vibrate elliptically, diode a flow, pitch pads, skew rollers,
-    lift through a screw, turn the frame, angle a pull, adhere by wedges, charge through a
-    diode, drag a cup, flush coolant along the axis, cut one way with a clapper tool or
-    work a plunger pump. Here a line pulled one way drags its whole length and pushed the
-    other folds up, and gives up its slack over a travel after each reversal.
-    """
-    F = _base_parts(kin)[0]
-    if s <= 0.0:
-        return F
-    sc = kin.scales
-    span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
-    x = np.asarray(kin.x, float)
-    pull = _hose_pull(x, HOSE_SLACK * span)
-    fwd = 0.5 * (1.0 + np.tanh(np.asarray(kin.v, float) / (HOSE_SWITCH * max(sc["v99"],
-                                                                             1e-12))))
-    drag = fwd * pull - (1.0 - fwd) * HOSE_PUSH
-    return F + float(s) * HOSE_DRAG * _level(kin) * drag
-
-
-# -- stribeck_shape --------------------------------------------------------------------------
-#: ``dielectric_pad``'s attraction at rest, x the Coulomb level, at strength 1 [-]; the
-#: speed at which a contact spot passes in the dielectric's charging time (the spot's
-#: length over R C), x the top speed [-]
-PAD_PULL, PAD_SPEED = 0.5, 0.15
-
-
-def _pad_pull(u, ucharge):
-    """The pad's mean attraction [-] (over its value at rest) at the speeds ``u`` [-]
-    (over the top speed): each contact spot lies under the pad for its length over the
-    speed, t = l / |v|, and charges as 1 - exp(-t / (R C)); the attraction goes as the
-    charge squared: (1 - exp(-``ucharge`` / |u|))^2, 1 at rest and ~ (``ucharge`` /
-    u)^2 fast."""
-    r = np.abs(np.asarray(u, float))
-    q = 1.0 - np.exp(-float(ucharge) / np.maximum(r, 1e-300))
-    return q * q
-
-
-@on_fine_grid
-def dielectric_pad_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage carries an electroadhesive pad of the Johnsen-Rahbek kind (a slightly
-    conducting dielectric over an electrode held at a constant voltage) that slides on
-    the grounded way and pulls the carriage onto it. Its attraction comes from the charge
-    that flows through the dielectric's resistance into the spots where it touches the
-    way, charging their tiny gaps with the time constant R C; a spot stays under the pad
-    for its length over the speed, so at rest each charges fully, and the faster the
-    slide the less charge a spot takes before it moves on (:func:`_pad_pull`, the pull as
-    the charge squared, ``s`` :data:`PAD_PULL` x the Coulomb level at rest; the spot's
-    length over R C is :data:`PAD_SPEED` x the top speed). The truth adds that pull's
-    friction to the base's Stribeck curve, inside the bristle dynamics.
+def magnetic_conveyor_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A magnetic chip conveyor runs beneath the way: its magnets travel towards +x at a
+    constant speed under the carriage's conducting underside, and the eddy currents they
+    induce pull the carriage along as the field pulls an induction motor's rotor, by the
+    slip between the field and the carriage (Kloss's relation, :func:`_induction_pull`):
+    at rest a pull towards +x, moving with the field less, moving against it more and
+    then less past the breakdown slip. The pull, ``s`` :data:`CONVEYOR_PULL` x the
+    Coulomb level at the breakdown slip, helps the drive towards +x: the measured force is
+    the base law's less it.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the pad's voltage squared, / its value at strength 1.
+        Amplitude factor [-]: the field's strength squared, / its value at strength 1.
+
+    Returns
+    -------
+    ndarray
+        Force [N] on ``kin``'s grid.
+
+    Notes
+    -----
+    The force of a travelling magnetic field on a conductor by the slip between them, the
+    linear induction machine's thrust-slip curve and Kloss's relation for its breakdown
+    (Laithwaite 1966, Induction Machines for Special Purposes; Boldea and Nasar 1976,
+    Linear Motion Electromagnetic Systems; Fitzgerald, Kingsley and Umans 2003, Electric
+    Machinery, ch. on induction machines), and magnetic chip conveyors under machine
+    tools. The candidate gives each direction its levels and an offset; the open forms twin
+    the levels, the curves or the viscous term, bend a curve, roll a lip, load a thrust
+    bearing, film a rod seal, texture a ratchet, return a spring, tilt a pad, strut a
+    sprag, throttle a meter-out, differ a cylinder's areas, groove chevrons, buckle a
+    helix, scrape chips, commutate, idle a belt, free a roller, wick a felt, run a belt,
+    lean a brush, band a seal, counterbalance a valve, vibrate elliptically, diode a flow,
+    pitch pads, skew rollers, lift through a screw, turn the frame, angle a pull, adhere
+    by wedges, charge through a diode, drag a cup, flush coolant along the axis, cut one
+    way with a clapper tool, work a plunger pump or trail a hose. Here a travelling
+    magnetic field induces a pull that follows the slip between the field and the
+    carriage.
+    """
+    F = _base_parts(kin)[0]
+    if s <= 0.0:
+        return F
+    v99 = max(kin.scales["v99"], 1e-12)
+    w = np.asarray(kin.v, float) / v99
+    return F - float(s) * CONVEYOR_PULL * _level(kin) * _induction_pull(
+        w, CONVEYOR_SPEED, CONVEYOR_BREAK)
+
+
+# -- stribeck_shape --------------------------------------------------------------------------
+#: ``spin_off``'s rise of the Stribeck curve where the film is flung off entirely, at
+#: strength 1, x the Coulomb level [-]; the spin-off's strength at the top speed (the
+#: thinning's rate over the wick's refill rate, at the film's full thickness) [-]
+SPIN_RISE, SPIN_RATE = 0.6, 12.0
+
+
+def _spun_film(w, rate):
+    """The drive's lubricant film [-] (x its thickness at rest) at the speeds ``w`` [-] (x
+    the top speed): a wick refills it towards its full thickness at the rate (1 - h) and the
+    centrifugal force flings it off at the rate ``rate`` w^2 h^3 (Emslie, Bonner and Peck's
+    thinning of a film on a spinning surface); at steady state 1 - h = ``rate`` w^2 h^3,
+    solved by Newton's method."""
+    c = float(rate) * np.asarray(w, float) ** 2
+    h = np.ones_like(c)
+    for _ in range(40):
+        f = 1.0 - h - c * h ** 3
+        h = h - f / (-1.0 - 3.0 * c * h * h)
+    return np.clip(h, 0.0, 1.0)
+
+
+@on_fine_grid
+def spin_off_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The axis' drive (a screw or a pinion turning at a speed proportional to the
+    carriage's) carries the contact's lubricant on its surface, refilled by a wick; turning,
+    it flings the film off by the centrifugal force, which thins a film on a spinning
+    surface at a rate that grows as the square of the speed and the cube of the film's
+    thickness (:func:`_spun_film`): at rest the film is full, and ever faster it is thinner,
+    so the boundary friction it lubricated rises with the speed. The Stribeck curve is the
+    base's plus ``s`` :data:`SPIN_RISE` x the Coulomb level x the film's loss, inside the
+    LuGre dynamics.
+
+    Parameters
+    ----------
+    kin : PlantKinematics
+        The motion on the fine grid (v [m/s]) and its base law.
+    s : float
+        Amplitude factor [-]: the boundary friction the film saves, / its value at
+        strength 1.
 
     Returns
     -------
@@ -397,74 +384,68 @@ def dielectric_pad_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The Johnsen-Rahbek effect, an attraction from the charge held across the contact
-    spots' gaps, fed through the dielectric's bulk resistance (Johnsen and Rahbek 1923,
-    J. IEE 61; Atkinson 1969, A simple theory of the Johnsen-Rahbek effect, J. Phys. D 2;
-    Watanabe, Kitabayashi and Nakayama 1993, Jpn. J. Appl. Phys. 32, on its time
-    dependence) and electroadhesion by sliding pads. The candidate's curve is Gaussian,
+    The centrifugal thinning of a viscous film on a spinning surface, dh/dt = -(2 rho
+    omega^2 / 3 eta) h^3 (Emslie, Bonner and Peck 1958, Flow of a viscous liquid on a
+    rotating disk, J. Appl. Phys. 29; Meyerhofer 1978, J. Appl. Phys. 49), and the loss of
+    lubricant from rotating machine elements by fling-off (Harris and Kotzalas 2007,
+    Rolling Bearing Analysis, on lubricant starvation). The candidate's curve is Gaussian,
     Lorentzian or an exponential tail; the open forms add tails, rationals, films that
     lift, spikes, bimodal roughness, logs, Eyring, starvation, rubber hysteresis,
     resonances, dither, melting, grains, readsorption, thermoviscous, turbulent and
     thixotropic films, churning, core losses, breathing bellows, eddy brakes, shear
     thinning, flying pads, wiping menisci, journals, wall slip, a closing clearance, a
     dwell's squeeze, a pocket's suction, condensing menisci, flash heating, a peeled
-    adhesion, a measuring wheel's creep, a governor's shoes, a battery's dynamo or a
-    floating pawl. Here an electrical time constant against a contact's dwell time sets
-    the speed above which the pull fades.
+    adhesion, a measuring wheel's creep, a governor's shoes, a battery's dynamo, a floating
+    pawl or a dielectric pad. Here a spinning drive flings its film off, the faster it
+    turns.
     """
     if not has_stribeck_curve(kin):
-        raise ValueError("stribeck_shape (dielectric_pad): the mre_lugre base has no "
-                         "Stribeck curve")
+        raise ValueError("stribeck_shape (spin_off): the mre_lugre base has no Stribeck "
+                         "curve")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     law = kin.base
     v99 = max(kin.scales["v99"], 1e-12)
-    add = float(s) * PAD_PULL * _level(kin)
-    return lugre_with_curve(kin, lambda vv: law.g(vv) + add * _pad_pull(vv / v99,
-                                                                       PAD_SPEED))
+    add = float(s) * SPIN_RISE * _level(kin)
+    return lugre_with_curve(kin, lambda vv: law.g(vv) + add * (1.0 - _spun_film(
+        vv / v99, SPIN_RATE)))
 
 
 # -- position --------------------------------------------------------------------------------
-#: ``wet_patch``'s rise of the levels where the menisci pull hardest, at strength 1 [-]; the
-#: patch's half-width (where the water lies 1/e as thick as at its middle), x the stroke
-#: [-]; the water's thickness at the patch's middle, x the thickness at which the menisci
-#: pull hardest [-]
-WET_RISE, WET_HALF, WET_DEPTH = 0.5, 0.1, 3.0
+#: ``rust_stain``'s rise of the levels on the stain's rusted middle, at strength 1 [-]; the
+#: stain's half width, x the stroke [-]; the width of its edge, over which the rust thins
+#: (the moisture's diffusion length), x the stroke [-]
+RUST_RISE, RUST_HALF, RUST_EDGE = 0.5, 0.12, 0.05
 
 
-def _meniscus_pull(d, half, depth):
-    """The menisci's pull [-] (over its largest) at the distances ``d`` [-] from the
-    patch's middle (x the stroke): the water's thickness h = ``depth`` exp(-(d /
-    ``half``)^2) (x the thickness of the strongest pull); the capillary bridges around
-    the contact spots pull as (h) exp(1 - h): nothing where the way is dry, most where the
-    water just fills the roughness, less where it floods the spots and the menisci merge."""
-    d = np.asarray(d, float)
-    h = float(depth) * np.exp(-(d / float(half)) ** 2)
-    return h * np.exp(1.0 - h)
+def _rust_cover(d, half, edge):
+    """The rust's cover [-] (1 on the stain's middle) at the distances ``d`` [-] (x the
+    stroke) from the stain's centre: the moisture that rusted the way spread from the
+    stain's edge by diffusion, so the cover falls as 0.5 erfc((|d| - ``half``) /
+    ``edge``)."""
+    d = np.abs(np.asarray(d, float))
+    z = (d - float(half)) / float(edge)
+    return 0.5 * np.vectorize(math.erfc)(z)
 
 
 @on_fine_grid
-def wet_patch_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A patch of the way (where the coolant's mist settles, or water condenses under a
-    cold fixture) carries a thin film of water, thickest at the patch's middle and thinning
-    to dry across :data:`WET_HALF` x the stroke. Around each contact spot the water forms
-    capillary bridges whose Laplace pressure pulls the carriage onto the way: the pull adds
-    to the normal load, most where the film just fills the roughness and less where it
-    floods the spots (there the menisci merge and their curvature relaxes) and nowhere on
-    the dry way (:func:`_meniscus_pull`; the film at the middle is :data:`WET_DEPTH` x the
-    thickness of the strongest pull): a ring of high friction around a milder middle. The
-    Coulomb and Stribeck levels are the base's times 1 + ``s`` :data:`WET_RISE` x the
-    pull's departure from its mean along the record, over its largest, inside the bristle
-    dynamics; the viscous term is the base's. The patch lies where the fit and held-out
-    parts both pass (:func:`.truths._bump_centre`).
+def rust_stain_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Coolant or condensed water stood on a stretch of the bare way while the machine was
+    idle and rusted it: the iron oxide (a rough, hard layer of hematite and its pits)
+    raises the friction over the stain, with an edge that fades over the moisture's
+    diffusion length (:func:`_rust_cover`). The Coulomb and Stribeck levels are the base's
+    times 1 + ``s`` :data:`RUST_RISE` x the cover's departure from its mean along the
+    record, over its largest, inside the bristle dynamics; the viscous term is the base's.
+    The stain is centred where both the fit and the held-out part of the record pass
+    (:func:`.truths._bump_centre`).
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m]) and its base law.
     s : float
-        Amplitude factor [-]: the menisci's pull, / its value at strength 1.
+        Amplitude factor [-]: the rust's rise of the friction, / its value at strength 1.
 
     Returns
     -------
@@ -478,83 +459,75 @@ def wet_patch_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Capillary (meniscus) forces at contacting rough surfaces and their dependence on the
-    liquid film's thickness: they rise as the film fills the gaps around the asperities and
-    fall once it floods them (Bhushan 2013, Introduction to Tribology, ch. on adhesion and
-    meniscus effects; Israelachvili 2011, Intermolecular and Surface Forces, ch. on
-    capillary forces; Matthewson and Mamin 1988, Liquid-mediated adhesion of ultra-flat
-    solid surfaces, MRS Proc. 119). The candidate scales the friction along the stroke and
-    adds a force of the position; the open forms put defects, waviness, wear, runout,
-    bends, films, cogging, tapers, pockets, cushions, covers, springs, holes, plungers,
-    sags, festoons, curves, chains, cams, heat, dents, joints, misalignment, flow forces,
-    cranks, overhangs, a track's end, a reel, a way's flatness, conductive strips, a
-    guide's ball passage, a steel insert, a screw's lead error, a rack's mesh, a draining
-    film, hardened zones or a band of grit on the stroke. Here a water film's menisci pull
-    the contact onto the way, hardest where the film is thin.
+    The atmospheric corrosion of steel under a standing water film and the friction of
+    rusted steel surfaces, higher and rougher than bare ones (Evans 1960, The Corrosion and
+    Oxidation of Metals; Leygraf and Graedel 2000, Atmospheric Corrosion; Stachowiak and
+    Batchelor 2013, Engineering Tribology, ch. on corrosive wear), and the spread of a
+    stain's moisture by diffusion (Crank 1975, The Mathematics of Diffusion). The candidate
+    scales the friction along the stroke and adds a force of the position; the open forms
+    put defects, waviness, wear, runout, bends, films, cogging, tapers, pockets, cushions,
+    covers, springs, holes, plungers, sags, festoons, curves, chains, cams, heat, dents,
+    joints, misalignment, flow forces, cranks, overhangs, a track's end, a reel, a way's
+    flatness, conductive strips, a guide's ball passage, a steel insert, a screw's lead
+    error, a rack's mesh, a draining film, hardened zones, a band of grit or a wet patch's
+    menisci on the stroke. Here the way itself has corroded where water stood on it.
     """
     c = _bump_centre(kin)
     if c is None:
-        raise ValueError(f"position (wet_patch): the held-out part of the {kin.plant} "
+        raise ValueError(f"position (rust_stain): the held-out part of the {kin.plant} "
                          f"record never revisits the positions of its fit part")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     sc = kin.scales
     span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
-    b = _meniscus_pull((np.asarray(kin.x, float) - c) / span, WET_HALF, WET_DEPTH)
+    b = _rust_cover((np.asarray(kin.x, float) - c) / span, RUST_HALF, RUST_EDGE)
     p = b - float(np.mean(b))
     p = p / max(float(np.max(np.abs(p))), 1e-12)
-    lev = np.maximum(1.0 + float(s) * WET_RISE * p, 0.05)
+    lev = np.maximum(1.0 + float(s) * RUST_RISE * p, 0.05)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- inertia ---------------------------------------------------------------------------------
-#: ``winch_layers``' drum and motor inertia reflected to the carriage on the first layer
-#: (J / r0^2) at strength 1, x the friction level / a99 [kg per N s^2/m]; the layers the
-#: cable winds across the visited stroke [-]; each layer's growth of the winding radius, x
-#: the first layer's radius [-]; the share of a layer over which the cable climbs to the
-#: next (its cross-over, about one turn) [-]
-WINCH_MASS, WINCH_LAYERS, WINCH_GROW, WINCH_CLIMB = 0.5, 3, 0.25, 0.08
+#: ``scissor_links``' mass of the links' vertical motion at mid-stroke, at strength 1, x
+#: the friction level / a99 [kg per N s^2/m]; the scissor's cells [-]; its extension per
+#: cell over the links' length at the stroke's ends [-]
+SCISSOR_MASS, SCISSOR_CELLS, SCISSOR_LO, SCISSOR_HI = 0.5, 6, 0.45, 0.92
 
 
-def _winch_mass(q, layers, grow, climb):
-    """The drum's inertia reflected to the carriage [-] (over its value on the first layer)
-    and its gradient [-] (per unit of ``q``) at the shares ``q`` [-] of the visited stroke
-    the cable has wound on: the winding radius r = r0 (1 + ``grow`` n), n the layers
-    completed, each climbed over ``climb`` of a layer (a logistic step), and the reflected
-    mass J / r^2."""
+def _scissor_mass(q, cells, lo, hi):
+    """The scissor's reflected mass [-] (x its value at mid-stroke) and its derivative over
+    the carriage's position (x the stroke) at the stroke's shares ``q`` [-]: each cell's
+    extension over the links' length e = ``lo`` + (``hi`` - ``lo``) q, its height h =
+    sqrt(1 - e^2), so the links' centres rise and fall at (e / h) / ``cells`` of the
+    carriage's speed, and their kinetic energy reflects the mass (e / h)^2 (the links'
+    horizontal motion, a constant mass, is left out)."""
     q = np.asarray(q, float)
-    ph = q * float(layers)
-    n = np.zeros_like(ph)
-    dn = np.zeros_like(ph)
-    for k in range(1, int(layers)):
-        e = np.exp(-np.clip((ph - k) / float(climb), -60.0, 60.0))
-        sig = 1.0 / (1.0 + e)
-        n += sig
-        dn += sig * (1.0 - sig) / float(climb) * float(layers)
-    r = 1.0 + float(grow) * n
-    return 1.0 / (r * r), -2.0 * float(grow) * dn / (r * r * r)
+    e = float(lo) + (float(hi) - float(lo)) * q
+    r = e * e / (1.0 - e * e)
+    de = (float(hi) - float(lo))
+    dr = 2.0 * e * de / (1.0 - e * e) ** 2
+    em = 0.5 * (float(lo) + float(hi))
+    rm = em * em / (1.0 - em * em)
+    return r / rm, dr / rm
 
 
 @on_fine_grid
-def winch_layers_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage is pulled by a wire rope from a winch whose drum winds it in
-    :data:`WINCH_LAYERS` layers over the visited stroke (the rope's far end at the
-    carriage, a return spring or a second winch holding it taut). The drum's and the
-    motor's inertia J is seen at the carriage as the mass J / r^2, r the radius the rope
-    winds at: each layer lifts it by :data:`WINCH_GROW` x the first layer's, over the
-    cross-over where the rope climbs to the next layer (:data:`WINCH_CLIMB` of a layer),
-    so the reflected mass (``s`` :data:`WINCH_MASS` x the friction level / a99 on the
-    first layer) falls in steps along the stroke (:func:`_winch_mass`), and Lagrange's
-    m'(x) v^2 / 2 acts at each step. The truth adds m(x) a + m'(x) v^2 / 2 to the base:
-    the inverse dynamics, which knows only the carriage's mass, misses it.
+def scissor_links_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage stretches a scissor linkage (lazy tongs, as carry a way cover's or a
+    cable's weight on long axes): its cells open as the carriage moves away, and their links
+    fold down as they stretch, so their centres move up and down at a speed proportional to
+    the carriage's, by e / h (the cells' extension over their height), which grows without
+    bound as they near straight (:func:`_scissor_mass`). Their kinetic energy reflects a
+    mass m(x) onto the carriage that grows along the stroke, and Lagrange's equations add
+    m'(x) v^2 / 2 to m(x) a.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (x [m], v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the drum's and motor's inertia, / its value at strength 1.
+        Amplitude factor [-]: the links' mass, / its value at strength 1.
 
     Returns
     -------
@@ -563,20 +536,20 @@ def winch_layers_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Multi-layer winding of ropes on drums, the radius growing by about a rope's diameter
-    per layer and the rope climbing to the next layer at the flange (Feyrer 2015, Wire
-    Ropes, ch. on drums and multi-layer spooling; the Lebus grooving of hoists and cranes'
-    drums; Dietz and Wehking, on rope drives), and a mechanism's inertia reduced to one
-    coordinate, m(x) a + m'(x) v^2 / 2 by Lagrange's equation (Wittenburg 2008, Dynamics of
-    Multibody Systems). The candidate misses a constant mass; the open forms filter it,
-    reflect it through gearing, a chain, a pinion or a screw, hang it on a spring, a cable,
-    a fluid, a clutch, a coupling, a flyweight, a friction-damped, quasi-zero-stiffness,
-    hose's, elastomer or magnetic mount, surge a spring, add a fluid's mass, pick, drop,
-    empty, slide, rattle, telescope, roll or rock it, recoil a frame, saturate a motor,
-    lead a feedforward, pitch a scale, radiate waves, swing it on a rod, slide it in a
-    dish, swing a liquid in a tube, amplify a fluid's mass in an inerter, store it as a
-    shunted coil's charge or reflect it through a Scotch yoke. Here a drum's inertia is
-    reflected through a winding radius that steps up with each layer of rope.
+    The kinematics of the lazy-tongs (scissor) mechanism and the reflected, position
+    dependent inertia of a linkage, with the velocity-squared term of Lagrange's equations
+    for a configuration-dependent mass (Hartenberg and Denavit 1964, Kinematic Synthesis of
+    Linkages; Uicker, Pennock and Shigley 2011, Theory of Machines and Mechanisms, ch. on
+    the dynamics of mechanisms, the equivalent mass; Doughty 1988, Mechanics of Machines).
+    The candidate misses a constant mass; the open forms filter it, reflect it through
+    gearing, a chain, a pinion or a screw, hang it on a spring, a cable, a fluid, a clutch,
+    a coupling, a flyweight, a friction-damped, quasi-zero-stiffness, hose's, elastomer or
+    magnetic mount, surge a spring, add a fluid's mass, pick, drop, empty, slide, rattle,
+    telescope, roll or rock it, recoil a frame, saturate a motor, lead a feedforward, pitch
+    a scale, radiate waves, swing it on a rod, slide it in a dish, swing a liquid in a
+    tube, amplify a fluid's mass in an inerter, store it as a shunted coil's charge,
+    reflect it through a Scotch yoke or through a winch drum's layers. Here the links of a
+    scissor rise and fall ever faster as it stretches.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
@@ -585,61 +558,33 @@ def winch_layers_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     a99 = max(sc["a99"], 1e-12)
     span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
     q = np.clip((np.asarray(kin.x, float) - sc["x_lo"]) / span, 0.0, 1.0)
-    m, dm = _winch_mass(q, WINCH_LAYERS, WINCH_GROW, WINCH_CLIMB)
-    M = float(s) * WINCH_MASS * _level(kin) / a99
+    m, dm = _scissor_mass(q, SCISSOR_CELLS, SCISSOR_LO, SCISSOR_HI)
+    M = float(s) * SCISSOR_MASS * _level(kin) / a99
     v = np.asarray(kin.v, float)
     return F + M * (m * np.asarray(kin.a, float) + 0.5 * dm / span * v * v)
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: ``bucket_brigade``'s nominal delay (its stages x the clock's period) at strength 1 [data
-#: samples]; its stages [-]; the share of a charge packet each transfer leaves behind (the
-#: charge-transfer inefficiency) [-]
-BBD_SAMPLES, BBD_STAGES, BBD_LOSS = 3.0, 16, 0.08
-
-
-def _brigade_weights(stages, loss, tail=1e-7):
-    """The clock periods k [-] a charge packet takes through ``stages`` stages that each
-    pass it on with the probability 1 - ``loss`` per clock (what stays behind follows a
-    clock later) and their weights [-] (the negative binomial, C(k - 1, stages - 1) (1 -
-    loss)^stages loss^(k - stages), k >= stages; cut where the rest is below ``tail`` and
-    renormalised)."""
-    n = int(stages)
-    e = float(loss)
-    ks, ws = [], []
-    w = (1.0 - e) ** n
-    k = n
-    total = 0.0
-    while True:
-        ks.append(k)
-        ws.append(w)
-        total += w
-        if 1.0 - total < tail or k > 50 * n:
-            break
-        w = w * k / (k - n + 1) * e          # C(k, n - 1) / C(k - 1, n - 1) = k / (k - n + 1)
-        k += 1
-    ws = np.asarray(ws)
-    return np.asarray(ks, float), ws / ws.sum()
+#: ``rolling_shutter``'s delay across the frame (the top row's read-out after the bottom
+#: row's) at strength 1 [data samples]; the delay of the frame's first row [data samples]
+SHUTTER_SPAN, SHUTTER_FIRST = 3.0, 0.5
 
 
 @on_fine_grid
-def bucket_brigade_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force signal passes an analogue delay line of the bucket-brigade kind (a chain
-    of :data:`BBD_STAGES` capacitors whose charge packets are passed on, one stage per
-    clock period, by switching transistors), as in the anti-aliasing and matching delays
-    of older analogue conditioning: the record is the force ``s`` :data:`BBD_SAMPLES`
-    samples late (the stages x the clock's period). Each transfer leaves
-    :data:`BBD_LOSS` of its packet behind, which follows one period later, so the
-    packet arrives spread over the periods after the nominal delay (a negative binomial
-    of the periods it takes, :func:`_brigade_weights`): a delay with a smear that lags
-    further. A longer clock period (a larger ``s``), a longer delay and a wider smear.
+def rolling_shutter_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force is read by a camera from the deflection of a calibrated spring (an optical
+    force gauge): its CMOS sensor's rolling shutter exposes and reads the frame row by row,
+    so the spring's mark is captured at a time that depends on the image row it falls on,
+    that is on the force itself. The force at ``t`` is the base law's at ``t`` - tau, tau =
+    ``s`` (:data:`SHUTTER_FIRST` + :data:`SHUTTER_SPAN` x the mark's row share) data
+    samples, the row share the force's share of its range along the record.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the clock's period, / its value at strength 1.
+        Amplitude factor [-]: the rows' read-out time, / its value at strength 1.
 
     Returns
     -------
@@ -648,89 +593,67 @@ def bucket_brigade_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Bucket-brigade and charge-coupled delay lines and their charge-transfer inefficiency,
-    the share a transfer leaves behind, which smears a signal over later clock periods
-    (Sangster and Teer 1969, Bucket-brigade electronics, IEEE J. Solid-State Circuits 4;
-    Sequin and Tompsett 1975, Charge Transfer Devices, ch. on transfer inefficiency;
-    Berglund 1971, Analog performance limitations of charge-transfer dynamic shift
-    registers, IEEE J. Solid-State Circuits 6). The candidate shifts the force in time or
-    lags it through a first-order filter; the open forms delay, filter, average, stamp,
+    The rolling shutter of CMOS image sensors, which exposes and reads a frame's rows in
+    turn, and the skew it puts on a moving object's image by the row's time (Liang, Chang
+    and Chen 2008, Analysis and compensation of rolling shutter effect, IEEE Trans. Image
+    Process. 17; Ait-Aider et al. 2006, Simultaneous object pose and velocity computation
+    using a single view from a rolling shutter camera, ECCV), and force measurement by a
+    camera reading a flexure's deflection. The candidate shifts the force in time or lags
+    it through a first-order filter; the open forms delay, filter, average, stamp,
     decimate, hold, skew, jitter, limit the slew, pipe, take medians, report on a dead
     band, sample positions, run a belt, aerate, drop telegrams, leak, creep, notch, track,
     snub, time a waveguide's pulse, diffuse eddy currents, count a resonator, sweep a
     grating, restore a force by a servo, interleave converters, balance a pneumatic cell,
     count out a dual slope, adapt a filter's time constant, round in integer arithmetic,
     fit a polynomial, observe a disturbance, average two taps half a period apart, fuse a
-    late fine channel with a fast coarse one or send it by sound. Here the delay is a
-    chain of charge transfers, each of which leaves a little behind.
+    late fine channel with a fast coarse one, send it by sound or pass it through a bucket
+    brigade. Here the delay depends on where the force's mark falls in the frame.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     t = np.asarray(kin.t, float)
-    period = float(s) * BBD_SAMPLES * kin.sample_dt / BBD_STAGES
-    ks, ws = _brigade_weights(BBD_STAGES, BBD_LOSS)
-    out = np.zeros_like(F)
-    for k, w in zip(ks, ws):
-        out += w * np.interp(t - k * period, t, F, left=F[0])
-    return out
+    lo, hi = float(np.min(F)), float(np.max(F))
+    row = (F - lo) / max(hi - lo, 1e-300)
+    tau = float(s) * (SHUTTER_FIRST + SHUTTER_SPAN * row) * kin.sample_dt
+    return np.interp(t - tau, t, F, left=F[0])
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: ``leaking_bladder``'s fall of the levels at the record's end, at strength 1 [-]; the
-#: bladder's pressure at the record's start, x the atmosphere's (absolute) [-]; its
-#: emptying time constant while the leak is choked (its volume over the leak's choked
-#: flow per pressure), x the record's duration [-]; the air's ratio of specific heats [-]
-BLAD_FALL, BLAD_P0, BLAD_TAU, BLAD_GAMMA = 0.5, 4.0, 1.0, 1.4
+#: ``battery_magnet``'s fall of the levels at the record's end, at strength 1 [-]; the
+#: battery's charge drawn over the record, x its capacity [-]; Shepherd's polarisation
+#: constant and exponential zone's amplitude, x the open-circuit voltage [-], and the
+#: exponential zone's inverse charge, x 1 / the capacity [-]
+BATT_FALL, BATT_DRAW, BATT_K, BATT_A, BATT_B = 0.5, 0.9, 0.04, 0.08, 30.0
 
 
-def _bladder_pressure(tr, p0, tau, gamma, n=4001):
-    """A leaking air bladder's absolute pressure [-] (x the atmosphere's) at the times
-    ``tr`` [-] (x the record's duration) from ``p0`` at 0, isothermal: dp/dt = -(p / tau)
-    psi(1 / p) / psi*, the leak's flow function of an orifice, choked (psi = psi*) while
-    the pressure is above the critical ratio (2 / (gamma + 1))^(-gamma / (gamma - 1)),
-    subsonic below it (psi = sqrt(2 gamma / (gamma - 1) (r^(2 / gamma) - r^((gamma + 1) /
-    gamma))), r = 1 / p), so the pressure falls exponentially at first and then ever more
-    slowly to the atmosphere's (forward Euler on ``n`` steps over the record)."""
-    g = float(gamma)
-    rc = (2.0 / (g + 1.0)) ** (g / (g - 1.0))
-
-    def psi(r):
-        r = min(max(r, rc), 1.0)
-        return math.sqrt(max(2.0 * g / (g - 1.0) * (r ** (2.0 / g) - r ** ((g + 1.0) / g)),
-                             0.0))
-    pc = psi(rc)
-    tt = np.linspace(0.0, 1.0, n)
-    p = np.empty(n)
-    p[0] = float(p0)
-    h = tt[1] - tt[0]
-    for k in range(1, n):
-        q = p[k - 1]
-        p[k] = max(q - h * q / float(tau) * psi(1.0 / q) / pc, 1.0)
-    return np.interp(np.clip(np.asarray(tr, float), 0.0, 1.0), tt, p)
+def _battery_voltage(tr, draw, k, a, b):
+    """A battery's voltage [-] (x its value at the start) at the times ``tr`` [-] (x the
+    record's duration) under a constant current drawing ``draw`` of its capacity over the
+    record (Shepherd's discharge curve: E0 - K Q / (Q - i t) + A exp(-B i t), the
+    exponential zone's quick first fall, the nominal zone's slow one and the knee towards
+    exhaustion)."""
+    q = float(draw) * np.asarray(tr, float)
+    e = 1.0 - float(k) * q / (1.0 - q) + float(a) * (np.exp(-float(b) * q) - 1.0)
+    return e
 
 
 @on_fine_grid
-def leaking_bladder_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage's gib is pressed on the way by an air bladder (a pneumatic clamping
-    hose) inflated to :data:`BLAD_P0` x the atmosphere's pressure at the record's start and
-    then shut off; its valve's seat leaks through a fine orifice. While the bladder's
-    pressure is above the critical ratio the leak is choked, its flow in proportion to the
-    pressure, and the pressure falls exponentially (time constant :data:`BLAD_TAU` x the
-    record); below it the flow is subsonic and falls faster than the pressure, and the
-    pressure creeps to the atmosphere's ever more slowly (:func:`_bladder_pressure`). The
-    gib's preload follows the bladder's gauge pressure: the Coulomb and Stribeck levels
-    are the base's times 1 - ``s`` :data:`BLAD_FALL` x the share of the gauge pressure
-    lost, over its share at the record's end, inside the bristle dynamics; the viscous
-    term is the base's.
+def battery_magnet_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The gib is pressed by an electromagnet fed from a battery (a portable or a backed-up
+    clamp): its pull grows as the square of its current, and the current follows the
+    battery's voltage, which falls as the battery discharges along Shepherd's curve - a
+    quick first fall, a long slow one and the knee towards exhaustion
+    (:func:`_battery_voltage`). The levels fall with the pull: the Coulomb and Stribeck
+    levels are the base's times 1 - ``s`` :data:`BATT_FALL` x the pull's loss over its loss
+    at the record's end, inside the bristle dynamics; the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the bladder's share of the gib's preload, / its value at
-        strength 1.
+        Amplitude factor [-]: the magnet's share of the preload, / its value at strength 1.
 
     Returns
     -------
@@ -739,94 +662,81 @@ def leaking_bladder_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The discharge of a vessel through an orifice, choked above the critical pressure ratio
-    (0.528 for air) with a mass flow in proportion to the upstream pressure, subsonic below
-    it (Saint-Venant and Wantzel's flow function; Shapiro 1953, The Dynamics and
-    Thermodynamics of Compressible Fluid Flow, vol. 1, ch. 4; ISO 6358 for pneumatic
-    components), and pneumatic clamping elements that hold a preload through a shut
-    valve. The candidate is a trend, a saturating change, a step, a cycle, a resetting
-    change or the friction power's heat; the open forms warm up, wear in, change, heat,
-    wear, follow the humidity, grind, relubricate, relax, oxidise, deplete, wear through,
-    swell, build films, take in particles, expand, shear down, heat magnets, charge, creep,
-    loosen, dewet, channel, drain, spall, evaporate, pump down, settle an additive,
-    crystallise wax, bleed a grease's oil, cycle a thermostat, glaze a lining, form a
-    tribolayer, grow frost, charge an electrostatic clamp, warm a solenoid's coil or relax
-    a magnet's domains. Here a gas leaks out of the preload, choked at first and then
-    subsonic.
+    The battery's discharge curve (Shepherd 1965, Design of primary and secondary cells II.
+    An equation describing battery discharge, J. Electrochem. Soc. 112; Tremblay, Dessaint
+    and Dekkiche 2007, A generic battery model for the dynamic simulation of hybrid
+    electric vehicles, IEEE VPPC) and an electromagnet's pull, proportional to the square
+    of its ampere-turns (Roters 1941, Electromagnetic Devices). The candidate is a trend, a
+    saturating change, a step, a cycle, a resetting change or the friction power's heat;
+    the open forms warm up, wear in, change, heat, wear, follow the humidity, grind,
+    relubricate, relax, oxidise, deplete, wear through, swell, build films, take in
+    particles, expand, shear down, heat magnets, charge, creep, loosen, dewet, channel,
+    drain, spall, evaporate, pump down, settle an additive, crystallise wax, bleed a
+    grease's oil, cycle a thermostat, glaze a lining, form a tribolayer, grow frost, charge
+    an electrostatic clamp, warm a solenoid's coil, relax a magnet's domains or leak a
+    bladder's air. Here a battery discharges under its magnet.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     t = np.asarray(kin.t, float)
     tr = (t - t[0]) / max(float(t[-1] - t[0]), 1e-300)
-    p = _bladder_pressure(tr, BLAD_P0, BLAD_TAU, BLAD_GAMMA)
-    loss = (BLAD_P0 - p) / (BLAD_P0 - 1.0)
-    lev = np.maximum(1.0 - float(s) * BLAD_FALL * loss / max(float(loss[-1]), 1e-12), 0.05)
+    u = _battery_voltage(tr, BATT_DRAW, BATT_K, BATT_A, BATT_B)
+    loss = 1.0 - u * u
+    lev = np.maximum(1.0 - float(s) * BATT_FALL * loss / max(float(loss[-1]), 1e-12), 0.05)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: ``liquid_bridge``'s play at strength 1, as a share of the stroke (its full width between
-#: the flanks) [-]; the bridge's pull at contact, x the Coulomb level [-]; the separation
-#: at which it ruptures, x the play's full width [-]
-BRIDGE_CLEAR, BRIDGE_PULL, BRIDGE_REACH = 0.0003, 0.6, 0.5
+#: ``swing_shackle``'s play at strength 1, as a share of the stroke (its full width between
+#: the stops) [-]; the shackle's gravity pull at the stops, x the Coulomb level [-]; the
+#: shackle's swing at the stops [rad]
+SHACKLE_CLEAR, SHACKLE_PULL, SHACKLE_SWING = 0.0003, 0.6, 1.0
 
 
 @njit(cache=True)
-def _bridge_force(d, pull, reach):
-    """A liquid bridge's pull [N] across the separation ``d`` [m] from the flank it formed
-    on: ``pull`` [N] at contact, falling linearly with the separation (the neck thins as
-    the bridge stretches at a constant volume) to its rupture at ``reach`` [m]; 0 beyond."""
-    if d >= reach:
-        return 0.0
-    if d <= 0.0:
-        return pull
-    return pull * (1.0 - d / reach)
+def _shackle_force(e, half, pull, swing):
+    """The hanging shackle's pull [N] at the offset ``e`` [m] of the drive from the contact
+    inside the play of half-width ``half`` [m]: a link of length half / sin(``swing``)
+    hung from the drive with its load on the contact swings by theta, sin theta = e /
+    length, and gravity pulls the contact along by W tan theta, ``pull`` [N] at the stops
+    (W = ``pull`` / tan ``swing``)."""
+    length = half / math.sin(swing)
+    q = e / length
+    if q > math.sin(swing):
+        q = math.sin(swing)
+    elif q < -math.sin(swing):
+        q = -math.sin(swing)
+    return pull / math.tan(swing) * q / math.sqrt(1.0 - q * q)
 
 
 @njit(cache=True)
-def _bridge_contact(h, xd, half, pull, reach, kh, ch, m, s0, s1, s2, Fc, Fs, vs, alpha,
-                    shape):
+def _shackle_contact(h, xd, half, pull, swing, kh, ch, m, s0, s1, s2, Fc, Fs, vs, alpha,
+                     shape):
     """LuGre friction [N] of a light contact of mass ``m`` [kg] driven by the drive positions
     ``xd`` [m] (steps ``h`` [s]) through a play of half-width ``half`` [m] between rigid
-    flanks (a spring ``kh`` [N/m] and damper ``ch`` [N s/m], compressive only); touching a
-    flank wets it and leaves a liquid bridge that pulls the contact back towards that flank
-    as the drive leaves it (:func:`_bridge_force`, ``pull`` [N], ``reach`` [m]) until it
-    ruptures. From rest, the drive in the play's middle, no bridge. Semi-implicit Euler of
-    the contact, its bristle exact."""
+    stops (a spring ``kh`` [N/m] and damper ``ch`` [N s/m], compressive only), across which
+    a hanging shackle pulls the contact towards the drive (:func:`_shackle_force`). From
+    rest, the drive in the play's middle. Semi-implicit Euler of the contact, its bristle
+    exact."""
     nn = xd.size
     F = np.empty(nn)
     x = xd[0]
     v = 0.0
     z = 0.0
-    side = 0
     for j in range(nn):
         vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
         e = xd[j] - x
         ed = vd - v
-        fc = 0.0
+        fc = _shackle_force(e, half, pull, swing)
         if e > half:
-            side = 1
             f2 = kh * (e - half) + ch * ed
             if f2 > 0.0:
                 fc += f2
         elif e < -half:
-            side = -1
             f2 = kh * (-e - half) - ch * ed
             if f2 > 0.0:
                 fc -= f2
-        if side == 1:
-            d = half - e
-            if d >= reach:
-                side = 0
-            elif d > 0.0:
-                fc -= _bridge_force(d, pull, reach)
-        elif side == -1:
-            d = half + e
-            if d >= reach:
-                side = 0
-            elif d > 0.0:
-                fc += _bridge_force(d, pull, reach)
         F[j], v, z = _light_contact_step(v, z, fc, h, m, s0, s1, s2, Fc, Fs, vs, alpha,
                                          shape)
         x = x + h * v
@@ -834,15 +744,15 @@ def _bridge_contact(h, xd, half, pull, reach, kh, ch, m, s0, s1, s2, Fc, Fs, vs,
 
 
 @on_fine_grid
-def liquid_bridge_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact are joined across a play of width ``s``^2 :data:`BRIDGE_CLEAR` x
-    the stroke whose flanks are wetted by oil (or water): where the drive's flank touches
-    the contact a liquid bridge forms between them, and when the drive reverses and leaves
-    that flank the bridge pulls the contact after it, :data:`BRIDGE_PULL` x the Coulomb
-    level at contact and less as it stretches and its neck thins, until it ruptures at
-    :data:`BRIDGE_REACH` x the play's width (:func:`_bridge_force`,
-    :func:`_bridge_contact`): the force does not fall to nothing at a reversal but lingers
-    over part of the lost motion, then drops before the other flank is reached.
+def swing_shackle_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact are joined across a play of width ``s``^2 :data:`SHACKLE_CLEAR` x
+    the stroke by a hanging shackle (a swinging link, as hangs a leaf spring's end or a
+    trolley's load): the link hangs from the drive and bears on the contact, and as the
+    drive moves across the play the link swings out and gravity pulls the contact after
+    it by W tan theta, little near the play's middle and ever more towards its stops
+    (:data:`SHACKLE_PULL` x the Coulomb level there; :func:`_shackle_force`,
+    :func:`_shackle_contact`): the lost motion is taken up by a pull that stiffens across
+    the play, and the contact may be dragged before the stop is reached.
 
     Parameters
     ----------
@@ -863,54 +773,48 @@ def liquid_bridge_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Liquid bridges between separating solids: the capillary force of a pendular bridge
-    falls as it stretches at a constant volume and the bridge ruptures at a separation of
-    about its volume's cube root (Lian, Thornton and Adams 1993, A theoretical study of
-    the liquid bridge forces between two rigid spherical bodies, J. Colloid Interface Sci.
-    161; Willett, Adams, Johnson and Seville 2000, Capillary bridges between two spherical
-    bodies, Langmuir 16), and lost motion in mechanisms (Nordin and Gutman 2002,
-    Controlling mechanical systems with backlash - a survey, Automatica 38). The candidate
-    holds or frees the contact across a rigid play; the open forms take it up rigidly,
-    compliantly, by impact, against a spring, eccentrically, through oil, worn, with a
-    dragging idler, biased, slack, magnetic, preloaded, through a flexspline, a rope, a
-    spider, a fluid link, a cable, a clutch, a varying mesh, a polymer gear, grease, a
-    wedge, an overlapped spool, a side loaded pin, a toggle spring, graded pins, an
-    adhesive flank, packed powder, a floating part between two plays, trapped air, a ball
-    detent, magnets on the flanks, a play that warms shut, a shear-thickening fluid, an
-    eddy-current damper or foam on the flanks. Here a wetted flank holds the contact by a
-    stretching bridge after the drive has left it, until the bridge breaks.
+    The pendulum's (a swinging link's) horizontal restoring force W tan theta under a load
+    W, as in a leaf spring's shackle or a hanging load's swing (Den Hartog 1961, Mechanics,
+    ch. on statics of hanging links; Gillespie 1992, Fundamentals of Vehicle Dynamics, on
+    spring shackles), and lost motion in mechanisms (Nordin and Gutman 2002, Controlling
+    mechanical systems with backlash - a survey, Automatica 38). The candidate holds or
+    frees the contact across a rigid play; the open forms take it up rigidly, compliantly,
+    by impact, against a spring, eccentrically, through oil, worn, with a dragging idler,
+    biased, slack, magnetic, preloaded, through a flexspline, a rope, a spider, a fluid
+    link, a cable, a clutch, a varying mesh, a polymer gear, grease, a wedge, an
+    overlapped spool, a side loaded pin, a toggle spring, graded pins, an adhesive flank,
+    packed powder, a floating part between two plays, trapped air, a ball detent, magnets
+    on the flanks, a play that warms shut, a shear-thickening fluid, an eddy-current
+    damper, foam on the flanks or a liquid bridge. Here gravity on a swinging link pulls
+    the contact across the play.
     """
-    p = _lugre_params(kin, "backlash (liquid_bridge)")
+    p = _lugre_params(kin, "backlash (swing_shackle)")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    half = 0.5 * float(s) ** 2 * BRIDGE_CLEAR * float(np.ptp(kin.x))
-    pull = BRIDGE_PULL * float(p.Fc)
-    reach = BRIDGE_REACH * 2.0 * half
+    half = 0.5 * float(s) ** 2 * SHACKLE_CLEAR * float(np.ptp(kin.x))
+    pull = SHACKLE_PULL * float(p.Fc)
     m, kh, ch = _contact_constants(kin, p)
     rate = max(math.sqrt(kh / m), (float(p.sigma1) + float(p.sigma2) + ch) / m)
     h, xd, n_sub = _substeps(kin, rate)
-    Fr = _bridge_contact(h, xd, half, pull, reach, kh, ch, m,
-                         float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
-                         float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
+    Fr = _shackle_contact(h, xd, half, pull, SHACKLE_SWING, kh, ch, m,
+                          float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
+                          float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
     return Fr[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: ``magnet_coupling``'s share of the friction the shoe carries, at strength 1 (at most
-#: 0.95) [-]; its slip travel beyond the base bristle's Fs / sigma0, at strength 1, x the
-#: stroke / 3 [-]; the coupling's electrical angle at which its pull reaches the shoe's
-#: sliding force (below pi / 2: it never slips a pole) [rad]
-MAG_SHARE, MAG_PATH, MAG_ANGLE = 0.3, 0.1, 1.2
+#: ``hanging_shoe``'s share of the Coulomb level the shoe carries at strength 1 [-]; its
+#: slip travel at strength 1, beyond the base bristle's, as a share of the stroke / 3 [-];
+#: the hanger's swing at which the shoe slides [rad]
+HANG_SHARE, HANG_PATH, HANG_SWING = 0.3, 0.1, 1.1
 
 
 @njit(cache=True)
-def _shoe_offset(x, x_ref):
-    """The shoe's offset from its magnet [-] (over the slip travel ``x_ref`` [m]) along the
-    carriage's positions ``x`` [m], from rest and centred: the shoe sticks on the way while
-    the carriage carries the magnet on, until the offset reaches the slip travel (+-1: the
-    coupling's pull the shoe's sliding force); then the shoe slides behind the magnet at
-    that offset."""
+def _hanger_offset(x, x_ref):
+    """The shoe's offset from the hanger's pivot [-] (over the slip travel ``x_ref`` [m])
+    along the carriage's positions ``x`` [m]: the shoe sticks while |offset| < 1 and slides
+    with the carriage at that offset once it is reached."""
     n = x.size
     out = np.empty(n)
     shoe = x[0] if n > 0 else 0.0
@@ -926,30 +830,28 @@ def _shoe_offset(x, x_ref):
     return out
 
 
-def _coupling_pull(r, angle):
-    """The magnetic coupling's pull [-] (over the shoe's sliding force) at the offsets ``r``
-    [-] (over the slip travel): the reluctance force of a magnet facing toothed steel,
-    sin(pi offset / pitch), reaching the sliding force at the electrical angle ``angle``:
-    sin(``angle`` r) / sin(``angle``), stiff near the centre and softening towards the
-    slip."""
-    r = np.asarray(r, float)
-    return np.sin(float(angle) * r) / math.sin(float(angle))
+def _hanger_pull(r, swing):
+    """The hanger's pull [-] (over the shoe's sliding force) at the offsets ``r`` [-] (over
+    the slip travel): a weighted link swung by theta, sin theta = r sin(``swing``), pulls
+    by W tan theta, reaching the sliding force at ``swing``: soft at first, stiffening
+    towards the slip."""
+    q = np.clip(np.asarray(r, float), -1.0, 1.0) * math.sin(float(swing))
+    return q / np.sqrt(1.0 - q * q) / math.tan(float(swing))
 
 
 @on_fine_grid
-def magnet_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Part of the contact's friction is carried by a shoe that rides on the way and is
-    held to the carriage only by a magnetic coupling: a permanent magnet on the carriage
-    faces the shoe's toothed steel, and their offset raises a reluctance pull that grows
-    as the sine of the offset over the teeth's pitch. The shoe sticks while the carriage
-    moves the magnet on and the pull builds, stiff at first, softening as the offset nears
-    the angle :data:`MAG_ANGLE` at which the pull reaches the shoe's sliding force; then the
-    shoe slides behind the magnet at that offset, the slip travel being the base bristle's
-    Fs / sigma0 plus ``s`` :data:`MAG_PATH` x the stroke / 3 (:func:`_shoe_offset`). A
-    reversal unloads the coupling along the same magnetic path: no loss inside the slip
-    travel. The shoe carries ``s`` :data:`MAG_SHARE` (at most 0.95) of the Coulomb level
-    (:func:`_coupling_pull`); the rest stays the base law with its level lowered by as
-    much; at ``s`` = 0 the base.
+def hanging_shoe_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Part of the contact's friction is carried by a weighted shoe that rides on the way
+    and hangs from the carriage on a swinging link (a pendulum hanger, as a drag shoe or a
+    trailing wiper is hung): the shoe sticks while the carriage moves the hanger's pivot
+    on, the link swings out and gravity pulls the shoe along by W tan theta, soft at first
+    and stiffening as the link swings towards the angle :data:`HANG_SWING` at which the
+    pull reaches the shoe's sliding force; then the shoe slides behind the pivot at that
+    swing, the slip travel being the base bristle's Fs / sigma0 plus ``s``
+    :data:`HANG_PATH` x the stroke / 3 (:func:`_hanger_offset`). A reversal swings the link
+    back along the same path: no loss inside the slip travel. The shoe carries ``s``
+    :data:`HANG_SHARE` (at most 0.95) of the Coulomb level (:func:`_hanger_pull`); the rest
+    stays the base law with its level lowered by as much; at ``s`` = 0 the base.
 
     Parameters
     ----------
@@ -957,7 +859,7 @@ def magnet_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
         The motion on the fine grid (x [m]) and its base law.
     s : float
         Amplitude factor [-]: the shoe's share of the friction (up to ``s`` = 0.95 /
-        :data:`MAG_SHARE`) and its slip travel, / their values at strength 1.
+        :data:`HANG_SHARE`) and its slip travel, / their values at strength 1.
 
     Returns
     -------
@@ -971,32 +873,32 @@ def magnet_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The reluctance force between a permanent magnet and toothed (or slotted) steel, which
-    varies as the sine of the offset over the pitch up to a pull-out force, as in magnetic
-    couplings and magnetic gears (Furlani 2001, Permanent Magnet and Electromechanical
-    Devices, ch. on magnetic couplings; Hendershot and Miller 2010, Design of Brushless
-    Permanent-Magnet Machines, on cogging and detent forces). The candidate's presliding
-    is a generalized Maxwell-slip (GMS) element set; the open forms are Maxwell-slip sets,
-    Dahl, elasto-plastic, Bliman-Sorine, Bouc-Wen, Zener junctions, Mindlin contacts,
-    rate-and-state, Tomlinson asperities, bond rupture, gouge, kinematic hardening,
-    interlocking, capillary bridges, cyclic hardening, peeling, unloading microslip, a
-    power-law joint, junction growth, avalanches, slip weakening, a microslip bar, contact
-    renewal, grease's yield, a superelastic flexure, an Eyring film, a viscoplastic layer,
-    a poroelastic one, a confined film that melts, a hysteresis brake, a fibre wiper, a
-    band on a drum, a spring's rubbing leaves, an air cylinder's spring or a buckling
-    strut, each beside the contact, or a stiffening wire mesh in series with it. Here a
-    magnetic field, not a solid, holds the sticking shoe, stiff at first and softening
-    towards its pull-out.
+    The pendulum's horizontal restoring force W tan theta, stiffening with the swing, a
+    gravity spring (Den Hartog 1961, Mechanics, on hanging links), carrying a sticking and
+    sliding shoe, a presliding element of its own law (Al-Bender, Lampaert and Swevers
+    2005, The generalized Maxwell-slip model, IEEE Trans. Autom. Control 50, for the
+    element set it departs from). The candidate's presliding is a generalized Maxwell-slip
+    (GMS) element set; the open forms are Maxwell-slip sets, Dahl, elasto-plastic,
+    Bliman-Sorine, Bouc-Wen, Zener junctions, Mindlin contacts, rate-and-state, Tomlinson
+    asperities, bond rupture, gouge, kinematic hardening, interlocking, capillary bridges,
+    cyclic hardening, peeling, unloading microslip, a power-law joint, junction growth,
+    avalanches, slip weakening, a microslip bar, contact renewal, grease's yield, a
+    superelastic flexure, an Eyring film, a viscoplastic layer, a poroelastic one, a
+    confined film that melts, a hysteresis brake, a fibre wiper, a band on a drum, a
+    spring's rubbing leaves, an air cylinder's spring, a buckling strut or a magnetic
+    coupling, each beside the contact, or a stiffening wire mesh in series with it. Here
+    gravity on a swinging hanger holds the sticking shoe, soft at first and stiffening
+    towards its slip.
     """
-    _lugre_params(kin, "gms (magnet_coupling)")
+    _lugre_params(kin, "gms (hanging_shoe)")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     law = kin.base
-    w = min(float(s) * MAG_SHARE, 0.95)
+    w = min(float(s) * HANG_SHARE, 0.95)
     wf = w * _level(kin)
-    e0, extra = _presliding_path(kin, s, MAG_PATH)
-    r = _shoe_offset(np.asarray(kin.x, float), e0 + extra)
-    f = _coupling_pull(r, MAG_ANGLE)
+    e0, extra = _presliding_path(kin, s, HANG_PATH)
+    r = _hanger_offset(np.asarray(kin.x, float), e0 + extra)
+    f = _hanger_pull(r, HANG_SWING)
     rest = lugre_with_curve(kin, lambda vv: law.g(vv) - wf)
     return rest + wf * f

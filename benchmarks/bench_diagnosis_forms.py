@@ -246,6 +246,14 @@ frame recoil on the rig), wrong names 22 -> 22; the 78 inertia and acceleration 
 both samples and seen29 43 -> 49 (frame recoils and seen29's friction pendulums), wrong
 names 9 -> 9; 500 clean records: 0 named (246 ``none``, 254 ``unexplained``).
 
+Session 40 (2026-12-02, code of 8b3fd7f, the diagnosis of d7e0374; ``--sample 300
+--sample-seed 40`` of the whole open grid, seen to seen35; 2 workers, alone, 966 s): 299
+cases run (1 skipped: a truth short of its size on this motion); of the 297 effect cases
+top-1 **60.6 % +- 2.8** (180; **63.7 % +- 2.9** of the 281 detectable), mean |shrink
+error| 0.27, wrong names on 36 (12.1 %: inertia -> acceleration 4, asymmetry -> position
+3, acceleration -> asymmetry 3); the clean and the out-of-library case not named. By
+plant: XML-350 70.3 %, isolator 67.3 %, press 61.4 %, valve 55.6 %, damping rig 52.6 %.
+
 Sealed family of session 40's first writing (``--sealed`` then, written by another hand
 without running the diagnosis on it, run once in session 40 on the code of ddc8eb5, the
 diagnosis code of d7e0374):

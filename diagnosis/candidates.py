@@ -3,10 +3,10 @@
 Each named effect is one record of :mod:`diagnosis.effects` (:class:`diagnosis.effects.
 Effect`), whose ``candidate`` is an instance of a subclass of :class:`Candidate`. Here are
 the base classes, the fit record's scales (:class:`Context`), the least squares the
-candidates' start values share, and the two smallest candidates (``asymmetry``,
-``presliding``); every other candidate lives in its effect's own module,
-``diagnosis/effects_<name>.py`` (``acceleration``, ``load``, ``drift``, ``position``,
-``inertia``, ``delay``, ``stribeck`` for ``stribeck_shape``, ``backlash``, ``gms``).
+candidates' start values share, and the smallest candidate (``presliding``); every other
+candidate lives in its effect's own module, ``diagnosis/effects_<name>.py``
+(``acceleration``, ``asymmetry``, ``load``, ``drift``, ``position``, ``inertia``, ``delay``,
+``stribeck`` for ``stribeck_shape``, ``backlash``, ``gms``).
 
 Every candidate changes the model in one of four ways, applied in this order:
 
@@ -37,7 +37,7 @@ from friction import make_model
 from friction.alignment import velocity_lag
 
 __all__ = ["Candidate", "LawCandidate", "Context", "Extra", "make_context", "velocity_lag",
-           "Fixed", "Asymmetry", "AsymmetryTwins", "friction_heat", "position_quantum",
+           "Fixed", "friction_heat", "position_quantum",
            "Presliding", "MAX_FILTER_SAMPLES", "missing_columns", "law_variants",
            "levels_inside", "with_inside_form", "inside_level"]
 
@@ -62,6 +62,10 @@ class Context:
     #: the fit data's friction power |F v| over its mean [-], and that mean [W]
     #: (:func:`friction_heat`); empty where unknown
     power: tuple = ()
+    #: the fit data's speeds |v| [m/s] at its 1st to 99th percentiles in steps of 2, where
+    #: its motion is (the asymmetry drag's share, :class:`diagnosis.effects_asymmetry.
+    #: AsymmetryDrag`); empty where unknown
+    speeds: tuple = ()
 
 
 def make_context(fit) -> Context:
@@ -74,9 +78,10 @@ def make_context(fit) -> Context:
     P = np.abs(np.asarray(fit.F, float) * np.asarray(fit.v, float))
     P_mean = float(np.mean(P)) if P.size else 0.0
     power = (P / P_mean, P_mean) if P_mean > 0.0 and np.isfinite(P_mean) else ()
+    speeds = tuple(float(q) for q in np.percentile(np.abs(fit.v), np.arange(1, 100, 2)))
     return Context(sF, sv, sa, float(np.min(fit.x)), float(np.max(fit.x)), float(fit.t[0]),
                    float(fit.t[-1] - fit.t[0]), fit.dt, L0, L_span, L_hi, velocity_lag(fit),
-                   position_quantum(fit.x), power)
+                   position_quantum(fit.x), power, speeds)
 
 
 def friction_heat(data, tau, ctx) -> np.ndarray:
@@ -574,57 +579,6 @@ def _residual_after(fixed, nuis, b, columns):
 def _with(A, nuis):
     """The columns ``A`` with the columns ``nuis`` beside them (``nuis`` None: ``A``)."""
     return A if nuis is None else np.column_stack([A, nuis])
-
-
-class Asymmetry(Candidate):
-    def extras(self, ctx):
-        return [Extra("b", 0.0, -ctx.sF, ctx.sF, "N"),
-                Extra("dF_neg", 0.0, -ctx.sF, ctx.sF, "N"),
-                Extra("dsigma2_neg", 0.0, -2 * ctx.sF / ctx.sv, 2 * ctx.sF / ctx.sv, "N.s/m")]
-
-    def apply(self, F, p, data, ctx):
-        # direction-dependent levels and an offset (seeds 000, 003)
-        s = _sig_neg(data.v, ctx)
-        return F + p["b"] - p["dF_neg"] * s + p["dsigma2_neg"] * data.v * s
-
-    def specialise(self, law):
-        # a law with direction twins carries the asymmetry inside itself, so the levels act
-        # through the bristle state in sticking and crawling too (the additive form only
-        # sees the sign of v, which is undecided near rest)
-        if set(law.twins) >= {"Fc", "Fs", "sigma2"} and hasattr(law.params, "b"):
-            return AsymmetryTwins(self.name, self.description, "modify_law", self.tags)
-        return self
-
-
-class AsymmetryTwins(Candidate):
-    """``asymmetry`` for laws with direction twins: Fc, Fs, sigma2 (and vs, where the law
-    has its twin) for v < 0 and the offset b become free parameters of the law itself."""
-    #: seconds of its fit on the speed case (:attr:`Candidate.fit_cost`)
-    fit_cost = 0.1
-
-    TWINS = ("Fc", "Fs", "sigma2")
-    #: twins freed where the law has them: a Stribeck velocity of its own for v < 0 (a
-    #: breakaway that differs with the direction rarely keeps its Stribeck velocity; with
-    #: Fs_neg alone the candidate closed 0.0-0.3 of such gaps, issue 15)
-    OPTIONAL = ("vs",)
-
-    def _twins(self, law):
-        return self.TWINS + tuple(n for n in self.OPTIONAL if law.twins.get(n))
-
-    def modify_law(self, law, base_names, ctx):
-        p = law.params
-        twins = self._twins(law)
-        start = {law.twins[n]: float(getattr(p, n)) for n in twins}
-        names = list(base_names) + [law.twins[n] for n in twins if law.twins[n]
-                                    not in base_names]
-        if "b" not in names:
-            names.append("b")
-        return [(law.with_values(**start), names)]
-
-    def own_law_names(self, law):
-        # the offset is this effect's too: identify's default base frees it on the fit
-        # record, but a held-out condition with its own offset is the asymmetry's to carry
-        return tuple(law.twins[n] for n in self._twins(law)) + ("b",)
 
 
 class Presliding(Candidate):

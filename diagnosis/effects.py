@@ -83,10 +83,11 @@ from typing import Callable, Mapping, Union
 from friction.extensions import EXTENSIONS, POSITION_NAMES
 
 # the candidate builders, and what the rest of the package has always imported from here
-from .candidates import (Asymmetry, AsymmetryTwins, Candidate, Context, Extra,  # noqa: F401
+from .candidates import (Candidate, Context, Extra,  # noqa: F401
                          MAX_FILTER_SAMPLES, Presliding, make_context)
 # candidates in modules of their own (backlash's and gms's with their truth forms)
 from .effects_acceleration import Acceleration
+from .effects_asymmetry import Asymmetry, AsymmetryTwins
 from .effects_backlash import Backlash
 from .effects_delay import Delay
 from .effects_drift import Drift
@@ -389,7 +390,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "ball_hysteresis": _S35 + "ball_hysteresis_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
-    Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003)",
+    Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003), or "
+                     "a drag of each direction beside the contact",
                      "additive"),
            plant_entry="twins", fmu=True, families=("direction",), evidence=("direction",),
            truths={"twins": _T + "asymmetry_truth",

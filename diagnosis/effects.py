@@ -65,7 +65,7 @@ How to add an effect
      the benchmark's default, all of them in its generalisation grid (at least three, from
      different physics); ``sealed``: one more form written once and kept out of all tuning
      (:mod:`diagnosis.benchmark.sealed`; once its results have been seen it joins
-     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen35`
+     ``truths``, as :mod:`diagnosis.benchmark.seen` to :mod:`diagnosis.benchmark.seen36`
      did, and a new one is written);
      ``generic_truth`` and ``truth_applies`` likewise.
 
@@ -272,6 +272,7 @@ _S32 = "diagnosis.benchmark.seen32:"
 _S33 = "diagnosis.benchmark.seen33:"
 _S34 = "diagnosis.benchmark.seen34:"
 _S35 = "diagnosis.benchmark.seen35:"
+_S36 = "diagnosis.benchmark.seen36:"
 _B = "diagnosis.effects_backlash:"
 _G = "diagnosis.effects_gms:"
 
@@ -344,7 +345,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "nut_liftoff": _S32 + "nut_liftoff_truth",
                    "bowed_screw": _S33 + "bowed_screw_truth",
                    "energised_seals": _S34 + "energised_seals_truth",
-                   "worm_mesh": _S35 + "worm_mesh_truth"},
+                   "worm_mesh": _S35 + "worm_mesh_truth",
+                   "slip_coupling": _S36 + "slip_coupling_truth"},
            sealed=_SealedForm("acceleration"),
            generic_truth=_T + "acceleration_generic"),
     Effect(Load("load", "friction levels depend on the normal load (seed 004)",
@@ -387,7 +389,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "sinking_wiper": _S32 + "sinking_wiper_truth",
                    "magnet_preload": _S33 + "magnet_preload_truth",
                    "toggle_clamp": _S34 + "toggle_clamp_truth",
-                   "ball_hysteresis": _S35 + "ball_hysteresis_truth"},
+                   "ball_hysteresis": _S35 + "ball_hysteresis_truth",
+                   "porous_bushing": _S36 + "porous_bushing_truth"},
            sealed=_SealedForm("load"),
            generic_truth=_T + "load_generic"),
     Effect(Asymmetry("asymmetry", "direction-dependent levels and offset (seeds 000, 003), or "
@@ -431,7 +434,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "coolant_stream": _S32 + "coolant_stream_truth",
                    "clapper_tool": _S33 + "clapper_tool_truth",
                    "plunger_pump": _S34 + "plunger_pump_truth",
-                   "trailing_hose": _S35 + "trailing_hose_truth"},
+                   "trailing_hose": _S35 + "trailing_hose_truth",
+                   "magnetic_conveyor": _S36 + "magnetic_conveyor_truth"},
            sealed=_SealedForm("asymmetry"),
            generic_truth=_T + "asymmetry_generic"),
     Effect(StribeckShape("stribeck_shape",
@@ -475,7 +479,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "governor_shoes": _S32 + "governor_shoes_truth",
                    "battery_dynamo": _S33 + "battery_dynamo_truth",
                    "floating_pawl": _S34 + "floating_pawl_truth",
-                   "dielectric_pad": _S35 + "dielectric_pad_truth"},
+                   "dielectric_pad": _S35 + "dielectric_pad_truth",
+                   "spin_off": _S36 + "spin_off_truth"},
            sealed=_SealedForm("stribeck_shape"),
            generic_truth=_T + "stribeck_shape_generic",
            truth_applies=_T + "has_stribeck_curve"),
@@ -522,7 +527,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "draining_film": _S32 + "draining_film_truth",
                    "hardened_zones": _S33 + "hardened_zones_truth",
                    "grit_band": _S34 + "grit_band_truth",
-                   "wet_patch": _S35 + "wet_patch_truth"},
+                   "wet_patch": _S35 + "wet_patch_truth",
+                   "rust_stain": _S36 + "rust_stain_truth"},
            sealed=_SealedForm("position"),
            generic_truth=_T + "position_generic", truth_applies=_T + "revisits_positions"),
     Effect(Inertia("inertia", "mass error in the inverse dynamics", "additive"),
@@ -564,7 +570,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "fluid_inerter": _S32 + "fluid_inerter_truth",
                    "shunted_coil": _S33 + "shunted_coil_truth",
                    "yoke_flywheel": _S34 + "yoke_flywheel_truth",
-                   "winch_layers": _S35 + "winch_layers_truth"},
+                   "winch_layers": _S35 + "winch_layers_truth",
+                   "scissor_links": _S36 + "scissor_links_truth"},
            sealed=_SealedForm("inertia"),
            generic_truth=_T + "inertia_generic"),
     Effect(Delay("delay", "time shift between force and motion channels, or the force "
@@ -610,7 +617,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "pulsation_comb": _S32 + "pulsation_comb_truth",
                    "complementary_fusion": _S33 + "complementary_fusion_truth",
                    "acoustic_link": _S34 + "acoustic_link_truth",
-                   "bucket_brigade": _S35 + "bucket_brigade_truth"},
+                   "bucket_brigade": _S35 + "bucket_brigade_truth",
+                   "rolling_shutter": _S36 + "rolling_shutter_truth"},
            sealed=_SealedForm("delay"),
            generic_truth=_T + "delay_generic"),
     Effect(Drift("drift", "friction level changing over time (e.g. warming)",
@@ -654,7 +662,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "jr_clamp": _S32 + "jr_clamp_truth",
                    "solenoid_coil": _S33 + "solenoid_coil_truth",
                    "magnetic_aftereffect": _S34 + "magnetic_aftereffect_truth",
-                   "leaking_bladder": _S35 + "leaking_bladder_truth"},
+                   "leaking_bladder": _S35 + "leaking_bladder_truth",
+                   "battery_magnet": _S36 + "battery_magnet_truth"},
            sealed=_SealedForm("drift"),
            generic_truth=_T + "drift_generic"),
     Effect(Backlash("backlash", "lost motion at the reversals between drive and contact",
@@ -696,7 +705,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "dilatant_gap": _S32 + "dilatant_gap_truth",
                    "eddy_gap": _S33 + "eddy_gap_truth",
                    "foam_pads": _S34 + "foam_pads_truth",
-                   "liquid_bridge": _S35 + "liquid_bridge_truth"},
+                   "liquid_bridge": _S35 + "liquid_bridge_truth",
+                   "swing_shackle": _S36 + "swing_shackle_truth"},
            sealed=_SealedForm("backlash"),
            generic_truth=_B + "backlash_rigid_generic", truth_applies=_B + "truth_applies"),
     Effect(GMSCandidate("gms", "multi-element presliding hysteresis (generalized "
@@ -738,7 +748,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
                    "leaf_pack": _S32 + "leaf_pack_truth",
                    "air_shoe": _S33 + "air_shoe_truth",
                    "buckling_strut": _S34 + "buckling_strut_truth",
-                   "magnet_coupling": _S35 + "magnet_coupling_truth"},
+                   "magnet_coupling": _S35 + "magnet_coupling_truth",
+                   "hanging_shoe": _S36 + "hanging_shoe_truth"},
            sealed=_SealedForm("gms"),
            generic_truth=_G + "gms_maxwell10_generic", truth_applies=_G + "truth_applies"),
 )}

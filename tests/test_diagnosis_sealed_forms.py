@@ -1,10 +1,10 @@
-"""The thirty-sixth sealed truth family (diagnosis.benchmark.sealed, written in session 40
+"""The thirty-seventh sealed truth family (diagnosis.benchmark.sealed, written in session 41
 by another hand, sealed: not run): each form builds a finite case of the requested size on every
 plant it applies to, is the base law at s = 0, grows with its amplitude factor and refuses
 the plants it does not apply to. No diagnosis is run on these forms: the family stays unseen
 until the end of a piece of work. Each effect record of :data:`diagnosis.effects.EFFECTS`
-names it as its ``sealed`` form (the thirty-fifth family, sealed before it, is
-:mod:`diagnosis.benchmark.seen35` since its run)."""
+names it as its ``sealed`` form (the thirty-sixth family, sealed before it, is
+:mod:`diagnosis.benchmark.seen36` since its run)."""
 import dataclasses
 import importlib
 
@@ -20,11 +20,11 @@ from truth_form_checks import (assert_builds_and_grows, assert_finite_and_grow_o
                                assert_zero_amplitude_is_the_base)
 
 #: the family's form of each effect
-FORM = {"acceleration": "slip_coupling", "load": "porous_bushing",
-        "asymmetry": "magnetic_conveyor", "stribeck_shape": "spin_off",
-        "position": "rust_stain", "inertia": "scissor_links",
-        "delay": "rolling_shutter", "drift": "battery_magnet",
-        "backlash": "swing_shackle", "gms": "hanging_shoe"}
+FORM = {"acceleration": "lanchester_damper", "load": "brush_pads",
+        "asymmetry": "peeled_tape", "stribeck_shape": "contact_charging",
+        "position": "dimpled_band", "inertia": "speed_variator",
+        "delay": "pen_arc", "drift": "sma_preload",
+        "backlash": "taut_string", "gms": "mullins_shoe"}
 #: a plant each form reaches the requested size on (quick protocols: the XML-350's
 #: kinematics take 0.1 s)
 PLANT = {effect: "xml350" for effect in FORM}
@@ -47,8 +47,9 @@ _FORM_MODULES = ("diagnosis.benchmark.truths", "diagnosis.benchmark.forms",
                  "diagnosis.benchmark.seen29", "diagnosis.benchmark.seen30",
                  "diagnosis.benchmark.seen31", "diagnosis.benchmark.seen32",
                  "diagnosis.benchmark.seen33", "diagnosis.benchmark.seen34",
-                 "diagnosis.benchmark.seen35", "diagnosis.benchmark.sealed",
-                 "diagnosis.effects_backlash", "diagnosis.effects_gms")
+                 "diagnosis.benchmark.seen35", "diagnosis.benchmark.seen36",
+                 "diagnosis.benchmark.sealed", "diagnosis.effects_backlash",
+                 "diagnosis.effects_gms")
 
 
 def test_the_family_has_one_new_form_per_effect():
@@ -70,9 +71,9 @@ def test_the_family_has_one_new_form_per_effect():
         assert not names & set(vars(mod)), name
         assert not set(FORM.values()) & set(getattr(mod, "FORMS", {}).values()), name
     doc = family.__doc__
-    assert doc.startswith("The thirty-sixth sealed truth family")
-    assert "sealed: not run" in doc and "2026-12-02 (session 40)" in doc
-    assert "session 40's first, was run once and is :mod:`.seen35`" in doc
+    assert doc.startswith("The thirty-seventh sealed truth family")
+    assert "sealed: not run" in doc and "2026-12-02 (session 41)" in doc
+    assert "session 40's other, was run once and is :mod:`.seen36`" in doc
 
 
 def test_registered_forms_resolve():
@@ -113,113 +114,100 @@ def test_sealed_forms_reach_their_size_on_two_plants(plant):
 def test_sealed_forms_refuse_plants_they_do_not_apply_to():
     iso = plant_kinematics("mre_isolator", quick=True)
     with pytest.raises(ValueError, match="Stribeck"):
-        family.spin_off_truth(iso, 1.0)
+        family.contact_charging_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.swing_shackle_truth(iso, 1.0)
+        family.taut_string_truth(iso, 1.0)
     with pytest.raises(ValueError, match="LuGre"):
-        family.hanging_shoe_truth(iso, 1.0)
+        family.mullins_shoe_truth(iso, 1.0)
     fk = fine_kinematics(plant_kinematics("xml350", quick=True))
     # a one-way stroke (the press's) never comes back over the positions the fit part saw
     one_way = dataclasses.replace(fk, x=np.linspace(0.0, 1e-2, fk.t.size))
     with pytest.raises(ValueError, match="revisits"):
-        family.rust_stain_truth.__wrapped__(one_way, 1.0)
+        family.dimpled_band_truth.__wrapped__(one_way, 1.0)
     # a load that never changes never changes the film
     still = dataclasses.replace(fk, load=np.full(fk.t.size, 100.0))
     with pytest.raises(ValueError, match="does not change"):
-        family.porous_bushing_truth.__wrapped__(still, 1.0)
+        family.brush_pads_truth.__wrapped__(still, 1.0)
 
 
 # -- the mechanisms themselves (no case, no diagnosis) ---------------------------------------
-def test_the_coupling_loses_more_with_the_thrust_and_less_as_it_speeds_up():
-    slip, stall, thrust = 0.1, 0.3, 1.0
-    loss = family._coupling_loss(np.array([0.0, 0.5, -0.5, 0.5, 0.5]),
-                                 np.array([0.5, 0.5, 0.5, 1.0, -0.5]), slip, stall, thrust)
-    d = 0.25 + 0.09
-    assert loss[0] == 0.0
-    assert np.isclose(loss[1], 1.5 * slip * 1.5 / d - slip / d)          # (1 + u)^2 - 1
-    assert loss[2] < 0 < loss[3] < loss[1]                                # less at speed
-    assert loss[4] < 0                                                    # braking a -x run
-    stalled = family._coupling_loss(np.array([3.0]), np.array([0.01]), 1.0, stall, thrust)
-    assert np.isclose(stalled[0], 4.0 - 1.0)                              # sigma capped at 1
+def test_the_ring_follows_as_a_mass_then_slips_at_its_clutch():
+    t = np.linspace(0.0, 1.0, 1001)
+    v = 0.1 * t                          # a = 0.1
+    F = family._ring_force(t, v, 1.0, 1.0)
+    assert np.allclose(F[1:], 0.1)       # held: m a
+    F = family._ring_force(t, 5.0 * t, 1.0, 1.0)
+    assert np.allclose(F[1:], 1.0)       # slips at its clutch's force
+    v = np.where(t < 0.5, 5.0 * t, 2.5)  # stops accelerating: the ring still catches up
+    F = family._ring_force(t, v, 1.0, 1.0)
+    assert F[600] == 1.0 and np.all(np.abs(F) <= 1.0 + 1e-12)
 
 
-def test_the_bushing_loses_its_film_into_the_pores_as_the_load_grows():
-    g = family._bushing_friction(np.array([0.0, 0.5, 1.0]), 0.1, 3.0, 3.0, 0.15, 0.01)
-    assert np.isclose(g[2], 1.0) and 0 < g[0] < g[1] < g[2]
-    assert g[2] - g[1] > g[1] - g[0]                                      # ever faster
-    # no drain: the film keeps its thickness and the friction is the load's
-    flat = family._bushing_friction(np.array([0.0, 1.0]), 0.1, 3.0, 0.0, 0.15, 0.01)
-    assert np.isclose(flat[0], 0.1 / 1.1)
+def test_the_bristles_lay_over_and_grip_more_than_the_load():
+    w = np.array([0.0, 0.25, 0.5, 1.0])
+    g = family._brush_friction(w, 0.1, 0.6, 0.1, 0.6)
+    assert np.isclose(g[-1], 1.0) and np.all(np.diff(g) > 0.0)
+    # faster than the load: the friction per unit load grows
+    q = (w + 0.1) / 1.1
+    assert np.all(np.diff(g / q) > 0.0)
 
 
-def test_the_travelling_field_pulls_by_the_slip():
-    p = family._induction_pull(np.array([1.5, 0.0, 1.05, -3.0]), 1.5, 0.3)
-    assert p[0] == 0.0                                                    # moving with it
-    assert np.isclose(p[2], 1.0)                                          # the breakdown
-    assert np.isclose(p[1], 2.0 * 0.3 / (1.0 + 0.09)) and 0 < p[3] < p[1]
-    assert np.isclose(family._induction_pull(3.0, 1.5, 0.3), -p[1])      # odd in the slip
+def test_the_tape_costs_a_force_peeled_and_none_laid_back():
+    p = family._peel_force(np.array([-1.0, 0.0, 0.1, 1.0, 2.0]), 0.3)
+    assert p[0] == 0.0 and p[1] == 0.0 and np.isclose(p[3], 1.0)
+    assert 0.0 < p[2] < p[3] < p[4] and np.isclose(p[4], 2.0 ** 0.3)
 
 
-def test_the_spinning_film_thins_with_the_speed():
-    h = family._spun_film(np.array([0.0, 0.5, 1.0, -1.0]), 12.0)
-    assert h[0] == 1.0 and 1.0 > h[1] > h[2] > 0 and h[2] == h[3]
-    assert np.isclose(1.0 - h[2], 12.0 * h[2] ** 3)                       # its steady state
+def test_the_charge_grows_with_the_speed_to_its_limit():
+    q = family._contact_charge(np.array([0.0, 0.25, 1.0, -1.0, 100.0]), 0.25)
+    assert q[0] == 0.0 and np.isclose(q[1], 0.5) and q[2] == q[3] and 0.99 < q[4] < 1.0
 
 
-def test_the_rust_covers_the_stain_and_fades_at_its_edges():
-    c = family._rust_cover(np.array([0.0, 0.12, -0.12, 0.5]), 0.12, 0.05)
-    assert c[0] > 0.999 and np.isclose(c[1], 0.5) and c[1] == c[2] and c[3] < 1e-12
+def test_the_dimples_lift_more_the_faster_and_only_on_the_band():
+    d = np.array([0.0, 0.0, 0.0, 0.5])
+    w = np.array([0.0, 0.3, 1.0, 1.0])
+    lift = family._dimple_lift(d, w, 0.15, 0.02, 0.3)
+    assert lift[0] == 0.0 and 0.0 < lift[1] < lift[2] < 1.0
+    assert lift[3] < 1e-6
+    assert np.isclose(lift[1], 0.5, atol=1e-3)
 
 
-def test_the_scissor_reflects_ever_more_mass_as_it_stretches():
-    m, dm = family._scissor_mass(np.array([0.0, 0.5, 1.0]), 6, 0.45, 0.92)
-    assert np.isclose(m[1], 1.0) and m[0] < m[1] < m[2] and np.all(dm > 0)
-    h = 1e-6
-    slope = (family._scissor_mass(0.3 + h, 6, 0.45, 0.92)[0]
-             - family._scissor_mass(0.3 - h, 6, 0.45, 0.92)[0]) / (2 * h)
-    assert np.isclose(slope, family._scissor_mass(0.3, 6, 0.45, 0.92)[1])
+def test_the_variator_reflects_less_mass_the_faster():
+    m = family._variator_mass(np.array([0.0, 0.5, 1.0, -1.0, 2.0]), 0.5, 1.2)
+    assert m[0] == 1.0 and 1.0 > m[1] > m[2] > 0.0 and m[2] == m[3]
+    assert np.isclose(m[4], family._variator_mass(np.array([1.2]), 0.5, 1.2)[0])
 
 
-def test_the_shutter_delays_by_the_row_the_force_falls_on():
-    fk = fine_kinematics(plant_kinematics("xml350", quick=True))
-    F0 = family.rolling_shutter_truth.__wrapped__(fk, 0.0)
-    F1 = family.rolling_shutter_truth.__wrapped__(fk, 1.0)
-    assert np.all(np.isfinite(F1)) and not np.allclose(F0, F1)
-    t = np.asarray(fk.t, float)
-    # the force's top row is read last, its bottom row first
-    for k, rows in ((int(np.argmax(F0)), family.SHUTTER_FIRST + family.SHUTTER_SPAN),
-                    (int(np.argmin(F0)), family.SHUTTER_FIRST)):
-        tau = rows * fk.sample_dt
-        assert np.isclose(F1[k], np.interp(t[k] - tau, t, F0, left=F0[0]))
+def test_the_pen_lags_by_its_arc_nothing_at_mid_scale():
+    lag = family._arc_lag(np.array([0.0, 0.5, -0.5, 1.0, -1.0]), 0.7)
+    assert lag[0] == 0.0 and lag[1] == lag[2] and 0.0 < lag[1] < 0.5
+    assert np.allclose(lag[3:], 1.0)
 
 
-def test_the_battery_falls_quickly_then_slowly_then_at_its_knee():
-    tr = np.linspace(0.0, 1.0, 101)
-    u = family._battery_voltage(tr, 0.9, 0.04, 0.08, 30.0)
-    assert u[0] == 1.0 and np.all(np.diff(u) < 0)
-    d = -np.diff(u)
-    assert d[0] > d[40] < d[-1]                                           # fast, slow, knee
+def test_the_wire_turns_to_austenite_between_its_temperatures():
+    tr = np.linspace(0.0, 1.0, 201)
+    xi = family._austenite_share(tr, 0.35, 0.3, 0.85)
+    assert xi[0] == 0.0 and np.all(np.diff(xi) >= 0.0)
+    T = 1.0 - np.exp(-tr / 0.35)
+    assert np.all(xi[T <= 0.3] == 0.0) and 0.9 < xi[-1] <= 1.0
 
 
-def test_the_shackle_pulls_as_the_tangent_of_its_swing():
-    half, pull, swing = 1e-3, 2.0, 1.0
-    f = [family._shackle_force(e, half, pull, swing) for e in (0.0, 5e-4, 1e-3, 2e-3, -1e-3)]
-    assert f[0] == 0.0 and np.isclose(f[2], pull) and f[3] == f[2] and f[4] == -f[2]
-    assert 0 < f[1] < 0.5 * pull                                          # soft at first
-    kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.swing_shackle_truth(kin, 1.0)))
+def test_the_string_pulls_back_stiffening_to_its_pull_at_the_stops():
+    f = [family._string_force(e, 1.0, 0.6, 0.05, 1.0) for e in (0.0, 0.1, 0.5, 1.0, -1.0)]
+    assert f[0] == 0.0 and np.isclose(f[3], 0.6) and np.isclose(f[4], -0.6)
+    # stiffening: the secant stiffness grows with the offset
+    assert f[1] / 0.1 < f[2] / 0.5 < f[3] / 1.0
 
 
-def test_the_hanger_holds_the_shoe_stiffening_towards_its_slip():
-    f = family._hanger_pull(np.array([0.0, 0.5, 1.0, -1.0]), 1.1)
-    assert f[0] == 0.0 and np.isclose(f[2], 1.0) and np.isclose(f[3], -1.0)
-    assert f[1] < 0.5                                                     # soft first, stiffer
-    path = np.r_[np.linspace(0.0, 3.0, 3001), np.linspace(3.0, -3.0, 6001)[1:]]
-    r = family._hanger_offset(path, 1.0)
-    assert r[0] == 0.0 and np.isclose(r[500], 0.5) and np.isclose(r[3000], 1.0)
-    assert np.isclose(r[3000 + 1500], -0.5) and np.isclose(r[-1], -1.0)
-    kin = plant_kinematics("valve", quick=True)
-    assert np.all(np.isfinite(family.hanging_shoe_truth(kin, 1.0)))
+def test_the_rubber_softens_under_its_largest_strain_and_slides_at_one():
+    up = np.linspace(0.0, 0.5, 51)
+    f = family._mullins_pull(np.concatenate([up, up[::-1]]), 1.0, 0.6)
+    assert np.all(np.abs(f) <= 1.0)
+    assert np.isclose(f[50], 0.5 * (1.0 - 0.6 * 0.5 / 1.5))
+    # back at 0.41, below the largest strain: softer than on the first loading there
+    assert np.isclose(up[41], up[::-1][9]) and f[60] < f[41]
+    x = np.linspace(0.0, 5.0, 501)
+    assert np.isclose(family._mullins_pull(x, 1.0, 0.6)[-1], 1.0)
 
 
 @pytest.mark.slow

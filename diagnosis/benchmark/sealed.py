@@ -1,12 +1,12 @@
-"""The thirty-sixth sealed truth family: one more mechanism per effect, out of all tuning.
+"""The thirty-seventh sealed truth family: one more mechanism per effect, out of all tuning.
 
-Written 2026-12-02 (session 40) by another hand, once, without running the diagnosis on it;
+Written 2026-12-02 (session 41) by another hand, once, without running the diagnosis on it;
 sealed: not run. It is run only at the end of a piece of work and reported apart from the
 open grid (each effect record's ``sealed``, :data:`diagnosis.effects.EFFECTS`; the family
-sealed before it, session 40's first, was run once and is :mod:`.seen35`).
-Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen35`
+sealed before it, session 40's other, was run once and is :mod:`.seen36`).
+Once its results have been seen it joins the open grid, as :mod:`.seen` to :mod:`.seen36`
 did. Each form is a mechanism of other physics than every form of its effect so far
-(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen35`,
+(:mod:`.truths`, :mod:`.forms`, :mod:`.seen` to :mod:`.seen36`,
 :mod:`diagnosis.effects_backlash`, :mod:`diagnosis.effects_gms`) and than the candidate's
 formula (:mod:`diagnosis.candidates`, ``diagnosis.effects_<name>``), taken from the friction
 literature or from real machines, integrated along the plant's continuous motion on the grid
@@ -18,52 +18,48 @@ each effect's amplitude monotonically from the base law at ``s`` = 0 (its calibr
 =================  =====================================================================
 effect             form
 =================  =====================================================================
-acceleration       ``slip_coupling``: the axis is driven through a hydrodynamic fluid
-                   coupling, which passes the friction's and the inertial thrust by a
-                   slip that grows with the thrust and falls as the speed's square; the
-                   slip's share of the power is lost: levels that rise with the thrust m a
-                   adds (and fall with what it takes), most at low speeds
-load               ``porous_bushing``: the carriage slides on oil-impregnated sintered
-                   bushings; the film's pressure drives its oil back into the pores, so
-                   the film thins as the load grows and the asperities carry ever more
-                   of it: levels that rise faster than the load
-asymmetry          ``magnetic_conveyor``: a magnetic chip conveyor's field travels towards
-                   +x beneath the carriage's conducting underside and pulls it by the
-                   slip between them (Kloss's curve): a pull at rest, less moving with the
-                   field, more and then less moving against it
-stribeck_shape     ``spin_off``: the drive's turning surface carries the contact's
-                   lubricant, refilled by a wick and flung off by the centrifugal force
-                   as the speed's square and the film's cube: the film thins with the
-                   speed and the boundary friction it saved rises
-position           ``rust_stain``: water stood on a stretch of the bare way and rusted
-                   it: the friction rises over the stain, fading at its edges over the
-                   moisture's diffusion length
-inertia            ``scissor_links``: the carriage stretches a scissor linkage (lazy
-                   tongs) whose links rise and fall ever faster as it nears straight: a
-                   reflected mass that grows along the stroke, with Lagrange's m'(x) v^2 /
-                   2
-delay              ``rolling_shutter``: the force is read by a camera from a spring's
-                   deflection; its rolling shutter reads the rows in turn, so the force
-                   is delayed by a time that grows with the row its mark falls on, that
-                   is with the force itself
-drift              ``battery_magnet``: the gib is pressed by an electromagnet fed from a
-                   battery that discharges along Shepherd's curve (a quick first fall, a
-                   slow one, the knee towards exhaustion): levels that fall with the
-                   square of its voltage
-backlash           ``swing_shackle``: drive and contact are joined across the play by a
-                   hanging shackle: gravity on the swinging link pulls the contact after
-                   the drive by W tan theta, little in the play's middle, ever more
-                   towards its stops
-gms                ``hanging_shoe``: part of the friction is carried by a weighted shoe
-                   hung from the carriage on a swinging link: gravity pulls it along by
-                   W tan theta, soft at first and stiffening until the shoe slides; it
-                   unloads along the same path; at ``s`` = 0 the base
+acceleration       ``lanchester_damper``: the drive carries a heavy ring coupled by a
+                   slipping friction clutch: held, it follows as a mass; under a harder
+                   acceleration the clutch slips and drags the lagging ring up to speed:
+                   a force that follows the acceleration's sign, saturates and lingers
+load               ``brush_pads``: part of the load rests on brush pads whose bristles slide
+                   on their tips under a light load and are bent over onto their flanks,
+                   which grip harder, under a heavy one: levels that rise faster than the
+                   load
+asymmetry          ``peeled_tape``: an adhesive tape is laid on the way by the carriage
+                   moving towards -x and peeled off it moving towards +x, at a force that
+                   grows as a power of the peel rate: a one-way force from nothing at
+                   rest
+stribeck_shape     ``contact_charging``: the sliding charges the surfaces by contact
+                   electrification, more the faster (against the charge's leak, up to
+                   the air's breakdown); the image charges' pull adds to the load: the
+                   curve rises with the speed from nothing at rest
+position           ``dimpled_band``: a laser-textured band of micro-dimples on the way lifts
+                   the carriage hydrodynamically, the more the faster it slides over it:
+                   the friction falls over the band, by a share that grows with the
+                   speed
+inertia            ``speed_variator``: a flywheel driven through a centrifugal variator
+                   whose ratio falls with the speed: a reflected mass that falls steeply
+                   from rest to the top speed
+delay              ``pen_arc``: the force is read off a pen recorder's chart whose pen tip
+                   swings on an arc: a mark lands late along the chart by R (1 - cos
+                   theta), nothing at mid-scale and most at the extremes
+drift              ``sma_preload``: the gib is preloaded by a shape-memory wire heated by a
+                   current from the start: the preload stays put while it warms, rises
+                   along the martensite's turn to austenite and settles once done
+backlash           ``taut_string``: drive and contact are joined across the play by a taut
+                   string pushed sideways at its middle: a pull by its pretension for a
+                   small push, stiffening as the offset's cube towards the stops
+gms                ``mullins_shoe``: part of the friction is carried by a shoe held by a
+                   rubber block in shear that softens under each new largest strain (the
+                   Mullins effect): stiff at first, softer on later, smaller excursions;
+                   at ``s`` = 0 the base
 =================  =====================================================================
 
-Where a form applies: as its effect's record (``truth_applies``); ``spin_off`` needs a
-Stribeck curve (not the isolator's mre_lugre), ``rust_stain`` a record that revisits its
-positions (not the press), ``porous_bushing`` a load that changes, ``swing_shackle`` and
-``hanging_shoe`` a classic LuGre base (valve, damping rig, XML-350); each raises a
+Where a form applies: as its effect's record (``truth_applies``); ``contact_charging`` needs
+a Stribeck curve (not the isolator's mre_lugre), ``dimpled_band`` a record that revisits its
+positions (not the press), ``brush_pads`` a load that changes, ``taut_string`` and
+``mullins_shoe`` a classic LuGre base (valve, damping rig, XML-350); each raises a
 ``ValueError`` elsewhere. :data:`FORMS` names each effect's form.
 """
 from __future__ import annotations
@@ -80,63 +76,66 @@ from .truths import (_base_parts, _bump_centre, _contact_constants, _level,
                      _light_contact_step, _lugre_params, _presliding_path, _substeps,
                      has_stribeck_curve, level_inside, lugre_with_curve, on_fine_grid)
 
-__all__ = ["FORMS", "slip_coupling_truth", "porous_bushing_truth", "magnetic_conveyor_truth",
-           "spin_off_truth", "rust_stain_truth", "scissor_links_truth",
-           "rolling_shutter_truth", "battery_magnet_truth", "swing_shackle_truth",
-           "hanging_shoe_truth"]
+__all__ = ["FORMS", "lanchester_damper_truth", "brush_pads_truth", "peeled_tape_truth",
+           "contact_charging_truth", "dimpled_band_truth", "speed_variator_truth",
+           "pen_arc_truth", "sma_preload_truth", "taut_string_truth", "mullins_shoe_truth"]
 
 #: the family's form of each effect (its function is ``<form>_truth`` here)
-FORMS = {"acceleration": "slip_coupling", "load": "porous_bushing",
-         "asymmetry": "magnetic_conveyor", "stribeck_shape": "spin_off",
-         "position": "rust_stain", "inertia": "scissor_links",
-         "delay": "rolling_shutter", "drift": "battery_magnet",
-         "backlash": "swing_shackle", "gms": "hanging_shoe"}
+FORMS = {"acceleration": "lanchester_damper", "load": "brush_pads",
+         "asymmetry": "peeled_tape", "stribeck_shape": "contact_charging",
+         "position": "dimpled_band", "inertia": "speed_variator",
+         "delay": "pen_arc", "drift": "sma_preload",
+         "backlash": "taut_string", "gms": "mullins_shoe"}
 
 
 # -- acceleration ----------------------------------------------------------------------------
-#: ``slip_coupling``'s rise of the levels per unit of the coupling's loss over its 99th
-#: percentile along the record, at strength 1 [-]; the coupling's slip at the friction's
-#: thrust and the top speed [-]; the speed below which the coupling stalls, x the top speed
-#: [-]; the inertial thrust at the top acceleration, x the friction's thrust [-]
-FLUID_RISE, FLUID_SLIP, FLUID_STALL, FLUID_THRUST = 1.0, 0.1, 0.3, 1.0
+#: ``lanchester_damper``'s clutch slipping force at strength 1, x the Coulomb level [-]; the
+#: ring's inertial force at the top acceleration, x the clutch's slipping force [-]
+RING_SLIP, RING_MASS = 0.6, 2.0
 
 
-def _coupling_loss(u, w, slip, stall, thrust):
-    """The fluid coupling's loss [-] (over the friction's thrust) that the inertial thrust
-    adds, at the accelerations ``u`` [-] (over the top acceleration) and the speeds ``w``
-    [-] (over the top speed): the coupling passes the thrust T = 1 + ``thrust`` u sign(w)
-    (the friction's and the inertial force's) with a torque ~ sigma omega^2 at a small slip
-    sigma, so its slip is sigma = ``slip`` |T| / (w^2 + ``stall``^2) (at most 1: the
-    coupling stalls) and its loss |T| sigma (the slip's share of the power, turned into heat
-    in the oil); returned less the loss at T = 1 (no acceleration)."""
-    u = np.asarray(u, float)
-    w = np.asarray(w, float)
-    d = w * w + float(stall) ** 2
-    T = np.abs(1.0 + float(thrust) * u * np.sign(w))
-    return T * np.minimum(float(slip) * T / d, 1.0) - np.minimum(float(slip) / d, 1.0)
+@njit(cache=True)
+def _ring_force(t, v, mass, slip):
+    """The force [N] a friction-coupled ring of mass ``mass`` [kg] (its inertia reflected
+    to the carriage) puts on the carriage moving at ``v`` [m/s] at the times ``t`` [s]:
+    the ring's clutch holds it to the drive while its inertial force stays below the
+    slipping force ``slip`` [N]; beyond, the clutch slips and drags the ring towards the
+    drive's speed at ``slip`` / ``mass``, and the carriage feels ``slip`` towards the ring's
+    side. From rest with the drive."""
+    n = v.size
+    F = np.zeros(n)
+    u = v[0]
+    for k in range(1, n):
+        h = t[k] - t[k - 1]
+        need = mass * (v[k] - u) / h       # force to bring the ring to the drive's speed
+        if abs(need) <= slip:
+            F[k] = need
+            u = v[k]
+        else:
+            f = slip if need > 0.0 else -slip
+            F[k] = f
+            u = u + h * f / mass
+    return F
 
 
 @on_fine_grid
-def slip_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The axis' motor drives it through a hydrodynamic (Foettinger) fluid coupling, as on
-    conveyors and older heavy traverses: the pump wheel throws oil at the turbine wheel, and
-    the torque the coupling passes grows with its slip and with the square of its speed.
-    The coupling passes the friction's thrust and the carriage's inertial force m a, so it
-    slips by a share that grows with that thrust and falls as the square of the speed
-    (:func:`_coupling_loss`), and the slip's share of the power is lost in the oil: the
-    inertial force adds a loss that grows as (1 + a)^2 - 1 (less when the carriage
-    decelerates), largest at low speeds, where the coupling nearly stalls. The loss the
-    acceleration adds opposes the motion: the Coulomb and
-    Stribeck levels are the base's times 1 + ``s`` :data:`FLUID_RISE` x the loss over its
-    99th percentile along the record, inside the bristle dynamics; the viscous term is the
-    base's.
+def lanchester_damper_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The drive carries a Lanchester damper (a heavy ring on the motor's shaft, coupled to
+    it by a spring-loaded friction clutch, as damps a drive's torsional vibrations): while
+    the ring's inertial force stays below the clutch's slipping force the ring follows the
+    drive as a mass; under a harder acceleration the clutch slips, and the drive feels the
+    clutch's friction, pulling the lagging ring up to speed, until the ring catches up
+    (:func:`_ring_force`): a force that follows the acceleration's sign and saturates, and
+    lingers after it ends. The clutch slips at ``s`` :data:`RING_SLIP` x the Coulomb
+    level; the ring's inertial force at the top acceleration is :data:`RING_MASS` x that.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
+        The motion on the fine grid (t [s], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the coupled inertia's share, / its value at strength 1.
+        Amplitude factor [-]: the ring's inertia and its clutch's torque, / their values
+        at strength 1.
 
     Returns
     -------
@@ -145,68 +144,54 @@ def slip_coupling_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The fluid coupling's torque, proportional to the fluid's density, the fifth power of
-    its size and the square of its speed times a function of the slip, nearly linear at
-    small slips, and its efficiency 1 - slip (Foettinger 1905; Wolf 1962, Die
-    Stroemungskupplung; Hydrodynamic couplings in Voith's and Fluidrive's handbooks;
-    Pennestri et al. on the fluid coupling's characteristic). The candidate raises the
-    levels with |a|, lagged, tilts them with a and adds a force odd in a; the open forms
-    lag, age, heat, skid, load, press, attract, squeeze, transfer weight, slosh, dilate,
-    wedge, spring a gib, soften rubber, swing arms, unload by the jerk, tilt pads, push ball
-    trains, ripple the current, slide rack flanks, set a shoe, shut a damper's bypass, creep
-    a belt, rack a gantry, tighten a band, surge a feed line, load a traction drive, heat a
-    winding, unload a counterweight's rope, pump oil, slacken a belt's strand, lift a
-    preloaded nut's half off, bend a bowed screw, energise a cylinder's seals or pass a
-    worm mesh. Here the inertial force slips a hydrodynamic coupling, by more the slower it
-    turns.
+    The Lanchester (friction) torsional vibration damper, a flywheel ring coupled by a
+    slipping friction clutch, and its stick-slip under the drive's angular acceleration
+    (Den Hartog 1956, Mechanical Vibrations, ch. on the Lanchester damper; Nestorides 1958,
+    A Handbook on Torsional Vibration; Wilson 1956, Practical Solution of Torsional
+    Vibration Problems). The candidate raises the levels with |a|, lagged, tilts them with
+    a and adds a force odd in a; the open forms lag, age, heat, skid, load, press, slosh,
+    wedge, couple through fluids, belts, meshes, seals and bands. Here a ring held by a
+    slipping clutch is dragged up to the drive's speed.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    sc = kin.scales
-    u = np.asarray(kin.a, float) / max(sc["a99"], 1e-12)
-    w = np.asarray(kin.v, float) / max(sc["v99"], 1e-12)
-    loss = _coupling_loss(u, w, FLUID_SLIP, FLUID_STALL, FLUID_THRUST)
-    e = loss / max(float(np.percentile(np.abs(loss), 99)), 1e-12)
-    lev = np.maximum(1.0 + float(s) * FLUID_RISE * e, 0.05)
-    return level_inside(kin, lev, np.ones_like(lev))
+    slip = float(s) * RING_SLIP * _level(kin)
+    mass = RING_MASS * RING_SLIP * _level(kin) / max(kin.scales["a99"], 1e-12)
+    mass = float(s) * mass
+    return F + _ring_force(np.asarray(kin.t, float), np.asarray(kin.v, float), mass, slip)
 
 
 # -- load ------------------------------------------------------------------------------------
-#: ``porous_bushing``'s largest change of the levels with the bushing's friction, at
-#: strength 1 [-]; the load the bushing carries at no normal load, x the largest load [-];
-#: the film's thickness over the roughness at no load [-]; the pores' drain of the film per
-#: unit load (the bearing's permeability parameter) [-]; the friction coefficients of the
-#: asperities' contact and of the film [-]
-PORE_RISE, PORE_REST, PORE_FILM, PORE_DRAIN, PORE_MUB, PORE_MUF = (
-    0.5, 0.1, 3.0, 3.0, 0.15, 0.01)
+#: ``brush_pads``' largest change of the levels with the brushes' friction, at strength 1
+#: [-]; the load the pads carry at no normal load, x the largest load [-]; the load that
+#: bends the bristles half over, x the largest load [-]; the friction coefficients of the
+#: bristles' tips and of their flanks, laid on the way [-]
+BRUSH_RISE, BRUSH_REST, BRUSH_BEND, BRUSH_MUT, BRUSH_MUS = 0.5, 0.1, 0.6, 0.1, 0.6
 
 
-def _bushing_friction(w, rest, film, drain, mub, muf):
-    """The porous bushing's friction [-] (over its value at the largest load) at the loads
-    ``w`` [-] (x the largest; the bushing carries ``w`` + ``rest``): the film's pressure,
-    proportional to the load, drives its oil into the pores (Darcy), so the film's
-    thickness over the roughness falls as lambda = ``film`` / (1 + ``drain`` load); the
-    asperities carry the share 0.5 erfc(lambda / sqrt 2) (Gaussian heights) at ``mub``,
-    the film the rest at ``muf``."""
+def _brush_friction(w, rest, bend, mut, mus):
+    """The brush pads' friction [-] (over its value at the largest load) at the loads ``w``
+    [-] (x the largest; the pads carry ``w`` + ``rest``): each bristle, a cantilever pressed
+    on the way at its tip, bends over as the load grows, its tip angle's tangent growing as
+    the load over the bending stiffness; the share of its length laid flat on the way,
+    q = (load / (load + ``bend``))^2, slides on its flank at ``mus``, its tip at ``mut``."""
     q = (np.abs(np.asarray(w, float)) + float(rest)) / (1.0 + float(rest))
 
     def mu(load):
-        lam = float(film) / (1.0 + float(drain) * load)
-        share = 0.5 * np.vectorize(math.erfc)(lam / math.sqrt(2.0))
-        return float(muf) + (float(mub) - float(muf)) * share
+        lay = (load / (load + float(bend))) ** 2
+        return float(mut) + (float(mus) - float(mut)) * lay
     return q * mu(q) / mu(np.array(1.0))
 
 
 @on_fine_grid
-def porous_bushing_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage slides on oil-impregnated sintered bronze bushings (self-lubricating
-    porous bearings): the oil the pores release forms the film, but the film's pressure,
-    which grows with the load, drives its oil back into the pores through the bronze's
-    permeability (Darcy's law), so the film thins as the load grows and ever more of the
-    load falls on the asperities, whose friction is many times the film's
-    (:func:`_bushing_friction`): the friction grows faster than the load. The Coulomb and
-    Stribeck levels are the base's times 1 + ``s`` :data:`PORE_RISE` x the friction's
+def brush_pads_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Part of the carriage's load rests on brush pads (dense strips of nylon bristles, as
+    guide and wipe the carriage of some conveyors and cover plates): a light load bends the
+    bristles little and they slide on their tips, a heavy one bends them over until they
+    lie on the way along their flanks, which grip it many times harder
+    (:func:`_brush_friction`): the friction grows faster than the load. The Coulomb and
+    Stribeck levels are the base's times 1 + ``s`` :data:`BRUSH_RISE` x the friction's
     departure from its mean along the record, over its largest, inside the bristle
     dynamics; the viscous term is the base's.
 
@@ -215,8 +200,7 @@ def porous_bushing_truth(kin: PlantKinematics, s: float) -> np.ndarray:
     kin : PlantKinematics
         The motion on the fine grid and its base law, with the normal load [N].
     s : float
-        Amplitude factor [-]: the bushings' share of the friction, / its value at strength
-        1.
+        Amplitude factor [-]: the brushes' share of the friction, / its value at strength 1.
 
     Returns
     -------
@@ -230,74 +214,63 @@ def porous_bushing_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    Porous (oil-impregnated sintered) bearings, whose film loses oil into the bearing's
-    pores by Darcy flow at a rate set by their permeability (Morgan and Cameron 1957,
-    Mechanism of lubrication in porous metal bearings, Proc. Conf. Lubrication and Wear,
-    IMechE; Cameron, Morgan and Stainsby 1962, Critical conditions for hydrodynamic
-    lubrication of porous metal bearings, Proc. IMechE 176), and the asperities' share of
-    the load at a film thickness over the roughness lambda (Greenwood and Williamson 1966,
-    Contact of nominally flat surfaces, Proc. R. Soc. A 295; the mixed regime of the
-    Stribeck curve). The candidate makes the levels affine in the load, with a memory
-    over the travel; the open forms scale the friction with a Hertz contact's area, a
-    seal's, a film's, a junction's, a pivot's, an adhesive contact's or a pin's arc,
-    break, squeeze or desorb films, plough, creep, vibrate, overload or feed a constant
-    flow to a pad, heal scuffs, relieve a preload, roll on a lossy track, slip
-    differentially, spin balls, press a disc spring, skid lightly loaded rollers, bed a
-    rail, heat a liner by PV, shear a soft film under pressure, raise a film's viscosity
-    by the pressure, pass the load through a clamp's seal, load crowned rollers' ends, sink
-    wheels into a compacting track, sink a carriage onto its own wiper, close a magnet's
-    gap, amplify it through a toggle or lose the balls' elastic hysteresis. Here the load
-    drives the film's oil into the bushing's pores.
+    The bending of a brush's bristles as elastic cantilevers under a tip load and their
+    contact with the counterface along the tip or the flank (Timoshenko and Gere 1961,
+    Theory of Elastic Stability, the elastica; Chew and Hogg 1997, Porosity modeling of
+    brush seals, J. Tribol. 119, on bristle bending and friction in brush seals). The
+    candidate makes the levels affine in the load, with a memory over the travel; the open
+    forms scale the friction with contacts, films, junctions, pivots, seals, rolling
+    elements, pores, clamps or magnets, none with a contact that lays over. Here the load
+    lays bristles flat on the way.
     """
     L = np.abs(np.asarray(kin.load, float))
     Lmax = float(np.max(L)) or 1.0
     if not np.ptp(L) > 1e-9 * Lmax:
-        raise ValueError(f"load (porous_bushing): the {kin.plant} record's load does not "
+        raise ValueError(f"load (brush_pads): the {kin.plant} record's load does not "
                          f"change")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    g = _bushing_friction(L / Lmax, PORE_REST, PORE_FILM, PORE_DRAIN, PORE_MUB, PORE_MUF)
+    g = _brush_friction(L / Lmax, BRUSH_REST, BRUSH_BEND, BRUSH_MUT, BRUSH_MUS)
     e = g - float(np.mean(g))
     e = e / max(float(np.max(np.abs(e))), 1e-12)
-    lev = np.maximum(1.0 + float(s) * PORE_RISE * e, 0.05)
+    lev = np.maximum(1.0 + float(s) * BRUSH_RISE * e, 0.05)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- asymmetry -------------------------------------------------------------------------------
-#: ``magnetic_conveyor``'s largest pull at strength 1, x the Coulomb level [-]; the
-#: travelling field's speed towards +x, x the top speed [-]; the slip at which the pull
-#: peaks (the breakdown slip) [-]
-CONVEYOR_PULL, CONVEYOR_SPEED, CONVEYOR_BREAK = 0.6, 1.5, 0.3
+#: ``peeled_tape``'s peel force at the top speed, at strength 1, x the Coulomb level [-];
+#: the exponent of the adhesive's rate dependence [-]
+TAPE_PULL, TAPE_RATE = 0.6, 0.3
 
 
-def _induction_pull(w, speed, breakdown):
-    """The travelling field's pull [-] (over its largest) on a conducting plate moving at
-    the speeds ``w`` [-] (x the top speed) under a field travelling at ``speed``: the slip
-    sigma = (``speed`` - w) / ``speed`` and Kloss's relation 2 / (sigma / sigma_k + sigma_k
-    / sigma), sigma_k ``breakdown`` (0 at sigma = 0, odd in sigma)."""
-    sig = (float(speed) - np.asarray(w, float)) / float(speed)
-    sk = float(breakdown)
-    return 2.0 * sig * sk / (sig * sig + sk * sk)
+def _peel_force(w, rate):
+    """The tape's peel force [-] (x its value at the top speed, w = 1) at the speeds ``w``
+    [-] (x the top speed): moving towards +x the carriage peels the tape at the speed w, and
+    the adhesive's fracture energy grows as the peel rate's power ``rate`` (viscoelastic
+    loss at the peel front), the force being G / (1 - cos theta) per unit width at the
+    fixed peel angle theta (Rivlin's and Kendall's peel); moving towards -x the tape is
+    laid back without a force."""
+    w = np.maximum(np.asarray(w, float), 0.0)
+    return w ** float(rate)
 
 
 @on_fine_grid
-def magnetic_conveyor_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """A magnetic chip conveyor runs beneath the way: its magnets travel towards +x at a
-    constant speed under the carriage's conducting underside, and the eddy currents they
-    induce pull the carriage along as the field pulls an induction motor's rotor, by the
-    slip between the field and the carriage (Kloss's relation, :func:`_induction_pull`):
-    at rest a pull towards +x, moving with the field less, moving against it more and
-    then less past the breakdown slip. The pull, ``s`` :data:`CONVEYOR_PULL` x the
-    Coulomb level at the breakdown slip, helps the drive towards +x: the measured force is
-    the base law's less it.
+def peeled_tape_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A pressure-sensitive adhesive tape (a protective band over the way, as keeps chips
+    out of a slot) is laid on the way by a roller on the carriage moving towards -x and
+    peeled off it by the carriage moving towards +x: laying it back costs nothing, peeling
+    it costs the adhesive's fracture energy, which grows with the peel rate as a power
+    (the viscoelastic loss at the peel front; :func:`_peel_force`). The peel force, ``s``
+    :data:`TAPE_PULL` x the Coulomb level at the top speed, opposes the motion towards +x
+    only, and grows from nothing at rest as the speed's power :data:`TAPE_RATE`.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the field's strength squared, / its value at strength 1.
+        Amplitude factor [-]: the tape's width, / its value at strength 1.
 
     Returns
     -------
@@ -306,70 +279,59 @@ def magnetic_conveyor_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The force of a travelling magnetic field on a conductor by the slip between them, the
-    linear induction machine's thrust-slip curve and Kloss's relation for its breakdown
-    (Laithwaite 1966, Induction Machines for Special Purposes; Boldea and Nasar 1976,
-    Linear Motion Electromagnetic Systems; Fitzgerald, Kingsley and Umans 2003, Electric
-    Machinery, ch. on induction machines), and magnetic chip conveyors under machine
-    tools. The candidate gives each direction its levels and an offset; the open forms twin
-    the levels, the curves or the viscous term, bend a curve, roll a lip, load a thrust
-    bearing, film a rod seal, texture a ratchet, return a spring, tilt a pad, strut a
-    sprag, throttle a meter-out, differ a cylinder's areas, groove chevrons, buckle a
-    helix, scrape chips, commutate, idle a belt, free a roller, wick a felt, run a belt,
-    lean a brush, band a seal, counterbalance a valve, vibrate elliptically, diode a flow,
-    pitch pads, skew rollers, lift through a screw, turn the frame, angle a pull, adhere
-    by wedges, charge through a diode, drag a cup, flush coolant along the axis, cut one
-    way with a clapper tool, work a plunger pump or trail a hose. Here a travelling
-    magnetic field induces a pull that follows the slip between the field and the
-    carriage.
+    The peel test's force per unit width G / (1 - cos theta) (Rivlin 1944, The effective
+    work of adhesion, Paint Technol. 9; Kendall 1975, Thin-film peeling - the elastic term,
+    J. Phys. D 8) and the rate dependence of a viscoelastic adhesive's fracture energy,
+    G = G0 (1 + (v / v*)^n) (Gent and Petrich 1969, Adhesion of viscoelastic materials to
+    rigid substrates, Proc. R. Soc. A 310; Maugis and Barquins 1978, Fracture mechanics and
+    the adherence of viscoelastic bodies, J. Phys. D 11). The candidate gives each
+    direction its levels and an offset; the open forms twin levels, curves or viscous
+    terms, roll lips, tilt pads, strut sprags, throttle, groove, scrape, pump, drag a cup
+    or a hose, flush a stream or pull by a travelling field, none an adhesive's fracture.
+    Here the carriage peels a tape one way and lays it back the other.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     v99 = max(kin.scales["v99"], 1e-12)
     w = np.asarray(kin.v, float) / v99
-    return F - float(s) * CONVEYOR_PULL * _level(kin) * _induction_pull(
-        w, CONVEYOR_SPEED, CONVEYOR_BREAK)
+    return F + float(s) * TAPE_PULL * _level(kin) * _peel_force(w, TAPE_RATE)
 
 
 # -- stribeck_shape --------------------------------------------------------------------------
-#: ``spin_off``'s rise of the Stribeck curve where the film is flung off entirely, at
-#: strength 1, x the Coulomb level [-]; the spin-off's strength at the top speed (the
-#: thinning's rate over the wick's refill rate, at the film's full thickness) [-]
-SPIN_RISE, SPIN_RATE = 0.6, 12.0
+#: ``contact_charging``'s rise of the Stribeck curve once the charge reaches the air's
+#: breakdown, at strength 1, x the Coulomb level [-]; the speed at which the charge is half
+#: its limit, x the top speed [-]
+CHARGE_RISE, CHARGE_SPEED = 0.6, 0.25
 
 
-def _spun_film(w, rate):
-    """The drive's lubricant film [-] (x its thickness at rest) at the speeds ``w`` [-] (x
-    the top speed): a wick refills it towards its full thickness at the rate (1 - h) and the
-    centrifugal force flings it off at the rate ``rate`` w^2 h^3 (Emslie, Bonner and Peck's
-    thinning of a film on a spinning surface); at steady state 1 - h = ``rate`` w^2 h^3,
-    solved by Newton's method."""
-    c = float(rate) * np.asarray(w, float) ** 2
-    h = np.ones_like(c)
-    for _ in range(40):
-        f = 1.0 - h - c * h ** 3
-        h = h - f / (-1.0 - 3.0 * c * h * h)
-    return np.clip(h, 0.0, 1.0)
+def _contact_charge(w, speed):
+    """The sliding surfaces' charge [-] (x the air's breakdown limit) at the speeds ``w``
+    [-] (x the top speed): contact electrification separates charge at a rate proportional
+    to the area swept, |w|, and the charge leaks through the surfaces' resistance at a rate
+    proportional to itself, and is capped by the air's breakdown: at steady state
+    q = |w| / (|w| + ``speed``)."""
+    aw = np.abs(np.asarray(w, float))
+    return aw / (aw + float(speed))
 
 
 @on_fine_grid
-def spin_off_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The axis' drive (a screw or a pinion turning at a speed proportional to the
-    carriage's) carries the contact's lubricant on its surface, refilled by a wick; turning,
-    it flings the film off by the centrifugal force, which thins a film on a spinning
-    surface at a rate that grows as the square of the speed and the cube of the film's
-    thickness (:func:`_spun_film`): at rest the film is full, and ever faster it is thinner,
-    so the boundary friction it lubricated rises with the speed. The Stribeck curve is the
-    base's plus ``s`` :data:`SPIN_RISE` x the Coulomb level x the film's loss, inside the
-    LuGre dynamics.
+def contact_charging_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The carriage's polymer liner slides on the way and charges it by contact
+    electrification: the charge separated grows with the area swept per unit time, that is
+    with the speed, and leaks away through the surfaces' resistance, so the charge the
+    surfaces hold grows with the speed, towards the limit the air's breakdown sets
+    (:func:`_contact_charge`); the image charges pull the surfaces together with a pressure
+    that grows as the charge's square, and the friction grows with that pull. The Stribeck
+    curve is the base's plus ``s`` :data:`CHARGE_RISE` x the Coulomb level x the charge's
+    square, inside the LuGre dynamics: nothing at rest, rising with the speed.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the boundary friction the film saves, / its value at
+        Amplitude factor [-]: the electrostatic pull at the breakdown limit, / its value at
         strength 1.
 
     Returns
@@ -384,68 +346,69 @@ def spin_off_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The centrifugal thinning of a viscous film on a spinning surface, dh/dt = -(2 rho
-    omega^2 / 3 eta) h^3 (Emslie, Bonner and Peck 1958, Flow of a viscous liquid on a
-    rotating disk, J. Appl. Phys. 29; Meyerhofer 1978, J. Appl. Phys. 49), and the loss of
-    lubricant from rotating machine elements by fling-off (Harris and Kotzalas 2007,
-    Rolling Bearing Analysis, on lubricant starvation). The candidate's curve is Gaussian,
-    Lorentzian or an exponential tail; the open forms add tails, rationals, films that
-    lift, spikes, bimodal roughness, logs, Eyring, starvation, rubber hysteresis,
-    resonances, dither, melting, grains, readsorption, thermoviscous, turbulent and
-    thixotropic films, churning, core losses, breathing bellows, eddy brakes, shear
-    thinning, flying pads, wiping menisci, journals, wall slip, a closing clearance, a
-    dwell's squeeze, a pocket's suction, condensing menisci, flash heating, a peeled
-    adhesion, a measuring wheel's creep, a governor's shoes, a battery's dynamo, a floating
-    pawl or a dielectric pad. Here a spinning drive flings its film off, the faster it
-    turns.
+    Contact electrification (triboelectric charging) of sliding polymer-metal pairs, its
+    growth with the rubbed area and its decay by surface conduction, the charge density's
+    limit by the air's breakdown (Paschen's law), and the electrostatic pressure
+    sigma^2 / (2 epsilon0) adding to the normal load (Harper 1967, Contact and Frictional
+    Electrification; Lowell and Rose-Innes 1980, Contact electrification, Adv. Phys. 29;
+    Budakian and Putterman 2000, Correlation between charge transfer and stick-slip
+    friction at a metal-insulator interface, Phys. Rev. Lett. 85). The candidate's curve
+    is Gaussian, Lorentzian or an exponential tail; the open forms add tails, films,
+    melting, heating, churning, eddies, menisci, adhesion applied by an electrode and
+    others, none a charge the sliding makes itself. Here the sliding charges the surfaces,
+    the more the faster.
     """
     if not has_stribeck_curve(kin):
-        raise ValueError("stribeck_shape (spin_off): the mre_lugre base has no Stribeck "
-                         "curve")
+        raise ValueError("stribeck_shape (contact_charging): the mre_lugre base has no "
+                         "Stribeck curve")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     law = kin.base
     v99 = max(kin.scales["v99"], 1e-12)
-    add = float(s) * SPIN_RISE * _level(kin)
-    return lugre_with_curve(kin, lambda vv: law.g(vv) + add * (1.0 - _spun_film(
-        vv / v99, SPIN_RATE)))
+    add = float(s) * CHARGE_RISE * _level(kin)
+    return lugre_with_curve(kin, lambda vv: law.g(vv) + add * _contact_charge(
+        vv / v99, CHARGE_SPEED) ** 2)
 
 
 # -- position --------------------------------------------------------------------------------
-#: ``rust_stain``'s rise of the levels on the stain's rusted middle, at strength 1 [-]; the
-#: stain's half width, x the stroke [-]; the width of its edge, over which the rust thins
-#: (the moisture's diffusion length), x the stroke [-]
-RUST_RISE, RUST_HALF, RUST_EDGE = 0.5, 0.12, 0.05
+#: ``dimpled_band``'s largest fall of the levels over the textured band at the top speed, at
+#: strength 1 [-]; the band's half width and its edge's width, x the stroke [-]; the speed
+#: at which the dimples' lift carries half its largest share, x the top speed [-]
+DIMPLE_FALL, DIMPLE_HALF, DIMPLE_EDGE, DIMPLE_SPEED = 0.6, 0.15, 0.02, 0.3
 
 
-def _rust_cover(d, half, edge):
-    """The rust's cover [-] (1 on the stain's middle) at the distances ``d`` [-] (x the
-    stroke) from the stain's centre: the moisture that rusted the way spread from the
-    stain's edge by diffusion, so the cover falls as 0.5 erfc((|d| - ``half``) /
-    ``edge``)."""
+def _dimple_lift(d, w, half, edge, speed):
+    """The dimples' share of the load [-] at the distances ``d`` [-] (x the stroke) from the
+    band's centre and the speeds ``w`` [-] (x the top speed): the band's cover (a logistic
+    edge of width ``edge`` at the half width ``half``) times the micro-hydrodynamic lift of
+    each dimple, which grows with the speed as |w| / (|w| + ``speed``) (the pressure a
+    converging wedge builds, proportional to the viscosity and the speed, against the
+    asperities' share at low speeds)."""
     d = np.abs(np.asarray(d, float))
-    z = (d - float(half)) / float(edge)
-    return 0.5 * np.vectorize(math.erfc)(z)
+    cover = 1.0 / (1.0 + np.exp((d - float(half)) / float(edge)))
+    aw = np.abs(np.asarray(w, float))
+    return cover * aw / (aw + float(speed))
 
 
 @on_fine_grid
-def rust_stain_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Coolant or condensed water stood on a stretch of the bare way while the machine was
-    idle and rusted it: the iron oxide (a rough, hard layer of hematite and its pits)
-    raises the friction over the stain, with an edge that fades over the moisture's
-    diffusion length (:func:`_rust_cover`). The Coulomb and Stribeck levels are the base's
-    times 1 + ``s`` :data:`RUST_RISE` x the cover's departure from its mean along the
-    record, over its largest, inside the bristle dynamics; the viscous term is the base's.
-    The stain is centred where both the fit and the held-out part of the record pass
-    (:func:`.truths._bump_centre`).
+def dimpled_band_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """A band of the way was laser-textured with shallow micro-dimples (a repair or a
+    trial of surface texturing): each dimple is a small hydrodynamic bearing whose
+    converging side builds a pressure that grows with the sliding speed, and a reservoir
+    of oil, so over the band the film carries a share of the load that grows with the
+    speed and the asperities' friction falls (:func:`_dimple_lift`); off the band the way
+    is the plain ground one. The Coulomb and Stribeck levels are the base's times 1 -
+    ``s`` :data:`DIMPLE_FALL` x that share, inside the bristle dynamics; the viscous term
+    is the base's. The band is centred where both the fit and the held-out part of the
+    record pass (:func:`.truths._bump_centre`).
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m]) and its base law.
+        The motion on the fine grid (x [m], v [m/s]) and its base law.
     s : float
-        Amplitude factor [-]: the rust's rise of the friction, / its value at strength 1.
+        Amplitude factor [-]: the dimples' lift, / its value at strength 1.
 
     Returns
     -------
@@ -459,75 +422,68 @@ def rust_stain_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The atmospheric corrosion of steel under a standing water film and the friction of
-    rusted steel surfaces, higher and rougher than bare ones (Evans 1960, The Corrosion and
-    Oxidation of Metals; Leygraf and Graedel 2000, Atmospheric Corrosion; Stachowiak and
-    Batchelor 2013, Engineering Tribology, ch. on corrosive wear), and the spread of a
-    stain's moisture by diffusion (Crank 1975, The Mathematics of Diffusion). The candidate
-    scales the friction along the stroke and adds a force of the position; the open forms
-    put defects, waviness, wear, runout, bends, films, cogging, tapers, pockets, cushions,
-    covers, springs, holes, plungers, sags, festoons, curves, chains, cams, heat, dents,
-    joints, misalignment, flow forces, cranks, overhangs, a track's end, a reel, a way's
-    flatness, conductive strips, a guide's ball passage, a steel insert, a screw's lead
-    error, a rack's mesh, a draining film, hardened zones, a band of grit or a wet patch's
-    menisci on the stroke. Here the way itself has corroded where water stood on it.
+    Laser surface texturing, whose micro-dimples act as micro-hydrodynamic bearings and
+    lubricant reservoirs and lower the friction of lubricated sliding, the more the faster
+    it slides (Etsion 2005, State of the art in laser surface texturing, J. Tribol. 127;
+    Ryk, Kligerman and Etsion 2002, Experimental investigation of laser surface texturing
+    for reciprocating automotive components, Tribol. Trans. 45; Hamilton, Walowit and
+    Allen 1966, A theory of lubrication by microirregularities, J. Basic Eng. 88). The
+    candidate scales the friction along the stroke and adds a force of the position; the
+    open forms put defects, waviness, wear, films, grit, rust or water on it, none of
+    them a lift that grows with the speed. Here a textured band lifts the carriage the
+    more, the faster it slides over it.
     """
     c = _bump_centre(kin)
     if c is None:
-        raise ValueError(f"position (rust_stain): the held-out part of the {kin.plant} "
+        raise ValueError(f"position (dimpled_band): the held-out part of the {kin.plant} "
                          f"record never revisits the positions of its fit part")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     sc = kin.scales
     span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
-    b = _rust_cover((np.asarray(kin.x, float) - c) / span, RUST_HALF, RUST_EDGE)
-    p = b - float(np.mean(b))
-    p = p / max(float(np.max(np.abs(p))), 1e-12)
-    lev = np.maximum(1.0 + float(s) * RUST_RISE * p, 0.05)
+    w = np.asarray(kin.v, float) / max(sc["v99"], 1e-12)
+    lift = _dimple_lift((np.asarray(kin.x, float) - c) / span, w, DIMPLE_HALF, DIMPLE_EDGE,
+                        DIMPLE_SPEED)
+    lev = np.maximum(1.0 - float(s) * DIMPLE_FALL * lift, 0.05)
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- inertia ---------------------------------------------------------------------------------
-#: ``scissor_links``' mass of the links' vertical motion at mid-stroke, at strength 1, x
-#: the friction level / a99 [kg per N s^2/m]; the scissor's cells [-]; its extension per
-#: cell over the links' length at the stroke's ends [-]
-SCISSOR_MASS, SCISSOR_CELLS, SCISSOR_LO, SCISSOR_HI = 0.5, 6, 0.45, 0.92
+#: ``speed_variator``'s reflected mass at rest, at strength 1, x the friction level / a99
+#: [kg per N s^2/m]; the variator's shift of its ratio at the top speed (i = i0 / (1 + c
+#: w^2)) [-]; the largest speed the shift follows, x the top speed [-]
+VARIATOR_MASS, VARIATOR_SHIFT, VARIATOR_TOP = 0.5, 0.5, 1.2
 
 
-def _scissor_mass(q, cells, lo, hi):
-    """The scissor's reflected mass [-] (x its value at mid-stroke) and its derivative over
-    the carriage's position (x the stroke) at the stroke's shares ``q`` [-]: each cell's
-    extension over the links' length e = ``lo`` + (``hi`` - ``lo``) q, its height h =
-    sqrt(1 - e^2), so the links' centres rise and fall at (e / h) / ``cells`` of the
-    carriage's speed, and their kinetic energy reflects the mass (e / h)^2 (the links'
-    horizontal motion, a constant mass, is left out)."""
-    q = np.asarray(q, float)
-    e = float(lo) + (float(hi) - float(lo)) * q
-    r = e * e / (1.0 - e * e)
-    de = (float(hi) - float(lo))
-    dr = 2.0 * e * de / (1.0 - e * e) ** 2
-    em = 0.5 * (float(lo) + float(hi))
-    rm = em * em / (1.0 - em * em)
-    return r / rm, dr / rm
+def _variator_mass(w, shift, top):
+    """The variator's reflected mass [-] (x its value at rest) at the speeds ``w`` [-] (x
+    the top speed): the flywheel turns at i(w) v, the ratio i = 1 / (1 + ``shift`` w^2)
+    falling as the variator's flyweights open its sheaves; its torque J d(i v)/dt, passed
+    back through the ratio i, is a force J i (i + w i'(w)) a = J a (1 - c w^2) / (1 + c
+    w^2)^3, c ``shift`` (speeds beyond ``top`` held at ``top``)."""
+    c = float(shift)
+    w2 = np.minimum(np.asarray(w, float) ** 2, float(top) ** 2)
+    return (1.0 - c * w2) / (1.0 + c * w2) ** 3
 
 
 @on_fine_grid
-def scissor_links_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The carriage stretches a scissor linkage (lazy tongs, as carry a way cover's or a
-    cable's weight on long axes): its cells open as the carriage moves away, and their links
-    fold down as they stretch, so their centres move up and down at a speed proportional to
-    the carriage's, by e / h (the cells' extension over their height), which grows without
-    bound as they near straight (:func:`_scissor_mass`). Their kinetic energy reflects a
-    mass m(x) onto the carriage that grows along the stroke, and Lagrange's equations add
-    m'(x) v^2 / 2 to m(x) a.
+def speed_variator_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The axis' drive turns a flywheel (a machine's heavy pulley or a tool's spindle mass)
+    through a speed-dependent variator (a centrifugal variator, as shifts a scooter's belt
+    drive): as the speed grows its flyweights open the sheaves and the ratio falls, so the
+    flywheel is reflected to the carriage with a mass that falls with the speed, and the
+    ratio's own change with the speed takes part of the flywheel's torque
+    (:func:`_variator_mass`): an inertial force m(v) a with a mass that falls steeply from
+    rest to the top speed. The mass at rest is ``s`` :data:`VARIATOR_MASS` x the friction
+    level / the top acceleration.
 
     Parameters
     ----------
     kin : PlantKinematics
-        The motion on the fine grid (x [m], v [m/s], a [m/s^2]) and its base law.
+        The motion on the fine grid (v [m/s], a [m/s^2]) and its base law.
     s : float
-        Amplitude factor [-]: the links' mass, / its value at strength 1.
+        Amplitude factor [-]: the flywheel's inertia, / its value at strength 1.
 
     Returns
     -------
@@ -536,55 +492,59 @@ def scissor_links_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The kinematics of the lazy-tongs (scissor) mechanism and the reflected, position
-    dependent inertia of a linkage, with the velocity-squared term of Lagrange's equations
-    for a configuration-dependent mass (Hartenberg and Denavit 1964, Kinematic Synthesis of
-    Linkages; Uicker, Pennock and Shigley 2011, Theory of Machines and Mechanisms, ch. on
-    the dynamics of mechanisms, the equivalent mass; Doughty 1988, Mechanics of Machines).
-    The candidate misses a constant mass; the open forms filter it, reflect it through
-    gearing, a chain, a pinion or a screw, hang it on a spring, a cable, a fluid, a clutch,
-    a coupling, a flyweight, a friction-damped, quasi-zero-stiffness, hose's, elastomer or
-    magnetic mount, surge a spring, add a fluid's mass, pick, drop, empty, slide, rattle,
-    telescope, roll or rock it, recoil a frame, saturate a motor, lead a feedforward, pitch
-    a scale, radiate waves, swing it on a rod, slide it in a dish, swing a liquid in a
-    tube, amplify a fluid's mass in an inerter, store it as a shunted coil's charge,
-    reflect it through a Scotch yoke or through a winch drum's layers. Here the links of a
-    scissor rise and fall ever faster as it stretches.
+    The reflected inertia J i^2 of a flywheel behind a transmission of ratio i, and of a
+    continuously variable one whose ratio is set by the speed (a centrifugally shifted
+    V-belt variator), J i (i + v di/dv) (Srivastava and Haque 2009, A review on belt and
+    chain continuously variable transmissions (CVT): dynamics and control, Mech. Mach.
+    Theory 44; Doughty 1988, Mechanics of Machines, the equivalent mass of a drive). The
+    candidate misses a constant mass; the open forms filter it, gear it, hang, slide,
+    roll, rock, swing or pick it, reflect it through linkages, yokes, winches or scissors,
+    none through a ratio the speed sets. Here a variator's ratio falls with the speed.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     sc = kin.scales
-    a99 = max(sc["a99"], 1e-12)
-    span = max(sc["x_hi"] - sc["x_lo"], 1e-12)
-    q = np.clip((np.asarray(kin.x, float) - sc["x_lo"]) / span, 0.0, 1.0)
-    m, dm = _scissor_mass(q, SCISSOR_CELLS, SCISSOR_LO, SCISSOR_HI)
-    M = float(s) * SCISSOR_MASS * _level(kin) / a99
-    v = np.asarray(kin.v, float)
-    return F + M * (m * np.asarray(kin.a, float) + 0.5 * dm / span * v * v)
+    w = np.asarray(kin.v, float) / max(sc["v99"], 1e-12)
+    M = float(s) * VARIATOR_MASS * _level(kin) / max(sc["a99"], 1e-12)
+    return F + M * _variator_mass(w, VARIATOR_SHIFT, VARIATOR_TOP) * np.asarray(kin.a, float)
 
 
 # -- delay -----------------------------------------------------------------------------------
-#: ``rolling_shutter``'s delay across the frame (the top row's read-out after the bottom
-#: row's) at strength 1 [data samples]; the delay of the frame's first row [data samples]
-SHUTTER_SPAN, SHUTTER_FIRST = 3.0, 0.5
+#: ``pen_arc``'s lag of the pen's mark at its largest swing, at strength 1 [data samples];
+#: the pen arm's largest swing [rad]
+PEN_SPAN, PEN_SWING = 3.0, 0.7
+
+
+def _arc_lag(y, swing):
+    """The lag [-] (x its value at the largest swing) of a pen's mark along the chart at the
+    pen's deflections ``y`` [-] (x the largest, across the chart): the pen on an arm of
+    length R swings by theta, sin theta = y sin(``swing``), and its tip trails along the
+    chart by R (1 - cos theta) behind where a straight pen would write."""
+    q = np.clip(np.asarray(y, float), -1.0, 1.0) * math.sin(float(swing))
+    return (1.0 - np.sqrt(1.0 - q * q)) / (1.0 - math.cos(float(swing)))
 
 
 @on_fine_grid
-def rolling_shutter_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The force is read by a camera from the deflection of a calibrated spring (an optical
-    force gauge): its CMOS sensor's rolling shutter exposes and reads the frame row by row,
-    so the spring's mark is captured at a time that depends on the image row it falls on,
-    that is on the force itself. The force at ``t`` is the base law's at ``t`` - tau, tau =
-    ``s`` (:data:`SHUTTER_FIRST` + :data:`SHUTTER_SPAN` x the mark's row share) data
-    samples, the row share the force's share of its range along the record.
+def pen_arc_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The force is written by a pen recorder (a galvanometric chart recorder) and read off
+    the chart as if its trace were drawn on straight lines across it: the pen's arm swings
+    about a pivot, so its tip writes on an arc, and a mark far from the chart's middle
+    lands further along the chart than a straight pen would put it - read, the force comes
+    late by a time that grows with its deflection from the chart's middle
+    (:func:`_arc_lag`), nothing at mid-scale. The pen is centred on the middle of the
+    force's range along the record and swings by :data:`PEN_SWING` at its ends; the lag
+    there is ``s`` :data:`PEN_SPAN` data samples. The force read at ``t`` is the base
+    law's at ``t`` - tau, tau the lag at the deflection read there (the lag changes little
+    over one lag).
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the rows' read-out time, / its value at strength 1.
+        Amplitude factor [-]: the chart's time per unit of length, / its value at strength
+        1.
 
     Returns
     -------
@@ -593,67 +553,60 @@ def rolling_shutter_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The rolling shutter of CMOS image sensors, which exposes and reads a frame's rows in
-    turn, and the skew it puts on a moving object's image by the row's time (Liang, Chang
-    and Chen 2008, Analysis and compensation of rolling shutter effect, IEEE Trans. Image
-    Process. 17; Ait-Aider et al. 2006, Simultaneous object pose and velocity computation
-    using a single view from a rolling shutter camera, ECCV), and force measurement by a
-    camera reading a flexure's deflection. The candidate shifts the force in time or lags
+    The curvilinear recording of galvanometric and potentiometric pen recorders, whose
+    pen tip moves on an arc and displaces a mark along the time axis by R (1 - cos theta)
+    (Doebelin 2004, Measurement Systems: Application and Design, ch. on graphic recorders;
+    Bentley 2005, Principles of Measurement Systems; Webster 1998, Medical Instrumentation,
+    on curvilinear strip-chart recorders). The candidate shifts the force in time or lags
     it through a first-order filter; the open forms delay, filter, average, stamp,
-    decimate, hold, skew, jitter, limit the slew, pipe, take medians, report on a dead
-    band, sample positions, run a belt, aerate, drop telegrams, leak, creep, notch, track,
-    snub, time a waveguide's pulse, diffuse eddy currents, count a resonator, sweep a
-    grating, restore a force by a servo, interleave converters, balance a pneumatic cell,
-    count out a dual slope, adapt a filter's time constant, round in integer arithmetic,
-    fit a polynomial, observe a disturbance, average two taps half a period apart, fuse a
-    late fine channel with a fast coarse one, send it by sound or pass it through a bucket
-    brigade. Here the delay depends on where the force's mark falls in the frame.
+    decimate, hold, skew, pipe, transmit, observe, fuse, buffer or read a rolling shutter,
+    none a pen's arc. Here the force's own deflection sets how late its mark lands.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     t = np.asarray(kin.t, float)
     lo, hi = float(np.min(F)), float(np.max(F))
-    row = (F - lo) / max(hi - lo, 1e-300)
-    tau = float(s) * (SHUTTER_FIRST + SHUTTER_SPAN * row) * kin.sample_dt
+    y = (2.0 * F - lo - hi) / max(hi - lo, 1e-300)
+    tau = float(s) * PEN_SPAN * kin.sample_dt * _arc_lag(y, PEN_SWING)
     return np.interp(t - tau, t, F, left=F[0])
 
 
 # -- drift -----------------------------------------------------------------------------------
-#: ``battery_magnet``'s fall of the levels at the record's end, at strength 1 [-]; the
-#: battery's charge drawn over the record, x its capacity [-]; Shepherd's polarisation
-#: constant and exponential zone's amplitude, x the open-circuit voltage [-], and the
-#: exponential zone's inverse charge, x 1 / the capacity [-]
-BATT_FALL, BATT_DRAW, BATT_K, BATT_A, BATT_B = 0.5, 0.9, 0.04, 0.08, 30.0
+#: ``sma_preload``'s rise of the levels once the wire is wholly austenite, at strength 1
+#: [-]; the wire's heating time constant, x the record's duration [-]; its steady
+#: temperature rise and its austenite start and finish temperatures, x that rise [-]
+SMA_RISE, SMA_TAU, SMA_AS, SMA_AF = 0.5, 0.35, 0.3, 0.85
 
 
-def _battery_voltage(tr, draw, k, a, b):
-    """A battery's voltage [-] (x its value at the start) at the times ``tr`` [-] (x the
-    record's duration) under a constant current drawing ``draw`` of its capacity over the
-    record (Shepherd's discharge curve: E0 - K Q / (Q - i t) + A exp(-B i t), the
-    exponential zone's quick first fall, the nominal zone's slow one and the knee towards
-    exhaustion)."""
-    q = float(draw) * np.asarray(tr, float)
-    e = 1.0 - float(k) * q / (1.0 - q) + float(a) * (np.exp(-float(b) * q) - 1.0)
-    return e
+def _austenite_share(tr, tau, a_s, a_f):
+    """The shape-memory wire's austenite share [-] at the times ``tr`` [-] (x the record's
+    duration): heated from the start by a constant current, its temperature rises as 1 -
+    exp(-``tr`` / ``tau``) (x its steady rise; Newton's cooling), and the martensite turns
+    to austenite between ``a_s`` and ``a_f`` of that rise along Liang and Rogers' cosine,
+    0.5 (1 - cos(pi (T - As) / (Af - As)))."""
+    T = 1.0 - np.exp(-np.asarray(tr, float) / float(tau))
+    q = np.clip((T - float(a_s)) / (float(a_f) - float(a_s)), 0.0, 1.0)
+    return 0.5 * (1.0 - np.cos(math.pi * q))
 
 
 @on_fine_grid
-def battery_magnet_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """The gib is pressed by an electromagnet fed from a battery (a portable or a backed-up
-    clamp): its pull grows as the square of its current, and the current follows the
-    battery's voltage, which falls as the battery discharges along Shepherd's curve - a
-    quick first fall, a long slow one and the knee towards exhaustion
-    (:func:`_battery_voltage`). The levels fall with the pull: the Coulomb and Stribeck
-    levels are the base's times 1 - ``s`` :data:`BATT_FALL` x the pull's loss over its loss
-    at the record's end, inside the bristle dynamics; the viscous term is the base's.
+def sma_preload_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """The gib is preloaded by a shape-memory alloy (nickel-titanium) wire actuator,
+    switched on with the axis: the current heats the wire towards a steady temperature,
+    and between its austenite start and finish temperatures its martensite turns to
+    austenite, recovering the wire's strain against the gib's spring - the preload stays
+    put while the wire warms, then rises along the transformation and settles once it is
+    complete (:func:`_austenite_share`). The Coulomb and Stribeck levels are the base's
+    times 1 + ``s`` :data:`SMA_RISE` x the austenite share, inside the bristle dynamics;
+    the viscous term is the base's.
 
     Parameters
     ----------
     kin : PlantKinematics
         The motion on the fine grid (t [s]) and its base law.
     s : float
-        Amplitude factor [-]: the magnet's share of the preload, / its value at strength 1.
+        Amplitude factor [-]: the wire's share of the preload, / its value at strength 1.
 
     Returns
     -------
@@ -662,62 +615,60 @@ def battery_magnet_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The battery's discharge curve (Shepherd 1965, Design of primary and secondary cells II.
-    An equation describing battery discharge, J. Electrochem. Soc. 112; Tremblay, Dessaint
-    and Dekkiche 2007, A generic battery model for the dynamic simulation of hybrid
-    electric vehicles, IEEE VPPC) and an electromagnet's pull, proportional to the square
-    of its ampere-turns (Roters 1941, Electromagnetic Devices). The candidate is a trend, a
-    saturating change, a step, a cycle, a resetting change or the friction power's heat;
-    the open forms warm up, wear in, change, heat, wear, follow the humidity, grind,
-    relubricate, relax, oxidise, deplete, wear through, swell, build films, take in
-    particles, expand, shear down, heat magnets, charge, creep, loosen, dewet, channel,
-    drain, spall, evaporate, pump down, settle an additive, crystallise wax, bleed a
-    grease's oil, cycle a thermostat, glaze a lining, form a tribolayer, grow frost, charge
-    an electrostatic clamp, warm a solenoid's coil, relax a magnet's domains or leak a
-    bladder's air. Here a battery discharges under its magnet.
+    The shape-memory effect and the recovery stress of a heated, prestrained NiTi wire,
+    with the martensite-austenite share along Liang and Rogers' cosine law (Liang and
+    Rogers 1990, One-dimensional thermomechanical constitutive relations for shape memory
+    materials, J. Intell. Mater. Syst. Struct. 1; Otsuka and Wayman 1998, Shape Memory
+    Materials; Lagoudas 2008, Shape Memory Alloys), the wire's Joule heating against
+    Newton's cooling. The candidate is a trend, a saturating change, a step, a cycle, a
+    resetting change or the friction power's heat; the open forms warm, wear, age, swell,
+    charge, creep, relax, leak, discharge or evaporate, none of them a solid-state phase
+    change. Here a wire's martensite turns to austenite under its heating current.
     """
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     t = np.asarray(kin.t, float)
     tr = (t - t[0]) / max(float(t[-1] - t[0]), 1e-300)
-    u = _battery_voltage(tr, BATT_DRAW, BATT_K, BATT_A, BATT_B)
-    loss = 1.0 - u * u
-    lev = np.maximum(1.0 - float(s) * BATT_FALL * loss / max(float(loss[-1]), 1e-12), 0.05)
+    xi = _austenite_share(tr, SMA_TAU, SMA_AS, SMA_AF)
+    lev = 1.0 + float(s) * SMA_RISE * xi
     return level_inside(kin, lev, np.ones_like(lev))
 
 
 # -- backlash --------------------------------------------------------------------------------
-#: ``swing_shackle``'s play at strength 1, as a share of the stroke (its full width between
-#: the stops) [-]; the shackle's gravity pull at the stops, x the Coulomb level [-]; the
-#: shackle's swing at the stops [rad]
-SHACKLE_CLEAR, SHACKLE_PULL, SHACKLE_SWING = 0.0003, 0.6, 1.0
+#: ``taut_string``'s play at strength 1, as a share of the stroke (its full width between
+#: the stops) [-]; the string's pull at the stops, x the Coulomb level [-]; its
+#: pretension's share of that pull [-]; each half's length, x the play's half width [-]
+STRING_CLEAR, STRING_PULL, STRING_PRE, STRING_LEN = 0.0003, 0.6, 0.05, 1.0
 
 
 @njit(cache=True)
-def _shackle_force(e, half, pull, swing):
-    """The hanging shackle's pull [N] at the offset ``e`` [m] of the drive from the contact
-    inside the play of half-width ``half`` [m]: a link of length half / sin(``swing``)
-    hung from the drive with its load on the contact swings by theta, sin theta = e /
-    length, and gravity pulls the contact along by W tan theta, ``pull`` [N] at the stops
-    (W = ``pull`` / tan ``swing``)."""
-    length = half / math.sin(swing)
-    q = e / length
-    if q > math.sin(swing):
-        q = math.sin(swing)
-    elif q < -math.sin(swing):
-        q = -math.sin(swing)
-    return pull / math.tan(swing) * q / math.sqrt(1.0 - q * q)
+def _string_force(e, half, pull, pre, length):
+    """The taut string's pull [N] at the offset ``e`` [m] of the drive from the contact
+    inside the play of half-width ``half`` [m]: a string anchored on the contact at both
+    ends, each half ``length`` x ``half`` long, is pushed sideways at its middle by the
+    drive; each half stretches to sqrt(l^2 + e^2), its tension the pretension plus the
+    stretch's elastic force, and the two halves pull back by 2 T e / sqrt(l^2 + e^2):
+    nearly nothing for a small push, stiffening as the cube of the offset (the string's
+    geometric stiffening), ``pull`` [N] at the stops, ``pre`` of it from the pretension."""
+    l = length * half
+    r = math.sqrt(l * l + half * half)
+    # tension at the stops from the pull there, of which the pretension's share
+    t_stop = pull * r / (2.0 * half)
+    t0 = pre * t_stop
+    k = (t_stop - t0) / (r - l)
+    d = math.sqrt(l * l + e * e)
+    return 2.0 * (t0 + k * (d - l)) * e / d
 
 
 @njit(cache=True)
-def _shackle_contact(h, xd, half, pull, swing, kh, ch, m, s0, s1, s2, Fc, Fs, vs, alpha,
-                     shape):
+def _string_contact(h, xd, half, pull, pre, length, kh, ch, m, s0, s1, s2, Fc, Fs, vs, alpha,
+                    shape):
     """LuGre friction [N] of a light contact of mass ``m`` [kg] driven by the drive positions
     ``xd`` [m] (steps ``h`` [s]) through a play of half-width ``half`` [m] between rigid
     stops (a spring ``kh`` [N/m] and damper ``ch`` [N s/m], compressive only), across which
-    a hanging shackle pulls the contact towards the drive (:func:`_shackle_force`). From
-    rest, the drive in the play's middle. Semi-implicit Euler of the contact, its bristle
+    a taut string pulls the contact towards the drive (:func:`_string_force`). From rest,
+    the drive in the play's middle. Semi-implicit Euler of the contact, its bristle
     exact."""
     nn = xd.size
     F = np.empty(nn)
@@ -728,7 +679,7 @@ def _shackle_contact(h, xd, half, pull, swing, kh, ch, m, s0, s1, s2, Fc, Fs, vs
         vd = (xd[j] - xd[j - 1]) / h if j > 0 else 0.0
         e = xd[j] - x
         ed = vd - v
-        fc = _shackle_force(e, half, pull, swing)
+        fc = _string_force(e, half, pull, pre, length)
         if e > half:
             f2 = kh * (e - half) + ch * ed
             if f2 > 0.0:
@@ -744,15 +695,15 @@ def _shackle_contact(h, xd, half, pull, swing, kh, ch, m, s0, s1, s2, Fc, Fs, vs
 
 
 @on_fine_grid
-def swing_shackle_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Drive and contact are joined across a play of width ``s``^2 :data:`SHACKLE_CLEAR` x
-    the stroke by a hanging shackle (a swinging link, as hangs a leaf spring's end or a
-    trolley's load): the link hangs from the drive and bears on the contact, and as the
-    drive moves across the play the link swings out and gravity pulls the contact after
-    it by W tan theta, little near the play's middle and ever more towards its stops
-    (:data:`SHACKLE_PULL` x the Coulomb level there; :func:`_shackle_force`,
-    :func:`_shackle_contact`): the lost motion is taken up by a pull that stiffens across
-    the play, and the contact may be dragged before the stop is reached.
+def taut_string_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Drive and contact are joined across a play of width ``s``^2 :data:`STRING_CLEAR` x
+    the stroke by a taut string (a steel wire anchored on the contact at both ends and
+    pushed sideways at its middle by a pin on the drive, as some instruments' and models'
+    anti-rattle strings are): a small push barely stretches it and it pulls back by its
+    pretension's share only; a larger one stretches both halves and the pull stiffens as
+    the offset's cube (:func:`_string_force`, :data:`STRING_PULL` x the Coulomb level at
+    the stops; :func:`_string_contact`): the lost motion is taken up by a pull that
+    stiffens across the play, nothing like a spring's linear one.
 
     Parameters
     ----------
@@ -773,85 +724,80 @@ def swing_shackle_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The pendulum's (a swinging link's) horizontal restoring force W tan theta under a load
-    W, as in a leaf spring's shackle or a hanging load's swing (Den Hartog 1961, Mechanics,
-    ch. on statics of hanging links; Gillespie 1992, Fundamentals of Vehicle Dynamics, on
-    spring shackles), and lost motion in mechanisms (Nordin and Gutman 2002, Controlling
+    The transverse force of a pretensioned elastic string pushed at its middle, 2 T sin
+    theta with the tension growing with the stretch, linear for small offsets under its
+    pretension and cubic beyond (geometric nonlinearity; Timoshenko and Gere 1961, Theory
+    of Elastic Stability; Nayfeh and Mook 1979, Nonlinear Oscillations, the string's
+    cubic stiffness), and lost motion in mechanisms (Nordin and Gutman 2002, Controlling
     mechanical systems with backlash - a survey, Automatica 38). The candidate holds or
-    frees the contact across a rigid play; the open forms take it up rigidly, compliantly,
-    by impact, against a spring, eccentrically, through oil, worn, with a dragging idler,
-    biased, slack, magnetic, preloaded, through a flexspline, a rope, a spider, a fluid
-    link, a cable, a clutch, a varying mesh, a polymer gear, grease, a wedge, an
-    overlapped spool, a side loaded pin, a toggle spring, graded pins, an adhesive flank,
-    packed powder, a floating part between two plays, trapped air, a ball detent, magnets
-    on the flanks, a play that warms shut, a shear-thickening fluid, an eddy-current
-    damper, foam on the flanks or a liquid bridge. Here gravity on a swinging link pulls
-    the contact across the play.
+    frees the contact across a rigid play; the open forms take it up rigidly,
+    compliantly, by impact, against springs, through oil, rope, cable, grease, air,
+    foam, liquid bridges, magnets, detents or a swinging link. Here a string stretched
+    across the play pulls back as it is pushed sideways.
     """
-    p = _lugre_params(kin, "backlash (swing_shackle)")
+    p = _lugre_params(kin, "backlash (taut_string)")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
-    half = 0.5 * float(s) ** 2 * SHACKLE_CLEAR * float(np.ptp(kin.x))
-    pull = SHACKLE_PULL * float(p.Fc)
+    half = 0.5 * float(s) ** 2 * STRING_CLEAR * float(np.ptp(kin.x))
+    pull = STRING_PULL * float(p.Fc)
     m, kh, ch = _contact_constants(kin, p)
     rate = max(math.sqrt(kh / m), (float(p.sigma1) + float(p.sigma2) + ch) / m)
     h, xd, n_sub = _substeps(kin, rate)
-    Fr = _shackle_contact(h, xd, half, pull, SHACKLE_SWING, kh, ch, m,
-                          float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
-                          float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
+    Fr = _string_contact(h, xd, half, pull, STRING_PRE, STRING_LEN, kh, ch, m,
+                         float(p.sigma0), float(p.sigma1), float(p.sigma2), float(p.Fc),
+                         float(p.Fs), float(p.vs), float(p.alpha), SHAPES[p.shape])
     return Fr[::n_sub]
 
 
 # -- gms -------------------------------------------------------------------------------------
-#: ``hanging_shoe``'s share of the Coulomb level the shoe carries at strength 1 [-]; its
-#: slip travel at strength 1, beyond the base bristle's, as a share of the stroke / 3 [-];
-#: the hanger's swing at which the shoe slides [rad]
-HANG_SHARE, HANG_PATH, HANG_SWING = 0.3, 0.1, 1.1
+#: ``mullins_shoe``'s share of the Coulomb level the shoe carries at strength 1 [-]; its
+#: slip travel in the virgin rubber at strength 1, beyond the base bristle's, as a share of
+#: the stroke / 3 [-]; the rubber's largest loss of stiffness to the Mullins softening [-]
+MULLINS_SHARE, MULLINS_PATH, MULLINS_LOSS = 0.3, 0.1, 0.6
 
 
 @njit(cache=True)
-def _hanger_offset(x, x_ref):
-    """The shoe's offset from the hanger's pivot [-] (over the slip travel ``x_ref`` [m])
-    along the carriage's positions ``x`` [m]: the shoe sticks while |offset| < 1 and slides
-    with the carriage at that offset once it is reached."""
+def _mullins_pull(x, x_ref, loss):
+    """The rubber's pull [-] (over the shoe's sliding force) along the carriage's positions
+    ``x`` [m]: the shoe is held by a rubber block in shear, of stiffness 1 / ``x_ref`` in
+    the virgin state (the shoe slides at an offset ``x_ref`` [m]), softened by the largest
+    offset it has seen, m, to (1 - ``loss`` m / (m + ``x_ref``)) of that (the Mullins
+    effect: softer on reloading below the largest strain, virgin stiffness beyond it). The
+    shoe sticks while the pull stays below 1 and slides at the pull 1."""
     n = x.size
     out = np.empty(n)
     shoe = x[0] if n > 0 else 0.0
-    for k in range(n):
-        r = (x[k] - shoe) / x_ref
-        if r > 1.0:
-            shoe = x[k] - x_ref
-            r = 1.0
-        elif r < -1.0:
-            shoe = x[k] + x_ref
-            r = -1.0
-        out[k] = r
+    mx = 0.0
+    for j in range(n):
+        e = x[j] - shoe
+        if abs(e) > mx:
+            mx = abs(e)
+        k = (1.0 - loss * mx / (mx + x_ref)) / x_ref
+        f = k * e
+        if f > 1.0:
+            f = 1.0
+            shoe = x[j] - 1.0 / k
+        elif f < -1.0:
+            f = -1.0
+            shoe = x[j] + 1.0 / k
+        out[j] = f
     return out
 
 
-def _hanger_pull(r, swing):
-    """The hanger's pull [-] (over the shoe's sliding force) at the offsets ``r`` [-] (over
-    the slip travel): a weighted link swung by theta, sin theta = r sin(``swing``), pulls
-    by W tan theta, reaching the sliding force at ``swing``: soft at first, stiffening
-    towards the slip."""
-    q = np.clip(np.asarray(r, float), -1.0, 1.0) * math.sin(float(swing))
-    return q / np.sqrt(1.0 - q * q) / math.tan(float(swing))
-
-
 @on_fine_grid
-def hanging_shoe_truth(kin: PlantKinematics, s: float) -> np.ndarray:
-    """Part of the contact's friction is carried by a weighted shoe that rides on the way
-    and hangs from the carriage on a swinging link (a pendulum hanger, as a drag shoe or a
-    trailing wiper is hung): the shoe sticks while the carriage moves the hanger's pivot
-    on, the link swings out and gravity pulls the shoe along by W tan theta, soft at first
-    and stiffening as the link swings towards the angle :data:`HANG_SWING` at which the
-    pull reaches the shoe's sliding force; then the shoe slides behind the pivot at that
-    swing, the slip travel being the base bristle's Fs / sigma0 plus ``s``
-    :data:`HANG_PATH` x the stroke / 3 (:func:`_hanger_offset`). A reversal swings the link
-    back along the same path: no loss inside the slip travel. The shoe carries ``s``
-    :data:`HANG_SHARE` (at most 0.95) of the Coulomb level (:func:`_hanger_pull`); the rest
-    stays the base law with its level lowered by as much; at ``s`` = 0 the base.
+def mullins_shoe_truth(kin: PlantKinematics, s: float) -> np.ndarray:
+    """Part of the contact's friction is carried by a shoe held to the carriage by a block
+    of filled rubber in shear (a rubber-mounted wiper or damping shoe): the rubber softens
+    under its first loading to each new largest strain and stays softer on reloading below
+    it (the Mullins effect, the filler network's damage), so the shoe's presliding path is
+    stiff at first, softer on every later, smaller excursion, and the softened rubber lets
+    the carriage travel further before the shoe slides (:func:`_mullins_pull`); a reversal
+    below the largest strain unloads along the softened stiffness, no loss until the shoe
+    slides. The shoe carries ``s`` :data:`MULLINS_SHARE` (at most 0.95) of the Coulomb
+    level; its slip travel in the virgin rubber is the base bristle's Fs / sigma0 plus
+    ``s`` :data:`MULLINS_PATH` x the stroke / 3; the rest stays the base law with its level
+    lowered by as much; at ``s`` = 0 the base.
 
     Parameters
     ----------
@@ -859,7 +805,7 @@ def hanging_shoe_truth(kin: PlantKinematics, s: float) -> np.ndarray:
         The motion on the fine grid (x [m]) and its base law.
     s : float
         Amplitude factor [-]: the shoe's share of the friction (up to ``s`` = 0.95 /
-        :data:`HANG_SHARE`) and its slip travel, / their values at strength 1.
+        :data:`MULLINS_SHARE`) and its slip travel, / their values at strength 1.
 
     Returns
     -------
@@ -873,32 +819,27 @@ def hanging_shoe_truth(kin: PlantKinematics, s: float) -> np.ndarray:
 
     Notes
     -----
-    The pendulum's horizontal restoring force W tan theta, stiffening with the swing, a
-    gravity spring (Den Hartog 1961, Mechanics, on hanging links), carrying a sticking and
-    sliding shoe, a presliding element of its own law (Al-Bender, Lampaert and Swevers
-    2005, The generalized Maxwell-slip model, IEEE Trans. Autom. Control 50, for the
-    element set it departs from). The candidate's presliding is a generalized Maxwell-slip
-    (GMS) element set; the open forms are Maxwell-slip sets, Dahl, elasto-plastic,
-    Bliman-Sorine, Bouc-Wen, Zener junctions, Mindlin contacts, rate-and-state, Tomlinson
-    asperities, bond rupture, gouge, kinematic hardening, interlocking, capillary bridges,
-    cyclic hardening, peeling, unloading microslip, a power-law joint, junction growth,
-    avalanches, slip weakening, a microslip bar, contact renewal, grease's yield, a
-    superelastic flexure, an Eyring film, a viscoplastic layer, a poroelastic one, a
-    confined film that melts, a hysteresis brake, a fibre wiper, a band on a drum, a
-    spring's rubbing leaves, an air cylinder's spring, a buckling strut or a magnetic
-    coupling, each beside the contact, or a stiffening wire mesh in series with it. Here
-    gravity on a swinging hanger holds the sticking shoe, soft at first and stiffening
-    towards its slip.
+    The Mullins effect, the stress softening of filled rubbers after loading to a new
+    largest strain (Mullins 1948, Effect of stretching on the properties of rubber, Rubber
+    Chem. Technol. 21; Diani, Fayolle and Gilormini 2009, A review on the Mullins effect,
+    Eur. Polym. J. 45; Ogden and Roxburgh 1999, A pseudo-elastic model for the Mullins
+    effect in filled rubber, Proc. R. Soc. A 455), carrying a sticking and sliding shoe, a
+    presliding element of its own law (Al-Bender, Lampaert and Swevers 2005, The
+    generalized Maxwell-slip model, IEEE Trans. Autom. Control 50, for the element set it
+    departs from). The candidate's presliding is a generalized Maxwell-slip (GMS) element
+    set; the open forms are Maxwell-slip sets, Dahl, elasto-plastic, Bouc-Wen, contacts,
+    films, layers, flexures, brakes, bands, leaves, struts, couplings and a hanging shoe,
+    none whose stiffness remembers its largest strain. Here a rubber block softens under
+    each new largest strain.
     """
-    _lugre_params(kin, "gms (hanging_shoe)")
+    _lugre_params(kin, "gms (mullins_shoe)")
     F = _base_parts(kin)[0]
     if s <= 0.0:
         return F
     law = kin.base
-    w = min(float(s) * HANG_SHARE, 0.95)
+    w = min(float(s) * MULLINS_SHARE, 0.95)
     wf = w * _level(kin)
-    e0, extra = _presliding_path(kin, s, HANG_PATH)
-    r = _hanger_offset(np.asarray(kin.x, float), e0 + extra)
-    f = _hanger_pull(r, HANG_SWING)
+    e0, extra = _presliding_path(kin, s, MULLINS_PATH)
+    f = _mullins_pull(np.asarray(kin.x, float), e0 + extra, MULLINS_LOSS)
     rest = lugre_with_curve(kin, lambda vv: law.g(vv) - wf)
     return rest + wf * f

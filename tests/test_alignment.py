@@ -49,6 +49,7 @@ def test_channels_without_a_lag_or_derived_from_each_other_are_left_as_they_are(
     assert align_motion(data, 0.5 * MIN_ALIGN_SAMPLES)[1] == 0.0
 
 
+@pytest.mark.slow  # about 50 s (two full diagnoses); the lag itself is tested above
 def test_xml350_clean_record_differentiated_backward_fits_as_central_differences_do():
     # the XML-350's stiff presliding: with backward differences the base missed the
     # held-out force by 4.6 x the noise floor (central differences of the same counts:

@@ -87,7 +87,8 @@ class AsymmetryTwins(Candidate):
         # the second variant: a drag for each direction beside the contact, the law's own
         # parameters (its curve and offset) re-identified with it
         drag = AsymmetryDrag(self.name, self.description, "additive", self.tags)
-        return [(law.with_values(**start), names), (*drag.modify_law(law, base_names, ctx)[0], drag)]
+        return [(law.with_values(**start), names),
+                (*drag.modify_law(law, base_names, ctx)[0], drag)]
 
     def own_law_names(self, law):
         # the offset is this effect's too: identify's default base frees it on the fit
